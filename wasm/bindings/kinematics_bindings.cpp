@@ -1,0 +1,193 @@
+// embind bindings for the rig and its kinematics. Arrays cross as typed arrays in bulk;
+// results are copied out. Every C++ error becomes a JavaScript Error with the same message.
+#include <emscripten/bind.h>
+
+#include <Eigen/Core>
+
+#include "finite_difference_jacobian.h"
+#include "js_arrays.h"
+#include "kinematics.h"
+#include "objective.h"
+#include "rig_binding.h"
+
+namespace ik::js {
+
+using emscripten::val;
+
+RigBinding::RigBinding(const val& spec) : kin_(guarded([&] { return build(spec); })) {
+  angles_.resize(kin_.num_angles());
+  target_.resize(kin_.num_residuals());
+  tips_.resize(kin_.num_residuals());
+  jac_.resize(kin_.num_residuals() * kin_.num_angles());
+}
+
+Kinematics RigBinding::build(const val& spec) {
+  std::vector<int> parents, effectors;
+  copy_in(spec["parents"], parents, "parents");
+  const size_t n = parents.size();
+  std::vector<double> rest, lengths, lower, upper;
+  copy_in(spec["rest"], 16 * n, rest, "rest (16 row-major numbers per bone)");
+  copy_in(spec["lengths"], n, lengths, "lengths");
+  copy_in(spec["lower"], 3 * n, lower, "lower (3 limits per bone, degrees)");
+  copy_in(spec["upper"], 3 * n, upper, "upper (3 limits per bone, degrees)");
+  copy_in(spec["effectors"], effectors, "effectors");
+  const val names = spec["names"];
+  Rig rig;
+  rig.bones.resize(n);
+  for (size_t i = 0; i < n; ++i) {
+    Bone& b = rig.bones[i];
+    if (!names.isUndefined() && !names.isNull() && i < names["length"].as<size_t>())
+      b.name = names[i].as<std::string>();
+    b.parent = parents[i];
+    b.rest = Eigen::Map<const Eigen::Matrix<double, 4, 4, Eigen::RowMajor>>(&rest[16 * i]);
+    b.length = lengths[i];
+    b.min_deg = Eigen::Map<const Eigen::Vector3d>(&lower[3 * i]);
+    b.max_deg = Eigen::Map<const Eigen::Vector3d>(&upper[3 * i]);
+  }
+  rig.effectors = effectors;
+  return Kinematics(std::move(rig));
+}
+
+Eigen::Map<const Eigen::VectorXd> RigBinding::read_angles(const val& angles) {
+  copy_in(angles, kin_.num_angles(), angles_, "angles");
+  check_finite(angles_.data(), angles_.size(), "angles");
+  return Eigen::Map<const Eigen::VectorXd>(angles_.data(), angles_.size());
+}
+
+Eigen::Map<const Eigen::VectorXd> RigBinding::read_target(const val& target) {
+  copy_in(target, kin_.num_residuals(), target_, "target");
+  check_finite(target_.data(), target_.size(), "target");
+  return Eigen::Map<const Eigen::VectorXd>(target_.data(), target_.size());
+}
+
+val RigBinding::tips(const val& angles) {
+  return guarded([&] {
+    Eigen::Map<Eigen::VectorXd> tips(tips_.data(), tips_.size());
+    kin_.tips(read_angles(angles), tips);
+    return copy_out(tips_.data(), tips_.size());
+  });
+}
+
+val RigBinding::bone_tips(const val& angles) {
+  return guarded([&] {
+    kin_.forward(read_angles(angles));
+    std::vector<double>& out = scratch_;
+    out.resize(3 * kin_.num_bones());
+    for (int i = 0; i < kin_.num_bones(); ++i) Eigen::Map<Eigen::Vector3d>(out.data() + 3 * i) = kin_.tip(i);
+    return copy_out(out.data(), out.size());
+  });
+}
+
+val RigBinding::poses(const val& angles) {
+  return guarded([&] {
+    kin_.forward(read_angles(angles));
+    std::vector<double>& out = scratch_;
+    out.resize(16 * kin_.num_bones());
+    for (int i = 0; i < kin_.num_bones(); ++i)
+      Eigen::Map<Eigen::Matrix<double, 4, 4, Eigen::RowMajor>>(out.data() + 16 * i) = kin_.pose(i).matrix();
+    return copy_out(out.data(), out.size());
+  });
+}
+
+val RigBinding::jacobian(const val& angles) {
+  return guarded([&] {
+    Eigen::Map<Eigen::VectorXd> tips(tips_.data(), tips_.size());
+    Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::ColMajor>> jac(
+        jac_.data(), kin_.num_residuals(), kin_.num_angles());
+    kin_.jacobian(read_angles(angles), tips, jac);
+    return row_major_copy();
+  });
+}
+
+val RigBinding::finite_difference_jacobian(const val& angles, double h_deg, bool clamp) {
+  return guarded([&] {
+    if (!(h_deg > 0)) throw RigError("finite difference step must be > 0 degrees");
+    const auto a = read_angles(angles);
+    Eigen::VectorXd scratch(kin_.num_angles()), plus(kin_.num_residuals()), minus(kin_.num_residuals());
+    Eigen::Map<Eigen::MatrixXd> jac(jac_.data(), kin_.num_residuals(), kin_.num_angles());
+    ik::finite_difference_jacobian(kin_, a, h_deg, clamp, scratch, plus, minus, jac);
+    return row_major_copy();
+  });
+}
+
+val RigBinding::row_major_copy() {
+  const int rows = kin_.num_residuals(), cols = kin_.num_angles();
+  scratch_.resize(static_cast<size_t>(rows) * cols);
+  Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(scratch_.data(), rows, cols) =
+      Eigen::Map<const Eigen::MatrixXd>(jac_.data(), rows, cols);
+  return copy_out(scratch_.data(), scratch_.size());
+}
+
+double RigBinding::objective(const val& angles, const val& target) {
+  return guarded([&] {
+    const auto a = read_angles(angles);
+    const auto t = read_target(target);
+    Eigen::Map<Eigen::VectorXd> r(tips_.data(), tips_.size());
+    return ik::objective(kin_, a, t, r);
+  });
+}
+
+val RigBinding::gradient(const val& angles, const val& target) {
+  return guarded([&] {
+    const auto a = read_angles(angles);
+    const auto t = read_target(target);
+    Eigen::Map<Eigen::VectorXd> r(tips_.data(), tips_.size());
+    Eigen::Map<Eigen::MatrixXd> jac(jac_.data(), kin_.num_residuals(), kin_.num_angles());
+    scratch_.resize(kin_.num_angles());
+    Eigen::Map<Eigen::VectorXd> g(scratch_.data(), scratch_.size());
+    objective_and_gradient(kin_, a, t, r, jac, g);
+    return copy_out(scratch_.data(), scratch_.size());
+  });
+}
+
+val RigBinding::project(const val& angles) {
+  return guarded([&] {
+    copy_in(angles, kin_.num_angles(), angles_, "angles");
+    Eigen::Map<Eigen::VectorXd> a(angles_.data(), angles_.size());
+    kin_.project(a);
+    return copy_out(angles_.data(), angles_.size());
+  });
+}
+
+void RigBinding::set_effectors(const val& effectors) {
+  guarded([&] {
+    std::vector<int> list;
+    copy_in(effectors, list, "effectors");
+    kin_.set_effectors(list);
+    target_.resize(kin_.num_residuals());
+    tips_.resize(kin_.num_residuals());
+    jac_.resize(kin_.num_residuals() * kin_.num_angles());
+    return 0;
+  });
+}
+
+val RigBinding::effectors() const {
+  const auto& e = kin_.rig().effectors;
+  return val::global("Int32Array").new_(emscripten::typed_memory_view(e.size(), e.data()));
+}
+
+val RigBinding::lower() const { return copy_out(kin_.lower().data(), kin_.lower().size()); }
+val RigBinding::upper() const { return copy_out(kin_.upper().data(), kin_.upper().size()); }
+
+}  // namespace ik::js
+
+EMSCRIPTEN_BINDINGS(ik_kinematics) {
+  using ik::js::RigBinding;
+  emscripten::class_<RigBinding>("Rig")
+      .constructor<const emscripten::val&>()
+      .property("numBones", &RigBinding::num_bones)
+      .property("numAngles", &RigBinding::num_angles)
+      .property("numEffectors", &RigBinding::num_effectors)
+      .function("effectors", &RigBinding::effectors)
+      .function("setEffectors", &RigBinding::set_effectors)
+      .function("lower", &RigBinding::lower)
+      .function("upper", &RigBinding::upper)
+      .function("tips", &RigBinding::tips)
+      .function("boneTips", &RigBinding::bone_tips)
+      .function("poses", &RigBinding::poses)
+      .function("jacobian", &RigBinding::jacobian)
+      .function("finiteDifferenceJacobian", &RigBinding::finite_difference_jacobian)
+      .function("objective", &RigBinding::objective)
+      .function("gradient", &RigBinding::gradient)
+      .function("project", &RigBinding::project);
+}

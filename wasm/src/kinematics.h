@@ -1,0 +1,82 @@
+// Forward kinematics and its derivatives for one rig, with every buffer allocated at set-up.
+//
+// Angles: a vector A of 3 * #bones values in DEGREES, bone i owns A[3i..3i+2] = (x, z, x).
+// The pose transform of bone i is, exactly as PROTOCOL.md composes it,
+//   T_i = T_parent * rest_i * Rx(a0) * Rz(a1) * Rx(a2) * rest_i^-1
+// and its tip is T_i * rest_i * (length, 0, 0).
+// Tips: a vector of 3 * #effectors values, effector k at [3k..3k+2], in rig units.
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <vector>
+
+#include "rig.h"
+
+namespace ik {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kRadPerDeg = kPi / 180.0;
+
+class Kinematics {
+ public:
+  // Validates the rig (throws RigError) and allocates every buffer.
+  explicit Kinematics(Rig rig);
+
+  const Rig& rig() const { return rig_; }
+  int num_bones() const { return static_cast<int>(rig_.bones.size()); }
+  int num_angles() const { return 3 * num_bones(); }
+  int num_effectors() const { return static_cast<int>(rig_.effectors.size()); }
+  int num_residuals() const { return 3 * num_effectors(); }
+
+  // Replaces the end-effector list (bone indices). Throws RigError if one is not a bone.
+  void set_effectors(const std::vector<int>& effectors);
+
+  // Poses the rig at `angles` (#angles, degrees). Afterwards pose(), tip(), joint_axis() and
+  // joint_origin() describe that pose. No allocation.
+  void forward(const Eigen::Ref<const Eigen::VectorXd>& angles);
+
+  // After forward(): bone i's pose transform T_i (rest space -> posed world).
+  Eigen::Isometry3d pose(int bone) const { return frame_[bone] * rest_inv_[bone]; }
+  // After forward(): bone i's tip in world coordinates.
+  Eigen::Vector3d tip(int bone) const { return frame_[bone] * Eigen::Vector3d(rig_.bones[bone].length, 0, 0); }
+  // After forward(): the world rotation axis (unit) of angle k in {0, 1, 2} of bone i.
+  Eigen::Vector3d joint_axis(int bone, int k) const { return axes_[bone].col(k); }
+  // After forward(): the world position of bone i's joint (the tail of the bone).
+  Eigen::Vector3d joint_origin(int bone) const { return frame_[bone].translation(); }
+  // Bones from a root down to `bone` (inclusive), parents first.
+  const std::vector<int>& chain(int bone) const { return chains_[bone]; }
+
+  // Poses the rig and writes the end-effector tips (#residuals) to `tips`.
+  void tips(const Eigen::Ref<const Eigen::VectorXd>& angles, Eigen::Ref<Eigen::VectorXd> tips);
+
+  // Poses the rig and writes the tips and the analytic Jacobian d tips / d angles
+  // (#residuals x #angles, rig units per DEGREE). No allocation.
+  void jacobian(const Eigen::Ref<const Eigen::VectorXd>& angles, Eigen::Ref<Eigen::VectorXd> tips,
+                Eigen::Ref<Eigen::MatrixXd> jac);
+
+  // Writes the tips at the current pose (after forward()).
+  void current_tips(Eigen::Ref<Eigen::VectorXd> tips) const;
+  // Writes the Jacobian at the current pose (after forward()).
+  void current_jacobian(Eigen::Ref<Eigen::MatrixXd> jac) const;
+
+  // Clamps each angle into its [min, max] limits (degrees), in place.
+  void project(Eigen::Ref<Eigen::VectorXd> angles) const;
+  const Eigen::VectorXd& lower() const { return lower_; }  // #angles lower limits, degrees
+  const Eigen::VectorXd& upper() const { return upper_; }  // #angles upper limits, degrees
+
+ private:
+  void precompute();
+
+  Rig rig_;
+  std::vector<int> order_;                 // bones, parents before children
+  std::vector<std::vector<int>> chains_;   // per bone: root..bone
+  std::vector<Eigen::Isometry3d> rest_;    // rest_i
+  std::vector<Eigen::Isometry3d> rest_inv_;
+  std::vector<Eigen::Isometry3d> from_parent_;  // rest_parent^-1 * rest_i (rest_i for a root)
+  std::vector<Eigen::Isometry3d> frame_;   // T_parent * rest_i * Rx Rz Rx: canonical bone -> world
+  std::vector<Eigen::Matrix3d> axes_;      // world joint axes (x, z, x) per bone
+  Eigen::VectorXd lower_, upper_;
+};
+
+}  // namespace ik

@@ -1,0 +1,22 @@
+#include "objective.h"
+
+namespace ik {
+
+double objective(Kinematics& kin, const Eigen::Ref<const Eigen::VectorXd>& angles,
+                 const Eigen::Ref<const Eigen::VectorXd>& target, Eigen::Ref<Eigen::VectorXd> residual) {
+  kin.tips(angles, residual);
+  residual -= target;
+  return 0.5 * residual.squaredNorm();
+}
+
+double objective_and_gradient(Kinematics& kin, const Eigen::Ref<const Eigen::VectorXd>& angles,
+                              const Eigen::Ref<const Eigen::VectorXd>& target,
+                              Eigen::Ref<Eigen::VectorXd> residual, Eigen::Ref<Eigen::MatrixXd> jac,
+                              Eigen::Ref<Eigen::VectorXd> gradient) {
+  kin.jacobian(angles, residual, jac);
+  residual -= target;
+  gradient.noalias() = jac.transpose() * residual;
+  return 0.5 * residual.squaredNorm();
+}
+
+}  // namespace ik

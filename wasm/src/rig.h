@@ -1,0 +1,43 @@
+// The rig model shared by every front end: bones with a parent, a rest transform, a length and
+// XZX Euler limits, plus the bones whose tips are end effectors.
+#pragma once
+
+#include <Eigen/Core>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace ik {
+
+constexpr double kUnbounded = std::numeric_limits<double>::infinity();
+
+struct Bone {
+  std::string name;       // for error messages and display; may be empty
+  int parent = -1;        // index into Rig::bones, -1 for a root
+  Eigen::Matrix4d rest = Eigen::Matrix4d::Identity();  // canonical bone -> rest bone, rigid
+  double length = 0;      // tip of the canonical bone is (length, 0, 0)
+  Eigen::Vector3d min_deg = Eigen::Vector3d::Constant(-kUnbounded);  // XZX lower limits, degrees
+  Eigen::Vector3d max_deg = Eigen::Vector3d::Constant(kUnbounded);   // XZX upper limits, degrees
+};
+
+struct Rig {
+  std::vector<Bone> bones;
+  std::vector<int> effectors;  // bone indices; each bone's tip is an end effector
+};
+
+// Thrown for any invalid rig or solver input; the message names the bone and the field.
+class RigError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// Checks a rig and throws RigError naming the first problem found:
+// parent out of range, a parent cycle, a non-finite number, a rest transform that is not rigid,
+// a limit with min > max, a negative length, or an end effector that is not a bone.
+void validate_rig(const Rig& rig);
+
+// A bone's label for messages: `bone 3 "forearm"` or `bone 3`.
+std::string bone_label(const Rig& rig, int index);
+
+}  // namespace ik

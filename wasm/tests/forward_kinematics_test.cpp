@@ -1,0 +1,75 @@
+#include <gtest/gtest.h>
+
+#include "a7_fixtures.h"
+
+namespace ik {
+namespace {
+
+TEST(ForwardKinematics, MatchesReferenceCompositionOnA7Rigs) {
+  std::mt19937_64 rng(1);
+  for (const std::string& name : test::a7_rig_names()) {
+    const Rig rig = test::load_a7(name);
+    Kinematics kin(rig);
+    Eigen::VectorXd tips(kin.num_residuals());
+    for (int s = 0; s < 200; ++s) {
+      const Eigen::VectorXd a = test::random_angles(kin, rng);
+      kin.tips(a, tips);
+      const Eigen::VectorXd ref = test::reference_tips(rig, a);
+      const double scale = std::max(1.0, ref.cwiseAbs().maxCoeff());
+      EXPECT_LE((tips - ref).cwiseAbs().maxCoeff(), 1e-12 * scale) << name << " sample " << s;
+    }
+  }
+}
+
+TEST(ForwardKinematics, ZeroAnglesPutTipsAtRest) {
+  for (const std::string& name : test::a7_rig_names()) {
+    const Rig rig = test::load_a7(name);
+    Kinematics kin(rig);
+    kin.forward(Eigen::VectorXd::Zero(kin.num_angles()));
+    for (int i = 0; i < kin.num_bones(); ++i) {
+      const Eigen::Vector3d rest_tip = (rig.bones[i].rest * Eigen::Vector4d(rig.bones[i].length, 0, 0, 1)).head<3>();
+      EXPECT_LT((kin.tip(i) - rest_tip).norm(), 1e-12) << name << " bone " << i;
+      EXPECT_TRUE(kin.pose(i).matrix().isApprox(Eigen::Matrix4d::Identity(), 1e-12)) << name << " bone " << i;
+    }
+  }
+}
+
+TEST(ForwardKinematics, ProjectClampsIntoLimits) {
+  const Rig rig = test::load_a7("ikea-lamp");
+  Kinematics kin(rig);
+  Eigen::VectorXd a = Eigen::VectorXd::Constant(kin.num_angles(), 500.0);
+  kin.project(a);
+  EXPECT_DOUBLE_EQ(a[3], 90.0);   // bone 1 x in [-90, 90]
+  EXPECT_DOUBLE_EQ(a[7], 120.0);  // bone 2 z in [-60, 120]
+  EXPECT_DOUBLE_EQ(a[0], 0.0);    // fixed root
+}
+
+TEST(ForwardKinematics, HandlesChildrenListedBeforeParentsAndSeveralRoots) {
+  Rig rig;
+  Bone child;
+  child.parent = 2;
+  child.length = 1;
+  child.rest.block<3, 1>(0, 3) = Eigen::Vector3d(2, 0, 0);
+  Bone root_a;
+  root_a.length = 2;
+  Bone root_b;
+  root_b.length = 0.5;
+  root_b.rest.block<3, 1>(0, 3) = Eigen::Vector3d(0, 3, 0);
+  Bone mid;
+  mid.parent = 1;
+  mid.length = 0;
+  mid.rest.block<3, 1>(0, 3) = Eigen::Vector3d(2, 0, 0);
+  rig.bones = {child, root_a, mid, root_b};
+  rig.effectors = {0, 3};
+  Kinematics kin(rig);
+  std::mt19937_64 rng(2);
+  Eigen::VectorXd tips(kin.num_residuals());
+  for (int s = 0; s < 20; ++s) {
+    const Eigen::VectorXd a = test::random_angles(kin, rng);
+    kin.tips(a, tips);
+    EXPECT_LE((tips - test::reference_tips(rig, a)).cwiseAbs().maxCoeff(), 1e-12);
+  }
+}
+
+}  // namespace
+}  // namespace ik
