@@ -1,0 +1,53 @@
+#!/usr/bin/env bash
+# Installs what the project needs on a fresh Debian machine and builds the WebAssembly.
+# Idempotent: each step is skipped when its result is already there.
+#   scripts/setup.sh            apt packages for the build, npm packages, the WebAssembly
+#   scripts/setup.sh --native   also the native build (GoogleTest) tools
+#   scripts/setup.sh --browser  also Chromium for the browser tests
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+want_native=0
+want_browser=0
+for arg in "$@"; do
+  case "$arg" in
+    --native) want_native=1 ;;
+    --browser) want_browser=1 ;;
+    *) echo "setup.sh: unknown option $arg" >&2; exit 2 ;;
+  esac
+done
+
+packages=(emscripten node-acorn libeigen3-dev cmake ninja-build)
+[ "$want_native" = 1 ] && packages+=(g++ googletest libgtest-dev nlohmann-json3-dev)
+[ "$want_browser" = 1 ] && packages+=(chromium)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "setup: installing Debian packages: ${missing[*]}"
+  sudo_cmd=()
+  [ "$(id -u)" != 0 ] && sudo_cmd=(sudo)
+  export DEBIAN_FRONTEND=noninteractive
+  "${sudo_cmd[@]}" apt-get install -y --no-install-recommends "${missing[@]}" \
+    || { "${sudo_cmd[@]}" apt-get update && "${sudo_cmd[@]}" apt-get install -y --no-install-recommends "${missing[@]}"; }
+fi
+
+# npm packages, pinned by package-lock.json; reinstall when the lockfile changed.
+if [ ! -f node_modules/.package-lock.json ] || [ package-lock.json -nt node_modules/.package-lock.json ]; then
+  echo "setup: npm ci"
+  npm ci --no-audit --no-fund
+fi
+
+# The WebAssembly core (web/src/ik/generated/).
+export NODE_PATH=/usr/share/nodejs
+if [ ! -f build/wasm/build.ninja ]; then
+  emcmake cmake -S wasm -B build/wasm -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
+fi
+cmake --build build/wasm
+
+if [ "$want_native" = 1 ]; then
+  [ -f build/native/build.ninja ] || cmake -S wasm -B build/native -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
+  cmake --build build/native
+fi

@@ -1,0 +1,175 @@
+// The kinematics checks of the native suite, run again through the WebAssembly module in Node.
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+
+import type { IkCoreModule } from '../../web/src/ik/module.js';
+import { loadIkNode } from '../../web/src/ik/node.js';
+import { IkRig } from '../../web/src/ik/rig.js';
+import { a7Names, loadA7, maxAbs, maxAbsDiff, randomAngles, referenceTips, seeded } from '../helpers/a7.js';
+
+let ik: IkCoreModule;
+const rigs: IkRig[] = [];
+
+beforeAll(async () => {
+  ik = await loadIkNode();
+});
+
+afterAll(() => rigs.forEach((r) => r.dispose()));
+
+function rigOf(name: string): IkRig {
+  const rig = new IkRig(ik, loadA7(name));
+  rigs.push(rig);
+  return rig;
+}
+
+/** Central differences of rig.tips in JS, step h degrees, no clamping; row-major like jacobian(). */
+function centralDifferences(rig: IkRig, a: Float64Array, h: number): Float64Array {
+  const rows = 3 * rig.numEffectors, cols = rig.numAngles;
+  const jac = new Float64Array(rows * cols);
+  for (let j = 0; j < cols; j++) {
+    const p = a.slice(), m = a.slice();
+    p[j] += h;
+    m[j] -= h;
+    const tp = rig.tips(p), tm = rig.tips(m);
+    for (let r = 0; r < rows; r++) jac[r * cols + j] = (tp[r] - tm[r]) / (2 * h);
+  }
+  return jac;
+}
+
+function expectJacobianMatches(rig: IkRig, a: Float64Array, what: string): void {
+  const jac = rig.jacobian(a);
+  const fd = centralDifferences(rig, a, 1e-3);
+  expect(maxAbsDiff(jac, fd) / maxAbs(fd), what).toBeLessThan(1e-6);
+}
+
+describe.each(a7Names)('%s through WebAssembly', (name) => {
+  it('forward kinematics matches the reference 4x4 composition to 1e-12 relative', () => {
+    const rig = rigOf(name);
+    const rand = seeded(11);
+    for (let s = 0; s < 100; s++) {
+      const a = randomAngles(rig.spec, rand);
+      const ref = referenceTips(rig.spec, a);
+      expect(maxAbsDiff(rig.tips(a), ref)).toBeLessThanOrEqual(1e-12 * Math.max(1, maxAbs(ref)));
+    }
+  });
+
+  it('the analytic Jacobian matches central differences at random poses', () => {
+    const rig = rigOf(name);
+    const rand = seeded(12);
+    for (let s = 0; s < 20; s++) expectJacobianMatches(rig, randomAngles(rig.spec, rand), `random ${s}`);
+  });
+
+  it('the analytic Jacobian matches central differences on the limits', () => {
+    const rig = rigOf(name);
+    const rand = seeded(13);
+    for (let s = 0; s < 10; s++) {
+      const a = new Float64Array(rig.numAngles);
+      for (let i = 0; i < a.length; i++)
+        a[i] = rand() < 0.5 ? Math.max(rig.lower[i], -720) : Math.min(rig.upper[i], 720);
+      expectJacobianMatches(rig, a, `limits ${s}`);
+    }
+  });
+
+  it('the analytic Jacobian matches central differences at middle angle 0 (XZX singular)', () => {
+    const rig = rigOf(name);
+    const rand = seeded(14);
+    for (let s = 0; s < 10; s++) {
+      const a = randomAngles(rig.spec, rand);
+      for (let b = 0; b < rig.numBones; b++) a[3 * b + 1] = 0;
+      expectJacobianMatches(rig, a, `middle 0, ${s}`);
+    }
+  });
+
+  it('the gradient is J^T r and E is half the squared tip error', () => {
+    const rig = rigOf(name);
+    const rand = seeded(15);
+    const target = rig.tips(randomAngles(rig.spec, rand));
+    const a = randomAngles(rig.spec, rand);
+    const r = rig.tips(a).map((x, i) => x - target[i]);
+    expect(rig.objective(a, target)).toBeCloseTo(0.5 * r.reduce((s, x) => s + x * x, 0), 12);
+    const jac = rig.jacobian(a), g = rig.gradient(a, target);
+    const cols = rig.numAngles;
+    for (let j = 0; j < cols; j++) {
+      let gj = 0;
+      for (let i = 0; i < r.length; i++) gj += jac[i * cols + j] * r[i];
+      expect(g[j]).toBeCloseTo(gj, 12);
+    }
+  });
+});
+
+describe('the WebAssembly rig API', () => {
+  it('keeps bone poses consistent with tips', () => {
+    const rig = rigOf('knight');
+    const a = randomAngles(rig.spec, seeded(16));
+    const poses = rig.poses(a), boneTips = rig.boneTips(a), tips = rig.tips(a);
+    rig.spec.effectors.forEach((b, k) => {
+      // tip = T_b * rest_b * (length, 0, 0)
+      const T = poses.subarray(16 * b, 16 * b + 16), R = rig.spec.rest.subarray(16 * b, 16 * b + 16);
+      const l = rig.spec.lengths[b];
+      for (let r = 0; r < 3; r++) {
+        let v = T[4 * r + 3];
+        for (let c = 0; c < 3; c++) v += T[4 * r + c] * (R[4 * c] * l + R[4 * c + 3]);
+        expect(v).toBeCloseTo(tips[3 * k + r], 12);
+        expect(boneTips[3 * b + r]).toBeCloseTo(tips[3 * k + r], 14);
+      }
+    });
+  });
+
+  it('clamps with project() and reports limits', () => {
+    const rig = rigOf('ikea-lamp');
+    const p = rig.project(new Float64Array(rig.numAngles).fill(500));
+    expect(p[3]).toBe(90);
+    expect(p[7]).toBe(120);
+    expect(p[0]).toBe(0);
+    expect(rig.upper[3]).toBe(90);
+  });
+
+  it('the paper finite-difference Jacobian is clamped at the limits', () => {
+    const rig = rigOf('ikea-lamp');
+    const a = rig.project(rig.upper.map((x) => Math.min(x, 720)));
+    const fd = rig.finiteDifferenceJacobian(a, 1e-7, true);
+    const jac = rig.jacobian(a);
+    const cols = rig.numAngles;
+    for (let j = 0; j < cols; j++)
+      for (let r = 0; r < 3; r++) {
+        if (rig.lower[j] === rig.upper[j]) expect(fd[r * cols + j]).toBe(0);
+        else expect(Math.abs(fd[r * cols + j] - jac[r * cols + j])).toBeLessThan(1e-6 * maxAbs(jac));
+      }
+  });
+
+  it('turns bad input into errors that name the problem', () => {
+    const rig = rigOf('knight');
+    expect(() => rig.tips(new Float64Array(5))).toThrow('angles has 5 values, expected 57');
+    const a = new Float64Array(57);
+    a[4] = NaN;
+    expect(() => rig.tips(a)).toThrow('angles[4] is not a finite number');
+    expect(() => rig.objective(new Float64Array(57), new Float64Array(15).fill(Infinity))).toThrow(
+      'target[0] is not a finite number',
+    );
+    expect(() => rig.setEffectors([3, 99])).toThrow('end effector 1 is bone 99, which is not a bone');
+    expect(Array.from(rig.effectors())).toEqual([18, 14, 8, 3, 5]);
+    const spec = loadA7('ikea-lamp');
+    spec.parents[2] = 4;
+    spec.parents[4] = 2;
+    expect(() => new IkRig(ik, spec)).toThrow('parent chain has a cycle');
+    const scaled = loadA7('ikea-lamp');
+    scaled.rest[16 * 2] = 2;
+    expect(() => new IkRig(ik, scaled)).toThrow('bone 2 "bone 2": rest_T is not rigid');
+    const inverted = loadA7('ikea-lamp');
+    inverted.lower[4] = 50;
+    expect(() => new IkRig(ik, inverted)).toThrow('has min 50 > max 0');
+    const short = loadA7('ikea-lamp');
+    short.lengths = new Float64Array(2);
+    expect(() => new IkRig(ik, short)).toThrow('lengths has 2 values, expected 5');
+  });
+
+  it('changes end effectors and refuses use after dispose', () => {
+    const rig = new IkRig(ik, loadA7('knight'));
+    rig.setEffectors([18, 14]);
+    expect(rig.numEffectors).toBe(2);
+    expect(rig.tips(new Float64Array(57)).length).toBe(6);
+    expect(rig.jacobian(new Float64Array(57)).length).toBe(6 * 57);
+    rig.dispose();
+    rig.dispose();
+    expect(() => rig.tips(new Float64Array(57))).toThrow('disposed');
+  });
+});

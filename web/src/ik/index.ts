@@ -1,0 +1,7 @@
+// The JavaScript API over the WebAssembly core. It knows nothing of three.js.
+export { loadIk } from './module.js';
+export type { IkCoreModule, IkCoreModuleOptions } from './module.js';
+export { IkRig } from './rig.js';
+export type { Numbers } from './rig.js';
+export type { RigSpec } from './rig_spec.js';
+export { boneCount, restMatrix } from './rig_spec.js';
