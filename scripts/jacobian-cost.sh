@@ -11,4 +11,4 @@ NODE_PATH=/usr/share/nodejs cmake --build build/wasm --target jacobian_cost >/de
 echo "== native (g++ -O3)"
 build/native/jacobian_cost "$rig"
 echo "== WebAssembly (em++ -O3 -msimd128, Node $(node --version))"
-node build/wasm/jacobian_cost.js "$rig"
+node build/wasm/jacobian_cost.cjs "$rig"
