@@ -8,16 +8,13 @@ namespace ik {
 
 namespace {
 
-Eigen::Matrix3d rot_x(double c, double s) {
-  Eigen::Matrix3d m;
-  m << 1, 0, 0, 0, c, -s, 0, s, c;
-  return m;
-}
-
-Eigen::Matrix3d rot_z(double c, double s) {
-  Eigen::Matrix3d m;
-  m << c, -s, 0, s, c, 0, 0, 0, 1;
-  return m;
+// m <- m * R, where R rotates by `angle_rad` in the plane of axes (i, j): Rx is (1, 2), Rz is (0, 1).
+// Touches only the two columns that change.
+inline void rotate_columns(Eigen::Matrix3d& m, int i, int j, double angle_rad) {
+  const double c = std::cos(angle_rad), s = std::sin(angle_rad);
+  const Eigen::Vector3d a = m.col(i), b = m.col(j);
+  m.col(i) = c * a + s * b;
+  m.col(j) = c * b - s * a;
 }
 
 }  // namespace
@@ -75,15 +72,14 @@ void Kinematics::forward(const Eigen::Ref<const Eigen::VectorXd>& angles) {
     const int p = rig_.bones[i].parent;
     // Joint frame before rotation: F = T_parent * rest_i, with T_parent = frame_p * rest_p^-1.
     const Eigen::Isometry3d joint = (p == -1) ? from_parent_[i] : frame_[p] * from_parent_[i];
-    const double a0 = angles[3 * i] * kRadPerDeg;
-    const double a1 = angles[3 * i + 1] * kRadPerDeg;
-    const double a2 = angles[3 * i + 2] * kRadPerDeg;
-    const Eigen::Matrix3d r0 = joint.linear() * rot_x(std::cos(a0), std::sin(a0));
-    const Eigen::Matrix3d r01 = r0 * rot_z(std::cos(a1), std::sin(a1));
-    axes_[i].col(0) = joint.linear().col(0);
-    axes_[i].col(1) = r0.col(2);
-    axes_[i].col(2) = r01.col(0);
-    frame_[i].linear() = r01 * rot_x(std::cos(a2), std::sin(a2));
+    Eigen::Matrix3d r = joint.linear();
+    axes_[i].col(0) = r.col(0);                        // first x axis, before any rotation
+    rotate_columns(r, 1, 2, angles[3 * i] * kRadPerDeg);
+    axes_[i].col(1) = r.col(2);                        // z axis after Rx(a0)
+    rotate_columns(r, 0, 1, angles[3 * i + 1] * kRadPerDeg);
+    axes_[i].col(2) = r.col(0);                        // second x axis after Rx(a0) Rz(a1)
+    rotate_columns(r, 1, 2, angles[3 * i + 2] * kRadPerDeg);
+    frame_[i].linear() = r;
     frame_[i].translation() = joint.translation();
   }
 }
