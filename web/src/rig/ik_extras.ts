@@ -1,0 +1,79 @@
+// The IK metadata a glTF joint node may carry in `extras.ik` (schema: docs/gltf-ik-extras.md):
+// XZX limits in degrees, end-effector flag, bone length or tail, and which child the bone points at.
+import { failIn } from './gltf_file.js';
+
+/** Limits at or beyond this magnitude (degrees) mean unbounded, as 1e10 does in the A7 files. */
+export const UNBOUNDED_DEG = 1e9;
+
+export interface IkExtras {
+  /** 3 XZX lower limits in degrees (-Infinity = unbounded), or undefined for the default. */
+  min: [number, number, number] | undefined;
+  /** 3 XZX upper limits in degrees (+Infinity = unbounded), or undefined for the default. */
+  max: [number, number, number] | undefined;
+  /** true / false when stated, undefined when not. */
+  effector: boolean | undefined;
+  /** Bone length in the joint node's own units (before its world scale), if stated. */
+  length: number | undefined;
+  /** Bone tip in the joint node's local coordinates, if stated (wins over child and length). */
+  tail: [number, number, number] | undefined;
+  /** The child the bone points at: a node name or node index, if stated. */
+  child: string | number | undefined;
+}
+
+const KEYS = new Set(['xzx_min', 'xzx_max', 'effector', 'length', 'tail', 'child']);
+
+/**
+ * Reads `extras.ik` of a node (`extras` is the node's raw extras value). Returns undefined when the
+ * node has no `ik` object. `where` names the node in errors (RigFormatError from `file`).
+ */
+export function readIkExtras(extras: unknown, where: string, file: string): IkExtras | undefined {
+  if (typeof extras !== 'object' || extras === null || !('ik' in extras)) return undefined;
+  const ik = (extras as { ik: unknown }).ik;
+  const at = `${where}: extras.ik`;
+  if (typeof ik !== 'object' || ik === null || Array.isArray(ik)) failIn(file, `${at} is not a JSON object`);
+  const o = ik as Record<string, unknown>;
+  for (const key of Object.keys(o)) if (!KEYS.has(key)) failIn(file, `${at}.${key} is not a known key (${[...KEYS].join(', ')})`);
+  const limits = (key: 'xzx_min' | 'xzx_max', unbounded: number): [number, number, number] | undefined => {
+    const v = o[key];
+    if (v === undefined) return undefined;
+    if (!Array.isArray(v) || v.length !== 3) failIn(file, `${at}.${key} must be 3 numbers (degrees) or nulls`);
+    return v.map((x, k) => {
+      if (x === null) return unbounded;
+      if (typeof x !== 'number' || Number.isNaN(x)) failIn(file, `${at}.${key}[${k}] is not a number (degrees) or null`);
+      return Math.abs(x) >= UNBOUNDED_DEG ? Math.sign(x) * Infinity : x;
+    }) as [number, number, number];
+  };
+  const result: IkExtras = {
+    min: limits('xzx_min', -Infinity),
+    max: limits('xzx_max', Infinity),
+    effector: undefined,
+    length: undefined,
+    tail: undefined,
+    child: undefined,
+  };
+  if (result.min && result.max)
+    for (let k = 0; k < 3; k++)
+      if (result.min[k] > result.max[k])
+        failIn(file, `${at}: xzx_min[${k}] = ${result.min[k]} is above xzx_max[${k}] = ${result.max[k]}`);
+  if (o.effector !== undefined) {
+    if (typeof o.effector !== 'boolean') failIn(file, `${at}.effector must be true or false`);
+    result.effector = o.effector;
+  }
+  if (o.length !== undefined) {
+    if (typeof o.length !== 'number' || !Number.isFinite(o.length) || o.length < 0)
+      failIn(file, `${at}.length must be a finite number >= 0`);
+    result.length = o.length;
+  }
+  if (o.tail !== undefined) {
+    const t = o.tail;
+    if (!Array.isArray(t) || t.length !== 3 || !t.every((x) => typeof x === 'number' && Number.isFinite(x)))
+      failIn(file, `${at}.tail must be 3 finite numbers (a point in the joint's local coordinates)`);
+    result.tail = t as [number, number, number];
+  }
+  if (o.child !== undefined) {
+    if (typeof o.child !== 'string' && !(typeof o.child === 'number' && Number.isInteger(o.child)))
+      failIn(file, `${at}.child must be a child node's name or index`);
+    result.child = o.child;
+  }
+  return result;
+}

@@ -1,0 +1,55 @@
+// One entry point for every rig format, shared by the page and Node (no DOM, no node:fs):
+// .json = A7 course format, .glb / .gltf = glTF 2.0 skinned character.
+import type { RigSpec } from '../ik/rig_spec.js';
+import { parseA7Rig, RigFormatError } from './a7_rig.js';
+import type { SiblingReader } from './gltf_file.js';
+import { importGltfRig, type GltfRigInfo } from './gltf_rig.js';
+
+export type { GltfRigInfo, SiblingReader };
+export { RigFormatError };
+
+export type RigFormat = 'a7' | 'glb' | 'gltf';
+
+export interface LoadedRig {
+  /** The rig for the solver: angles and limits in degrees, lengths in the file's units. */
+  spec: RigSpec;
+  /** The file's base name without directory or extension ("knight" for "models/knight.glb"). */
+  name: string;
+  format: RigFormat;
+  /** For glTF: bone -> node mapping and rest matrices for the write-back. */
+  gltf?: GltfRigInfo;
+  /** Notes for the user (defaults applied...); empty for A7. */
+  warnings: string[];
+}
+
+/** The file name without directory and extension. */
+export function rigBaseName(fileName: string): string {
+  const base = fileName.split(/[\\/]/).pop() ?? fileName;
+  const dot = base.lastIndexOf('.');
+  return dot > 0 ? base.slice(0, dot) : base;
+}
+
+/**
+ * Loads a rig from the bytes of a file. The format comes from `fileName`'s extension (.json, .glb,
+ * .gltf; case-insensitive). `readSibling` reads the side files (buffers) a .gltf refers to by
+ * relative URI. Throws RigFormatError naming the file and the problem; never returns a partial rig.
+ */
+export async function loadRig(bytes: Uint8Array, fileName: string, readSibling?: SiblingReader): Promise<LoadedRig> {
+  const name = rigBaseName(fileName);
+  const ext = fileName.toLowerCase().match(/\.([a-z0-9]+)$/)?.[1];
+  if (ext === 'json') {
+    const text = new TextDecoder().decode(bytes);
+    return { spec: parseA7Rig(text, fileName), name, format: 'a7', warnings: [] };
+  }
+  if (ext === 'glb' || ext === 'gltf') {
+    try {
+      const { spec, gltf } = await importGltfRig(bytes, fileName, readSibling);
+      return { spec, name, format: ext, gltf, warnings: gltf.warnings };
+    } catch (e) {
+      if (e instanceof RigFormatError) throw e;
+      // Anything unforeseen still names the file rather than escaping as a bare TypeError.
+      throw new RigFormatError(`${fileName}: cannot read the glTF: ${(e as Error).message}`);
+    }
+  }
+  throw new RigFormatError(`${fileName}: unknown rig format (expected .json for A7, .glb or .gltf)`);
+}
