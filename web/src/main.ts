@@ -1,25 +1,34 @@
-// Stub page: loads the WebAssembly core and prints a rig's end-effector tips at rest.
-import { IkRig, loadIk } from './ik/index.js';
-import { parseA7Rig } from './rig/a7_rig.js';
+// Entry of the page (index.html): loads the WebAssembly core, then the rig named in the URL.
+import './page/page.css';
 
-const out = document.querySelector<HTMLPreElement>('#out')!;
-const input = document.querySelector<HTMLInputElement>('#file')!;
+import { loadIk } from './ik/module.js';
+import { PageApp } from './page/app.js';
+import { makeProbe } from './page/probe.js';
 
-const ik = await loadIk();
-out.textContent = 'WebAssembly core loaded.';
+function slot(id: string): HTMLElement {
+  const el = document.getElementById(id);
+  if (!el) throw new Error(`index.html has no #${id}`);
+  return el;
+}
 
-input.addEventListener('change', async () => {
-  const file = input.files?.[0];
-  if (!file) return;
-  try {
-    const rig = new IkRig(ik, parseA7Rig(await file.text(), file.name));
-    const tips = rig.tips(new Float64Array(rig.numAngles));
-    const lines = Array.from(rig.effectors(), (b, k) =>
-      `${rig.spec.names[b]}: ${Array.from(tips.subarray(3 * k, 3 * k + 3), (v) => v.toFixed(4)).join(', ')}`,
-    );
-    out.textContent = `${file.name}: ${rig.numBones} bones\n${lines.join('\n')}`;
-    rig.dispose();
-  } catch (e) {
-    out.textContent = `Could not load ${file.name}: ${(e as Error).message}`;
-  }
-});
+const root = slot('app');
+const message = slot('message');
+try {
+  const module = await loadIk();
+  const app = new PageApp(module, {
+    root,
+    viewport: slot('viewport'),
+    side: slot('side'),
+    rigName: slot('rig-name'),
+    message,
+    stepInfo: slot('step-info'),
+    selection: slot('selection'),
+  });
+  window.ikPage = makeProbe(app);
+  await app.start();
+} catch (e) {
+  root.dataset.state = 'error';
+  message.hidden = false;
+  message.dataset.kind = 'error';
+  message.textContent = `The page could not start: ${e instanceof Error ? e.message : String(e)}`;
+}

@@ -1,0 +1,551 @@
+// The page: composes the stage, the rig, the targets, the panel, the stats, the plots, compare,
+// the keyboard and the URL. Each of those lives in its own module; this one wires them and owns
+// the per-frame solve.
+import { Vector3 } from 'three';
+
+import type { IkCoreModule } from '../ik/module.js';
+import { CompareView, compareMethods } from './compare.js';
+import { FileInput } from './file_input.js';
+import { Handles } from './handles.js';
+import { Keyboard } from './keyboard.js';
+import { describeLimits } from './limits_view.js';
+import { LiveRig } from './live_rig.js';
+import { Panel, type PageSettings } from './panel.js';
+import { listenForClicks, type ViewClick } from './picking.js';
+import { ConvergencePlot } from './plots.js';
+import { DEFAULT_RIG, type LoadedRig, loadProjectRig, loadUserFile, PROJECT_RIGS } from './rig_source.js';
+import { Stage } from './scene.js';
+import { createSolver } from './solvers.js';
+import { METHOD_LABELS, type SolveOutcome, type SolveSettings } from './solver_port.js';
+import { StatsPanel } from './stats.js';
+import { readUrlState, writeUrlState } from './url_state.js';
+
+/** The page's DOM slots (see index.html). */
+export interface PageElements {
+  root: HTMLElement;
+  viewport: HTMLElement;
+  side: HTMLElement;
+  rigName: HTMLElement;
+  message: HTMLElement;
+  stepInfo: HTMLElement;
+  selection: HTMLElement;
+}
+
+/** Tolerances of PROTOCOL.md: beast (0.01, 0.002), every other rig (0.0001, 0.0002). */
+function paperTolerances(name: string): { gradientTolerance: number; errorTolerance: number } {
+  return /beast/i.test(name) ? { gradientTolerance: 0.01, errorTolerance: 0.002 } : { gradientTolerance: 1e-4, errorTolerance: 2e-4 };
+}
+
+function running(reason: string): boolean {
+  return reason === '' || reason === 'running';
+}
+
+/** Stop reasons after which the next frame goes on solving (the budget ran out, not the problem). */
+function budgetStop(reason: string): boolean {
+  return reason === 'max_iterations' || reason === 'timeout';
+}
+
+const FILE_KEY = 'file';
+const v = new Vector3();
+
+export class PageApp {
+  readonly settings: PageSettings;
+  private readonly stage: Stage;
+  private readonly handles: Handles;
+  private readonly stats: StatsPanel;
+  private readonly plot: ConvergencePlot;
+  private readonly compareView: CompareView;
+  private readonly keyboard: Keyboard;
+  private readonly panel: Panel;
+  private readonly files: FileInput;
+  private readonly stopClicks: () => void;
+  private live: LiveRig | null = null;
+  private rigKey: string | null = null;
+  private loadToken = 0;
+  private needsSolve = false;
+  private needsRedraw = false;
+  private stepDirty = true;
+  private lastTick = 0;
+  private busy = false;
+  private draggedEffector: number | null = null;
+  /** Completed loads, successful or not (for tests and tools). */
+  loads = 0;
+
+  constructor(private readonly module: IkCoreModule, private readonly el: PageElements) {
+    const url = readUrlState();
+    const rig = url.rig && PROJECT_RIGS[url.rig] ? url.rig : DEFAULT_RIG;
+    this.settings = {
+      rig,
+      method: url.method ?? 'lm',
+      ...paperTolerances(rig),
+      maxIterations: 50,
+      timeBudgetMs: 3,
+      restarts: 0,
+      compareTimeBudgetMs: 1000,
+      compareMaxIterations: 100000,
+      showMesh: true,
+      showBones: true,
+      gizmo: 'translate',
+      clickBone: 'toggle effector',
+      stepMode: false,
+      autoStep: false,
+      stepIntervalMs: 600,
+    };
+
+    this.stage = new Stage(el.viewport);
+    this.handles = new Handles(this.stage); // before the orbit connects: the gizmo sees pointers first
+    this.stage.connectOrbit();
+    this.handles.onTargetMoved = (k, x, y, z) => this.moveTarget(k, x, y, z);
+    this.handles.onDragging = (dragging) => {
+      this.draggedEffector = dragging ? this.handles.selected : null;
+      el.root.dataset.dragging = String(dragging);
+    };
+
+    this.stats = new StatsPanel(el.side);
+    this.plot = new ConvergencePlot(el.side);
+    this.compareView = new CompareView(el.root);
+    this.files = new FileInput(el.root, (f) => void this.loadFile(f));
+
+    const rigOptions: Record<string, string> = {};
+    for (const [key, r] of Object.entries(PROJECT_RIGS)) rigOptions[r.label] = key;
+    rigOptions['(a file)'] = FILE_KEY;
+    this.panel = new Panel(el.side, this.settings, rigOptions, {
+      rigChanged: (key) => (key === FILE_KEY ? this.files.choose() : void this.loadProject(key)),
+      openFile: () => this.files.choose(),
+      methodChanged: () => this.methodChanged(),
+      settingsChanged: () => this.invalidate(),
+      displayChanged: () => this.applyDisplay(),
+      gizmoChanged: () => this.handles.setMode(this.settings.gizmo),
+      stepModeChanged: () => this.stepModeChanged(),
+      resetPose: () => this.resetPose(),
+      step: () => this.step(),
+      compare: () => void this.compare(),
+      help: () => this.keyboard.toggle(),
+    });
+    if (window.matchMedia('(max-width: 700px)').matches) this.panel.gui.close();
+    el.side.replaceChildren(this.stats.element, el.stepInfo, el.selection, this.plot.element, this.panel.gui.domElement);
+
+    this.keyboard = new Keyboard(el.root, [
+      { keys: ['R'], label: 'reset the pose', run: () => this.resetPose() },
+      { keys: ['W'], label: 'gizmo: translate the target', run: () => this.setGizmo('translate') },
+      { keys: ['E'], label: 'gizmo: rotate the target about the root joint', run: () => this.setGizmo('rotate') },
+      { keys: ['S'], label: 'step mode: one iteration', run: () => this.step() },
+      { keys: ['C'], label: 'compare every method from the current pose', run: () => void this.compare() },
+      { keys: ['?', 'H'], label: 'show or hide this help', run: () => this.keyboard.toggle() },
+      { keys: ['Escape'], label: 'close this help', run: () => this.keyboard.toggle(false) },
+    ]);
+
+    this.stopClicks = listenForClicks(
+      this.stage.canvas,
+      this.stage.camera,
+      () => this.handles.dragging || this.handles.hovering,
+      (c) => this.click(c),
+    );
+    this.stage.onFrame(() => this.frame());
+  }
+
+  /** Loads the rig named in the URL (or the default). */
+  start(): Promise<void> {
+    return this.loadProject(this.settings.rig);
+  }
+
+  get current(): LiveRig | null {
+    return this.live;
+  }
+
+  get camera(): Stage['camera'] {
+    return this.stage.camera;
+  }
+
+  get canvas(): HTMLCanvasElement {
+    return this.stage.canvas;
+  }
+
+  /** Screen position (client pixels) of a world point, for tests and tools. */
+  toScreen(p: Vector3): { x: number; y: number } {
+    const rect = this.stage.canvas.getBoundingClientRect();
+    v.copy(p).project(this.stage.camera);
+    return { x: rect.left + ((v.x + 1) / 2) * rect.width, y: rect.top + ((1 - v.y) / 2) * rect.height };
+  }
+
+  get selectedTarget(): number | null {
+    return this.handles.selected;
+  }
+
+  async loadProject(key: string): Promise<void> {
+    const entry = PROJECT_RIGS[key];
+    await this.load(() => loadProjectRig(key), entry ? entry.file : key, key);
+  }
+
+  async loadFile(file: File): Promise<void> {
+    await this.load(() => loadUserFile(file), file.name, null);
+  }
+
+  dispose(): void {
+    this.loadToken++;
+    this.live?.dispose();
+    this.live = null;
+    this.stopClicks();
+    this.keyboard.dispose();
+    this.files.dispose();
+    this.panel.dispose();
+    this.compareView.dispose();
+    this.plot.dispose();
+    this.handles.dispose();
+    this.stage.dispose();
+  }
+
+  // ---- loading -------------------------------------------------------------------------------
+
+  private async load(read: () => Promise<LoadedRig>, what: string, key: string | null): Promise<void> {
+    const token = ++this.loadToken;
+    this.el.root.dataset.state = 'loading';
+    this.showMessage(`loading ${what}…`, 'info');
+    let live: LiveRig | null = null;
+    try {
+      const loaded = await read();
+      live = await LiveRig.create(this.module, loaded, createSolver);
+    } catch (e) {
+      if (token !== this.loadToken) return;
+      const msg = e instanceof Error ? e.message : String(e);
+      this.showMessage(`Could not load ${what}: ${msg}${this.live ? ` — still showing ${this.live.name}` : ''}`, 'error');
+      this.panel.showRig(this.rigKey ?? FILE_KEY);
+      this.el.root.dataset.state = this.live ? 'ready' : 'error';
+      this.loads++;
+      return;
+    }
+    if (token !== this.loadToken) {
+      live.dispose();
+      return;
+    }
+    this.install(live, key);
+    this.showMessage('', 'info');
+    this.el.root.dataset.state = 'ready';
+    this.loads++;
+  }
+
+  private install(live: LiveRig, key: string | null): void {
+    const old = this.live;
+    if (old) {
+      for (const o of old.objects) this.stage.scene.remove(o);
+      old.dispose();
+    }
+    this.live = live;
+    this.rigKey = key;
+    this.stage.scene.add(...live.objects);
+    this.panel.showRig(key ?? FILE_KEY);
+    Object.assign(this.settings, paperTolerances(live.name));
+    this.panel.refresh();
+    writeUrlState({ rig: key, method: this.settings.method });
+
+    const s = live.session;
+    this.handles.setRigSize(live.view.size);
+    this.handles.select(null);
+    this.handles.setTargets(s.targets);
+    this.handles.setPivot(live.view.boneBase(0, v));
+    this.handles.setMode(this.settings.gizmo);
+    this.applyDisplay();
+    this.stage.frame(live.view.bounds());
+
+    const effectors = s.effectors().length;
+    this.el.rigName.textContent = `${live.name} — ${live.loaded.format}, ${s.rig.numBones} bones, ${effectors} end effector${effectors === 1 ? '' : 's'}`;
+    this.el.root.dataset.rig = live.name;
+    this.stats.reset();
+    this.stats.showIdle(this.settings.method, s.objective());
+    this.plot.clear();
+    this.compareView.hide();
+    this.needsSolve = false;
+    this.stepDirty = true;
+    this.showSelection();
+    this.showStepInfo('');
+    this.needsRedraw = true;
+  }
+
+  // ---- per frame -----------------------------------------------------------------------------
+
+  private frame(): void {
+    const live = this.live;
+    if (!live || this.busy) return;
+    if (this.settings.stepMode) {
+      const now = performance.now();
+      if (this.settings.autoStep && now - this.lastTick >= this.settings.stepIntervalMs) {
+        this.lastTick = now;
+        this.step();
+      }
+    } else if (this.needsSolve || this.handles.dragging) {
+      this.solveFrame(live);
+    }
+    if (this.needsRedraw) {
+      this.needsRedraw = false;
+      live.redraw();
+      this.handles.sync(live.session.targets, live.session.tips());
+      if (live.selectedBone !== null) this.showSelection();
+    }
+  }
+
+  /** Per-frame solving: never restarts, bounded by the panel's iteration cap and time budget. */
+  private frameSettings(): SolveSettings {
+    const s = this.settings;
+    return {
+      gradientTolerance: s.gradientTolerance,
+      errorTolerance: s.errorTolerance,
+      maxIterations: s.maxIterations,
+      timeBudgetMs: s.timeBudgetMs,
+      restarts: 0,
+    };
+  }
+
+  private solveFrame(live: LiveRig): void {
+    const session = live.session;
+    if (session.effectors().length === 0) {
+      this.needsSolve = false;
+      return;
+    }
+    let out: SolveOutcome;
+    const t0 = performance.now();
+    try {
+      out = session.solve(this.settings.method, this.frameSettings());
+    } catch (e) {
+      this.needsSolve = false;
+      this.showMessage(`solver error: ${e instanceof Error ? e.message : String(e)}`, 'error');
+      return;
+    }
+    const ms = performance.now() - t0;
+    this.needsSolve = budgetStop(out.stopReason);
+    if (out.iterations > 0) this.plot.record(this.settings.method, out.history);
+    this.stats.show({
+      method: this.settings.method,
+      iterations: out.iterations,
+      E: out.E,
+      gradNorm: out.gradNorm,
+      stopReason: out.stopReason,
+      ms,
+      pinnedDrift: this.pinnedDrift(session.tips(), session.targets),
+    });
+    this.needsRedraw = true;
+  }
+
+  /** Largest tip-to-target distance over the effectors not being dragged. */
+  private pinnedDrift(tips: Float64Array, targets: Float64Array): number {
+    let worst = 0;
+    for (let k = 0; k < targets.length / 3; k++) {
+      if (k === this.draggedEffector) continue;
+      const d = Math.hypot(tips[3 * k] - targets[3 * k], tips[3 * k + 1] - targets[3 * k + 1], tips[3 * k + 2] - targets[3 * k + 2]);
+      worst = Math.max(worst, d);
+    }
+    return worst;
+  }
+
+  private moveTarget(k: number, x: number, y: number, z: number): void {
+    const live = this.live;
+    if (!live) return;
+    const t = live.session.targets;
+    t[3 * k] = x;
+    t[3 * k + 1] = y;
+    t[3 * k + 2] = z;
+    this.invalidate();
+  }
+
+  /** Something the solve depends on changed: solve again (or restart the step-mode solve). */
+  private invalidate(): void {
+    this.needsSolve = true;
+    this.stepDirty = true;
+    this.needsRedraw = true;
+    if (this.settings.stepMode) this.live?.showGhost(null);
+  }
+
+  // ---- panel and keyboard actions ------------------------------------------------------------
+
+  private methodChanged(): void {
+    writeUrlState({ rig: this.rigKey, method: this.settings.method });
+    this.live?.session.endSteps();
+    this.invalidate();
+    if (this.live) this.stats.showIdle(this.settings.method, this.live.session.objective());
+  }
+
+  private setGizmo(mode: PageSettings['gizmo']): void {
+    this.settings.gizmo = mode;
+    this.handles.setMode(mode);
+    this.panel.refresh();
+  }
+
+  private applyDisplay(): void {
+    const live = this.live;
+    if (!live) return;
+    live.view.setMeshVisible(this.settings.showMesh);
+    live.view.setBonesVisible(this.settings.showBones || !live.view.hasMesh);
+  }
+
+  private resetPose(): void {
+    const live = this.live;
+    if (!live) return;
+    live.session.reset();
+    live.showGhost(null);
+    this.handles.setTargets(live.session.targets);
+    this.needsSolve = false;
+    this.stepDirty = true;
+    this.needsRedraw = true;
+    this.stats.showIdle(this.settings.method, live.session.objective());
+    this.showStepInfo('');
+    this.showSelection();
+  }
+
+  private stepModeChanged(): void {
+    const live = this.live;
+    this.stepDirty = true;
+    if (!this.settings.stepMode) {
+      live?.session.endSteps();
+      live?.showGhost(null);
+      this.showStepInfo('');
+      this.needsSolve = true;
+    } else {
+      this.showStepInfo('step mode: press S (or “one iteration”) to take one iteration; drag a target to pose a new problem');
+    }
+  }
+
+  /** One iteration of the current method; shows the previous iterate as a ghost and the step taken. */
+  private step(): void {
+    const live = this.live;
+    if (!live || this.busy) return;
+    if (!this.settings.stepMode) {
+      this.settings.stepMode = true;
+      this.panel.refresh();
+    }
+    const session = live.session;
+    if (session.effectors().length === 0) return;
+    const s = this.settings;
+    const method = s.method;
+    try {
+      if (this.stepDirty || session.steppingMethod !== method) {
+        session.beginSteps(method, {
+          gradientTolerance: s.gradientTolerance,
+          errorTolerance: s.errorTolerance,
+          maxIterations: s.compareMaxIterations,
+          timeBudgetMs: Infinity,
+          restarts: 0,
+        });
+        this.stepDirty = false;
+      }
+      const before = session.angles;
+      const E0 = session.objective();
+      const out = session.step();
+      let len = 0;
+      for (let j = 0; j < before.length; j++) len += (out.angles[j] - before[j]) ** 2;
+      len = Math.sqrt(len);
+      live.showGhost(len > 0 ? before : null);
+      this.plot.record(method, out.history);
+      this.stats.show(
+        { method, iterations: out.iterations, E: out.E, gradNorm: out.gradNorm, stopReason: out.stopReason, ms: out.elapsedSeconds * 1000, pinnedDrift: this.pinnedDrift(session.tips(), session.targets) },
+        false,
+      );
+      const alpha = out.stepLength !== null ? `, line-search step α = ${out.stepLength.toPrecision(3)}` : '';
+      const state = running(out.stopReason) ? 'running' : `stopped: ${out.stopReason}`;
+      this.showStepInfo(
+        `${METHOD_LABELS[method]}, iteration ${out.iterations}: E ${E0.toExponential(3)} → ${out.E.toExponential(3)}; |ΔA| = ${len.toPrecision(3)}°${alpha} (${state}). Faint bones: the previous iterate.`,
+      );
+      this.el.stepInfo.dataset.iterations = String(out.iterations);
+      this.needsRedraw = true;
+    } catch (e) {
+      this.showMessage(`solver error: ${e instanceof Error ? e.message : String(e)}`, 'error');
+    }
+  }
+
+  private async compare(): Promise<void> {
+    const live = this.live;
+    if (!live || this.busy) return;
+    this.busy = true;
+    const s = this.settings;
+    const settings: SolveSettings = {
+      gradientTolerance: s.gradientTolerance,
+      errorTolerance: s.errorTolerance,
+      maxIterations: s.compareMaxIterations,
+      timeBudgetMs: s.compareTimeBudgetMs,
+      restarts: s.restarts,
+    };
+    this.compareView.begin(`${live.name}, from the current pose (budget ${s.compareTimeBudgetMs} ms, restarts ${s.restarts})`);
+    try {
+      await compareMethods(live.session, settings, (row) => {
+        this.compareView.addRow(row);
+        if (row.outcome) this.plot.record(row.method, row.outcome.history);
+      });
+    } finally {
+      this.compareView.end();
+      this.busy = false;
+    }
+  }
+
+  // ---- clicks --------------------------------------------------------------------------------
+
+  private click(c: ViewClick): void {
+    const live = this.live;
+    if (!live) return;
+    const target = this.handles.pick(c.raycaster);
+    if (target !== null) {
+      this.handles.select(target);
+      return;
+    }
+    const bone = live.view.pick(c.raycaster);
+    live.selectedBone = bone;
+    if (bone !== null && !c.shiftKey && this.settings.clickBone === 'toggle effector') this.toggleEffector(bone);
+    this.needsRedraw = true;
+    this.showSelection();
+  }
+
+  private toggleEffector(bone: number): void {
+    const live = this.live;
+    if (!live) return;
+    const list = Array.from(live.session.effectors());
+    const at = list.indexOf(bone);
+    if (at >= 0) {
+      if (list.length === 1) {
+        this.showMessage('a rig keeps at least one end effector', 'info');
+        return;
+      }
+      list.splice(at, 1);
+    } else {
+      list.push(bone);
+    }
+    live.session.setEffectors(list);
+    this.handles.setTargets(live.session.targets);
+    if (at < 0) this.handles.select(list.length - 1);
+    this.invalidate();
+    const n = list.length;
+    this.el.rigName.textContent = `${live.name} — ${live.loaded.format}, ${live.session.rig.numBones} bones, ${n} end effector${n === 1 ? '' : 's'}`;
+    this.stats.showIdle(this.settings.method, live.session.objective());
+  }
+
+  // ---- text ----------------------------------------------------------------------------------
+
+  private showSelection(): void {
+    const live = this.live;
+    const box = this.el.selection;
+    box.replaceChildren();
+    if (!live || live.selectedBone === null) {
+      box.textContent = 'Click a bone to make its tip an end effector or remove it (shift-click: show its joint limits only).';
+      return;
+    }
+    const i = live.selectedBone;
+    const spec = live.session.spec;
+    const title = document.createElement('strong');
+    const isEffector = live.session.effectors().includes(i);
+    title.textContent = `${spec.names[i] || `bone ${i}`}${isEffector ? ' (end effector)' : ''}`;
+    const list = document.createElement('ul');
+    for (const line of describeLimits(spec, i, live.session.angles)) {
+      const li = document.createElement('li');
+      li.textContent = line;
+      list.append(li);
+    }
+    box.append(title, list);
+  }
+
+  private showStepInfo(text: string): void {
+    this.el.stepInfo.textContent = text;
+    this.el.stepInfo.hidden = text === '';
+  }
+
+  private showMessage(text: string, kind: 'info' | 'error'): void {
+    this.el.message.textContent = text;
+    this.el.message.dataset.kind = kind;
+    this.el.message.hidden = text === '';
+  }
+}

@@ -1,0 +1,77 @@
+// One loaded rig with everything made for it: the IK session (WebAssembly), the bone view, the
+// step-mode ghost, the joint-limit sectors and the skinned mesh. dispose() frees all of it;
+// create() frees what it made if any part fails, so a failed load leaks nothing.
+import type { Object3D } from 'three';
+
+import type { IkCoreModule } from '../ik/module.js';
+import { LimitsView } from './limits_view.js';
+import type { LoadedRig } from './rig_source.js';
+import { RigView } from './rig_view.js';
+import { IkSession } from './session.js';
+import type { SolverFactory } from './solver_port.js';
+
+export class LiveRig {
+  /** Bone selected for the limits readout, or null. */
+  selectedBone: number | null = null;
+
+  private constructor(
+    readonly loaded: LoadedRig,
+    readonly session: IkSession,
+    readonly view: RigView,
+    readonly ghost: RigView,
+    readonly limits: LimitsView,
+  ) {}
+
+  static async create(module: IkCoreModule, loaded: LoadedRig, makeSolver: SolverFactory, withMesh = true): Promise<LiveRig> {
+    const made: { dispose(): void }[] = [];
+    try {
+      const session = new IkSession(module, loaded.spec, makeSolver);
+      made.push(session);
+      const poses = session.poses();
+      const view = new RigView(loaded.spec, poses);
+      made.push(view);
+      const ghost = new RigView(loaded.spec, poses, true);
+      made.push(ghost);
+      ghost.root.visible = false;
+      const limits = new LimitsView(loaded.spec, view.size);
+      made.push(limits);
+      if (withMesh && loaded.makeMesh) view.attachMesh(await loaded.makeMesh());
+      const live = new LiveRig(loaded, session, view, ghost, limits);
+      live.redraw();
+      return live;
+    } catch (e) {
+      for (const m of made.reverse()) m.dispose();
+      throw e;
+    }
+  }
+
+  get name(): string {
+    return this.loaded.name;
+  }
+
+  /** The objects to add to the scene. */
+  get objects(): Object3D[] {
+    return [this.view.root, this.ghost.root, this.limits.root];
+  }
+
+  /** Poses the view (bones, mesh, limits) from the session's current angles. */
+  redraw(): void {
+    const s = this.session;
+    this.view.update(s.poses(), s.effectors(), this.selectedBone, s.angles);
+    this.limits.select(this.selectedBone);
+    this.limits.update(this.view, s.angles);
+  }
+
+  /** Shows `angles` as the ghost (the previous iterate), or hides it with null. */
+  showGhost(angles: Float64Array | null): void {
+    this.ghost.root.visible = angles !== null;
+    if (angles) this.ghost.update(this.session.rig.poses(angles), new Int32Array(0), null);
+  }
+
+  dispose(): void {
+    this.limits.dispose();
+    this.ghost.dispose();
+    this.view.dispose();
+    this.session.dispose();
+  }
+}

@@ -1,0 +1,99 @@
+// The method panel (lil-gui): rig choice, method, tolerances, per-frame budget, display options
+// and the teaching actions. It edits a PageSettings record and calls the page back; every label
+// it shows is set as text by lil-gui.
+import GUI, { type Controller } from 'lil-gui';
+
+import type { GizmoMode } from './handles.js';
+import { METHODS, type Method } from './solver_port.js';
+
+export type ClickAction = 'toggle effector' | 'select only';
+
+export interface PageSettings {
+  rig: string;
+  method: Method;
+  gradientTolerance: number;
+  errorTolerance: number;
+  maxIterations: number;
+  timeBudgetMs: number;
+  restarts: number;
+  compareTimeBudgetMs: number;
+  compareMaxIterations: number;
+  showMesh: boolean;
+  showBones: boolean;
+  gizmo: GizmoMode;
+  clickBone: ClickAction;
+  stepMode: boolean;
+  autoStep: boolean;
+  stepIntervalMs: number;
+}
+
+export interface PanelActions {
+  rigChanged(key: string): void;
+  openFile(): void;
+  methodChanged(): void;
+  settingsChanged(): void;
+  displayChanged(): void;
+  gizmoChanged(): void;
+  stepModeChanged(): void;
+  resetPose(): void;
+  step(): void;
+  compare(): void;
+  help(): void;
+}
+
+export class Panel {
+  readonly gui: GUI;
+  private readonly rigController: Controller;
+
+  constructor(
+    container: HTMLElement,
+    readonly settings: PageSettings,
+    rigs: Record<string, string>,
+    actions: PanelActions,
+  ) {
+    this.gui = new GUI({ container, title: 'IK controls' });
+    const s = settings;
+
+    const rig = this.gui.addFolder('Rig');
+    this.rigController = rig.add(s, 'rig', rigs).name('project rig').onChange((v: string) => actions.rigChanged(v));
+    rig.add({ open: () => actions.openFile() }, 'open').name('open .glb / .gltf / .json…');
+    rig.add(s, 'showMesh').name('show mesh').onChange(() => actions.displayChanged());
+    rig.add(s, 'showBones').name('show bones').onChange(() => actions.displayChanged());
+    rig.add(s, 'clickBone', ['toggle effector', 'select only']).name('click on a bone');
+    rig.add(s, 'gizmo', ['translate', 'rotate']).name('gizmo (W / E)').onChange(() => actions.gizmoChanged());
+    rig.add({ reset: () => actions.resetPose() }, 'reset').name('reset pose (R)');
+
+    const solver = this.gui.addFolder('Solver (every frame)');
+    solver.add(s, 'method', [...METHODS]).name('method').onChange(() => actions.methodChanged());
+    solver.add(s, 'gradientTolerance').name('‖∇E‖ tolerance').onChange(() => actions.settingsChanged());
+    solver.add(s, 'errorTolerance').name('E tolerance').onChange(() => actions.settingsChanged());
+    solver.add(s, 'maxIterations', 1, 1000, 1).name('iterations / frame').onChange(() => actions.settingsChanged());
+    solver.add(s, 'timeBudgetMs', 0.25, 16, 0.25).name('ms budget / frame').onChange(() => actions.settingsChanged());
+
+    const teach = this.gui.addFolder('Teaching');
+    teach.add(s, 'stepMode').name('step mode').onChange(() => actions.stepModeChanged());
+    teach.add({ step: () => actions.step() }, 'step').name('one iteration (S)');
+    teach.add(s, 'autoStep').name('slow tick');
+    teach.add(s, 'stepIntervalMs', 100, 3000, 50).name('tick (ms)');
+    teach.add({ compare: () => actions.compare() }, 'compare').name('compare all methods (C)');
+    teach.add(s, 'compareTimeBudgetMs', 10, 5000, 10).name('compare: ms budget');
+    teach.add(s, 'compareMaxIterations', 1, 100000, 1).name('compare: iterations');
+    teach.add(s, 'restarts', 0, 20, 1).name('compare: restarts');
+    teach.add({ help: () => actions.help() }, 'help').name('keyboard help (?)');
+  }
+
+  /** Re-reads every value (after keyboard shortcuts or URL changes). */
+  refresh(): void {
+    for (const c of this.gui.controllersRecursive()) c.updateDisplay();
+  }
+
+  /** Shows the rig choice without calling back (e.g. a dropped file: no project rig selected). */
+  showRig(key: string): void {
+    this.settings.rig = key;
+    this.rigController.updateDisplay();
+  }
+
+  dispose(): void {
+    this.gui.destroy();
+  }
+}

@@ -1,0 +1,62 @@
+// A small read-only window onto the page for browser tests and tools: screen positions of
+// targets and bones, the camera, and what is loaded. Set as window.ikPage by main.ts.
+import { Vector3 } from 'three';
+
+import type { PageApp } from './app.js';
+
+export interface ScreenPoint {
+  x: number;
+  y: number;
+}
+
+export interface PageProbe {
+  /** Loads finished so far, successful or not. */
+  loads(): number;
+  rigName(): string | null;
+  effectors(): number[];
+  /** Where target k is on screen (client pixels), or null. */
+  targetScreen(k: number): ScreenPoint | null;
+  /** Where the middle of bone i is on screen, or null. */
+  boneScreen(i: number): ScreenPoint | null;
+  /** Index of the target holding the gizmo. */
+  selectedTarget(): number | null;
+  cameraPosition(): [number, number, number];
+  /** Distance from effector k's tip to its target. */
+  effectorError(k: number): number;
+}
+
+declare global {
+  interface Window {
+    ikPage?: PageProbe;
+  }
+}
+
+export function makeProbe(app: PageApp): PageProbe {
+  const a = new Vector3(), b = new Vector3();
+  return {
+    loads: () => app.loads,
+    rigName: () => app.current?.name ?? null,
+    effectors: () => Array.from(app.current?.session.effectors() ?? []),
+    targetScreen(k) {
+      const live = app.current;
+      if (!live || k < 0 || 3 * k >= live.session.targets.length) return null;
+      return app.toScreen(a.fromArray(live.session.targets, 3 * k));
+    },
+    boneScreen(i) {
+      const live = app.current;
+      if (!live || i < 0 || i >= live.session.rig.numBones) return null;
+      live.view.boneBase(i, a);
+      live.view.boneTip(i, b);
+      return app.toScreen(a.lerp(b, 0.5));
+    },
+    selectedTarget: () => app.selectedTarget,
+    cameraPosition: () => app.camera.position.toArray() as [number, number, number],
+    effectorError(k) {
+      const live = app.current;
+      if (!live) return NaN;
+      const tips = live.session.tips();
+      const t = live.session.targets;
+      return Math.hypot(tips[3 * k] - t[3 * k], tips[3 * k + 1] - t[3 * k + 1], tips[3 * k + 2] - t[3 * k + 2]);
+    },
+  };
+}

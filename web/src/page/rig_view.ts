@@ -1,0 +1,218 @@
+// Draws a rig: one instanced "bone" shape per bone from its pose transform, a sphere per joint,
+// and optionally the skinned mesh (posed by a MeshBinding). Bone colours mark end effectors and
+// the selected bone. Everything made here is freed by dispose().
+import {
+  Box3,
+  BufferGeometry,
+  Color,
+  Float32BufferAttribute,
+  Group,
+  InstancedMesh,
+  Matrix4,
+  MeshStandardMaterial,
+  type Object3D,
+  type Raycaster,
+  SphereGeometry,
+  Vector3,
+} from 'three';
+
+import type { RigSpec } from '../ik/rig_spec.js';
+
+/** A mesh driven by solver angles (degrees); made by the glTF write-back of web/src/three/. */
+export interface MeshBinding {
+  readonly object: Object3D;
+  apply(angles: Float64Array): void;
+  dispose(): void;
+}
+
+const BONE = new Color(0x9fb4d0);
+const EFFECTOR = new Color(0xff9a3c);
+const SELECTED = new Color(0xffe45c);
+const GHOST = new Color(0x8fe3ff);
+
+// Scratch objects: the per-frame path allocates nothing of its own.
+const mPose = new Matrix4();
+const mRest = new Matrix4();
+const mBone = new Matrix4();
+const mScale = new Matrix4();
+const v = new Vector3();
+
+/** Copies the row-major 4x4 at `offset` of `src` into a three.js (column-major) matrix. */
+export function setRowMajor(out: Matrix4, src: ArrayLike<number>, offset: number): Matrix4 {
+  const s = src;
+  const o = offset;
+  return out.set(
+    s[o], s[o + 1], s[o + 2], s[o + 3],
+    s[o + 4], s[o + 5], s[o + 6], s[o + 7],
+    s[o + 8], s[o + 9], s[o + 10], s[o + 11],
+    s[o + 12], s[o + 13], s[o + 14], s[o + 15],
+  );
+}
+
+/** An elongated octahedron from (0,0,0) to (1,0,0), the classic bone glyph. */
+function boneGeometry(): BufferGeometry {
+  const w = 0.1, h = 0.18;
+  const p = [
+    [0, 0, 0], [h, w, 0], [h, 0, w], [h, -w, 0], [h, 0, -w], [1, 0, 0],
+  ];
+  const faces = [
+    [0, 2, 1], [0, 3, 2], [0, 4, 3], [0, 1, 4],
+    [5, 1, 2], [5, 2, 3], [5, 3, 4], [5, 4, 1],
+  ];
+  const pos: number[] = [];
+  for (const f of faces) for (const i of f) pos.push(...p[i]);
+  const g = new BufferGeometry();
+  g.setAttribute('position', new Float32BufferAttribute(pos, 3));
+  g.computeVertexNormals();
+  return g;
+}
+
+export class RigView {
+  readonly root = new Group();
+  /** A length for sizing markers: the diagonal of the rest pose's bounding box. */
+  readonly size: number;
+  private readonly bones: InstancedMesh;
+  private readonly joints: InstancedMesh;
+  private readonly boneWorld: Float64Array; // 16 per bone, column-major (three.js), bone frame
+  private mesh: MeshBinding | null = null;
+  private colorsKey = '';
+
+  /** `ghost`: a faint copy used to show the previous iterate in step mode. */
+  constructor(readonly spec: RigSpec, restPoses: Float64Array, private readonly ghost = false) {
+    const n = spec.parents.length;
+    this.boneWorld = new Float64Array(16 * n);
+    const box = new Box3();
+    for (let i = 0; i < n; i++) {
+      this.frameOf(restPoses, i, mBone);
+      box.expandByPoint(v.setFromMatrixPosition(mBone));
+      box.expandByPoint(v.set(spec.lengths[i], 0, 0).applyMatrix4(mBone));
+    }
+    this.size = Math.max(box.getSize(v).length(), 1e-3);
+
+    const boneMat = new MeshStandardMaterial({
+      color: 0xffffff, roughness: 0.5, metalness: 0.1, depthTest: false, transparent: true, opacity: ghost ? 0.3 : 0.92,
+      depthWrite: !ghost,
+    });
+    this.bones = new InstancedMesh(boneGeometry(), boneMat, n);
+    this.bones.name = 'bones';
+    this.bones.frustumCulled = false;
+    this.bones.renderOrder = ghost ? 9 : 10;
+    for (let i = 0; i < n; i++) this.bones.setColorAt(i, BONE);
+
+    const jointMat = new MeshStandardMaterial({ color: 0xe8eef7, roughness: 0.6, depthTest: false, transparent: true });
+    this.joints = new InstancedMesh(new SphereGeometry(1, 12, 8), jointMat, n);
+    this.joints.name = 'joints';
+    this.joints.frustumCulled = false;
+    this.joints.renderOrder = 11;
+    this.joints.visible = !ghost;
+    this.root.add(this.bones, this.joints);
+    this.update(restPoses, new Int32Array(0), null);
+  }
+
+  /** Adds the skinned mesh; the view owns it from now on (disposed with the view). */
+  attachMesh(binding: MeshBinding): void {
+    this.mesh?.dispose();
+    this.mesh = binding;
+    this.root.add(binding.object);
+  }
+
+  get hasMesh(): boolean {
+    return this.mesh !== null;
+  }
+
+  setMeshVisible(visible: boolean): void {
+    if (this.mesh) this.mesh.object.visible = visible;
+  }
+
+  setBonesVisible(visible: boolean): void {
+    this.bones.visible = visible;
+    this.joints.visible = visible && !this.ghost;
+  }
+
+  /** Poses every bone from `poses` (16 row-major numbers per bone) and the mesh from `angles`. */
+  update(poses: Float64Array, effectors: Int32Array, selected: number | null, angles?: Float64Array): void {
+    const n = this.spec.parents.length;
+    const jointRadius = this.size * 0.008;
+    for (let i = 0; i < n; i++) {
+      this.frameOf(poses, i, mBone);
+      mBone.toArray(this.boneWorld, 16 * i);
+      const len = this.spec.lengths[i];
+      const thick = Math.min(len, this.size * 0.25);
+      mScale.makeScale(len, thick, thick);
+      this.bones.setMatrixAt(i, mPose.multiplyMatrices(mBone, mScale));
+      v.setFromMatrixPosition(mBone);
+      this.joints.setMatrixAt(i, mPose.makeScale(jointRadius, jointRadius, jointRadius).setPosition(v));
+    }
+    this.bones.instanceMatrix.needsUpdate = true;
+    this.joints.instanceMatrix.needsUpdate = true;
+    this.bones.computeBoundingSphere();
+    this.recolor(effectors, selected);
+    if (angles && this.mesh) this.mesh.apply(angles);
+  }
+
+  /** World frame of bone i's canonical bone (T_i * rest_i) at the last update. */
+  boneFrame(i: number, out: Matrix4): Matrix4 {
+    return out.fromArray(this.boneWorld, 16 * i);
+  }
+
+  boneBase(i: number, out: Vector3): Vector3 {
+    return out.setFromMatrixPosition(this.boneFrame(i, mBone));
+  }
+
+  boneTip(i: number, out: Vector3): Vector3 {
+    return out.set(this.spec.lengths[i], 0, 0).applyMatrix4(this.boneFrame(i, mBone));
+  }
+
+  /** Bounds of the bones (and mesh) at the last update. */
+  bounds(): Box3 {
+    const box = new Box3();
+    for (let i = 0; i < this.spec.parents.length; i++) {
+      box.expandByPoint(this.boneBase(i, v));
+      box.expandByPoint(this.boneTip(i, v));
+    }
+    if (this.mesh && this.mesh.object.visible) box.expandByObject(this.mesh.object);
+    return box;
+  }
+
+  /** The bone under the ray, or null. Bones of length 0 cannot be picked. */
+  pick(raycaster: Raycaster): number | null {
+    if (!this.bones.visible) return null;
+    const hits = raycaster.intersectObject(this.bones, false);
+    for (const h of hits) if (h.instanceId !== undefined && this.spec.lengths[h.instanceId] > 0) return h.instanceId;
+    return null;
+  }
+
+  dispose(): void {
+    this.mesh?.dispose();
+    this.mesh = null;
+    for (const m of [this.bones, this.joints]) {
+      m.geometry.dispose();
+      (m.material as MeshStandardMaterial).dispose();
+      m.dispose();
+    }
+    this.root.removeFromParent();
+    this.root.clear();
+  }
+
+  /** T_i * rest_i from the row-major pose array and the spec's rest transforms. */
+  private frameOf(poses: Float64Array, i: number, out: Matrix4): Matrix4 {
+    setRowMajor(mPose, poses, 16 * i);
+    setRowMajor(mRest, this.spec.rest, 16 * i);
+    return out.multiplyMatrices(mPose, mRest);
+  }
+
+  private recolor(effectors: Int32Array, selected: number | null): void {
+    const key = `${Array.from(effectors).join(',')}|${selected}`;
+    if (key === this.colorsKey) return;
+    this.colorsKey = key;
+    const n = this.spec.parents.length;
+    for (let i = 0; i < n; i++) this.bones.setColorAt(i, this.ghost ? GHOST : BONE);
+    if (this.ghost) {
+      if (this.bones.instanceColor) this.bones.instanceColor.needsUpdate = true;
+      return;
+    }
+    for (const e of effectors) this.bones.setColorAt(e, EFFECTOR);
+    if (selected !== null) this.bones.setColorAt(selected, SELECTED);
+    if (this.bones.instanceColor) this.bones.instanceColor.needsUpdate = true;
+  }
+}

@@ -1,0 +1,119 @@
+// The three.js stage: renderer, camera, OrbitControls, lights and a ground grid, sized to its
+// container (ResizeObserver), with a render loop that calls the page's per-frame work first.
+import {
+  AmbientLight,
+  Box3,
+  Color,
+  DirectionalLight,
+  GridHelper,
+  HemisphereLight,
+  PerspectiveCamera,
+  Scene,
+  Sphere,
+  Vector3,
+  WebGLRenderer,
+} from 'three';
+import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
+
+export type FrameCallback = (seconds: number) => void;
+
+export class Stage {
+  readonly renderer: WebGLRenderer;
+  readonly scene = new Scene();
+  readonly camera = new PerspectiveCamera(45, 1, 0.01, 1000);
+  /** Made unconnected: connect() it after every control that must see pointer events first. */
+  readonly orbit: OrbitControls;
+  private readonly grid: GridHelper;
+  private readonly resizeObserver: ResizeObserver;
+  private readonly callbacks: FrameCallback[] = [];
+  private last = 0;
+
+  constructor(readonly container: HTMLElement) {
+    this.renderer = new WebGLRenderer({ antialias: true, preserveDrawingBuffer: false });
+    this.renderer.setPixelRatio(Math.min(window.devicePixelRatio, 2));
+    const canvas = this.renderer.domElement;
+    canvas.style.display = 'block';
+    canvas.style.width = '100%';
+    canvas.style.height = '100%';
+    canvas.style.touchAction = 'none'; // pointer events drive orbit and gizmo on touch screens
+    container.append(canvas);
+
+    this.scene.background = new Color(0x20242b);
+    this.scene.add(new HemisphereLight(0xdde6ff, 0x30281e, 1.6));
+    this.scene.add(new AmbientLight(0xffffff, 0.3));
+    const sun = new DirectionalLight(0xffffff, 2.2);
+    sun.position.set(3, 6, 4);
+    this.scene.add(sun);
+    this.grid = new GridHelper(10, 20, 0x56606e, 0x3a414c);
+    this.scene.add(this.grid);
+
+    this.camera.position.set(2, 1.5, 3);
+    this.orbit = new OrbitControls(this.camera, null);
+    this.orbit.enableDamping = false;
+
+    this.resizeObserver = new ResizeObserver(() => this.resize());
+    this.resizeObserver.observe(container);
+    this.resize();
+    this.renderer.setAnimationLoop((t) => this.tick(t));
+  }
+
+  get canvas(): HTMLCanvasElement {
+    return this.renderer.domElement;
+  }
+
+  /** Connects the camera controls to the canvas; call after the gizmo is made. */
+  connectOrbit(): void {
+    this.orbit.connect(this.canvas);
+  }
+
+  onFrame(callback: FrameCallback): void {
+    this.callbacks.push(callback);
+  }
+
+  /** Points the camera at `box` from the current viewing direction and scales the grid to it. */
+  frame(box: Box3): void {
+    if (box.isEmpty()) return;
+    const sphere = box.getBoundingSphere(new Sphere());
+    const r = Math.max(sphere.radius, 1e-3);
+    const dir = new Vector3().subVectors(this.camera.position, this.orbit.target);
+    if (dir.lengthSq() < 1e-12) dir.set(0.6, 0.45, 1);
+    dir.normalize();
+    const fov = (this.camera.fov * Math.PI) / 180;
+    const dist = (r / Math.sin(fov / 2)) * 1.15;
+    this.orbit.target.copy(sphere.center);
+    this.camera.position.copy(sphere.center).addScaledVector(dir, dist);
+    this.camera.near = dist / 100;
+    this.camera.far = dist * 100;
+    this.camera.updateProjectionMatrix();
+    this.orbit.update();
+    const size = Math.pow(10, Math.ceil(Math.log10(r * 4)));
+    this.grid.scale.setScalar(size / 10);
+    this.grid.position.set(sphere.center.x, box.min.y, sphere.center.z);
+  }
+
+  resize(): void {
+    const w = Math.max(1, this.container.clientWidth);
+    const h = Math.max(1, this.container.clientHeight);
+    this.renderer.setSize(w, h, false);
+    this.camera.aspect = w / h;
+    this.camera.updateProjectionMatrix();
+  }
+
+  dispose(): void {
+    this.renderer.setAnimationLoop(null);
+    this.resizeObserver.disconnect();
+    this.orbit.dispose();
+    this.grid.geometry.dispose();
+    const m = this.grid.material;
+    (Array.isArray(m) ? m : [m]).forEach((x) => x.dispose());
+    this.renderer.dispose();
+    this.canvas.remove();
+  }
+
+  private tick(t: number): void {
+    const dt = this.last ? Math.min((t - this.last) / 1000, 0.1) : 0;
+    this.last = t;
+    for (const cb of this.callbacks) cb(dt);
+    this.renderer.render(this.scene, this.camera);
+  }
+}

@@ -1,0 +1,123 @@
+// Live solver statistics: iterations, E, ||grad||, stop reason and the main-thread time of one
+// solve with its running median. Values are written as text; each field also carries its raw
+// number in data-value so tests and tools can read it without parsing the display.
+
+/** Running median over the last `capacity` samples. */
+export class RunningMedian {
+  private readonly ring: Float64Array;
+  private readonly sorted: Float64Array;
+  private count = 0;
+  private next = 0;
+
+  constructor(readonly capacity = 121) {
+    this.ring = new Float64Array(capacity);
+    this.sorted = new Float64Array(capacity);
+  }
+
+  push(x: number): void {
+    this.ring[this.next] = x;
+    this.next = (this.next + 1) % this.capacity;
+    this.count = Math.min(this.count + 1, this.capacity);
+  }
+
+  get size(): number {
+    return this.count;
+  }
+
+  median(): number {
+    if (this.count === 0) return NaN;
+    const s = this.sorted.subarray(0, this.count);
+    s.set(this.ring.subarray(0, this.count));
+    s.sort();
+    const h = this.count >> 1;
+    return this.count % 2 ? s[h] : (s[h - 1] + s[h]) / 2;
+  }
+
+  clear(): void {
+    this.count = 0;
+    this.next = 0;
+  }
+}
+
+export interface StatsValues {
+  method: string;
+  iterations: number;
+  E: number;
+  gradNorm: number;
+  stopReason: string;
+  ms: number;
+  /** Largest distance from a pinned (not dragged) effector to its target: the report's "wobble". */
+  pinnedDrift: number;
+}
+
+const FIELDS: { key: keyof StatsValues | 'median'; label: string; title: string }[] = [
+  { key: 'method', label: 'method', title: 'the method solving every frame' },
+  { key: 'iterations', label: 'iterations', title: 'iterations of the last solve' },
+  { key: 'E', label: 'E', title: 'E = ½ Σ |tip − target|² after the last solve' },
+  { key: 'gradNorm', label: '‖∇E‖', title: 'gradient norm after the last solve' },
+  { key: 'stopReason', label: 'stop', title: 'why the last solve stopped' },
+  { key: 'ms', label: 'ms / solve', title: 'main-thread milliseconds of the last solve (JS + WebAssembly)' },
+  { key: 'median', label: 'median ms', title: 'running median of ms / solve over the last solves' },
+  { key: 'pinnedDrift', label: 'pinned drift', title: 'largest distance of a pinned effector from its target (the report’s “wobble”)' },
+];
+
+function format(x: number): string {
+  if (!Number.isFinite(x)) return String(x);
+  if (x === 0) return '0';
+  const a = Math.abs(x);
+  return a >= 1e-3 && a < 1e4 ? x.toPrecision(4) : x.toExponential(2);
+}
+
+export class StatsPanel {
+  readonly element: HTMLElement;
+  readonly median = new RunningMedian(121);
+  private readonly cells = new Map<string, HTMLElement>();
+
+  constructor(parent: HTMLElement) {
+    this.element = document.createElement('dl');
+    this.element.className = 'stats';
+    this.element.id = 'stats';
+    for (const f of FIELDS) {
+      const dt = document.createElement('dt');
+      dt.textContent = f.label;
+      dt.title = f.title;
+      const dd = document.createElement('dd');
+      dd.dataset.stat = f.key;
+      dd.textContent = '–';
+      this.cells.set(f.key, dd);
+      this.element.append(dt, dd);
+    }
+    parent.append(this.element);
+  }
+
+  /** Shows one solve; `timed` adds its time to the running median. */
+  show(v: StatsValues, timed = true): void {
+    if (timed) this.median.push(v.ms);
+    this.set('method', v.method, NaN);
+    this.set('iterations', String(v.iterations), v.iterations);
+    this.set('E', format(v.E), v.E);
+    this.set('gradNorm', format(v.gradNorm), v.gradNorm);
+    this.set('stopReason', v.stopReason || '–', NaN);
+    this.set('ms', v.ms.toFixed(3), v.ms);
+    const m = this.median.median();
+    this.set('median', Number.isNaN(m) ? '–' : `${m.toFixed(3)} (n=${this.median.size})`, m);
+    this.set('pinnedDrift', format(v.pinnedDrift), v.pinnedDrift);
+  }
+
+  /** Shows E for a pose that was not solved (after reset, load, or an effector change). */
+  showIdle(method: string, E: number): void {
+    this.set('method', method, NaN);
+    this.set('E', format(E), E);
+  }
+
+  reset(): void {
+    this.median.clear();
+    for (const [key, cell] of this.cells) this.set(key, '–', NaN, cell);
+  }
+
+  private set(key: string, text: string, value: number, cell = this.cells.get(key)): void {
+    if (!cell) return;
+    if (cell.textContent !== text) cell.textContent = text;
+    cell.dataset.value = Number.isNaN(value) ? '' : String(value);
+  }
+}

@@ -1,0 +1,23 @@
+// The URL keeps the rig and the method, so a link reproduces the view: ?rig=knight&method=gn.
+import { isMethod, type Method } from './solver_port.js';
+
+export interface UrlState {
+  rig: string | null;
+  method: Method | null;
+}
+
+export function readUrlState(location: Location = window.location): UrlState {
+  const q = new URLSearchParams(location.search);
+  const method = q.get('method');
+  return { rig: q.get('rig'), method: isMethod(method) ? method : null };
+}
+
+/** Rewrites the query in place (no new history entry). A null rig removes it (a dropped file has no link). */
+export function writeUrlState(state: UrlState): void {
+  const url = new URL(window.location.href);
+  if (state.rig) url.searchParams.set('rig', state.rig);
+  else url.searchParams.delete('rig');
+  if (state.method) url.searchParams.set('method', state.method);
+  else url.searchParams.delete('method');
+  if (url.href !== window.location.href) history.replaceState(null, '', url);
+}
