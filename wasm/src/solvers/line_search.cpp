@@ -1,0 +1,35 @@
+#include "line_search.h"
+
+#include <cmath>
+
+#include "objective.h"
+
+namespace ik {
+
+BacktrackingResult projected_backtracking(Kinematics& kin, const Eigen::Ref<const Eigen::VectorXd>& target,
+                                          const Eigen::Ref<const Eigen::VectorXd>& angles, double E0,
+                                          const Eigen::Ref<const Eigen::VectorXd>& gradient,
+                                          const Eigen::Ref<const Eigen::VectorXd>& direction,
+                                          const BacktrackingOptions& options, Eigen::Ref<Eigen::VectorXd> trial,
+                                          Eigen::Ref<Eigen::VectorXd> residual) {
+  BacktrackingResult result;
+  double alpha = options.initial_step;
+  for (int i = 0; i < options.max_tries; ++i, alpha *= options.factor) {
+    trial = angles + alpha * direction;
+    kin.project(trial);
+    if (trial == angles) break;  // the step is 0
+    const double E = objective(kin, trial, target, residual);
+    ++result.evaluations;
+    const double slope = options.projected_slope ? gradient.dot(trial - angles) : alpha * gradient.dot(direction);
+    const double bound = E0 + options.c1 * slope;
+    if (std::isfinite(E) && E < bound) {
+      result.found = true;
+      result.step = alpha;
+      result.E = E;
+      return result;
+    }
+  }
+  return result;
+}
+
+}  // namespace ik

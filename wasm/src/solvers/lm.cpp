@@ -1,0 +1,186 @@
+// Levenberg-Marquardt, solved at the residual size (3 x #effectors):
+//   step on the free angles  d = -Jf^T (Jf Jf^T + lambda I)^-1 r
+// with error-dependent damping lambda = (mu |r|^2 / reach^2 + lm_damping_floor) * s, s the mean
+// diagonal of Jf Jf^T (so lambda shrinks like |r|^2 and the local convergence is quadratic even
+// where J is rank-deficient), and mu adapted from the gain ratio rho = actual / predicted
+// decrease (Nielsen's rule). Bounds are handled inside the step: an angle whose step would
+// leave its limits is fixed on the limit and the rest re-solved (a few active-set passes);
+// angles that are fixed or pushed outward by grad E are not in Jf at all.
+//
+// Option `restarts` (off by default; keep it off while dragging): when a run stalls above the
+// error tolerance (zero step, a stationary point, or best E down < 10% in stall_iterations),
+// restart from the next quasi-random point inside the limits; the best point is kept.
+#include <Eigen/Cholesky>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <memory>
+
+#include "quasi_random.h"
+#include "solver.h"
+
+namespace ik {
+
+namespace {
+
+class LevenbergMarquardt final : public Solver {
+ public:
+  using Solver::Solver;
+  const char* name() const override { return "lm"; }
+
+ private:
+  void resize(int m, int n) override {
+    Jf_.resize(m, n);
+    normal_.resize(m, m);
+    reduced_.resize(m, m);
+    shifted_.resize(m, m);
+    llt_ = Eigen::LLT<Eigen::MatrixXd>(m);
+    y_.resize(m);
+    rhs_.resize(m);
+    jd_.resize(m);
+    delta_.resize(n);
+    clipped_.assign(n, 0);
+    unit_.resize(n);
+    sequence_ = QuasiRandom(n, opt_.seed);
+    sequence_seed_ = opt_.seed;
+  }
+
+  void reset() override {
+    if (sequence_seed_ != opt_.seed) {  // resize() ran with another seed's options
+      sequence_ = QuasiRandom(n_, opt_.seed);
+      sequence_seed_ = opt_.seed;
+    }
+    restart_index_ = 0;
+    begin_run();
+  }
+
+  void begin_run() {
+    mu_ = opt_.lm_initial_mu;
+    nu_ = 2;
+    run_iterations_ = 0;
+    run_best_E_ = std::numeric_limits<double>::infinity();
+    run_best_iteration_ = 0;
+  }
+
+  Progress iterate() override {
+    const int nf = num_free_;
+    if (nf == 0) return Progress::stuck;
+    for (int c = 0; c < nf; ++c) Jf_.col(c) = J_.col(free_[c]);
+    const auto Jf = Jf_.leftCols(nf);
+    normal_.noalias() = Jf * Jf.transpose();
+    const double s = normal_.trace() / m_;
+    if (!std::isfinite(s)) return fail("the Jacobian is not finite");
+    if (!(s > 0)) return Progress::stuck;  // no free angle moves a tip
+    const double relative_error2 = 2 * E_ / (reach_ * reach_);
+
+    for (int attempt = 0; attempt < opt_.lm_max_rejections; ++attempt) {
+      const double lambda = (mu_ * relative_error2 + opt_.lm_damping_floor) * s;
+      if (!damped_step(lambda, nf)) return fail("the damped normal matrix could not be factorised");
+      if (trial_ == a_) return Progress::stuck;  // the step is 0
+      const double E_trial = evaluate(trial_, r_trial_);
+      // Gain ratio: actual decrease over the decrease the linear model predicts for the
+      // (projected) step taken.
+      for (int c = 0; c < nf; ++c) delta_[c] = trial_[free_[c]] - a_[free_[c]];
+      jd_.noalias() = Jf * delta_.head(nf);
+      const double predicted = -r_.dot(jd_) - 0.5 * jd_.squaredNorm();
+      const double rho = (E_ - E_trial) / predicted;
+      if (std::isfinite(E_trial) && E_trial < E_ && predicted > 0 && rho > kMinGain) {
+        mu_ *= std::max(1.0 / 3, 1 - std::pow(2 * rho - 1, 3));
+        mu_ = std::max(mu_, kMinMu);
+        nu_ = 2;
+        a_.swap(trial_);
+        r_.swap(r_trial_);
+        E_ = E_trial;
+        note_stall();
+        return Progress::moved;
+      }
+      mu_ = std::min(mu_ * nu_, kMaxMu);
+      nu_ = std::min(2 * nu_, kMaxNu);
+    }
+    return Progress::stuck;
+  }
+
+  // Writes trial_ = P(a_ + d) for the damped step d with `lambda`, bounds handled by the active
+  // set. Returns false if the factorisation failed.
+  bool damped_step(double lambda, int nf) {
+    const auto Jf = Jf_.leftCols(nf);
+    reduced_ = normal_;
+    rhs_ = r_;
+    std::fill(clipped_.begin(), clipped_.begin() + nf, 0);
+    for (int pass = 0; pass < kActiveSetPasses; ++pass) {
+      shifted_ = reduced_;
+      shifted_.diagonal().array() += lambda;
+      llt_.compute(shifted_);
+      if (llt_.info() != Eigen::Success) return false;
+      y_ = rhs_;
+      llt_.solveInPlace(y_);
+      bool clipped_more = false;
+      for (int c = 0; c < nf; ++c) {
+        if (clipped_[c]) continue;
+        const int i = free_[c];
+        double d = -Jf.col(c).dot(y_);
+        const double to = a_[i] + d;
+        if (to < kin_.lower()[i] || to > kin_.upper()[i]) {
+          d = (to < kin_.lower()[i] ? kin_.lower()[i] : kin_.upper()[i]) - a_[i];
+          clipped_[c] = 1;
+          clipped_more = true;
+          // This angle now moves by a known d: take it out of the system.
+          reduced_.noalias() -= Jf.col(c) * Jf.col(c).transpose();
+          rhs_.noalias() += d * Jf.col(c);
+        }
+        delta_[c] = d;
+      }
+      if (!clipped_more) break;
+    }
+    trial_ = a_;
+    for (int c = 0; c < nf; ++c) trial_[free_[c]] += delta_[c];
+    kin_.project(trial_);
+    return true;
+  }
+
+  // With restarts on: a run whose best E fell by less than 10% in stall_iterations stalls.
+  void note_stall() {
+    if (opt_.restarts == 0) return;
+    ++run_iterations_;
+    if (E_ < 0.9 * run_best_E_) {
+      run_best_E_ = E_;
+      run_best_iteration_ = run_iterations_;
+    } else if (run_iterations_ - run_best_iteration_ >= opt_.stall_iterations) {
+      stop_requested_ = true;
+    }
+  }
+
+  bool restart() override {
+    if (restart_index_ >= opt_.restarts) return false;
+    ++restart_index_;
+    sequence_.point(restart_index_, unit_);
+    point_in_limits(unit_, kin_.lower(), kin_.upper(), a_);
+    begin_run();
+    return reinitialise_at_current();
+  }
+
+  static constexpr int kActiveSetPasses = 4;
+  static constexpr double kMinGain = 1e-4;
+  static constexpr double kMinMu = 1e-12;
+  static constexpr double kMaxMu = 1e16;
+  static constexpr double kMaxNu = 64;
+
+  Eigen::MatrixXd Jf_, normal_, reduced_, shifted_;
+  Eigen::LLT<Eigen::MatrixXd> llt_;
+  Eigen::VectorXd y_, rhs_, jd_, delta_, unit_;
+  std::vector<char> clipped_;
+  double mu_ = 1, nu_ = 2;
+  int run_iterations_ = 0, run_best_iteration_ = 0;
+  double run_best_E_ = 0;
+  QuasiRandom sequence_;
+  std::uint32_t sequence_seed_ = 0;
+  long restart_index_ = 0;
+};
+
+}  // namespace
+
+std::unique_ptr<Solver> make_lm_solver(Kinematics& kin, const SolverOptions& options) {
+  return std::make_unique<LevenbergMarquardt>(kin, options);
+}
+
+}  // namespace ik

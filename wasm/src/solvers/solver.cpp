@@ -1,0 +1,308 @@
+#include "solver.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "finite_difference_jacobian.h"
+#include "line_search.h"
+#include "objective.h"
+
+namespace ik {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// Paper mode backtracks until the projected step is exactly 0, as the original did (it halved
+// alpha until it underflowed); alpha reaches 0 after about 1100 halvings.
+constexpr int kPaperMaxBacktracks = 2000;
+
+double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+bool finite(double x) { return std::isfinite(x); }
+
+// The first problem with `o`, or an empty string.
+std::string check_options(const SolverOptions& o) {
+  auto bad = [](const char* field, const char* rule) { return std::string("option ") + field + " must be " + rule; };
+  if (!(finite(o.gradient_tolerance) && o.gradient_tolerance >= 0)) return bad("gradient_tolerance", "a number >= 0");
+  if (!(finite(o.error_tolerance) && o.error_tolerance >= 0)) return bad("error_tolerance", "a number >= 0");
+  if (o.max_iterations < 0) return bad("max_iterations", ">= 0");
+  if (!(o.time_budget_s >= 0)) return bad("time_budget_s", ">= 0 (0 or infinity: no limit)");
+  if (o.history_capacity < 1) return bad("history_capacity", ">= 1");
+  if (!(finite(o.fd_step_deg) && o.fd_step_deg > 0)) return bad("fd_step_deg", "a number > 0");
+  if (!(finite(o.gd_initial_step) && o.gd_initial_step > 0)) return bad("gd_initial_step", "a number > 0");
+  if (!(o.backtrack_factor > 0 && o.backtrack_factor < 1)) return bad("backtrack_factor", "in (0, 1)");
+  if (!(o.armijo_c1 >= 0 && o.armijo_c1 < 1)) return bad("armijo_c1", "in [0, 1)");
+  if (o.max_backtracks < 1) return bad("max_backtracks", ">= 1");
+  if (!(o.newton_max_step_deg > 0)) return bad("newton_max_step_deg", "> 0");
+  if (!(finite(o.lm_initial_mu) && o.lm_initial_mu > 0)) return bad("lm_initial_mu", "a number > 0");
+  if (!(finite(o.lm_damping_floor) && o.lm_damping_floor >= 0)) return bad("lm_damping_floor", "a number >= 0");
+  if (o.lm_max_rejections < 1) return bad("lm_max_rejections", ">= 1");
+  if (o.restarts < 0) return bad("restarts", ">= 0");
+  if (o.stall_iterations < 1) return bad("stall_iterations", ">= 1");
+  return {};
+}
+
+// The first non-finite entry of `v` named `what`, or an empty string.
+std::string check_finite(const Eigen::Ref<const Eigen::VectorXd>& v, const char* what) {
+  for (Eigen::Index i = 0; i < v.size(); ++i)
+    if (!finite(v[i])) return std::string(what) + "[" + std::to_string(i) + "] is not a finite number";
+  return {};
+}
+
+}  // namespace
+
+const char* stop_reason_name(StopReason reason) {
+  switch (reason) {
+    case StopReason::running: return "running";
+    case StopReason::converged_E: return "converged_E";
+    case StopReason::converged_grad: return "converged_grad";
+    case StopReason::zero_step: return "zero_step";
+    case StopReason::max_iterations: return "max_iterations";
+    case StopReason::timeout: return "timeout";
+    case StopReason::invalid_input: return "invalid_input";
+    case StopReason::numerical_failure: return "numerical_failure";
+  }
+  return "unknown";
+}
+
+Solver::Solver(Kinematics& kin, const SolverOptions& options) : kin_(kin), opt_(options) {}
+
+bool Solver::validate(const Eigen::Ref<const Eigen::VectorXd>& angles, const Eigen::Ref<const Eigen::VectorXd>& target) {
+  std::string problem = check_options(opt_);
+  if (problem.empty() && angles.size() != kin_.num_angles())
+    problem = "angles has " + std::to_string(angles.size()) + " values, expected " + std::to_string(kin_.num_angles()) +
+              " (3 per bone)";
+  if (problem.empty() && target.size() != kin_.num_residuals())
+    problem = "target has " + std::to_string(target.size()) + " values, expected " +
+              std::to_string(kin_.num_residuals()) + " (3 per end effector)";
+  if (problem.empty()) problem = check_finite(angles, "angles");
+  if (problem.empty()) problem = check_finite(target, "target");
+  summary_.message = problem;
+  return problem.empty();
+}
+
+StopReason Solver::start(const Eigen::Ref<const Eigen::VectorXd>& angles,
+                         const Eigen::Ref<const Eigen::VectorXd>& target) {
+  call_start_ = Clock::now();
+  elapsed_before_call_ = 0;
+  summary_.iterations = summary_.function_evaluations = summary_.jacobian_evaluations = summary_.restarts = 0;
+  summary_.message.clear();
+  history_size_ = 0;
+  failure_ = nullptr;
+  stop_requested_ = false;
+  if (!validate(angles, target)) {
+    summary_.stop_reason = StopReason::invalid_input;
+    summary_.initial_E = summary_.E = summary_.gradient_norm = std::numeric_limits<double>::quiet_NaN();
+    summary_.elapsed_s = seconds_since(call_start_);
+    return summary_.stop_reason;
+  }
+  // Workspace: sized here only, so that step() never allocates.
+  if (m_ != kin_.num_residuals() || n_ != kin_.num_angles()) {
+    m_ = kin_.num_residuals();
+    n_ = kin_.num_angles();
+    target_.resize(m_);
+    r_.resize(m_);
+    r_trial_.resize(m_);
+    a_.resize(n_);
+    trial_.resize(n_);
+    g_.resize(n_);
+    free_mask_.resize(n_);
+    J_.resize(m_, n_);
+    free_.resize(n_);
+    fd_scratch_.resize(n_);
+    fd_plus_.resize(m_);
+    fd_minus_.resize(m_);
+    summary_.angles.resize(n_);
+    reach_ = 0;
+    for (int e : kin_.rig().effectors) {
+      double length = 0;
+      for (int b : kin_.chain(e)) length += kin_.rig().bones[b].length;
+      reach_ = std::max(reach_, length);
+    }
+    if (!(reach_ > 0)) reach_ = 1;
+    resize(m_, n_);
+  }
+  if (static_cast<int>(history_.size()) != opt_.history_capacity) history_.resize(opt_.history_capacity);
+
+  target_ = target;
+  a_ = angles;
+  kin_.project(a_);
+  reset();
+  E_ = evaluate(a_, r_);
+  summary_.stop_reason = StopReason::running;
+  if (!finite(E_)) {
+    summary_.stop_reason = StopReason::numerical_failure;
+    summary_.message = "E is not finite at the start angles";
+  } else if (!update_derivatives(true)) {
+    summary_.stop_reason = StopReason::numerical_failure;
+    summary_.message = "the gradient is not finite at the start angles";
+  }
+  summary_.initial_E = E_;
+  summary_.E = E_;
+  summary_.gradient_norm = gradient_norm_;
+  summary_.angles = a_;
+  record();
+  if (running()) {
+    summary_.stop_reason = check_stop();
+    if (running() && opt_.max_iterations == 0) summary_.stop_reason = StopReason::max_iterations;
+  }
+  elapsed_before_call_ = seconds_since(call_start_);
+  summary_.elapsed_s = elapsed_before_call_;
+  return summary_.stop_reason;
+}
+
+bool Solver::step() {
+  if (!running()) return false;
+  call_start_ = Clock::now();
+  StopReason reason = StopReason::running;
+  if (kin_.num_residuals() != m_) {
+    summary_.message = "the rig's end effectors changed during the solve; call start() again";
+    reason = StopReason::invalid_input;
+  } else {
+    switch (iterate()) {
+      case Progress::failed:
+        reason = StopReason::numerical_failure;
+        summary_.message = failure_ ? failure_ : "numerical failure";
+        break;
+      case Progress::stuck:
+        reason = StopReason::zero_step;
+        break;
+      case Progress::moved:
+        ++summary_.iterations;
+        if (!finite(E_) || !update_derivatives(true)) {
+          reason = StopReason::numerical_failure;
+          summary_.message = "E or its gradient became non-finite";
+          break;
+        }
+        record();
+        note_best();
+        reason = check_stop();
+        break;
+    }
+    // A run stuck above the error tolerance may restart (methods with restarts enabled).
+    const bool stuck = reason == StopReason::zero_step || reason == StopReason::converged_grad ||
+                       (reason == StopReason::running && stop_requested_);
+    stop_requested_ = false;
+    if (stuck && summary_.E >= opt_.error_tolerance && !out_of_time() && summary_.iterations < opt_.max_iterations &&
+        restart()) {
+      ++summary_.restarts;
+      ++summary_.iterations;
+      if (!finite(E_) || !update_derivatives(true)) {
+        reason = StopReason::numerical_failure;
+        summary_.message = "E or its gradient is not finite at a restart point";
+      } else {
+        record();
+        note_best();
+        reason = check_stop();
+      }
+    }
+  }
+  if (reason == StopReason::running) {
+    if (summary_.iterations >= opt_.max_iterations)
+      reason = StopReason::max_iterations;
+    else if (out_of_time())
+      reason = StopReason::timeout;
+  }
+  summary_.stop_reason = reason;
+  elapsed_before_call_ += seconds_since(call_start_);
+  summary_.elapsed_s = elapsed_before_call_;
+  return reason == StopReason::running;
+}
+
+const SolverSummary& Solver::solve(const Eigen::Ref<const Eigen::VectorXd>& angles,
+                                   const Eigen::Ref<const Eigen::VectorXd>& target) {
+  if (start(angles, target) == StopReason::running)
+    while (step()) {
+    }
+  return summary_;
+}
+
+double Solver::evaluate(const Eigen::Ref<const Eigen::VectorXd>& angles, Eigen::Ref<Eigen::VectorXd> residual) {
+  ++summary_.function_evaluations;
+  return objective(kin_, angles, target_, residual);
+}
+
+bool Solver::backtrack(const Eigen::Ref<const Eigen::VectorXd>& direction, double initial_step, double c1) {
+  BacktrackingOptions search;
+  search.initial_step = initial_step;
+  search.factor = opt_.backtrack_factor;
+  search.c1 = c1;
+  search.max_tries = opt_.paper_mode ? kPaperMaxBacktracks : opt_.max_backtracks;
+  search.projected_slope = !opt_.paper_mode;
+  const BacktrackingResult found = projected_backtracking(kin_, target_, a_, E_, g_, direction, search, trial_, r_trial_);
+  summary_.function_evaluations += found.evaluations;
+  if (!found.found) return false;
+  a_.swap(trial_);
+  r_.swap(r_trial_);
+  E_ = found.E;
+  return true;
+}
+
+bool Solver::update_derivatives(bool posed) {
+  if (opt_.paper_mode) {
+    finite_difference_jacobian(kin_, a_, opt_.fd_step_deg, /*clamp_to_limits=*/true, fd_scratch_, fd_plus_,
+                               fd_minus_, J_);
+    // The original divided the central difference by h, not by the spread 2h: its columns are
+    // twice the derivative away from the limits (one-sided, exact scale, on a limit).
+    const double h = opt_.fd_step_deg;
+    for (int j = 0; j < n_; ++j) {
+      const double spread = std::min(a_[j] + h, kin_.upper()[j]) - std::max(a_[j] - h, kin_.lower()[j]);
+      if (spread > 0) J_.col(j) *= spread / h;
+    }
+  } else {
+    if (!posed) kin_.forward(a_);
+    kin_.current_jacobian(J_);
+  }
+  ++summary_.jacobian_evaluations;
+  g_.noalias() = J_.transpose() * r_;
+  const Eigen::VectorXd& lo = kin_.lower();
+  const Eigen::VectorXd& hi = kin_.upper();
+  num_free_ = 0;
+  double free_norm2 = 0;
+  for (int i = 0; i < n_; ++i) {
+    const bool blocked = lo[i] >= hi[i] || (a_[i] <= lo[i] && g_[i] > 0) || (a_[i] >= hi[i] && g_[i] < 0);
+    free_mask_[i] = blocked ? 0.0 : 1.0;
+    if (blocked) continue;
+    free_[num_free_++] = i;
+    free_norm2 += g_[i] * g_[i];
+  }
+  gradient_norm_ = opt_.paper_mode ? g_.norm() : std::sqrt(free_norm2);
+  return finite(gradient_norm_);
+}
+
+bool Solver::reinitialise_at_current() {
+  E_ = evaluate(a_, r_);
+  return finite(E_);
+}
+
+Solver::Progress Solver::fail(const char* message) {
+  failure_ = message;
+  return Progress::failed;
+}
+
+bool Solver::out_of_time() const {
+  if (!(opt_.time_budget_s > 0) || std::isinf(opt_.time_budget_s)) return false;
+  return elapsed_before_call_ + seconds_since(call_start_) >= opt_.time_budget_s;
+}
+
+StopReason Solver::check_stop() const {
+  if (E_ < opt_.error_tolerance) return StopReason::converged_E;
+  if (gradient_norm_ < opt_.gradient_tolerance) return StopReason::converged_grad;
+  return StopReason::running;
+}
+
+void Solver::record() {
+  if (history_size_ < static_cast<int>(history_.size())) history_[history_size_++] = E_;
+}
+
+void Solver::note_best() {
+  if (!(E_ < summary_.E)) return;
+  summary_.E = E_;
+  summary_.gradient_norm = gradient_norm_;
+  summary_.angles = a_;
+}
+
+}  // namespace ik

@@ -1,0 +1,188 @@
+// The interface every IK method implements: options with defaults, a summary, the stop reasons,
+// and a start / step / solve cycle over one Kinematics.
+//
+// Units everywhere: angles in DEGREES (3 per bone, XZX), tips and targets in rig units,
+// E = 1/2 |x(A) - x_b|^2 in rig units^2, gradients in rig units^2 per degree, time in seconds.
+//
+// Each method lives in its own file (gd.cpp, bfgs.cpp, ...) and is listed in
+// solver_registry.cpp. Workspace is allocated by start() (only when the rig's sizes changed);
+// step() allocates nothing.
+#pragma once
+
+#include <Eigen/Core>
+#include <chrono>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "kinematics.h"
+
+namespace ik {
+
+enum class StopReason {
+  running,            // no test below has fired; step() may be called
+  converged_E,        // E < error_tolerance
+  converged_grad,     // |g| < gradient_tolerance; g = grad E without the components of fixed angles and of
+                      // angles on a bound that the gradient pushes outward (paper mode: the full grad E)
+  zero_step,          // the line search (or damping loop) found no point with lower E: the trial point
+                      // equalled A, or max_backtracks tries failed; restarts exhausted if enabled
+  max_iterations,     // iterations >= max_iterations
+  timeout,            // time spent inside start() and step() since start() >= time_budget_s
+  invalid_input,      // start() got a wrong length, a non-finite angle or target, or a bad option (see message)
+  numerical_failure,  // E or a derivative became non-finite, or a factorisation failed at every damping
+};
+
+// "running", "converged_E", ... exactly the enumerator names.
+const char* stop_reason_name(StopReason reason);
+
+struct SolverOptions {
+  // Stopping tests. Defaults are PROTOCOL.md's for every rig but beast (which uses 0.01, 0.002).
+  double gradient_tolerance = 1e-4;  // rig units^2 per degree
+  double error_tolerance = 2e-4;     // rig units^2
+  int max_iterations = 100000;
+  double time_budget_s = 1.0;        // seconds; 0 or infinity: no limit
+  int history_capacity = 10000;      // E values kept per solve (the first ones; see error_history())
+
+  // Reproduce the original program: central finite-difference Jacobian (fd_step_deg, clamped to
+  // the limits), the full |grad E| in the gradient test, and the report's line searches.
+  bool paper_mode = false;
+  double fd_step_deg = 1e-7;
+
+  // Projected backtracking (gd, bfgs, gn, newton). GD starts at gd_initial_step, the others at 1.
+  double gd_initial_step = 57.29577951308232;  // 180 / pi
+  double backtrack_factor = 0.5;
+  double armijo_c1 = 1e-3;                     // gd uses simple decrease (c1 = 0), as the report
+  int max_backtracks = 60;                     // outside paper mode; paper mode runs until the step is 0
+
+  // Newton: largest step per angle before the line search, degrees (outside paper mode).
+  double newton_max_step_deg = 45.0;
+
+  // Levenberg-Marquardt: damping lambda = mu * (|r| / reach)^2 * s + lm_damping_floor * s, where s is
+  // the mean diagonal of J J^T over the free angles and reach the rig's longest effector chain.
+  double lm_initial_mu = 1.0;
+  double lm_damping_floor = 1e-12;
+  int lm_max_rejections = 30;   // damping increases per iteration before zero_step
+
+  // Restarts (lm only; 0 = off, the default for interactive dragging): when a run stalls above
+  // error_tolerance it restarts from a quasi-random point inside the limits, keeping the best.
+  int restarts = 0;
+  int stall_iterations = 30;     // a run whose best E fell by < 10% over this many iterations stalls
+  std::uint32_t seed = 1;        // quasi-random sequence offset; same seed, same restarts
+};
+
+struct SolverSummary {
+  Eigen::VectorXd angles;       // best angles found (#angles, degrees, inside the limits)
+  double initial_E = 0;         // E at the start angles (after projection into the limits)
+  double E = 0;                 // E at `angles`
+  double gradient_norm = 0;     // |g| at `angles` as the gradient test measures it
+  int iterations = 0;           // accepted steps
+  int function_evaluations = 0; // forward-kinematics evaluations of E (line-search trials included)
+  int jacobian_evaluations = 0; // Jacobian evaluations (one finite-difference Jacobian counts once)
+  int restarts = 0;             // restarts performed
+  StopReason stop_reason = StopReason::invalid_input;
+  std::string message;          // why, for invalid_input and numerical_failure
+  double elapsed_s = 0;         // seconds spent inside start() and step()
+};
+
+class Solver {
+ public:
+  // The solver works on `kin`, which must outlive it. Options are checked by start().
+  Solver(Kinematics& kin, const SolverOptions& options);
+  virtual ~Solver() = default;
+  Solver(const Solver&) = delete;
+  Solver& operator=(const Solver&) = delete;
+
+  // Registry name of the method ("lm", ...).
+  virtual const char* name() const = 0;
+
+  // Begins a solve from `angles` (#angles, degrees; projected into the limits) towards `target`
+  // (#residuals, rig units). Sizes the workspace if the rig's effectors changed since the last
+  // start(). Returns running, converged_E / converged_grad (already there), or invalid_input.
+  StopReason start(const Eigen::Ref<const Eigen::VectorXd>& angles, const Eigen::Ref<const Eigen::VectorXd>& target);
+
+  // One iteration. Returns true while the solve is still running. No allocation.
+  bool step();
+
+  // start() and step() until stopped. Returns the summary.
+  const SolverSummary& solve(const Eigen::Ref<const Eigen::VectorXd>& angles,
+                             const Eigen::Ref<const Eigen::VectorXd>& target);
+
+  bool running() const { return summary_.stop_reason == StopReason::running; }
+  // The state so far: best angles, E, counts, stop reason (running while not stopped).
+  const SolverSummary& summary() const { return summary_; }
+  // The current iterate (#angles, degrees). With restarts it can differ from summary().angles.
+  const Eigen::VectorXd& angles() const { return a_; }
+  // E per iteration: [0] at the start, [k] after iteration k; at most history_capacity values.
+  Eigen::Map<const Eigen::VectorXd> error_history() const {
+    return Eigen::Map<const Eigen::VectorXd>(history_.data(), history_size_);
+  }
+  const SolverOptions& options() const { return opt_; }
+  const Kinematics& kinematics() const { return kin_; }
+
+ protected:
+  // What one iteration of a method did.
+  enum class Progress {
+    moved,   // a_, r_, E_ hold the new point; kin_ is posed there
+    stuck,   // no point with lower E found (zero_step)
+    failed,  // numerical failure; message set through fail()
+  };
+
+  // Method workspace for `residuals` x `angles` (called by start() when sizes change).
+  virtual void resize(int residuals, int angles) = 0;
+  // Method state at the start of a solve (e.g. BFGS's H = I).
+  virtual void reset() {}
+  // One iteration from a_ (with r_, E_, J_, g_, the free set). On `moved`, must leave kin_ posed at a_.
+  virtual Progress iterate() = 0;
+  // Called when the solve would stop above error_tolerance (zero_step, converged_grad, or a stall
+  // noticed by the method). Return true after moving to a new start (restart) to keep running.
+  virtual bool restart() { return false; }
+
+  // E and the residual at `angles` (poses kin_ there); counts one function evaluation.
+  double evaluate(const Eigen::Ref<const Eigen::VectorXd>& angles, Eigen::Ref<Eigen::VectorXd> residual);
+  // Projected backtracking from a_ along `direction` (line_search.h) from alpha = `initial_step`
+  // with sufficient-decrease constant `c1`, the options' factor and max_backtracks. Paper mode
+  // halves until the step is 0 and takes the original's unprojected slope. On success moves to
+  // the accepted point (a_, r_, E_; trial_ then holds the previous angles) and returns true.
+  bool backtrack(const Eigen::Ref<const Eigen::VectorXd>& direction, double initial_step, double c1);
+  // J_, g_, the free set and the gradient norm at a_, given r_. `posed`: kin_ is posed at a_.
+  // Returns false if the gradient is not finite.
+  bool update_derivatives(bool posed);
+  // For restart(): E_ and r_ at a new a_ (the caller set a_). Returns false if E is not finite.
+  bool reinitialise_at_current();
+  // Marks a numerical failure with `message` (a string literal); returns Progress::failed.
+  Progress fail(const char* message);
+  // Is the solve over its time budget right now?
+  bool out_of_time() const;
+
+  Kinematics& kin_;
+  SolverOptions opt_;
+  int n_ = 0;  // #angles
+  int m_ = 0;  // #residuals
+  Eigen::VectorXd target_, a_, trial_, r_, r_trial_, g_;
+  Eigen::MatrixXd J_;
+  double E_ = 0;
+  double gradient_norm_ = 0;
+  // Free angles at a_: not fixed (min == max) and not on a bound that grad E pushes outward.
+  std::vector<int> free_;         // indices of the free angles, the first num_free_ entries
+  Eigen::VectorXd free_mask_;     // 1 for a free angle, 0 otherwise
+  int num_free_ = 0;
+  double reach_ = 1;              // longest effector chain (sum of bone lengths), rig units
+  bool stop_requested_ = false;   // set by iterate(): the run stalls; base then calls restart()
+
+ private:
+  StopReason check_stop() const;
+  void record();
+  void note_best();
+  bool validate(const Eigen::Ref<const Eigen::VectorXd>& angles, const Eigen::Ref<const Eigen::VectorXd>& target);
+
+  SolverSummary summary_;
+  std::vector<double> history_;
+  int history_size_ = 0;
+  // Finite-difference workspace (paper mode).
+  Eigen::VectorXd fd_scratch_, fd_plus_, fd_minus_;
+  const char* failure_ = nullptr;
+  std::chrono::steady_clock::time_point call_start_;
+  double elapsed_before_call_ = 0;
+};
+
+}  // namespace ik

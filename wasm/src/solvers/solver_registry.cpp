@@ -1,0 +1,38 @@
+#include "solver_registry.h"
+
+namespace ik {
+
+// Each factory is defined in the method's own file.
+std::unique_ptr<Solver> make_gd_solver(Kinematics& kin, const SolverOptions& options);
+std::unique_ptr<Solver> make_bfgs_solver(Kinematics& kin, const SolverOptions& options);
+std::unique_ptr<Solver> make_gn_solver(Kinematics& kin, const SolverOptions& options);
+std::unique_ptr<Solver> make_newton_solver(Kinematics& kin, const SolverOptions& options);
+std::unique_ptr<Solver> make_lm_solver(Kinematics& kin, const SolverOptions& options);
+
+const std::vector<SolverEntry>& solver_registry() {
+  static const std::vector<SolverEntry> table = {
+      {"lm", "Levenberg-Marquardt, error-dependent damping, active set on the bounds (default)", make_lm_solver},
+      {"gn", "Gauss-Newton, SVD pseudo-inverse step, projected backtracking", make_gn_solver},
+      {"bfgs", "damped BFGS with gradient projection and projected Armijo backtracking", make_bfgs_solver},
+      {"newton", "projected Newton, exact Hessian from the tip second derivatives, shifted when indefinite",
+       make_newton_solver},
+      {"gd", "projected gradient descent, backtracking from 180/pi", make_gd_solver},
+  };
+  return table;
+}
+
+std::vector<std::string> solver_names() {
+  std::vector<std::string> names;
+  for (const SolverEntry& e : solver_registry()) names.emplace_back(e.name);
+  return names;
+}
+
+std::unique_ptr<Solver> make_solver(const std::string& name, Kinematics& kin, const SolverOptions& options) {
+  for (const SolverEntry& e : solver_registry())
+    if (name == e.name) return e.make(kin, options);
+  std::string known;
+  for (const SolverEntry& e : solver_registry()) known += (known.empty() ? "" : ", ") + std::string(e.name);
+  throw RigError("unknown solver method \"" + name + "\" (known: " + known + ")");
+}
+
+}  // namespace ik

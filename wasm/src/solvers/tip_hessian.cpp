@@ -1,0 +1,53 @@
+#include "tip_hessian.h"
+
+namespace ik {
+
+void tip_hessian(const Kinematics& kin, int effector, Eigen::Ref<Eigen::MatrixXd> hx, Eigen::Ref<Eigen::MatrixXd> hy,
+                 Eigen::Ref<Eigen::MatrixXd> hz) {
+  hx.setZero();
+  hy.setZero();
+  hz.setZero();
+  const Eigen::Vector3d p = kin.tip(kin.rig().effectors[effector]);
+  const std::vector<int>& chain = kin.chain(kin.rig().effectors[effector]);
+  constexpr double scale = kRadPerDeg * kRadPerDeg;
+  // j runs over the chain's angles up to and including k.
+  for (size_t kb = 0; kb < chain.size(); ++kb)
+    for (int ka = 0; ka < 3; ++ka) {
+      const int k = 3 * chain[kb] + ka;
+      const Eigen::Vector3d dk = kin.joint_axis(chain[kb], ka).cross(p - kin.joint_origin(chain[kb]));
+      for (size_t jb = 0; jb <= kb; ++jb)
+        for (int ja = 0; ja < (jb == kb ? ka + 1 : 3); ++ja) {
+          const int j = 3 * chain[jb] + ja;
+          const Eigen::Vector3d d2 = scale * kin.joint_axis(chain[jb], ja).cross(dk);
+          hx(j, k) = hx(k, j) = d2.x();
+          hy(j, k) = hy(k, j) = d2.y();
+          hz(j, k) = hz(k, j) = d2.z();
+        }
+    }
+}
+
+void add_weighted_tip_hessian(const Kinematics& kin, const Eigen::Ref<const Eigen::VectorXd>& weights,
+                              Eigen::Ref<Eigen::MatrixXd> out) {
+  constexpr double scale = kRadPerDeg * kRadPerDeg;
+  for (int e = 0; e < kin.num_effectors(); ++e) {
+    const int bone = kin.rig().effectors[e];
+    const Eigen::Vector3d p = kin.tip(bone);
+    const Eigen::Vector3d w = weights.segment<3>(3 * e);
+    const std::vector<int>& chain = kin.chain(bone);
+    // w . (a_j x d_k) = a_j . (d_k x w): one cross product per k, one dot per (j, k).
+    for (size_t kb = 0; kb < chain.size(); ++kb)
+      for (int ka = 0; ka < 3; ++ka) {
+        const int k = 3 * chain[kb] + ka;
+        const Eigen::Vector3d c = scale * kin.joint_axis(chain[kb], ka).cross(p - kin.joint_origin(chain[kb])).cross(w);
+        for (size_t jb = 0; jb <= kb; ++jb)
+          for (int ja = 0; ja < (jb == kb ? ka + 1 : 3); ++ja) {
+            const int j = 3 * chain[jb] + ja;
+            const double v = kin.joint_axis(chain[jb], ja).dot(c);
+            out(j, k) += v;
+            if (j != k) out(k, j) += v;
+          }
+      }
+  }
+}
+
+}  // namespace ik

@@ -1,0 +1,151 @@
+// A small solver benchmark on the report's target sets (PROTOCOL.md): per method, median and
+// mean iterations, median and mean time per solve, E average / IQM / max, and the success rate
+// (E < error tolerance). The same program builds natively and for Node (build/wasm/solver_speed.cjs).
+// The project's full benchmark CLI is `npm run bench`; this one only checks the solvers.
+//
+// Usage: solver_speed RIG.json [--methods gd,bfgs,...] [--set incremental|random|both]
+//                     [--samples N] [--gd-samples N] [--paper] [--restarts N] [--seed S]
+// Tolerances are the report's: beast (0.01, 0.002), others (1e-4, 2e-4); time budget 1 s.
+// Exits 1 if a solve returns invalid_input or numerical_failure, or leaves the limits.
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <numeric>
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "../native/a7_rig.h"
+#include "kinematics.h"
+#include "solvers/solver_registry.h"
+
+namespace {
+
+struct Case {
+  Eigen::VectorXd start, target;
+};
+
+std::vector<Case> make_cases(ik::Kinematics& kin, bool incremental, int count, unsigned seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  std::vector<Case> cases;
+  Eigen::VectorXd previous = Eigen::VectorXd::Zero(kin.num_angles());
+  for (int k = 0; k < count; ++k) {
+    Eigen::VectorXd goal(kin.num_angles());
+    for (int i = 0; i < goal.size(); ++i) goal[i] = incremental ? previous[i] + 5.0 * u(rng) : 360.0 * u(rng);
+    kin.project(goal);
+    Case c{incremental ? previous : Eigen::VectorXd::Zero(kin.num_angles()), Eigen::VectorXd(kin.num_residuals())};
+    kin.tips(goal, c.target);
+    previous = goal;
+    cases.push_back(c);
+  }
+  return cases;
+}
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  const size_t n = v.size();
+  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+double mean(const std::vector<double>& v) { return std::accumulate(v.begin(), v.end(), 0.0) / v.size(); }
+
+// Mean of the middle half of the sorted values (the report's E_IQM).
+double interquartile_mean(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  const size_t lo = v.size() / 4, hi = v.size() - v.size() / 4;
+  return std::accumulate(v.begin() + lo, v.begin() + hi, 0.0) / (hi - lo);
+}
+
+std::vector<std::string> split(const std::string& list) {
+  std::vector<std::string> out;
+  std::stringstream in(list);
+  for (std::string item; std::getline(in, item, ',');) out.push_back(item);
+  return out;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc < 2) {
+    std::fprintf(stderr,
+                 "usage: solver_speed RIG.json [--methods a,b] [--set incremental|random|both] [--samples N]\n"
+                 "                    [--gd-samples N] [--paper] [--restarts N] [--seed S]\n");
+    return 2;
+  }
+  const std::string path = argv[1];
+  std::vector<std::string> methods = ik::solver_names();
+  std::string set = "both";
+  int samples = 200, gd_samples = -1, restarts = 0;
+  unsigned seed = 2020;
+  bool paper = false;
+  for (int i = 2; i < argc; ++i) {
+    const std::string flag = argv[i];
+    auto value = [&]() -> std::string {
+      if (i + 1 >= argc) {
+        std::fprintf(stderr, "%s needs a value\n", flag.c_str());
+        std::exit(2);
+      }
+      return argv[++i];
+    };
+    if (flag == "--methods") methods = split(value());
+    else if (flag == "--set") set = value();
+    else if (flag == "--samples") samples = std::atoi(value().c_str());
+    else if (flag == "--gd-samples") gd_samples = std::atoi(value().c_str());
+    else if (flag == "--restarts") restarts = std::atoi(value().c_str());
+    else if (flag == "--seed") seed = static_cast<unsigned>(std::atoi(value().c_str()));
+    else if (flag == "--paper") paper = true;
+    else {
+      std::fprintf(stderr, "unknown option %s\n", flag.c_str());
+      return 2;
+    }
+  }
+  if (gd_samples < 0) gd_samples = samples;
+  const bool beast = path.find("beast") != std::string::npos;
+  int status = 0;
+  try {
+    ik::Kinematics kin(ik::load_a7_rig(path));
+    std::printf("%-11s %-6s %5s %8s %8s %10s %10s %10s %10s %10s %7s\n", "set", "method", "n", "it_med", "it_avg",
+                "t_med_us", "t_avg_us", "E_avg", "E_iqm", "E_max", "success");
+    for (const std::string which : {"incremental", "random"}) {
+      if (set != "both" && set != which) continue;
+      for (const std::string& method : methods) {
+        ik::SolverOptions options;
+        options.gradient_tolerance = beast ? 0.01 : 1e-4;
+        options.error_tolerance = beast ? 0.002 : 2e-4;
+        options.paper_mode = paper;
+        options.restarts = restarts;
+        std::unique_ptr<ik::Solver> solver = ik::make_solver(method, kin, options);
+        const int count = method == "gd" ? gd_samples : samples;
+        const std::vector<Case> cases = make_cases(kin, which == std::string("incremental"), count, seed);
+        std::vector<double> iterations, seconds, errors;
+        int successes = 0;
+        for (const Case& c : cases) {
+          const auto t0 = std::chrono::steady_clock::now();
+          const ik::SolverSummary& s = solver->solve(c.start, c.target);
+          seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+          iterations.push_back(s.iterations);
+          errors.push_back(s.E);
+          successes += s.E < options.error_tolerance;
+          const bool inside = ((s.angles - kin.lower()).array() >= 0).all() && ((kin.upper() - s.angles).array() >= 0).all();
+          if (s.stop_reason == ik::StopReason::invalid_input || s.stop_reason == ik::StopReason::numerical_failure ||
+              !inside) {
+            std::fprintf(stderr, "%s %s: %s %s\n", method.c_str(), which.c_str(), ik::stop_reason_name(s.stop_reason),
+                         inside ? s.message.c_str() : "angles outside the limits");
+            status = 1;
+          }
+        }
+        std::printf("%-11s %-6s %5d %8.1f %8.2f %10.2f %10.2f %10.3g %10.3g %10.3g %6.1f%%\n", which.c_str(),
+                    method.c_str(), count, median(iterations), mean(iterations), 1e6 * median(seconds),
+                    1e6 * mean(seconds), mean(errors), interquartile_mean(errors),
+                    *std::max_element(errors.begin(), errors.end()), 100.0 * successes / count);
+      }
+    }
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "%s\n", e.what());
+    return 1;
+  }
+  return status;
+}
