@@ -1,0 +1,139 @@
+// Summary statistics of per-solve results, and one row of the report's tables.
+//
+// Definitions (n values, x_(0) <= ... <= x_(n-1) sorted):
+//   mean            sum / n
+//   quantile(p)     linear interpolation between closest ranks: at position h = p (n - 1),
+//                   x_(floor h) + (h - floor h) (x_(floor h + 1) - x_(floor h)) (numpy's default);
+//                   median = quantile(0.5), p95 = quantile(0.95)
+//   IQM             the mean of the middle half. In rank space value x_(i) covers [i, i + 1); the
+//                   middle half is [n/4, 3n/4]; each value is weighted by its overlap with that
+//                   interval and the weighted sum is divided by n/2. For n divisible by 4 this is
+//                   the plain mean of x_(n/4) .. x_(3n/4 - 1); otherwise the two boundary values
+//                   enter with a fractional weight (n = 5: 0.75 x_(1) + x_(2) + 0.75 x_(3), over 2.5).
+//   success rate    fraction of solves whose final E < ftol
+//   wobble (drag)   per step, the largest distance (rig units) of a pinned end effector from its
+//                   target; "during" is the largest over the solve's iterates, "after" at its end.
+import type { Experiment } from './targets.js';
+
+export function mean(values: ArrayLike<number>): number {
+  if (values.length === 0) return NaN;
+  let s = 0;
+  for (let i = 0; i < values.length; i++) s += values[i];
+  return s / values.length;
+}
+
+export function maxOf(values: ArrayLike<number>): number {
+  if (values.length === 0) return NaN;
+  let m = -Infinity;
+  for (let i = 0; i < values.length; i++) m = Math.max(m, values[i]);
+  return m;
+}
+
+function sorted(values: ArrayLike<number>): Float64Array {
+  return Float64Array.from(values).sort();
+}
+
+/** Quantile p in [0, 1] by linear interpolation between closest ranks. NaN for no values. */
+export function quantile(values: ArrayLike<number>, p: number): number {
+  const s = sorted(values);
+  return quantileSorted(s, p);
+}
+
+function quantileSorted(s: Float64Array, p: number): number {
+  const n = s.length;
+  if (n === 0) return NaN;
+  const h = p * (n - 1);
+  const lo = Math.floor(h);
+  const hi = Math.min(lo + 1, n - 1);
+  return s[lo] + (h - lo) * (s[hi] - s[lo]);
+}
+
+export function median(values: ArrayLike<number>): number {
+  return quantile(values, 0.5);
+}
+
+/** Interquartile mean: the mean of the middle half, fractional weights at the edges (see above). */
+export function interquartileMean(values: ArrayLike<number>): number {
+  const s = sorted(values);
+  const n = s.length;
+  if (n === 0) return NaN;
+  const lo = n / 4, hi = (3 * n) / 4;
+  let sum = 0;
+  for (let i = Math.floor(lo); i < Math.ceil(hi); i++) {
+    const w = Math.min(i + 1, hi) - Math.max(i, lo);
+    if (w > 0) sum += w * s[i];
+  }
+  return sum / (n / 2);
+}
+
+/** What one solve produced. Times in seconds, E in rig units^2, wobble in rig units. */
+export interface SolveResult {
+  E: number;
+  iterations: number;
+  seconds: number;
+  stopReason: string;
+  /** drag only: pinned effectors' largest distance from their targets over the iterates / at the end. */
+  wobbleDuring: number;
+  wobbleAfter: number;
+}
+
+/** One row of the tables and of --json. */
+export interface Row {
+  rig: string;
+  experiment: Experiment;
+  method: string;
+  engine: string;
+  samples: number;
+  t_avg_s: number;
+  t_median_s: number;
+  t_p95_s: number;
+  t_max_s: number;
+  iter_avg: number;
+  E_avg: number;
+  E_iqm: number;
+  E_max: number;
+  success_rate: number;
+  /** Count per stop reason, e.g. {"converged_E": 180, "timeout": 20}. */
+  stop_reasons: Record<string, number>;
+  /** drag only (null otherwise, and when the rig has a single end effector). */
+  wobble_during_avg: number | null;
+  wobble_during_max: number | null;
+  wobble_after_avg: number | null;
+  wobble_after_max: number | null;
+}
+
+export interface RowKey {
+  rig: string;
+  experiment: Experiment;
+  method: string;
+  engine: string;
+}
+
+/** Summarises per-solve results into a table row; success means final E < ftol. */
+export function summarize(key: RowKey, results: readonly SolveResult[], ftol: number): Row {
+  const E = results.map((r) => r.E);
+  const t = results.map((r) => r.seconds);
+  const stop: Record<string, number> = {};
+  for (const r of results) stop[r.stopReason] = (stop[r.stopReason] ?? 0) + 1;
+  const during = results.map((r) => r.wobbleDuring).filter((w) => Number.isFinite(w));
+  const after = results.map((r) => r.wobbleAfter).filter((w) => Number.isFinite(w));
+  const orNull = (v: number): number | null => (Number.isFinite(v) ? v : null);
+  return {
+    ...key,
+    samples: results.length,
+    t_avg_s: mean(t),
+    t_median_s: median(t),
+    t_p95_s: quantile(t, 0.95),
+    t_max_s: maxOf(t),
+    iter_avg: mean(results.map((r) => r.iterations)),
+    E_avg: mean(E),
+    E_iqm: interquartileMean(E),
+    E_max: maxOf(E),
+    success_rate: results.length ? results.filter((r) => r.E < ftol).length / results.length : NaN,
+    stop_reasons: stop,
+    wobble_during_avg: orNull(mean(during)),
+    wobble_during_max: orNull(maxOf(during)),
+    wobble_after_avg: orNull(mean(after)),
+    wobble_after_max: orNull(maxOf(after)),
+  };
+}

@@ -1,0 +1,220 @@
+// Peer: closed-chain-ik (npm), a damped-least-squares solver with per-DOF joint limits, on our
+// rigs. Settings are written down in bench-node/README.md ("Peers").
+//
+// Structure per bone i (parent p): under bone p's link (or the root link), three single-DOF joints
+// J_x0 -> J_z -> J_x2 with links between them; J_x0 sits at rest_p^-1 * rest_i (rest_i for a
+// root), so the last link is the canonical bone frame T_i * rest_i and the XZX angles and their
+// limits map one to one (radians). Fixed angles (min = max) become joints without DOF, rotated by
+// the fixed value. End-effector bones get a DOF-less joint at (length, 0, 0) and a tip link, and
+// a position-only Goal (DOF X, Y, Z) closes onto that tip link.
+// One solve = Solver.solve() calls of CHUNK_ITERATIONS iterations each until every chain reports
+// CONVERGED, one reports STALLED or DIVERGED, or the time budget is spent (checked between
+// calls). E is measured from the tip links' world positions (the library computes in float32).
+// The package has no "main" or "exports" for Node, hence the path into it.
+import * as closedChainIk from 'closed-chain-ik/src/core/index.js';
+import { Goal, Joint, Link, Solver, SOLVE_STATUS_NAMES } from 'closed-chain-ik/src/core/index.js';
+import { Matrix4, Quaternion, Vector3 } from 'three';
+
+import type { RigSpec } from '../../web/src/ik/rig_spec.js';
+import { errorOf, pinnedDeviation } from '../evaluate.js';
+import type { SolveResult } from '../metrics.js';
+import type { Runner, RunSettings, SolveInput } from '../runner.js';
+import { REFERENCE_SIZE } from '../rigs.js';
+import { project } from '../targets.js';
+import { topologicalOrder } from './three_ccd.js';
+
+/** Iterations per Solver.solve() call; the time budget is checked between calls. */
+export const CHUNK_ITERATIONS = 20;
+/** A step smaller than this on every DOF (radians) counts as a zero step. */
+export const STALL_RAD = 1e-9;
+
+const RAD = Math.PI / 180;
+/** The library's DOF enum: a const enum in its typings, so read from the module at run time. */
+const DOF = (closedChainIk as unknown as { DOF: Record<'X' | 'Y' | 'Z' | 'EX' | 'EY' | 'EZ', number> }).DOF;
+const X_AXIS = new Vector3(1, 0, 0);
+const Z_AXIS = new Vector3(0, 0, 1);
+
+/** The library's per-chain solver, whose step we count (not part of its typings). */
+interface ChainSolverLike {
+  applyJointAngles(...args: unknown[]): boolean;
+}
+
+export class ClosedChainIkRunner implements Runner {
+  private readonly solver: Solver;
+  /** Per angle (3 per bone): the joint carrying it and its DOF, or null when fixed. */
+  private readonly dofs: Array<{ joint: Joint; dof: number } | null> = [];
+  private readonly tipLinks: Link[] = [];
+  private readonly goals: Goal[] = [];
+  private readonly tipBuffer: Float64Array;
+  private readonly poseOut: Float64Array;
+  private readonly position = new Float32Array(3);
+  private iterations = 0;
+  private observe: (() => void) | null = null;
+
+  constructor(
+    private readonly spec: RigSpec,
+    private readonly settings: RunSettings,
+  ) {
+    const n = spec.parents.length;
+    const root = new Link();
+    const boneLinks: Link[] = [];
+    const restOf = (i: number): Matrix4 => new Matrix4().fromArray(spec.rest.subarray(16 * i, 16 * i + 16)).transpose();
+    const position = new Vector3(), scale = new Vector3(), rotation = new Quaternion();
+    for (const i of topologicalOrder(spec.parents)) {
+      const p = spec.parents[i];
+      const local = p === -1 ? restOf(i) : restOf(p).invert().multiply(restOf(i));
+      local.decompose(position, rotation, scale);
+      let parent = p === -1 ? root : boneLinks[p];
+      for (let k = 0; k < 3; k++) {
+        const joint = new Joint();
+        const axis = k === 1 ? Z_AXIS : X_AXIS;
+        const dof = k === 1 ? DOF.EZ : DOF.EX;
+        const q = k === 0 ? rotation.clone() : new Quaternion();
+        if (k === 0) joint.setPosition(position.x, position.y, position.z);
+        const lo = spec.lower[3 * i + k], hi = spec.upper[3 * i + k];
+        if (lo === hi) {
+          q.multiply(new Quaternion().setFromAxisAngle(axis, lo * RAD));
+          this.dofs[3 * i + k] = null;
+        } else {
+          joint.setDoF(dof);
+          if (Number.isFinite(lo)) joint.setMinLimits(lo * RAD);
+          if (Number.isFinite(hi)) joint.setMaxLimits(hi * RAD);
+          this.dofs[3 * i + k] = { joint, dof };
+        }
+        joint.setQuaternion(q.x, q.y, q.z, q.w);
+        const link = new Link();
+        parent.addChild(joint);
+        joint.addChild(link);
+        parent = link;
+      }
+      boneLinks[i] = parent;
+    }
+    spec.effectors.forEach((b, e) => {
+      const joint = new Joint();
+      joint.setPosition(spec.lengths[b], 0, 0);
+      const tip = new Link();
+      boneLinks[b].addChild(joint);
+      joint.addChild(tip);
+      this.tipLinks[e] = tip;
+      const goal = new Goal();
+      goal.setGoalDoF(DOF.X, DOF.Y, DOF.Z);
+      goal.makeClosure(tip);
+      this.goals[e] = goal;
+    });
+
+    const size = settings.rigSize / REFERENCE_SIZE;
+    this.solver = new Solver([root, ...this.goals]);
+    this.solver.maxIterations = CHUNK_ITERATIONS;
+    this.solver.useSVD = false; // the library's default; its README warns SVD can diverge
+    this.solver.restPoseFactor = 0; // no rest pose is set: skip the null-space term
+    this.solver.translationConvergeThreshold = Math.sqrt((2 * settings.ftol) / spec.effectors.length);
+    // Lengths in the library's defaults assume a rig about 1 unit across; scale them with the rig.
+    this.solver.translationErrorClamp = 0.1 * size;
+    this.solver.dampingFactor = 0.001 * size;
+    // Like our methods, run until E < ftol, a step that moves nothing, or the time budget: the
+    // library's divergence stop (error up by 0.01) and stall stop (no DOF moved 1e-4 rad) ended
+    // most random-target solves early; without them more solves converged on every A7 rig.
+    this.solver.divergeThreshold = Infinity;
+    this.solver.stallThreshold = STALL_RAD;
+    for (const chain of (this.solver as unknown as { solvers: ChainSolverLike[] }).solvers) {
+      const apply = chain.applyJointAngles.bind(chain);
+      chain.applyJointAngles = (...args: unknown[]): boolean => {
+        const locked = apply(...args);
+        this.iterations++;
+        this.observe?.();
+        return locked;
+      };
+    }
+    this.tipBuffer = new Float64Array(3 * spec.effectors.length);
+    this.poseOut = new Float64Array(3 * n);
+    this.setPose(project(spec, new Float64Array(3 * n)));
+  }
+
+  private setPose(angles: Float64Array): void {
+    const a = project(this.spec, angles.slice());
+    this.dofs.forEach((d, k) => d?.joint.setDoFValue(d.dof, a[k] * RAD));
+  }
+
+  private readTips(): Float64Array {
+    this.tipLinks.forEach((link, e) => {
+      link.updateMatrixWorld();
+      link.getWorldPosition(this.position as unknown as number[]);
+      this.tipBuffer.set(this.position, 3 * e);
+    });
+    return this.tipBuffer;
+  }
+
+  /** Runs solve() calls until a stop; `untilIterations` replaces the time budget (replays). */
+  private run(deadline: number, untilIterations: number): string {
+    this.iterations = 0;
+    for (;;) {
+      const statuses = this.solver.solve().map((s) => SOLVE_STATUS_NAMES[s as unknown as number]);
+      if (statuses.every((s) => s === 'CONVERGED')) return 'converged_E';
+      if (statuses.includes('DIVERGED')) return 'diverged';
+      if (statuses.includes('STALLED') && !statuses.includes('TIMEOUT')) return 'zero_step';
+      if (this.iterations >= untilIterations) return 'max_iterations';
+      if (performance.now() >= deadline) return 'timeout';
+    }
+  }
+
+  solve(input: SolveInput): SolveResult {
+    const start = input.start ? input.start.slice() : this.currentAngles();
+    const t0 = performance.now();
+    if (input.start) this.setPose(input.start);
+    this.goals.forEach((g, e) => g.setPosition(input.target[3 * e], input.target[3 * e + 1], input.target[3 * e + 2]));
+    let stopReason: string;
+    try {
+      stopReason = this.run(t0 + 1000 * this.settings.timeoutSeconds, Infinity);
+    } catch {
+      // The library throws when every free DOF is locked at a limit (an empty matrix product).
+      stopReason = 'library_error';
+    }
+    this.copyOut();
+    const seconds = (performance.now() - t0) / 1000;
+    const iterations = this.iterations;
+
+    const tips = this.readTips();
+    const E = errorOf(tips, input.target);
+    // The library's convergence test is per goal in float32; report our own test's verdict.
+    if (stopReason === 'converged_E' && !(E < this.settings.ftol)) stopReason = 'converged_float32';
+    const after = pinnedDeviation(tips, input.target, input.dragged);
+    let during = after;
+    if (input.dragged >= 0 && Number.isFinite(after) && iterations > 0) during = this.replayWobble(start, input, iterations);
+    return { E, iterations, seconds, stopReason, wobbleDuring: during, wobbleAfter: after };
+  }
+
+  /** Replays the solve (same start, same iteration count) observing the pinned effectors. */
+  private replayWobble(start: Float64Array, input: SolveInput, iterations: number): number {
+    const end = this.currentAngles();
+    let worst = 0;
+    this.setPose(start);
+    this.observe = () => {
+      worst = Math.max(worst, pinnedDeviation(this.readTips(), input.target, input.dragged));
+    };
+    try {
+      this.run(Infinity, iterations);
+    } catch {
+      // Same failure as the timed solve; the iterates seen so far count.
+    } finally {
+      this.observe = null;
+      this.setPose(end);
+    }
+    return worst;
+  }
+
+  /** The pose as XZX degrees, what a user reads back after a solve. */
+  private copyOut(): Float64Array {
+    this.dofs.forEach((d, k) => {
+      this.poseOut[k] = d ? Number(d.joint.getDoFValue(d.dof)) / RAD : this.spec.lower[k];
+    });
+    return this.poseOut;
+  }
+
+  private currentAngles(): Float64Array {
+    return this.copyOut().slice();
+  }
+
+  dispose(): void {
+    this.observe = null;
+  }
+}

@@ -1,0 +1,111 @@
+// The native engine: the same C++ core built with g++ (build/native/ik_bench_native, source
+// wasm/tools/ik_bench_native.cpp), driven by the same target sets. The rig goes over as A7 JSON,
+// the starts and targets as float64 binary; batches of whole independent ranges (as for the
+// workers) run in up to `workers` processes at once; each writes one result line per solve.
+import { spawn } from 'node:child_process';
+import { existsSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+import { fileURLToPath } from 'node:url';
+
+import type { RigSpec } from '../web/src/ik/rig_spec.js';
+import { writeA7Rig } from './a7_writer.js';
+import { BenchError } from './errors.js';
+import type { SolveResult } from './metrics.js';
+import { batchesOf } from './run_wasm.js';
+import type { RunSettings } from './runner.js';
+import type { TargetSet } from './targets.js';
+
+export const nativeToolPath = fileURLToPath(new URL('../build/native/ik_bench_native', import.meta.url));
+
+const BATCHES_PER_PROCESS = 4;
+
+/** The job file: header "IKBJOB1\0", int32 count, #angles, #residuals, 0; then per sample
+ *  float64 chained, dragged, start (#angles), target (#residuals). */
+export function encodeJob(set: TargetSet, begin: number, end: number): Uint8Array {
+  const m = set.numAngles, r = set.numResiduals, stride = 2 + m + r;
+  const count = end - begin;
+  const bytes = new Uint8Array(24 + 8 * stride * count);
+  bytes.set(new TextEncoder().encode('IKBJOB1\0'), 0);
+  const header = new DataView(bytes.buffer, 8, 16);
+  [count, m, r, 0].forEach((v, i) => header.setInt32(4 * i, v, true));
+  const body = new DataView(bytes.buffer, 24);
+  let offset = 0;
+  const put = (x: number): void => {
+    body.setFloat64(offset, x, true);
+    offset += 8;
+  };
+  for (let k = begin; k < end; k++) {
+    put(k > begin ? set.chained[k] : 0);
+    put(set.dragged[k]);
+    for (let i = 0; i < m; i++) put(set.starts[k * m + i]);
+    for (let i = 0; i < r; i++) put(set.targets[k * r + i]);
+  }
+  return bytes;
+}
+
+/** Parses RESULTS.tsv (see ik_bench_native.cpp). */
+export function decodeResults(text: string, expected: number, file: string): SolveResult[] {
+  const lines = text.split('\n').filter((l) => l.length > 0);
+  if (lines.length !== expected) throw new BenchError(`native engine: ${file} has ${lines.length} results, expected ${expected}`);
+  return lines.map((line) => {
+    const f = line.split('\t');
+    const num = (i: number): number => (f[i] === 'nan' || f[i] === '-nan' ? NaN : Number(f[i]));
+    return { E: num(0), iterations: num(2), seconds: num(5), stopReason: f[6], wobbleDuring: num(7), wobbleAfter: num(8) };
+  });
+}
+
+function runProcess(args: string[]): Promise<void> {
+  return new Promise((resolve, reject) => {
+    const child = spawn(nativeToolPath, args, { stdio: ['ignore', 'ignore', 'pipe'] });
+    let stderr = '';
+    child.stderr.on('data', (d: Buffer) => (stderr += d.toString()));
+    child.on('error', (e) => reject(new BenchError(`native engine: ${e.message}`)));
+    child.on('close', (code) => {
+      if (code === 0) resolve();
+      else reject(new BenchError(`native engine: ${stderr.trim().split('\n')[0] || `exit code ${code}`}`));
+    });
+  });
+}
+
+export function checkNativeTool(): void {
+  if (!existsSync(nativeToolPath))
+    throw new BenchError(`native engine: ${nativeToolPath} is missing; build it with "bash scripts/setup.sh --native"`);
+}
+
+/** Runs every sample of `set` with the native tool; results in sample order. */
+export async function runNative(
+  spec: RigSpec,
+  settings: RunSettings,
+  set: TargetSet,
+  processes: number,
+  onProgress: (solved: number) => void,
+): Promise<SolveResult[]> {
+  checkNativeTool();
+  const dir = mkdtempSync(join(tmpdir(), 'ik-bench-'));
+  try {
+    const rigFile = join(dir, 'rig.json');
+    writeFileSync(rigFile, writeA7Rig(spec));
+    const batches = batchesOf(set, processes * BATCHES_PER_PROCESS);
+    const results: SolveResult[][] = new Array(batches.length);
+    let next = 0;
+    const lane = async (): Promise<void> => {
+      while (next < batches.length) {
+        const b = next++;
+        const [begin, end] = batches[b];
+        const input = join(dir, `job${b}.bin`), output = join(dir, `results${b}.tsv`);
+        writeFileSync(input, encodeJob(set, begin, end));
+        const args = ['--rig', rigFile, '--method', settings.method, '--input', input, '--output', output,
+          '--gtol', String(settings.gtol), '--ftol', String(settings.ftol), '--timeout', String(settings.timeoutSeconds)];
+        if (settings.paper) args.push('--paper');
+        await runProcess(args);
+        results[b] = decodeResults(readFileSync(output, 'utf8'), end - begin, output);
+        onProgress(end - begin);
+      }
+    };
+    await Promise.all(Array.from({ length: Math.min(processes, batches.length) }, lane));
+    return results.flat();
+  } finally {
+    rmSync(dir, { recursive: true, force: true });
+  }
+}

@@ -1,0 +1,34 @@
+// What every method looks like to a worker: solve one target from a start (or from where the
+// previous solve ended), time it, and report the result. Implemented for our solvers
+// (solve_wasm.ts) and for the peers (peers/).
+import type { SolveResult } from './metrics.js';
+
+export interface SolveInput {
+  /** Start angles (#angles, degrees), or null to continue from the previous solve's pose (drag). */
+  start: Float64Array | null;
+  /** Targets x_b (3 per end effector, rig units). */
+  target: Float64Array;
+  /** Drag: the dragged effector (index into the rig's effectors); the others are pinned. -1: none. */
+  dragged: number;
+}
+
+/** Settings shared by every method of a run, for one rig. */
+export interface RunSettings {
+  method: string;
+  gtol: number;
+  ftol: number;
+  timeoutSeconds: number;
+  paper: boolean;
+  /** Rig size (rig units; see rigs.ts), for peers whose settings are lengths. */
+  rigSize: number;
+}
+
+export interface Runner {
+  /**
+   * Solves once. `seconds` is performance.now() around the whole call a user would make: copying
+   * the start and targets in, the solve, and copying the pose out. Never throws for a failed
+   * solve: the failure is its stopReason.
+   */
+  solve(input: SolveInput): SolveResult;
+  dispose(): void;
+}

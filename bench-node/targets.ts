@@ -1,0 +1,200 @@
+// The target sets of PROTOCOL.md, plus the drag experiment. Generated once per (rig, experiment)
+// in the main thread from a seeded stream, before any solve, so every method, engine and worker
+// count sees identical starts and targets; a method asked for fewer samples takes a prefix.
+//
+//   random:      A_k = P(360 * U(-1,1)^(3m)); each solve starts from P(0) (the rest pose).
+//   incremental: A_0 = P(0), A_k = P(A_(k-1) + 5 * U(-1,1)^(3m)); solve k starts from A_(k-1).
+//   drag:        paths of DRAG_PATH_STEPS steps. Along a path one end effector's exclusive angles
+//                (bones that move no other effector) follow a sine from a base pose while every
+//                other angle stays at the base, so the other effectors are pinned by construction.
+//                The first step of a path starts from the base pose; the others start from the
+//                previous step's solution (`chained`), as when a user drags an effector.
+// Every target is x_b = x(A_k): reachable by construction. Angles are degrees, P clamps to limits.
+import type { RigSpec } from '../web/src/ik/rig_spec.js';
+import { signedUnit, streamFor } from './prng.js';
+
+export type Experiment = 'random' | 'incremental' | 'drag';
+export const experiments: readonly Experiment[] = ['random', 'incremental', 'drag'];
+
+/** Steps per drag path. */
+export const DRAG_PATH_STEPS = 40;
+/** Largest random step per angle in the incremental experiment, degrees. */
+export const INCREMENTAL_STEP_DEG = 5;
+/** Drag: half-range of the base pose around the rest pose, and the sine amplitudes, degrees. */
+export const DRAG_BASE_DEG = 20;
+export const DRAG_AMPLITUDE_DEG: readonly [number, number] = [10, 30];
+
+/** Forward kinematics: end-effector tips (3 per effector) at `angles`. */
+export type TipsFn = (angles: Float64Array) => Float64Array;
+
+export interface TargetSet {
+  experiment: Experiment;
+  count: number;
+  numAngles: number;
+  numResiduals: number;
+  /** count x numAngles: start angles of each solve (for chained drag steps: the ideal previous pose). */
+  starts: Float64Array;
+  /** count x numAngles: the angles A_k the target was made from. */
+  targetAngles: Float64Array;
+  /** count x numResiduals: x_b = x(A_k). */
+  targets: Float64Array;
+  /** 1 where the solve starts from the previous solve's result instead of `starts` (drag). */
+  chained: Uint8Array;
+  /** drag: the dragged effector (index into spec.effectors) per sample; -1 otherwise. */
+  dragged: Int32Array;
+  /** drag: path index per sample; for other experiments each sample is its own group. */
+  group: Int32Array;
+}
+
+/** A view of samples [0, count) of a set (a prefix: what a method with fewer samples gets). */
+export function prefix(set: TargetSet, count: number): TargetSet {
+  const n = Math.min(count, set.count);
+  const m = set.numAngles, r = set.numResiduals;
+  return {
+    ...set,
+    count: n,
+    starts: set.starts.subarray(0, n * m),
+    targetAngles: set.targetAngles.subarray(0, n * m),
+    targets: set.targets.subarray(0, n * r),
+    chained: set.chained.subarray(0, n),
+    dragged: set.dragged.subarray(0, n),
+    group: set.group.subarray(0, n),
+  };
+}
+
+/** Clamps `a` into the spec's limits, in place. */
+export function project(spec: RigSpec, a: Float64Array): Float64Array {
+  for (let i = 0; i < a.length; i++) a[i] = Math.min(spec.upper[i], Math.max(spec.lower[i], a[i]));
+  return a;
+}
+
+/** Generates `count` samples of `experiment` for a run seeded with `seed`. */
+export function generateTargets(
+  spec: RigSpec,
+  experiment: Experiment,
+  count: number,
+  seed: number,
+  tips: TipsFn,
+): TargetSet {
+  const m = spec.lower.length;
+  const r = 3 * spec.effectors.length;
+  const set: TargetSet = {
+    experiment,
+    count,
+    numAngles: m,
+    numResiduals: r,
+    starts: new Float64Array(count * m),
+    targetAngles: new Float64Array(count * m),
+    targets: new Float64Array(count * r),
+    chained: new Uint8Array(count),
+    dragged: new Int32Array(count).fill(-1),
+    group: Int32Array.from({ length: count }, (_, k) => k),
+  };
+  const rand = streamFor(seed, experiment);
+  if (experiment === 'random') fillRandom(spec, set, rand);
+  else if (experiment === 'incremental') fillIncremental(spec, set, rand);
+  else fillDrag(spec, set, rand);
+  for (let k = 0; k < count; k++) set.targets.set(tips(set.targetAngles.subarray(k * m, (k + 1) * m)), k * r);
+  return set;
+}
+
+function fillRandom(spec: RigSpec, set: TargetSet, rand: () => number): void {
+  const m = set.numAngles;
+  const rest = project(spec, new Float64Array(m));
+  for (let k = 0; k < set.count; k++) {
+    const a = set.targetAngles.subarray(k * m, (k + 1) * m);
+    for (let i = 0; i < m; i++) a[i] = 360 * signedUnit(rand);
+    project(spec, a);
+    set.starts.set(rest, k * m);
+  }
+}
+
+function fillIncremental(spec: RigSpec, set: TargetSet, rand: () => number): void {
+  const m = set.numAngles;
+  let previous = project(spec, new Float64Array(m));
+  for (let k = 0; k < set.count; k++) {
+    const a = set.targetAngles.subarray(k * m, (k + 1) * m);
+    for (let i = 0; i < m; i++) a[i] = previous[i] + INCREMENTAL_STEP_DEG * signedUnit(rand);
+    project(spec, a);
+    set.starts.set(previous, k * m);
+    previous = a;
+  }
+}
+
+/** Bones from a root down to `bone`, inclusive. */
+function chainOf(spec: RigSpec, bone: number): number[] {
+  const chain: number[] = [];
+  for (let b = bone; b !== -1; b = spec.parents[b]) chain.push(b);
+  return chain;
+}
+
+/**
+ * Per end effector (index into spec.effectors), the movable angles that move it and no other
+ * effector: angles of bones on its chain that are on no other effector's chain, and not fixed.
+ */
+export function exclusiveAngles(spec: RigSpec): number[][] {
+  const chains = Array.from(spec.effectors, (b) => new Set(chainOf(spec, b)));
+  return chains.map((chain, e) => {
+    const angles: number[] = [];
+    for (const bone of [...chain].sort((x, y) => x - y)) {
+      if (chains.some((other, f) => f !== e && other.has(bone))) continue;
+      for (let k = 3 * bone; k < 3 * bone + 3; k++) if (spec.lower[k] < spec.upper[k]) angles.push(k);
+    }
+    return angles;
+  });
+}
+
+/** Effectors a drag path can move with the others pinned (non-empty exclusive angle sets). */
+export function draggableEffectors(spec: RigSpec): number[] {
+  return exclusiveAngles(spec)
+    .map((angles, e) => (angles.length > 0 ? e : -1))
+    .filter((e) => e >= 0);
+}
+
+function fillDrag(spec: RigSpec, set: TargetSet, rand: () => number): void {
+  const m = set.numAngles;
+  const exclusive = exclusiveAngles(spec);
+  const draggable = draggableEffectors(spec);
+  if (draggable.length === 0)
+    throw new Error('drag: no end effector can move while the others stay pinned (every movable bone is shared)');
+  const [ampLo, ampHi] = DRAG_AMPLITUDE_DEG;
+  const pose = new Float64Array(m);
+  for (let path = 0, k = 0; k < set.count; path++) {
+    const effector = draggable[path % draggable.length];
+    const base = new Float64Array(m);
+    for (let i = 0; i < m; i++) base[i] = DRAG_BASE_DEG * signedUnit(rand);
+    project(spec, base);
+    const moving = exclusive[effector];
+    const amplitude = moving.map(() => ampLo + (ampHi - ampLo) * rand());
+    const phase = moving.map(() => 2 * Math.PI * rand());
+    let previous: Float64Array = base;
+    for (let t = 1; t <= DRAG_PATH_STEPS && k < set.count; t++, k++) {
+      pose.set(base);
+      moving.forEach((i, j) => {
+        pose[i] = base[i] + amplitude[j] * (Math.sin((2 * Math.PI * t) / DRAG_PATH_STEPS + phase[j]) - Math.sin(phase[j]));
+      });
+      project(spec, pose);
+      set.targetAngles.set(pose, k * m);
+      set.starts.set(previous, k * m);
+      set.chained[k] = t > 1 ? 1 : 0;
+      set.dragged[k] = effector;
+      set.group[k] = path;
+      previous = set.targetAngles.subarray(k * m, (k + 1) * m);
+    }
+  }
+}
+
+/**
+ * Ranges [begin, end) of samples that can be solved independently: single samples, or whole
+ * drag paths. Workers take whole ranges, so results never depend on the partition.
+ */
+export function independentRanges(set: TargetSet): Array<[number, number]> {
+  const ranges: Array<[number, number]> = [];
+  for (let k = 0; k < set.count; ) {
+    let end = k + 1;
+    while (end < set.count && set.chained[end]) end++;
+    ranges.push([k, end]);
+    k = end;
+  }
+  return ranges;
+}

@@ -1,0 +1,73 @@
+// A worker thread: instantiates the WebAssembly module it was handed (compiled once by the main
+// thread), then runs batches of solves with one Runner per (rig, settings) and replies per batch.
+import { parentPort, workerData } from 'node:worker_threads';
+
+import type { IkCoreModule } from '../web/src/ik/module.js';
+import { loadIk } from '../web/src/ik/module.js';
+import { IkRig } from '../web/src/ik/rig.js';
+import type { SolveResult } from './metrics.js';
+import { makeRunner } from './runners.js';
+import type { Runner } from './runner.js';
+import type { WorkerInit, WorkerReply, WorkerTask } from './worker_protocol.js';
+
+const port = parentPort;
+if (!port) throw new Error('worker.ts runs only as a worker thread');
+const init = workerData as WorkerInit;
+
+const ik: IkCoreModule = await loadIk({
+  instantiateWasm(imports, done) {
+    void WebAssembly.instantiate(init.wasmModule, imports).then((instance) => done(instance, init.wasmModule));
+    return {};
+  },
+});
+
+let cached: { key: string; runner: Runner; rig: IkRig } | undefined;
+
+function runnerFor(task: WorkerTask): { runner: Runner; rig: IkRig } {
+  const key = `${task.rigKey}\u0000${JSON.stringify(task.settings)}`;
+  if (cached?.key === key) return cached;
+  cached?.runner.dispose();
+  cached?.rig.dispose();
+  const rig = new IkRig(ik, task.spec);
+  cached = { key, rig, runner: makeRunner(ik, task.spec, task.settings) };
+  return cached;
+}
+
+function run(task: WorkerTask): SolveResult[] {
+  const { runner, rig } = runnerFor(task);
+  const m = task.numAngles, r = task.numResiduals;
+  const results: SolveResult[] = [];
+  let lastReport = performance.now();
+  for (let k = 0; k < task.count; k++) {
+    const chained = task.chained[k] === 1 && k > 0;
+    const start = chained ? null : task.starts.subarray(k * m, (k + 1) * m);
+    const target = task.targets.subarray(k * r, (k + 1) * r);
+    let result: SolveResult;
+    try {
+      result = runner.solve({ start, target, dragged: task.dragged[k] });
+    } catch (e) {
+      result = { E: NaN, iterations: 0, seconds: 0, stopReason: `exception: ${(e as Error).message.split('\n')[0]}`, wobbleDuring: NaN, wobbleAfter: NaN };
+    }
+    // A solve that failed before producing a pose (invalid input, an exception) is counted with
+    // the E of its start, so averages stay finite and the failure shows in the stop reasons.
+    if (!Number.isFinite(result.E)) result.E = rig.objective(task.starts.subarray(k * m, (k + 1) * m), target);
+    results.push(result);
+    const now = performance.now();
+    if (now - lastReport > 100 || k === task.count - 1) {
+      port!.postMessage({ kind: 'progress', id: task.id, solved: k + 1 } satisfies WorkerReply);
+      lastReport = now;
+    }
+  }
+  return results;
+}
+
+port.on('message', (task: WorkerTask) => {
+  let reply: WorkerReply;
+  try {
+    reply = { kind: 'done', id: task.id, results: run(task) };
+  } catch (e) {
+    reply = { kind: 'failed', id: task.id, message: (e as Error).message.split('\n')[0] };
+  }
+  port.postMessage(reply);
+});
+port.postMessage({ kind: 'ready' } satisfies WorkerReply);

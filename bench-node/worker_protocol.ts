@@ -1,0 +1,32 @@
+// Messages between the main thread (run_wasm.ts) and the worker threads (worker.ts).
+import type { RigSpec } from '../web/src/ik/rig_spec.js';
+import type { SolveResult } from './metrics.js';
+import type { RunSettings } from './runner.js';
+
+/** What a worker gets at start: the WebAssembly module, compiled once by the main thread. */
+export interface WorkerInit {
+  wasmModule: WebAssembly.Module;
+}
+
+/** A batch of solves: samples of a target set, whole drag paths only. */
+export interface WorkerTask {
+  kind: 'task';
+  id: number;
+  /** Identifies the rig, so a worker builds each rig's solver once. */
+  rigKey: string;
+  spec: RigSpec;
+  settings: RunSettings;
+  count: number;
+  numAngles: number;
+  numResiduals: number;
+  starts: Float64Array;
+  targets: Float64Array;
+  chained: Uint8Array;
+  dragged: Int32Array;
+}
+
+export type WorkerReply =
+  | { kind: 'ready' }
+  | { kind: 'progress'; id: number; solved: number }
+  | { kind: 'done'; id: number; results: SolveResult[] }
+  | { kind: 'failed'; id: number; message: string };

@@ -1,0 +1,184 @@
+// The native engine of `npm run bench`: runs one method over a batch of solves prepared by the
+// TypeScript command line (bench-node/run_native.ts), with the same C++ core the WebAssembly build
+// uses, and writes one result line per solve.
+//
+// Usage:
+//   ik_bench_native --rig RIG.json --method NAME --input JOB.bin --output RESULTS.tsv
+//                   [--gtol X] [--ftol Y] [--timeout SECONDS] [--paper]
+//
+// JOB.bin, little-endian:
+//   header  char[8] "IKBJOB1\0", int32 count, int32 #angles, int32 #residuals, int32 0
+//   count records of float64: chained (0 or 1), dragged effector (-1: none), start (#angles,
+//   degrees), target (#residuals, rig units). A chained record starts from the previous record's
+//   solution instead of its start (drag paths).
+// RESULTS.tsv: one line per record, tab-separated:
+//   E  gradient_norm  iterations  function_evaluations  jacobian_evaluations  seconds  stop_reason
+//   wobble_during  wobble_after
+// `seconds` is steady_clock around Solver::solve(). Wobble (records with a dragged effector and
+// other effectors to pin; "nan" otherwise): the largest distance of a pinned effector from its
+// target, over the iterates of a replay of the same solve (max_iterations = the solve's count, no
+// time budget) for "during", at the solution for "after".
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <limits>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "../native/a7_rig.h"
+#include "kinematics.h"
+#include "solvers/solver.h"
+#include "solvers/solver_registry.h"
+
+namespace {
+
+struct Args {
+  std::string rig, method, input, output;
+  ik::SolverOptions options;
+};
+
+[[noreturn]] void usage(const std::string& problem) {
+  throw std::invalid_argument(problem +
+                              "\nusage: ik_bench_native --rig RIG.json --method NAME --input JOB.bin --output "
+                              "RESULTS.tsv [--gtol X] [--ftol Y] [--timeout S] [--paper]");
+}
+
+double number_arg(const std::string& flag, const char* text) {
+  char* end = nullptr;
+  const double x = std::strtod(text, &end);
+  if (end == text || *end != '\0' || !std::isfinite(x) || x < 0) usage(flag + ": \"" + text + "\" is not a number >= 0");
+  return x;
+}
+
+Args parse_args(int argc, char** argv) {
+  Args a;
+  for (int i = 1; i < argc; ++i) {
+    const std::string flag = argv[i];
+    if (flag == "--paper") {
+      a.options.paper_mode = true;
+      continue;
+    }
+    if (i + 1 >= argc) usage(flag + " needs a value");
+    const char* value = argv[++i];
+    if (flag == "--rig") a.rig = value;
+    else if (flag == "--method") a.method = value;
+    else if (flag == "--input") a.input = value;
+    else if (flag == "--output") a.output = value;
+    else if (flag == "--gtol") a.options.gradient_tolerance = number_arg(flag, value);
+    else if (flag == "--ftol") a.options.error_tolerance = number_arg(flag, value);
+    else if (flag == "--timeout") a.options.time_budget_s = number_arg(flag, value);
+    else usage("unknown option " + flag);
+  }
+  if (a.rig.empty() || a.method.empty() || a.input.empty() || a.output.empty())
+    usage("--rig, --method, --input and --output are required");
+  return a;
+}
+
+struct Job {
+  int count = 0, num_angles = 0, num_residuals = 0;
+  std::vector<double> records;  // count x (2 + #angles + #residuals)
+  int stride() const { return 2 + num_angles + num_residuals; }
+};
+
+Job read_job(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error(path + ": cannot open file");
+  char magic[8];
+  std::int32_t header[4];
+  in.read(magic, sizeof magic);
+  in.read(reinterpret_cast<char*>(header), sizeof header);
+  if (!in || std::memcmp(magic, "IKBJOB1", 8) != 0) throw std::runtime_error(path + ": not a job file");
+  Job job;
+  job.count = header[0];
+  job.num_angles = header[1];
+  job.num_residuals = header[2];
+  if (job.count < 0 || job.num_angles <= 0 || job.num_residuals <= 0) throw std::runtime_error(path + ": bad header");
+  job.records.resize(static_cast<size_t>(job.count) * job.stride());
+  in.read(reinterpret_cast<char*>(job.records.data()), static_cast<std::streamsize>(job.records.size() * sizeof(double)));
+  if (!in) throw std::runtime_error(path + ": truncated");
+  return job;
+}
+
+// Largest distance of an effector other than `dragged` from its target, with `kin` posed at `angles`.
+double pinned_deviation(ik::Kinematics& kin, const Eigen::VectorXd& angles, const Eigen::Ref<const Eigen::VectorXd>& target,
+                        int dragged, Eigen::VectorXd& tips) {
+  kin.tips(angles, tips);
+  double worst = 0;
+  for (int e = 0; e < kin.num_effectors(); ++e)
+    if (e != dragged) worst = std::max(worst, (tips.segment<3>(3 * e) - target.segment<3>(3 * e)).norm());
+  return worst;
+}
+
+void run(const Args& args) {
+  ik::Kinematics kin(ik::load_a7_rig(args.rig));
+  ik::Kinematics observer(kin.rig());  // poses for wobble, so the solver's own rig is never disturbed
+  const Job job = read_job(args.input);
+  if (job.num_angles != kin.num_angles() || job.num_residuals != kin.num_residuals())
+    throw std::runtime_error(args.input + ": sizes do not match the rig (" + std::to_string(kin.num_angles()) +
+                             " angles, " + std::to_string(kin.num_residuals()) + " residuals)");
+  std::unique_ptr<ik::Solver> solver = ik::make_solver(args.method, kin, args.options);
+  std::FILE* out = std::fopen(args.output.c_str(), "w");
+  if (!out) throw std::runtime_error(args.output + ": cannot write");
+
+  Eigen::VectorXd start(kin.num_angles()), target(kin.num_residuals()), previous(kin.num_angles()),
+      tips(kin.num_residuals());
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  for (int k = 0; k < job.count; ++k) {
+    const double* rec = job.records.data() + static_cast<size_t>(k) * job.stride();
+    const bool chained = rec[0] != 0 && k > 0;
+    const int dragged = static_cast<int>(rec[1]);
+    start = chained ? previous : Eigen::Map<const Eigen::VectorXd>(rec + 2, job.num_angles);
+    target = Eigen::Map<const Eigen::VectorXd>(rec + 2 + job.num_angles, job.num_residuals);
+
+    const auto t0 = std::chrono::steady_clock::now();
+    const ik::SolverSummary& s = solver->solve(start, target);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    previous = s.angles;
+    const double E = s.E, gradient_norm = s.gradient_norm;
+    const int iterations = s.iterations, fevals = s.function_evaluations, jevals = s.jacobian_evaluations;
+    const std::string reason = ik::stop_reason_name(s.stop_reason);
+
+    double during = nan, after = nan;
+    if (dragged >= 0 && kin.num_effectors() > 1 && s.stop_reason != ik::StopReason::invalid_input) {
+      after = pinned_deviation(observer, previous, target, dragged, tips);
+      ik::SolverOptions replay_options = args.options;
+      replay_options.max_iterations = iterations;
+      replay_options.time_budget_s = 0;
+      std::unique_ptr<ik::Solver> replay = ik::make_solver(args.method, kin, replay_options);
+      replay->start(start, target);
+      during = 0;
+      int seen = 0;
+      while (replay->running()) {
+        replay->step();
+        if (replay->summary().iterations == seen) continue;
+        seen = replay->summary().iterations;
+        during = std::max(during, pinned_deviation(observer, replay->angles(), target, dragged, tips));
+      }
+      if (seen == 0) during = after;  // no iterate: the start already met a stopping test
+    }
+    std::fprintf(out, "%.17g\t%.17g\t%d\t%d\t%d\t%.17g\t%s\t%.17g\t%.17g\n", E, gradient_norm, iterations, fevals, jevals,
+                 seconds, reason.c_str(), during, after);
+  }
+  if (std::fclose(out) != 0) throw std::runtime_error(args.output + ": write failed");
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  try {
+    run(parse_args(argc, argv));
+  } catch (const std::invalid_argument& e) {
+    std::fprintf(stderr, "ik_bench_native: %s\n", e.what());
+    return 2;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "ik_bench_native: %s\n", e.what());
+    return 1;
+  }
+  return 0;
+}
