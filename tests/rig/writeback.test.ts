@@ -127,6 +127,10 @@ describe('pose write-back into three.js', () => {
     await runCase(await testCharacterGlb({ armatureScale: [0.02, 0.03, 0.015] }), 'stretched-character.glb');
   });
 
+  it('also with a mirroring Armature scale', async () => {
+    await runCase(await testCharacterGlb({ armatureScale: [-0.02, 0.02, 0.02] }), 'mirrored-character.glb');
+  });
+
   it('finds the same bones by node name (sanitized by three.js) as through parser.associations', async () => {
     const bytes = await testCharacterGlb();
     const loaded = await loadRig(bytes, 'test-character.glb');
