@@ -1,10 +1,18 @@
 import { resolve } from 'node:path';
 import { defineConfig } from 'vite';
 
-// The page lives in web/; `npm start` serves it.
+import { widgetDevServer } from './vite.widget.config.js';
+
+const isolation = { 'Cross-Origin-Opener-Policy': 'same-origin', 'Cross-Origin-Embedder-Policy': 'require-corp' };
+
+// The page lives in web/; `npm start` serves it (and web/embed-example.html with the widget's source).
 export default defineConfig({
   root: resolve(import.meta.dirname, 'web'),
   publicDir: resolve(import.meta.dirname, 'web/public'),
-  server: { port: 5173, strictPort: false },
+  plugins: [widgetDevServer()],
+  // Cross-origin isolation gives performance.now() microsecond resolution (100 us without it),
+  // so the page's per-solve times are measured, not rounded.
+  server: { port: 5173, strictPort: false, headers: isolation },
+  preview: { headers: isolation },
   build: { outDir: resolve(import.meta.dirname, 'dist/web'), emptyOutDir: true, target: 'es2022' },
 });

@@ -83,6 +83,7 @@ export class PageApp {
       restarts: 0,
       compareTimeBudgetMs: 1000,
       compareMaxIterations: 100000,
+      compareFrom: 'current pose',
       showMesh: true,
       showBones: true,
       gizmo: 'translate',
@@ -153,6 +154,10 @@ export class PageApp {
     return this.live;
   }
 
+  get renderer(): Stage['renderer'] {
+    return this.stage.renderer;
+  }
+
   get camera(): Stage['camera'] {
     return this.stage.camera;
   }
@@ -219,7 +224,8 @@ export class PageApp {
       return;
     }
     this.install(live, key);
-    this.showMessage('', 'info');
+    const notes = live.loaded.warnings;
+    this.showMessage(notes.length ? `${live.name}: ${notes.join('; ')}` : '', 'info');
     this.el.root.dataset.state = 'ready';
     this.loads++;
   }
@@ -462,9 +468,9 @@ export class PageApp {
       timeBudgetMs: s.compareTimeBudgetMs,
       restarts: s.restarts,
     };
-    this.compareView.begin(`${live.name}, from the current pose (budget ${s.compareTimeBudgetMs} ms, restarts ${s.restarts})`);
+    this.compareView.begin(`${live.name}, from the ${s.compareFrom} (budget ${s.compareTimeBudgetMs} ms, restarts ${s.restarts})`);
     try {
-      await compareMethods(live.session, settings, (row) => {
+      await compareMethods(live.session, settings, s.compareFrom, (row) => {
         this.compareView.addRow(row);
         if (row.outcome) this.plot.record(row.method, row.outcome.history);
       });

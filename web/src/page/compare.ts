@@ -1,8 +1,9 @@
-// "Compare": solves the current targets from the current pose with every method (the pose is
-// left as it was) and shows the report's columns (t, iterations, E, stop reason) with the
+// "Compare": solves the current targets with every method from the same start, the current pose
+// or the rest pose (the pose on screen is left as it was) and shows the report's columns (t, iterations, E, stop reason) with the
 // convergence histories overlaid.
 import { ConvergencePlot, METHOD_COLORS } from './plots.js';
 import type { IkSession } from './session.js';
+import { formatNumber } from './stats.js';
 import { METHOD_LABELS, METHODS, type Method, type SolveOutcome, type SolveSettings } from './solver_port.js';
 
 export interface CompareRow {
@@ -11,18 +12,22 @@ export interface CompareRow {
   error: string | null;
 }
 
-/** Runs every method in turn, yielding to the browser between methods so the page can repaint. */
+export type CompareStart = 'current pose' | 'rest pose';
+
+/** Runs every method in turn from the same start, yielding to the browser between methods. */
 export async function compareMethods(
   session: IkSession,
   settings: SolveSettings,
+  from: CompareStart,
   onRow: (row: CompareRow) => void,
 ): Promise<CompareRow[]> {
   const rows: CompareRow[] = [];
+  const start = from === 'rest pose' ? session.restPose() : session.angles.slice();
   for (const method of METHODS) {
     await new Promise((r) => setTimeout(r, 0));
     let row: CompareRow;
     try {
-      row = { method, outcome: session.trySolve(method, settings), error: null };
+      row = { method, outcome: session.trySolve(method, settings, start), error: null };
     } catch (e) {
       row = { method, outcome: null, error: e instanceof Error ? e.message : String(e) };
     }
@@ -53,6 +58,7 @@ export class CompareView {
     close.addEventListener('click', () => (this.element.hidden = true));
     head.append(this.caption, close);
     const table = document.createElement('table');
+    table.className = 'compare-table';
     const thead = table.createTHead().insertRow();
     for (const h of ['method', 't (s)', 'iterations', 'E', '‖∇E‖', 'stop reason']) {
       const th = document.createElement('th');
@@ -85,7 +91,7 @@ export class CompareView {
     name.title = METHOD_LABELS[row.method];
     const o = row.outcome;
     const cells = o
-      ? [o.elapsedSeconds.toExponential(2), String(o.iterations), o.E.toExponential(3), o.gradNorm.toExponential(2), o.stopReason]
+      ? [formatNumber(o.elapsedSeconds), String(o.iterations), formatNumber(o.E), formatNumber(o.gradNorm), o.stopReason]
       : ['–', '–', '–', '–', row.error ?? 'failed'];
     for (const c of cells) tr.insertCell().textContent = c;
     if (o) this.plot.record(row.method, o.history);

@@ -67,7 +67,7 @@ export class LimitsView {
     this.bone = i;
     this.root.visible = i !== null;
     if (i === null) return;
-    const len = this.spec.lengths[i] > 0 ? this.spec.lengths[i] : this.rigSize * 0.08;
+    const len = Math.max(this.spec.lengths[i], this.rigSize * 0.1);
     for (let k = 0; k < 3; k++) {
       const lo = this.spec.lower[3 * i + k], hi = this.spec.upper[3 * i + k];
       const free = unbounded(lo, hi);

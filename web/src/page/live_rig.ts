@@ -57,7 +57,7 @@ export class LiveRig {
   /** Poses the view (bones, mesh, limits) from the session's current angles. */
   redraw(): void {
     const s = this.session;
-    this.view.update(s.poses(), s.effectors(), this.selectedBone, s.angles);
+    this.view.update(s.poses(), s.effectors(), this.selectedBone);
     this.limits.select(this.selectedBone);
     this.limits.update(this.view, s.angles);
   }

@@ -3,6 +3,7 @@
 // it shows is set as text by lil-gui.
 import GUI, { type Controller } from 'lil-gui';
 
+import type { CompareStart } from './compare.js';
 import type { GizmoMode } from './handles.js';
 import { METHODS, type Method } from './solver_port.js';
 
@@ -18,6 +19,7 @@ export interface PageSettings {
   restarts: number;
   compareTimeBudgetMs: number;
   compareMaxIterations: number;
+  compareFrom: CompareStart;
   showMesh: boolean;
   showBones: boolean;
   gizmo: GizmoMode;
@@ -76,6 +78,7 @@ export class Panel {
     teach.add(s, 'autoStep').name('slow tick');
     teach.add(s, 'stepIntervalMs', 100, 3000, 50).name('tick (ms)');
     teach.add({ compare: () => actions.compare() }, 'compare').name('compare all methods (C)');
+    teach.add(s, 'compareFrom', ['current pose', 'rest pose']).name('compare: start from');
     teach.add(s, 'compareTimeBudgetMs', 10, 5000, 10).name('compare: ms budget');
     teach.add(s, 'compareMaxIterations', 1, 100000, 1).name('compare: iterations');
     teach.add(s, 'restarts', 0, 20, 1).name('compare: restarts');

@@ -34,7 +34,13 @@ export class ConvergencePlot {
       scales: { x: { time: false }, y: { distr: 3 } },
       axes: [
         { stroke: '#aab', grid: { stroke: '#ffffff14' }, label: 'iteration' },
-        { stroke: '#aab', grid: { stroke: '#ffffff14' }, label: 'E', size: 60 },
+        {
+          stroke: '#aab',
+          grid: { stroke: '#ffffff14' },
+          label: 'E',
+          size: 60,
+          values: (_u: uPlot, splits: number[]) => splits.map((v) => (v === 0 ? '0' : v.toExponential(0))),
+        },
       ],
       legend: { show: true, live: false },
       cursor: { show: false },

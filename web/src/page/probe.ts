@@ -3,6 +3,7 @@
 import { Vector3 } from 'three';
 
 import type { PageApp } from './app.js';
+import { IkSession } from './session.js';
 
 export interface ScreenPoint {
   x: number;
@@ -14,6 +15,8 @@ export interface PageProbe {
   loads(): number;
   rigName(): string | null;
   effectors(): number[];
+  /** Bone names, in bone order. */
+  boneNames(): string[];
   /** Where target k is on screen (client pixels), or null. */
   targetScreen(k: number): ScreenPoint | null;
   /** Where the middle of bone i is on screen, or null. */
@@ -23,6 +26,8 @@ export interface PageProbe {
   cameraPosition(): [number, number, number];
   /** Distance from effector k's tip to its target. */
   effectorError(k: number): number;
+  /** Objects alive now: IK sessions and solvers (WebAssembly), geometries and textures (GPU). */
+  alive(): { sessions: number; solvers: number; geometries: number; textures: number };
 }
 
 declare global {
@@ -37,6 +42,7 @@ export function makeProbe(app: PageApp): PageProbe {
     loads: () => app.loads,
     rigName: () => app.current?.name ?? null,
     effectors: () => Array.from(app.current?.session.effectors() ?? []),
+    boneNames: () => [...(app.current?.session.spec.names ?? [])],
     targetScreen(k) {
       const live = app.current;
       if (!live || k < 0 || 3 * k >= live.session.targets.length) return null;
@@ -51,6 +57,10 @@ export function makeProbe(app: PageApp): PageProbe {
     },
     selectedTarget: () => app.selectedTarget,
     cameraPosition: () => app.camera.position.toArray() as [number, number, number],
+    alive() {
+      const memory = app.renderer.info.memory;
+      return { ...IkSession.alive, geometries: memory.geometries, textures: memory.textures };
+    },
     effectorError(k) {
       const live = app.current;
       if (!live) return NaN;

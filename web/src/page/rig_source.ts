@@ -1,7 +1,14 @@
 // Where rigs come from: the project models under web/public/models/, or a file the user drops
-// or chooses. Reading bytes and naming errors lives here; parsing is the importers' job.
+// or chooses. Parsing is web/src/rig/load_rig.ts; the mesh is three.js's GLTFLoader, posed by
+// web/src/three/'s PoseWriter. This module only fetches bytes and joins the two.
+import { GLTFLoader } from 'three/addons/loaders/GLTFLoader.js';
+import { MeshoptDecoder } from 'three/addons/libs/meshopt_decoder.module.js';
+
 import type { RigSpec } from '../ik/rig_spec.js';
-import { parseA7Rig } from '../rig/a7_rig.js';
+import { loadRig, type GltfRigInfo, type SiblingReader } from '../rig/load_rig.js';
+import { bonesFromGltf } from '../three/find_bones.js';
+import { PoseWriter } from '../three/pose_writer.js';
+import { disposeObject3D } from './dispose_three.js';
 import type { MeshBinding } from './rig_view.js';
 
 /** The project rigs, keyed as the URL names them (?rig=knight). */
@@ -20,9 +27,12 @@ export const DEFAULT_RIG = 'lamp';
 export interface LoadedRig {
   /** Display name (shown as text). */
   name: string;
+  /** Format for display: "glb", "gltf" or "A7 JSON". */
   format: string;
   spec: RigSpec;
-  /** Builds the skinned mesh bound to the spec's angles; null for bones-only formats. */
+  /** Notes from the importer (defaults applied...), shown as text. */
+  warnings: string[];
+  /** Builds the skinned mesh bound to the rig; null for bones-only formats (A7). */
   makeMesh: (() => Promise<MeshBinding>) | null;
 }
 
@@ -38,35 +48,65 @@ export async function fetchBytes(url: string | URL, what: string): Promise<Uint8
   return new Uint8Array(await res.arrayBuffer());
 }
 
-export type SiblingReader = (uri: string) => Promise<Uint8Array>;
+/** The glTF scene of `bytes` through GLTFLoader, posed by a PoseWriter. */
+async function gltfMesh(bytes: Uint8Array, fileName: string, resourcePath: string, spec: RigSpec, info: GltfRigInfo): Promise<MeshBinding> {
+  const loader = new GLTFLoader().setMeshoptDecoder(MeshoptDecoder);
+  const data: ArrayBuffer | string = fileName.toLowerCase().endsWith('.gltf')
+    ? new TextDecoder().decode(bytes)
+    : (bytes.buffer.slice(bytes.byteOffset, bytes.byteOffset + bytes.byteLength) as ArrayBuffer);
+  const gltf = await loader.parseAsync(data, resourcePath);
+  try {
+    const writer = new PoseWriter(bonesFromGltf(gltf, info), spec, info);
+    gltf.scene.traverse((o) => (o.frustumCulled = false)); // skinned bounds do not follow the pose
+    return {
+      object: gltf.scene,
+      apply: (poses) => writer.write(poses),
+      dispose: () => {
+        writer.dispose();
+        disposeObject3D(gltf.scene);
+      },
+    };
+  } catch (e) {
+    disposeObject3D(gltf.scene);
+    throw e;
+  }
+}
 
-/** Parses a rig file of any supported format. Throws an Error whose message names the file. */
-export async function readRig(bytes: Uint8Array, fileName: string, readSibling?: SiblingReader): Promise<LoadedRig> {
-  const lower = fileName.toLowerCase();
-  if (lower.endsWith('.json')) {
-    const spec = parseA7Rig(new TextDecoder().decode(bytes), fileName);
-    return { name: fileName.replace(/\.json$/i, ''), format: 'A7 JSON', spec, makeMesh: null };
-  }
-  if (lower.endsWith('.glb') || lower.endsWith('.gltf')) {
-    void readSibling;
-    throw new Error(`${fileName}: the glTF importer (web/src/rig/load_rig.ts) is not available yet`);
-  }
-  throw new Error(`${fileName}: not a rig file (expected .glb, .gltf or an A7 .json)`);
+/**
+ * Parses a rig file of any supported format. `resourcePath` is where a .gltf's relative files
+ * live (for GLTFLoader). Throws an Error whose message names the file.
+ */
+export async function readRig(bytes: Uint8Array, fileName: string, readSibling?: SiblingReader, resourcePath = ''): Promise<LoadedRig> {
+  const rig = await loadRig(bytes, fileName, readSibling);
+  const info = rig.gltf;
+  return {
+    name: rig.name,
+    format: rig.format === 'a7' ? 'A7 JSON' : rig.format,
+    spec: rig.spec,
+    warnings: rig.warnings,
+    makeMesh: info ? () => gltfMesh(bytes, fileName, resourcePath, rig.spec, info) : null,
+  };
+}
+
+/** Loads a rig file from a URL (a .gltf's side files are fetched next to it). */
+export async function loadRigUrl(url: URL, what = url.pathname.split('/').pop() ?? url.href): Promise<LoadedRig> {
+  const bytes = await fetchBytes(url, what);
+  const fileName = decodeURIComponent(url.pathname.split('/').pop() ?? what);
+  const base = new URL('.', url).href;
+  return readRig(bytes, fileName, (uri) => fetchBytes(new URL(uri, url), uri), base);
 }
 
 /** Loads a project rig by key from the page's models folder, relative to `base`. */
 export async function loadProjectRig(key: string, base: string | URL = document.baseURI): Promise<LoadedRig> {
   const entry = PROJECT_RIGS[key];
   if (!entry) throw new Error(`unknown project rig "${key}"`);
-  const url = new URL(entry.file, base);
-  const bytes = await fetchBytes(url, entry.file);
-  return readRig(bytes, entry.file.split('/').pop() ?? entry.file, (uri) => fetchBytes(new URL(uri, url), uri));
+  return loadRigUrl(new URL(entry.file, base), entry.file);
 }
 
 /** Loads a user's file; a .gltf's side files cannot be reached and must be embedded. */
 export async function loadUserFile(file: File): Promise<LoadedRig> {
   const bytes = new Uint8Array(await file.arrayBuffer());
   return readRig(bytes, file.name, async (uri) => {
-    throw new Error(`${file.name} refers to "${uri}": choose a .glb or a .gltf with embedded buffers`);
+    throw new Error(`${file.name} refers to "${uri}": choose a .glb, or a .gltf with embedded buffers`);
   });
 }

@@ -18,10 +18,11 @@ import {
 
 import type { RigSpec } from '../ik/rig_spec.js';
 
-/** A mesh driven by solver angles (degrees); made by the glTF write-back of web/src/three/. */
+/** A skinned mesh posed from the rig's bone poses (the glTF write-back of web/src/three/). */
 export interface MeshBinding {
   readonly object: Object3D;
-  apply(angles: Float64Array): void;
+  /** `poses`: IkRig.poses(angles), 16 row-major numbers per bone. */
+  apply(poses: Float64Array): void;
   dispose(): void;
 }
 
@@ -129,8 +130,8 @@ export class RigView {
     this.joints.visible = visible && !this.ghost;
   }
 
-  /** Poses every bone from `poses` (16 row-major numbers per bone) and the mesh from `angles`. */
-  update(poses: Float64Array, effectors: Int32Array, selected: number | null, angles?: Float64Array): void {
+  /** Poses every bone (and the mesh) from `poses`, 16 row-major numbers per bone. */
+  update(poses: Float64Array, effectors: Int32Array, selected: number | null): void {
     const n = this.spec.parents.length;
     const jointRadius = this.size * 0.008;
     for (let i = 0; i < n; i++) {
@@ -147,7 +148,7 @@ export class RigView {
     this.joints.instanceMatrix.needsUpdate = true;
     this.bones.computeBoundingSphere();
     this.recolor(effectors, selected);
-    if (angles && this.mesh) this.mesh.apply(angles);
+    this.mesh?.apply(poses);
   }
 
   /** World frame of bone i's canonical bone (T_i * rest_i) at the last update. */

@@ -78,8 +78,9 @@ export class Stage {
     const dir = new Vector3().subVectors(this.camera.position, this.orbit.target);
     if (dir.lengthSq() < 1e-12) dir.set(0.6, 0.45, 1);
     dir.normalize();
-    const fov = (this.camera.fov * Math.PI) / 180;
-    const dist = (r / Math.sin(fov / 2)) * 1.15;
+    const vfov = (this.camera.fov * Math.PI) / 180;
+    const hfov = 2 * Math.atan(Math.tan(vfov / 2) * this.camera.aspect);
+    const dist = (r / Math.sin(Math.min(vfov, hfov) / 2)) * 1.1;
     this.orbit.target.copy(sphere.center);
     this.camera.position.copy(sphere.center).addScaledVector(dir, dist);
     this.camera.near = dist / 100;

@@ -7,6 +7,9 @@ import type { RigSpec } from '../ik/rig_spec.js';
 import type { Method, MethodSolver, SolveOutcome, SolveSettings, SolverFactory } from './solver_port.js';
 
 export class IkSession {
+  /** Sessions and solvers not yet disposed, over the whole page (a leak check for tests). */
+  static readonly alive = { sessions: 0, solvers: 0 };
+
   readonly rig: IkRig;
   /** The current pose, 3 angles per bone, degrees. Replaced (not mutated) by solves. */
   angles: Float64Array;
@@ -14,6 +17,7 @@ export class IkSession {
   targets: Float64Array;
   private readonly solvers = new Map<Method, MethodSolver>();
   private stepping: MethodSolver | null = null;
+  private disposed = false;
 
   /** Builds the rig in WebAssembly; throws (and holds nothing) if the spec is bad. */
   constructor(
@@ -29,6 +33,7 @@ export class IkSession {
       this.rig.dispose();
       throw e;
     }
+    IkSession.alive.sessions++;
   }
 
   get spec(): RigSpec {
@@ -90,9 +95,9 @@ export class IkSession {
     return out;
   }
 
-  /** Solves from the current pose without changing it (for the compare table). */
-  trySolve(method: Method, settings: SolveSettings): SolveOutcome {
-    return this.solver(method).solve(this.angles, this.targets, settings);
+  /** Solves from `start` (default: the current pose) without changing the pose (for the compare table). */
+  trySolve(method: Method, settings: SolveSettings, start: Float64Array = this.angles): SolveOutcome {
+    return this.solver(method).solve(start, this.targets, settings);
   }
 
   /** Starts step mode with `method` from the current pose. */
@@ -118,8 +123,11 @@ export class IkSession {
   }
 
   dispose(): void {
+    if (this.disposed) return;
+    this.disposed = true;
     this.disposeSolvers();
     this.rig.dispose();
+    IkSession.alive.sessions--;
   }
 
   private solver(method: Method): MethodSolver {
@@ -127,13 +135,17 @@ export class IkSession {
     if (!s) {
       s = this.makeSolver(this.rig, method);
       this.solvers.set(method, s);
+      IkSession.alive.solvers++;
     }
     return s;
   }
 
   private disposeSolvers(): void {
     this.stepping = null;
-    for (const s of this.solvers.values()) s.dispose();
+    for (const s of this.solvers.values()) {
+      s.dispose();
+      IkSession.alive.solvers--;
+    }
     this.solvers.clear();
   }
 }

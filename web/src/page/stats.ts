@@ -61,7 +61,8 @@ const FIELDS: { key: keyof StatsValues | 'median'; label: string; title: string 
   { key: 'pinnedDrift', label: 'pinned drift', title: 'largest distance of a pinned effector from its target (the report’s “wobble”)' },
 ];
 
-function format(x: number): string {
+/** A number in 4 significant digits, exponential outside [1e-3, 1e4). */
+export function formatNumber(x: number): string {
   if (!Number.isFinite(x)) return String(x);
   if (x === 0) return '0';
   const a = Math.abs(x);
@@ -95,19 +96,19 @@ export class StatsPanel {
     if (timed) this.median.push(v.ms);
     this.set('method', v.method, NaN);
     this.set('iterations', String(v.iterations), v.iterations);
-    this.set('E', format(v.E), v.E);
-    this.set('gradNorm', format(v.gradNorm), v.gradNorm);
+    this.set('E', formatNumber(v.E), v.E);
+    this.set('gradNorm', formatNumber(v.gradNorm), v.gradNorm);
     this.set('stopReason', v.stopReason || '–', NaN);
     this.set('ms', v.ms.toFixed(3), v.ms);
     const m = this.median.median();
     this.set('median', Number.isNaN(m) ? '–' : `${m.toFixed(3)} (n=${this.median.size})`, m);
-    this.set('pinnedDrift', format(v.pinnedDrift), v.pinnedDrift);
+    this.set('pinnedDrift', formatNumber(v.pinnedDrift), v.pinnedDrift);
   }
 
   /** Shows E for a pose that was not solved (after reset, load, or an effector change). */
   showIdle(method: string, E: number): void {
     this.set('method', method, NaN);
-    this.set('E', format(E), E);
+    this.set('E', formatNumber(E), E);
   }
 
   reset(): void {

@@ -1,0 +1,273 @@
+// The page in headless Chromium: every project rig loads cleanly, dragging a target with real
+// mouse events solves onto it, methods switch, step mode steps, a broken file is refused while
+// the previous rig stays, and the README screenshot. Also prints the per-solve time on the
+// largest rig (never asserted: wall-clock limits do not belong in tests).
+import { mkdirSync } from 'node:fs';
+import { join } from 'node:path';
+
+import type { Page } from 'playwright-core';
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+
+import type { ScreenPoint } from '../../web/src/page/probe.js';
+import { launchBrowser, openPage, repoRoot, startVite, type BrowserSession } from './harness.js';
+
+const RIGS = ['lamp', 'robot-arm', 'knight', 'hand', 'beast', 'character'];
+
+let server: { url: string; close: () => Promise<void> };
+let browser: BrowserSession;
+
+beforeAll(async () => {
+  server = await startVite();
+  browser = await launchBrowser();
+});
+
+afterAll(async () => {
+  await browser?.close();
+  await server?.close();
+});
+
+async function gotoRig(page: Page, rig: string, query = ''): Promise<void> {
+  await page.goto(`${server.url}?rig=${rig}${query}`);
+  await page.waitForFunction(() => {
+    const s = document.getElementById('app')?.dataset.state;
+    return s === 'ready' || s === 'error';
+  });
+  expect(await page.getAttribute('#app', 'data-state'), (await page.textContent('#message')) ?? '').toBe('ready');
+}
+
+async function stat(page: Page, key: string): Promise<string> {
+  return (await page.getAttribute(`[data-stat="${key}"]`, 'data-value')) ?? '';
+}
+
+async function statText(page: Page, key: string): Promise<string> {
+  return (await page.textContent(`[data-stat="${key}"]`)) ?? '';
+}
+
+async function targetScreen(page: Page, k: number): Promise<ScreenPoint> {
+  const p = await page.evaluate((i) => window.ikPage?.targetScreen(i) ?? null, k);
+  if (!p) throw new Error(`no target ${k}`);
+  return p;
+}
+
+/** Drags the gizmo of the selected target with the mouse by a fraction of the way towards the root joint. */
+async function dragTowardsRoot(page: Page, k: number, fraction: number, steps = 12, pauseMs = 16): Promise<{ from: ScreenPoint; to: ScreenPoint }> {
+  const from = await targetScreen(page, k);
+  const root = await page.evaluate(() => window.ikPage?.boneScreen(0) ?? null);
+  if (!root) throw new Error('no root bone');
+  let dx = (root.x - from.x) * fraction, dy = (root.y - from.y) * fraction;
+  const len = Math.hypot(dx, dy);
+  if (len < 25) [dx, dy] = len > 0 ? [(dx / len) * 25, (dy / len) * 25] : [25, 0];
+  return dragBy(page, k, dx, dy, steps, pauseMs);
+}
+
+/** Drags the gizmo of the selected target k by (dx, dy) pixels with the mouse. */
+async function dragBy(page: Page, k: number, dx: number, dy: number, steps = 12, pauseMs = 16): Promise<{ from: ScreenPoint; to: ScreenPoint }> {
+  const from = await targetScreen(page, k);
+  await page.mouse.move(from.x, from.y);
+  await page.mouse.down();
+  for (let i = 1; i <= steps; i++) {
+    await page.mouse.move(from.x + (dx * i) / steps, from.y + (dy * i) / steps);
+    if (pauseMs) await page.waitForTimeout(pauseMs);
+  }
+  await page.mouse.up();
+  return { from, to: { x: from.x + dx, y: from.y + dy } };
+}
+
+/** Puts the gizmo on target k by clicking it; returns k. */
+async function selectTarget(page: Page, k: number): Promise<number> {
+  if ((await page.evaluate(() => window.ikPage?.selectedTarget())) === k) return k;
+  const p = await targetScreen(page, k);
+  await page.mouse.click(p.x, p.y);
+  await page.waitForFunction((i) => window.ikPage?.selectedTarget() === i, k);
+  return k;
+}
+
+/** The effector (index in effector order) on a bone whose name matches `pattern`, else 0. */
+async function effectorNamed(page: Page, pattern: RegExp): Promise<number> {
+  const { effectors, names } = await page.evaluate(() => ({ effectors: window.ikPage?.effectors() ?? [], names: window.ikPage?.boneNames() ?? [] }));
+  const k = effectors.findIndex((b) => pattern.test(names[b]));
+  return k < 0 ? 0 : k;
+}
+
+/** Waits until the per-frame solve has stopped for a reason other than its budget. */
+async function waitForSettled(page: Page): Promise<string> {
+  await page.waitForFunction(() => {
+    const r = document.querySelector('[data-stat="stopReason"]')?.textContent ?? '';
+    return ['converged_E', 'converged_grad', 'zero_step'].includes(r);
+  }, null, { timeout: 20_000 });
+  return statText(page, 'stopReason');
+}
+
+async function waitForConvergence(page: Page): Promise<void> {
+  await page.waitForFunction(() => {
+    const el = document.querySelector<HTMLElement>('[data-stat="stopReason"]');
+    const E = Number(document.querySelector<HTMLElement>('[data-stat="E"]')?.dataset.value);
+    return el?.textContent === 'converged_E' && E < 2e-4;
+  }, null, { timeout: 20_000 });
+}
+
+describe('the page', () => {
+  it('loads each project rig with no console errors', async (ctx) => {
+    const { page, errors } = await openPage(browser, ctx);
+    for (const rig of RIGS) {
+      await gotoRig(page, rig);
+      expect(await page.evaluate(() => window.ikPage?.rigName())).toBe(rig);
+      expect((await page.evaluate(() => window.ikPage?.effectors() ?? [])).length).toBeGreaterThan(0);
+      expect(await page.textContent('#rig-name')).toContain(rig);
+      // The canvas is drawn at the viewport's size.
+      const size = await page.$eval('#viewport canvas', (c) => [(c as HTMLCanvasElement).width, (c as HTMLCanvasElement).height]);
+      expect(size[0]).toBeGreaterThan(100);
+      expect(size[1]).toBeGreaterThan(100);
+    }
+    expect(errors).toEqual([]);
+  });
+
+  it('dragging a target with the mouse moves the effector onto it, the camera stays still', async (ctx) => {
+    const { page, errors } = await openPage(browser, ctx);
+    await gotoRig(page, 'lamp');
+    const camera = await page.evaluate(() => window.ikPage?.cameraPosition());
+    const { to } = await dragTowardsRoot(page, 0, 0.2);
+    await waitForConvergence(page);
+    expect(Number(await stat(page, 'E'))).toBeLessThan(2e-4);
+    expect(await page.evaluate(() => window.ikPage?.effectorError(0))).toBeLessThan(0.03);
+    const now = await targetScreen(page, 0);
+    expect(Math.hypot(now.x - to.x, now.y - to.y)).toBeLessThan(3); // the target followed the mouse
+    expect(await page.evaluate(() => window.ikPage?.cameraPosition())).toEqual(camera);
+    expect(Number(await stat(page, 'iterations'))).toBeGreaterThanOrEqual(0);
+    expect(errors).toEqual([]);
+  });
+
+  it('switching methods works (panel select, stats and URL follow)', async (ctx) => {
+    const { page, errors } = await openPage(browser, ctx);
+    await gotoRig(page, 'robot-arm');
+    const select = page.locator('.lil-controller', { has: page.locator('.lil-name', { hasText: /^method$/ }) }).locator('select');
+    for (const method of ['gd', 'bfgs', 'gn', 'newton', 'lm']) {
+      await select.selectOption(method);
+      expect(new URL(page.url()).searchParams.get('method')).toBe(method);
+      await dragTowardsRoot(page, 0, 0.08, 6);
+      await page.waitForFunction(
+        (m) => document.querySelector('[data-stat="method"]')?.textContent === m &&
+          Number(document.querySelector<HTMLElement>('[data-stat="iterations"]')?.dataset.value) >= 0 &&
+          (document.querySelector('[data-stat="stopReason"]')?.textContent ?? '–') !== '–',
+        method,
+      );
+    }
+    // The URL reproduces the view.
+    await page.goto(`${server.url}?rig=robot-arm&method=gn`);
+    await page.waitForFunction(() => document.getElementById('app')?.dataset.state === 'ready');
+    expect(await select.inputValue()).toBe('gn');
+    expect(errors).toEqual([]);
+  });
+
+  it('step mode advances one iteration per S', async (ctx) => {
+    const { page, errors } = await openPage(browser, ctx);
+    await gotoRig(page, 'lamp', '&method=gd');
+    await page.locator('.lil-controller', { has: page.locator('.lil-name', { hasText: /^step mode$/ }) }).locator('input').check();
+    await dragTowardsRoot(page, 0, 0.3);
+    await page.waitForTimeout(100);
+    await page.keyboard.press('s');
+    await page.waitForFunction(() => document.getElementById('step-info')?.dataset.iterations === '1');
+    const E1 = Number(await stat(page, 'E'));
+    await page.keyboard.press('s');
+    await page.waitForFunction(() => document.getElementById('step-info')?.dataset.iterations === '2');
+    expect(await stat(page, 'iterations')).toBe('2');
+    expect(Number(await stat(page, 'E'))).toBeLessThan(E1);
+    expect(await page.textContent('#step-info')).toContain('iteration 2');
+    expect(errors).toEqual([]);
+  });
+
+  it('a broken file shows the error and keeps the previous rig', async (ctx) => {
+    const { page, errors } = await openPage(browser, ctx);
+    await gotoRig(page, 'knight');
+    const before = await page.evaluate(() => window.ikPage?.loads() ?? 0);
+    await page.evaluate(() => {
+      const dt = new DataTransfer();
+      dt.items.add(new File([new Uint8Array([0x67, 0x6c, 0x54, 0x46, 2, 0, 0, 0, 99, 0, 0, 0])], 'broken<b>.glb'));
+      window.dispatchEvent(new DragEvent('drop', { dataTransfer: dt, bubbles: true, cancelable: true }));
+    });
+    await page.waitForFunction((n) => (window.ikPage?.loads() ?? 0) > n, before);
+    expect(await page.getAttribute('#message', 'data-kind')).toBe('error');
+    const message = (await page.textContent('#message')) ?? '';
+    expect(message).toContain('broken<b>.glb'); // shown as text: the markup is not interpreted
+    expect(await page.$$('#message b')).toHaveLength(0);
+    expect(await page.evaluate(() => window.ikPage?.rigName())).toBe('knight');
+    expect(await page.getAttribute('#app', 'data-state')).toBe('ready');
+    // The kept rig still solves.
+    await dragTowardsRoot(page, 0, 0.1);
+    await waitForSettled(page);
+    // Only the page's own failure report may be an error; the browser logged nothing else.
+    expect(errors).toEqual([]);
+  });
+
+  it('loading another rig frees the previous one (WebAssembly and three.js objects)', async (ctx) => {
+    const { page, errors } = await openPage(browser, ctx);
+    await gotoRig(page, 'lamp');
+    await dragTowardsRoot(page, 0, 0.1);
+    await waitForConvergence(page);
+    await page.waitForTimeout(100);
+    const first = await page.evaluate(() => window.ikPage?.alive());
+    const select = page.locator('.lil-controller', { has: page.locator('.lil-name', { hasText: /^project rig$/ }) }).locator('select');
+    for (const [rig, label] of [['knight', 'knight'], ['character', 'character (60+ joints)'], ['lamp', 'lamp']]) {
+      const n = await page.evaluate(() => window.ikPage?.loads() ?? 0);
+      await select.selectOption({ label });
+      await page.waitForFunction((k) => (window.ikPage?.loads() ?? 0) > k, n);
+      expect(await page.evaluate(() => window.ikPage?.rigName())).toBe(rig);
+      await page.keyboard.press('c'); // every method makes its solver
+      await page.waitForFunction(() => document.getElementById('compare')?.dataset.state === 'done', null, { timeout: 30_000 });
+      expect(await page.evaluate(() => window.ikPage?.alive().sessions)).toBe(1);
+    }
+    await dragTowardsRoot(page, 0, 0.1);
+    await waitForConvergence(page);
+    await page.waitForTimeout(100);
+    const last = await page.evaluate(() => window.ikPage?.alive());
+    expect(last?.sessions).toBe(1);
+    expect(last?.solvers).toBe(5);
+    // Same rig, same GPU objects as before the round trip (the compare plot made none).
+    expect(last?.geometries).toBe(first?.geometries);
+    expect(last?.textures).toBe(first?.textures);
+    expect(errors).toEqual([]);
+  });
+
+  it('shows the knight for the README (docs/screenshot.png)', async (ctx) => {
+    const { page, errors } = await openPage(browser, ctx);
+    await gotoRig(page, 'knight');
+    const hand = await selectTarget(page, await effectorNamed(page, /hand/i));
+    await dragBy(page, hand, 40, -110);
+    await waitForSettled(page);
+    // Compare every method from the rest pose to these targets.
+    await page.locator('.lil-controller', { has: page.locator('.lil-name', { hasText: /^compare: start from$/ }) }).locator('select').selectOption('rest pose');
+    // Show one joint's limits (shift-click: select without toggling the effector).
+    const bone = await page.evaluate(() => {
+      const p = window.ikPage;
+      const i = p?.boneNames().findIndex((n) => /forearm\.R/i.test(n)) ?? -1;
+      return p && i >= 0 ? p.boneScreen(i) : null;
+    });
+    if (bone) {
+      await page.keyboard.down('Shift');
+      await page.mouse.click(bone.x, bone.y);
+      await page.keyboard.up('Shift');
+    }
+    await page.keyboard.press('c');
+    await page.waitForFunction(() => document.getElementById('compare')?.dataset.state === 'done', null, { timeout: 30_000 });
+    await page.waitForTimeout(400);
+    mkdirSync(join(repoRoot, 'docs'), { recursive: true });
+    await page.screenshot({ path: join(repoRoot, 'docs/screenshot.png') });
+    expect(await page.$$eval('#compare .compare-table tbody tr', (rows) => rows.length)).toBe(5);
+    expect(errors).toEqual([]);
+  });
+
+  it('measures the main-thread time per solve while dragging on the largest rig', async (ctx) => {
+    const { page, errors } = await openPage(browser, ctx);
+    await gotoRig(page, 'character');
+    const bones = await page.evaluate(() => document.getElementById('rig-name')?.textContent ?? '');
+    const hand = await selectTarget(page, await effectorNamed(page, /hand|wrist/i));
+    // Drag for about two seconds: one solve per animation frame.
+    for (let round = 0; round < 2; round++) await dragTowardsRoot(page, hand, round % 2 ? -0.15 : 0.15, 30, 0);
+    await page.waitForTimeout(200);
+    const median = Number(await stat(page, 'median'));
+    const solves = await statText(page, 'median');
+    console.log(`[perf] ${bones}: main-thread ms per solve while dragging, running median ${median.toFixed(3)} ms (${solves}), method ${await statText(page, 'method')}`);
+    expect(Number.isFinite(median)).toBe(true);
+    expect(errors).toEqual([]);
+  });
+});
