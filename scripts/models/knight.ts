@@ -69,11 +69,11 @@ export const knight: ModelDef = {
     ...leg('R'),
   ],
   materials: [
-    { name: 'steel', color: [0.72, 0.74, 0.78], metallic: 0.9, roughness: 0.3 },
-    { name: 'mail', color: [0.45, 0.46, 0.5], metallic: 0.8, roughness: 0.6 },
+    { name: 'steel', color: [0.72, 0.74, 0.78], metallic: 0.45, roughness: 0.35 },
+    { name: 'mail', color: [0.5, 0.51, 0.55], metallic: 0.4, roughness: 0.6 },
     { name: 'dark', color: [0.22, 0.2, 0.19], metallic: 0.3, roughness: 0.7 },
     { name: 'red', color: [0.62, 0.08, 0.1], metallic: 0.1, roughness: 0.6 },
-    { name: 'gold', color: [0.85, 0.66, 0.2], metallic: 1, roughness: 0.35 },
+    { name: 'gold', color: [0.85, 0.66, 0.2], metallic: 0.6, roughness: 0.35 },
   ],
   shapes: [
     block('steel', [0, 1.22, 0], [0, 1.5, 0], 0.38, 0.24, 'chest', [1, 0, 0]),

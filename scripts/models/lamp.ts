@@ -21,7 +21,7 @@ export const lamp: ModelDef = {
   ],
   materials: [
     { name: 'paint', color: [0.8, 0.16, 0.12], metallic: 0.1, roughness: 0.5 },
-    { name: 'metal', color: [0.78, 0.78, 0.8], metallic: 0.9, roughness: 0.3 },
+    { name: 'metal', color: [0.78, 0.78, 0.8], metallic: 0.4, roughness: 0.35 },
     { name: 'bulb', color: [1, 0.95, 0.7], metallic: 0, roughness: 0.2 },
   ],
   shapes: [

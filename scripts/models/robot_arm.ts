@@ -23,9 +23,9 @@ export const robotArm: ModelDef = {
     { name: 'tool', parent: 'wrist', head: y(0.95), tail: y(1.03), hinge: z, limits: [[0, 0, null], [0, 0, null]], effector: true },
   ],
   materials: [
-    { name: 'dark', color: [0.18, 0.19, 0.21], metallic: 0.6, roughness: 0.5 },
+    { name: 'dark', color: [0.2, 0.21, 0.23], metallic: 0.3, roughness: 0.5 },
     { name: 'orange', color: [0.95, 0.45, 0.08], metallic: 0.2, roughness: 0.4 },
-    { name: 'steel', color: [0.7, 0.72, 0.75], metallic: 0.9, roughness: 0.3 },
+    { name: 'steel', color: [0.7, 0.72, 0.75], metallic: 0.4, roughness: 0.35 },
   ],
   shapes: [
     frustum('dark', y(0), y(0.06), 0.16, 0.14, 16, 'base'),
