@@ -13,3 +13,6 @@ npx tsc -p tsconfig.json
 
 echo "== vitest"
 npx vitest run "$@"
+
+echo "== browser tests (headless Chromium: the page and the widget)"
+npx vitest run --config vitest.browser.config.ts
