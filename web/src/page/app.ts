@@ -434,14 +434,16 @@ export class PageApp {
       }
       const before = session.angles;
       const E0 = session.objective();
+      const t0 = performance.now();
       const out = session.step();
+      const ms = performance.now() - t0;
       let len = 0;
       for (let j = 0; j < before.length; j++) len += (out.angles[j] - before[j]) ** 2;
       len = Math.sqrt(len);
       live.showGhost(len > 0 ? before : null);
       this.plot.record(method, out.history);
       this.stats.show(
-        { method, iterations: out.iterations, E: out.E, gradNorm: out.gradNorm, stopReason: out.stopReason, ms: out.elapsedSeconds * 1000, pinnedDrift: this.pinnedDrift(session.tips(), session.targets) },
+        { method, iterations: out.iterations, E: out.E, gradNorm: out.gradNorm, stopReason: out.stopReason, ms, pinnedDrift: this.pinnedDrift(session.tips(), session.targets) },
         false,
       );
       const alpha = out.stepLength !== null ? `, line-search step α = ${out.stepLength.toPrecision(3)}` : '';

@@ -39,7 +39,7 @@ export class ConvergencePlot {
           grid: { stroke: '#ffffff14' },
           label: 'E',
           size: 60,
-          values: (_u: uPlot, splits: number[]) => splits.map((v) => (v === 0 ? '0' : v.toExponential(0))),
+          values: (_u: uPlot, splits: (number | null)[]) => splits.map((v) => (v === null || v === undefined ? '' : v === 0 ? '0' : v.toExponential(0))),
         },
       ],
       legend: { show: true, live: false },
