@@ -33,13 +33,14 @@ class DampedBfgs final : public Solver {
   }
 
   Progress iterate() override {
-    if (have_pair_) update(g_ - g_old_);
+    if (have_pair_) update();
     if (opt_.paper_mode) {
-      direction_.noalias() = -(H_ * g_);
+      direction_.noalias() = H_ * g_;
+      direction_ *= -1;
     } else {
       gf_ = g_.cwiseProduct(free_mask_);
-      direction_.noalias() = -(H_ * gf_);
-      direction_ = direction_.cwiseProduct(free_mask_);
+      direction_.noalias() = H_ * gf_;
+      direction_ = -direction_.cwiseProduct(free_mask_);
       if (!(direction_.dot(gf_) < 0)) {  // not a descent direction: forget the curvature
         reset();
         direction_ = -gf_;
@@ -58,9 +59,9 @@ class DampedBfgs final : public Solver {
     return Progress::moved;
   }
 
-  // The damped update with the last step s_ and gradient change y.
-  void update(const Eigen::Ref<const Eigen::VectorXd>& y) {
-    y_ = y;
+  // The damped update with the last step s_ and the gradient change y = g - g_old.
+  void update() {
+    y_ = g_ - g_old_;
     const double sy = s_.dot(y_);
     if (!opt_.paper_mode && !scaled_ && sy > 0) {
       const double gamma = sy / y_.squaredNorm();  // H0 = gamma I, B0 = I / gamma

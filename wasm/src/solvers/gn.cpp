@@ -39,7 +39,8 @@ class GaussNewton final : public Solver {
     const double cutoff = std::max(jac_.rows(), jac_.cols()) * std::numeric_limits<double>::epsilon() * s.maxCoeff();
     projected_.noalias() = svd_.matrixU().transpose() * r_;
     for (Eigen::Index i = 0; i < s.size(); ++i) projected_[i] = s[i] < cutoff || s[i] == 0 ? 0.0 : projected_[i] / s[i];
-    direction_.noalias() = -(svd_.matrixV() * projected_);
+    direction_.noalias() = svd_.matrixV() * projected_;
+    direction_ *= -1;
 
     return backtrack(direction_, 1, opt_.armijo_c1) ? Progress::moved : Progress::stuck;
   }
