@@ -31,11 +31,6 @@ export interface PageElements {
   selection: HTMLElement;
 }
 
-/** Tolerances of PROTOCOL.md: beast (0.01, 0.002), every other rig (0.0001, 0.0002). */
-function paperTolerances(name: string): { gradientTolerance: number; errorTolerance: number } {
-  return /beast/i.test(name) ? { gradientTolerance: 0.01, errorTolerance: 0.002 } : { gradientTolerance: 1e-4, errorTolerance: 2e-4 };
-}
-
 function running(reason: string): boolean {
   return reason === '' || reason === 'running';
 }
@@ -77,7 +72,8 @@ export class PageApp {
     this.settings = {
       rig,
       method: url.method ?? 'lm',
-      ...paperTolerances(rig),
+      gradientTolerance: 1e-4,
+      errorTolerance: 2e-4,
       maxIterations: 50,
       timeBudgetMs: 3,
       restarts: 0,
@@ -240,7 +236,7 @@ export class PageApp {
     this.rigKey = key;
     this.stage.scene.add(...live.objects);
     this.panel.showRig(key ?? FILE_KEY);
-    Object.assign(this.settings, paperTolerances(live.name));
+    Object.assign(this.settings, live.tolerances());
     this.panel.refresh();
     writeUrlState({ rig: key, method: this.settings.method });
 

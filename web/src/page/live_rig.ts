@@ -9,6 +9,7 @@ import type { LoadedRig } from './rig_source.js';
 import { RigView } from './rig_view.js';
 import { IkSession } from './session.js';
 import type { SolverFactory } from './solver_port.js';
+import { defaultTolerances } from './tolerances.js';
 
 export class LiveRig {
   /** Bone selected for the limits readout, or null. */
@@ -47,6 +48,11 @@ export class LiveRig {
 
   get name(): string {
     return this.loaded.name;
+  }
+
+  /** The rig's default stopping tolerances (the benchmark's rule, see tolerances.ts). */
+  tolerances(): { gradientTolerance: number; errorTolerance: number } {
+    return defaultTolerances(this.session.rig, this.loaded.name, this.loaded.a7);
   }
 
   /** The objects to add to the scene. */

@@ -15,6 +15,8 @@ export interface PageProbe {
   loads(): number;
   rigName(): string | null;
   effectors(): number[];
+  /** The E tolerance in use (the panel's). */
+  errorTolerance(): number;
   /** Bone names, in bone order. */
   boneNames(): string[];
   /** Where target k is on screen (client pixels), or null. */
@@ -42,6 +44,7 @@ export function makeProbe(app: PageApp): PageProbe {
     loads: () => app.loads,
     rigName: () => app.current?.name ?? null,
     effectors: () => Array.from(app.current?.session.effectors() ?? []),
+    errorTolerance: () => app.settings.errorTolerance,
     boneNames: () => [...(app.current?.session.spec.names ?? [])],
     targetScreen(k) {
       const live = app.current;

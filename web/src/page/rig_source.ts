@@ -29,6 +29,8 @@ export interface LoadedRig {
   name: string;
   /** Format for display: "glb", "gltf" or "A7 JSON". */
   format: string;
+  /** True for the A7 course format (bones only). */
+  a7: boolean;
   spec: RigSpec;
   /** Notes from the importer (defaults applied...), shown as text. */
   warnings: string[];
@@ -82,6 +84,7 @@ export async function readRig(bytes: Uint8Array, fileName: string, readSibling?:
   return {
     name: rig.name,
     format: rig.format === 'a7' ? 'A7 JSON' : rig.format,
+    a7: rig.format === 'a7',
     spec: rig.spec,
     warnings: rig.warnings,
     makeMesh: info ? () => gltfMesh(bytes, fileName, resourcePath, rig.spec, info) : null,

@@ -46,6 +46,7 @@ export class IkWidget extends HTMLElement {
   private token = 0;
   private needsSolve = false;
   private needsRedraw = false;
+  private tolerances = { gradientTolerance: 1e-4, errorTolerance: 2e-4 };
 
   constructor() {
     super();
@@ -154,6 +155,7 @@ export class IkWidget extends HTMLElement {
     this.handles = handles;
     stage.connectOrbit();
     this.live = live;
+    this.tolerances = live.tolerances();
     stage.scene.add(...live.objects);
     live.ghost.root.visible = false;
     handles.setRigSize(live.view.size);
@@ -213,8 +215,7 @@ export class IkWidget extends HTMLElement {
     if (!live || !handles) return;
     if (this.needsSolve || handles.dragging) {
       const settings: SolveSettings = {
-        gradientTolerance: /beast/i.test(live.name) ? 0.01 : 1e-4,
-        errorTolerance: /beast/i.test(live.name) ? 0.002 : 2e-4,
+        ...this.tolerances,
         maxIterations: 50,
         timeBudgetMs: 3,
         restarts: 0,
