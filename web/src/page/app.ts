@@ -8,15 +8,16 @@ import { CompareView, compareMethods } from './compare.js';
 import { FileInput } from './file_input.js';
 import { Handles } from './handles.js';
 import { Keyboard } from './keyboard.js';
-import { describeLimits } from './limits_view.js';
+import { showLimits } from './limits_view.js';
 import { LiveRig } from './live_rig.js';
+import { pinnedDrift, solveFrame, takeStep } from './live_solve.js';
 import { Panel, type PageSettings } from './panel.js';
 import { listenForClicks, type ViewClick } from './picking.js';
 import { ConvergencePlot } from './plots.js';
 import { DEFAULT_RIG, type LoadedRig, loadProjectRig, loadUserFile, PROJECT_RIGS } from './rig_source.js';
 import { Stage } from './scene.js';
 import { createSolver } from './solvers.js';
-import { METHOD_LABELS, type SolveOutcome, type SolveSettings } from './solver_port.js';
+import type { SolveSettings } from './solver_port.js';
 import { StatsPanel } from './stats.js';
 import { readUrlState, writeUrlState } from './url_state.js';
 
@@ -29,15 +30,6 @@ export interface PageElements {
   message: HTMLElement;
   stepInfo: HTMLElement;
   selection: HTMLElement;
-}
-
-function running(reason: string): boolean {
-  return reason === '' || reason === 'running';
-}
-
-/** Stop reasons after which the next frame goes on solving (the budget ran out, not the problem). */
-function budgetStop(reason: string): boolean {
-  return reason === 'max_iterations' || reason === 'timeout';
 }
 
 const FILE_KEY = 'file';
@@ -303,39 +295,24 @@ export class PageApp {
       this.needsSolve = false;
       return;
     }
-    let out: SolveOutcome;
-    const t0 = performance.now();
     try {
-      out = session.solve(this.settings.method, this.frameSettings());
+      const { outcome: out, ms, again } = solveFrame(session, this.settings.method, this.frameSettings());
+      this.needsSolve = again;
+      if (out.iterations > 0) this.plot.record(this.settings.method, out.history);
+      this.stats.show({
+        method: this.settings.method,
+        iterations: out.iterations,
+        E: out.E,
+        gradNorm: out.gradNorm,
+        stopReason: out.stopReason,
+        ms,
+        pinnedDrift: pinnedDrift(session.tips(), session.targets, this.draggedEffector),
+      });
+      this.needsRedraw = true;
     } catch (e) {
       this.needsSolve = false;
       this.showMessage(`solver error: ${e instanceof Error ? e.message : String(e)}`, 'error');
-      return;
     }
-    const ms = performance.now() - t0;
-    this.needsSolve = budgetStop(out.stopReason);
-    if (out.iterations > 0) this.plot.record(this.settings.method, out.history);
-    this.stats.show({
-      method: this.settings.method,
-      iterations: out.iterations,
-      E: out.E,
-      gradNorm: out.gradNorm,
-      stopReason: out.stopReason,
-      ms,
-      pinnedDrift: this.pinnedDrift(session.tips(), session.targets),
-    });
-    this.needsRedraw = true;
-  }
-
-  /** Largest tip-to-target distance over the effectors not being dragged. */
-  private pinnedDrift(tips: Float64Array, targets: Float64Array): number {
-    let worst = 0;
-    for (let k = 0; k < targets.length / 3; k++) {
-      if (k === this.draggedEffector) continue;
-      const d = Math.hypot(tips[3 * k] - targets[3 * k], tips[3 * k + 1] - targets[3 * k + 1], tips[3 * k + 2] - targets[3 * k + 2]);
-      worst = Math.max(worst, d);
-    }
-    return worst;
   }
 
   private moveTarget(k: number, x: number, y: number, z: number): void {
@@ -415,38 +392,26 @@ export class PageApp {
     }
     const session = live.session;
     if (session.effectors().length === 0) return;
-    const s = this.settings;
-    const method = s.method;
+    const method = this.settings.method;
     try {
-      if (this.stepDirty || session.steppingMethod !== method) {
-        session.beginSteps(method, {
-          gradientTolerance: s.gradientTolerance,
-          errorTolerance: s.errorTolerance,
-          maxIterations: s.compareMaxIterations,
-          timeBudgetMs: Infinity,
-          restarts: 0,
-        });
-        this.stepDirty = false;
-      }
-      const before = session.angles;
-      const E0 = session.objective();
-      const t0 = performance.now();
-      const out = session.step();
-      const ms = performance.now() - t0;
-      let len = 0;
-      for (let j = 0; j < before.length; j++) len += (out.angles[j] - before[j]) ** 2;
-      len = Math.sqrt(len);
-      live.showGhost(len > 0 ? before : null);
+      const r = takeStep(session, method, { ...this.frameSettings(), maxIterations: this.settings.compareMaxIterations }, this.stepDirty);
+      this.stepDirty = false;
+      const out = r.outcome;
+      live.showGhost(r.stepLength > 0 ? r.before : null);
       this.plot.record(method, out.history);
       this.stats.show(
-        { method, iterations: out.iterations, E: out.E, gradNorm: out.gradNorm, stopReason: out.stopReason, ms, pinnedDrift: this.pinnedDrift(session.tips(), session.targets) },
+        {
+          method,
+          iterations: out.iterations,
+          E: out.E,
+          gradNorm: out.gradNorm,
+          stopReason: out.stopReason,
+          ms: r.ms,
+          pinnedDrift: pinnedDrift(session.tips(), session.targets, null),
+        },
         false,
       );
-      const alpha = out.stepLength !== null ? `, line-search step α = ${out.stepLength.toPrecision(3)}` : '';
-      const state = running(out.stopReason) ? 'running' : `stopped: ${out.stopReason}`;
-      this.showStepInfo(
-        `${METHOD_LABELS[method]}, iteration ${out.iterations}: E ${E0.toExponential(3)} → ${out.E.toExponential(3)}; |ΔA| = ${len.toPrecision(3)}°${alpha} (${state}). Faint bones: the previous iterate.`,
-      );
+      this.showStepInfo(r.text);
       this.el.stepInfo.dataset.iterations = String(out.iterations);
       this.needsRedraw = true;
     } catch (e) {
@@ -522,24 +487,9 @@ export class PageApp {
 
   private showSelection(): void {
     const live = this.live;
-    const box = this.el.selection;
-    box.replaceChildren();
-    if (!live || live.selectedBone === null) {
-      box.textContent = 'Click a bone to make its tip an end effector or remove it (shift-click: show its joint limits only).';
-      return;
-    }
-    const i = live.selectedBone;
-    const spec = live.session.spec;
-    const title = document.createElement('strong');
-    const isEffector = live.session.effectors().includes(i);
-    title.textContent = `${spec.names[i] || `bone ${i}`}${isEffector ? ' (end effector)' : ''}`;
-    const list = document.createElement('ul');
-    for (const line of describeLimits(spec, i, live.session.angles)) {
-      const li = document.createElement('li');
-      li.textContent = line;
-      list.append(li);
-    }
-    box.append(title, list);
+    const i = live?.selectedBone ?? null;
+    if (!live || i === null) showLimits(this.el.selection, null);
+    else showLimits(this.el.selection, { spec: live.session.spec, bone: i, angles: live.session.angles, isEffector: live.session.effectors().includes(i) });
   }
 
   private showStepInfo(text: string): void {

@@ -45,6 +45,24 @@ export function describeLimits(spec: RigSpec, i: number, angles: Float64Array): 
   return lines;
 }
 
+/** Writes the selected bone's name and limits into `box` as text (null: the how-to line). */
+export function showLimits(box: HTMLElement, sel: { spec: RigSpec; bone: number; angles: Float64Array; isEffector: boolean } | null): void {
+  box.replaceChildren();
+  if (!sel) {
+    box.textContent = 'Click a bone to make its tip an end effector or remove it (shift-click: show its joint limits only).';
+    return;
+  }
+  const title = document.createElement('strong');
+  title.textContent = `${sel.spec.names[sel.bone] || `bone ${sel.bone}`}${sel.isEffector ? ' (end effector)' : ''}`;
+  const list = document.createElement('ul');
+  for (const line of describeLimits(sel.spec, sel.bone, sel.angles)) {
+    const li = document.createElement('li');
+    li.textContent = line;
+    list.append(li);
+  }
+  box.append(title, list);
+}
+
 export class LimitsView {
   readonly root = new Group();
   private readonly frames: Group[] = [new Group(), new Group(), new Group()];

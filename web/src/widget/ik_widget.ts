@@ -5,6 +5,7 @@
 import type { IkCoreModule } from '../ik/module.js';
 import { Handles } from '../page/handles.js';
 import { LiveRig } from '../page/live_rig.js';
+import { solveFrame } from '../page/live_solve.js';
 import { loadRigUrl } from '../page/rig_source.js';
 import { Stage } from '../page/scene.js';
 import { createSolver } from '../page/solvers.js';
@@ -221,10 +222,8 @@ export class IkWidget extends HTMLElement {
         restarts: 0,
       };
       try {
-        const t0 = performance.now();
-        const out = live.session.solve(this.method, settings);
-        const ms = performance.now() - t0;
-        this.needsSolve = out.stopReason === 'max_iterations' || out.stopReason === 'timeout';
+        const { outcome: out, ms, again } = solveFrame(live.session, this.method, settings);
+        this.needsSolve = again;
         this.statsEl.textContent = `${this.method} · ${out.iterations} it · E ${out.E.toExponential(1)} · ${ms.toFixed(2)} ms`;
         this.statsEl.dataset.e = String(out.E);
       } catch (e) {
