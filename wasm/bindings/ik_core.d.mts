@@ -35,17 +35,64 @@ export interface EmbindRig {
 export interface EmbindSolverResult {
   angles: Float64Array;
   E: number;
+  initialE: number;
   gradNorm: number;
   iterations: number;
   functionEvaluations: number;
   jacobianEvaluations: number;
+  restarts: number;
   stopReason: string;
+  message: string;
   elapsedSeconds: number;
+}
+
+/** Solver options in camelCase (wasm/bindings/solver_options.h); every field optional. */
+export interface EmbindSolverOptions {
+  gradientTolerance?: number;
+  errorTolerance?: number;
+  maxIterations?: number;
+  timeBudgetSeconds?: number;
+  historyCapacity?: number;
+  paperMode?: boolean;
+  fdStepDeg?: number;
+  gdInitialStep?: number;
+  backtrackFactor?: number;
+  armijoC1?: number;
+  maxBacktracks?: number;
+  gnSingularCutoff?: number;
+  newtonMaxStepDeg?: number;
+  lmInitialMu?: number;
+  lmDampingFloor?: number;
+  lmMaxRejections?: number;
+  restarts?: number;
+  stallIterations?: number;
+  seed?: number;
+}
+
+/** wasm/bindings/solver_bindings.cpp: one method on one Rig (which must outlive it). */
+export interface EmbindSolver {
+  readonly method: string;
+  readonly running: boolean;
+  setOptions(options: EmbindSolverOptions): void;
+  options(): Required<EmbindSolverOptions>;
+  start(angles: Numbers, target: Numbers): string;
+  step(): boolean;
+  solve(angles: Numbers, target: Numbers): EmbindSolverResult;
+  result(): EmbindSolverResult;
+  errorHistory(): Float64Array;
+  angles(): Float64Array;
+  delete(): void;
+}
+
+export interface EmbindSolverClass {
+  new (rig: EmbindRig, method: string, options: EmbindSolverOptions): EmbindSolver;
+  methods(): string[];
+  describe(method: string): string;
 }
 
 export interface IkCoreModule {
   Rig: new (spec: RigSpecArrays) => EmbindRig;
-  // Solver bindings (wasm/bindings/solver_bindings.cpp) extend this interface.
+  Solver: EmbindSolverClass;
   [key: string]: unknown;
   HEAPU8: Uint8Array;
 }

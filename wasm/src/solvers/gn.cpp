@@ -1,7 +1,10 @@
 // Gauss-Newton: p = -pinv(J) r through the SVD of J, then projected backtracking from alpha = 1
 // (factor 0.5, sufficient decrease c1 = 1e-3 on the projected point), as the report.
-// Outside paper mode the columns of angles that cannot move (fixed, or pushed against a bound)
-// are left out of J, so the step uses the free angles only.
+// Outside paper mode the pseudo-inverse drops singular values below gn_singular_cutoff times the
+// largest (a nearly singular J otherwise sends the step far along its weakest direction), the
+// step uses the free angles only (not fixed, not pushed against a bound by grad E), angles on a limit that the step would push further out are held and the rest
+// re-solved; and if that projected path finds no lower point, every angle the step would take
+// past a limit is fixed on it and the rest re-solved, so the step stays inside the box.
 #include <Eigen/SVD>
 #include <algorithm>
 #include <limits>
@@ -24,30 +27,77 @@ class GaussNewton final : public Solver {
     svd_ = Eigen::JacobiSVD<Eigen::MatrixXd>(residuals, angles, Eigen::ComputeThinU | Eigen::ComputeThinV);
     projected_.resize(std::min(residuals, angles));
     direction_.resize(angles);
+    mask_.resize(angles);
+    step_.resize(angles);
+    rhs_.resize(residuals);
   }
 
   Progress iterate() override {
-    if (opt_.paper_mode)
-      jac_ = J_;
-    else
-      jac_.noalias() = J_ * free_mask_.asDiagonal();
+    if (opt_.paper_mode) {  // the original: the full J, the step projected by the line search
+      mask_.setOnes();
+      if (!gauss_newton_direction(r_)) return fail("the SVD of the Jacobian is not finite");
+      step_ = direction_;
+      return backtrack(step_, 1, opt_.armijo_c1) ? Progress::moved : Progress::stuck;
+    }
+    // The free angles only, first along the projected path of the Gauss-Newton step with the
+    // angles it would push out of a limit they sit on held there; if no point of that path is
+    // lower, with every angle the full step would take past a limit fixed on the limit and the
+    // others re-solved for the residual that remains (the step then stays inside the box).
+    if (!free_direction(/*clip=*/false)) return fail("the SVD of the Jacobian is not finite");
+    if (backtrack(step_, 1, opt_.armijo_c1)) return Progress::moved;
+    if (!free_direction(/*clip=*/true)) return fail("the SVD of the Jacobian is not finite");
+    return backtrack(step_, 1, opt_.armijo_c1) ? Progress::moved : Progress::stuck;
+  }
+
+  // step_ on the free angles with the active-set passes described in iterate().
+  bool free_direction(bool clip) {
+    mask_ = free_mask_;
+    rhs_ = r_;
+    step_.setZero();
+    for (int pass = 0; pass < kActiveSetPasses; ++pass) {
+      if (!gauss_newton_direction(rhs_)) return false;
+      bool changed = false;
+      for (int i = 0; i < n_; ++i) {
+        if (mask_[i] == 0) continue;
+        const double to = a_[i] + direction_[i];
+        const bool past_lower = to < kin_.lower()[i], past_upper = to > kin_.upper()[i];
+        const bool on_limit = a_[i] <= kin_.lower()[i] || a_[i] >= kin_.upper()[i];
+        if (!(past_lower || past_upper) || (!clip && !on_limit)) {
+          step_[i] = direction_[i];
+          continue;
+        }
+        step_[i] = (past_lower ? kin_.lower()[i] : kin_.upper()[i]) - a_[i];  // 0 if held on the limit
+        mask_[i] = 0;
+        changed = true;
+        rhs_.noalias() += step_[i] * J_.col(i);  // this angle now moves by a known amount
+      }
+      if (!changed) break;
+    }
+    return true;
+  }
+
+  // direction_ = -pinv(J) rhs with J's columns masked by mask_.
+  bool gauss_newton_direction(const Eigen::VectorXd& rhs) {
+    jac_.noalias() = J_ * mask_.asDiagonal();
     svd_.compute(jac_);
     // pinv(J) r = V S^+ U^T r; singular values below max(rows, cols) * eps * s_max count as 0
     // (the original's igl::pinv tolerance).
     const auto& s = svd_.singularValues();
-    if (!s.allFinite()) return fail("the SVD of the Jacobian is not finite");
-    const double cutoff = std::max(jac_.rows(), jac_.cols()) * std::numeric_limits<double>::epsilon() * s.maxCoeff();
-    projected_.noalias() = svd_.matrixU().transpose() * r_;
+    if (!s.allFinite()) return false;
+    const double relative = opt_.paper_mode ? std::max(jac_.rows(), jac_.cols()) * std::numeric_limits<double>::epsilon()
+                                            : opt_.gn_singular_cutoff;
+    const double cutoff = relative * s.maxCoeff();
+    projected_.noalias() = svd_.matrixU().transpose() * rhs;
     for (Eigen::Index i = 0; i < s.size(); ++i) projected_[i] = s[i] < cutoff || s[i] == 0 ? 0.0 : projected_[i] / s[i];
     direction_.noalias() = svd_.matrixV() * projected_;
     direction_ *= -1;
-
-    return backtrack(direction_, 1, opt_.armijo_c1) ? Progress::moved : Progress::stuck;
+    return true;
   }
 
+  static constexpr int kActiveSetPasses = 4;
   Eigen::MatrixXd jac_;
   Eigen::JacobiSVD<Eigen::MatrixXd> svd_;
-  Eigen::VectorXd projected_, direction_;
+  Eigen::VectorXd projected_, direction_, step_, mask_, rhs_;
 };
 
 }  // namespace

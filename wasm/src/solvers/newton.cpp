@@ -56,7 +56,7 @@ class ProjectedNewton final : public Solver {
 
   Progress iterate() override {
     if (num_free_ == 0) return Progress::stuck;
-    // kin_ is posed at a_ (update_derivatives ran there).
+    kin_.forward(a_);  // the tip Hessian reads the pose; others may have posed kin_ since
     H_.noalias() = J_.transpose() * J_;
     add_weighted_tip_hessian(kin_, r_, H_);
     double s = 0;

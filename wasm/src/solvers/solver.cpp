@@ -36,6 +36,7 @@ std::string check_options(const SolverOptions& o) {
   if (!(o.backtrack_factor > 0 && o.backtrack_factor < 1)) return bad("backtrack_factor", "in (0, 1)");
   if (!(o.armijo_c1 >= 0 && o.armijo_c1 < 1)) return bad("armijo_c1", "in [0, 1)");
   if (o.max_backtracks < 1) return bad("max_backtracks", ">= 1");
+  if (!(o.gn_singular_cutoff >= 0 && o.gn_singular_cutoff < 1)) return bad("gn_singular_cutoff", "in [0, 1)");
   if (!(o.newton_max_step_deg > 0)) return bad("newton_max_step_deg", "> 0");
   if (!(finite(o.lm_initial_mu) && o.lm_initial_mu > 0)) return bad("lm_initial_mu", "a number > 0");
   if (!(finite(o.lm_damping_floor) && o.lm_damping_floor >= 0)) return bad("lm_damping_floor", "a number >= 0");
@@ -68,7 +69,7 @@ const char* stop_reason_name(StopReason reason) {
   return "unknown";
 }
 
-Solver::Solver(Kinematics& kin, const SolverOptions& options) : kin_(kin), opt_(options) {}
+Solver::Solver(Kinematics& kin, const SolverOptions& options) : kin_(kin), opt_(options), next_opt_(options) {}
 
 bool Solver::validate(const Eigen::Ref<const Eigen::VectorXd>& angles, const Eigen::Ref<const Eigen::VectorXd>& target) {
   std::string problem = check_options(opt_);
@@ -88,6 +89,7 @@ StopReason Solver::start(const Eigen::Ref<const Eigen::VectorXd>& angles,
                          const Eigen::Ref<const Eigen::VectorXd>& target) {
   call_start_ = Clock::now();
   elapsed_before_call_ = 0;
+  opt_ = next_opt_;
   summary_.iterations = summary_.function_evaluations = summary_.jacobian_evaluations = summary_.restarts = 0;
   summary_.message.clear();
   history_size_ = 0;

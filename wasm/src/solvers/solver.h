@@ -54,6 +54,11 @@ struct SolverOptions {
   double armijo_c1 = 1e-3;                     // gd uses simple decrease (c1 = 0), as the report
   int max_backtracks = 60;                     // outside paper mode; paper mode runs until the step is 0
 
+  // Gauss-Newton: singular values of J below this times the largest count as 0 in the
+  // pseudo-inverse (outside paper mode; paper mode uses the original's max(rows, cols) * eps, with
+  // which a nearly singular J sends the step thousands of degrees along its weakest direction).
+  double gn_singular_cutoff = 3e-3;
+
   // Newton: largest step per angle before the line search, degrees (outside paper mode).
   double newton_max_step_deg = 45.0;
 
@@ -95,12 +100,17 @@ class Solver {
   // Registry name of the method ("lm", ...).
   virtual const char* name() const = 0;
 
+  // Replaces the options. They take effect at the next start(), which checks them; a solve in
+  // progress keeps the options it started with.
+  void set_options(const SolverOptions& options) { next_opt_ = options; }
+
   // Begins a solve from `angles` (#angles, degrees; projected into the limits) towards `target`
   // (#residuals, rig units). Sizes the workspace if the rig's effectors changed since the last
   // start(). Returns running, converged_E / converged_grad (already there), or invalid_input.
   StopReason start(const Eigen::Ref<const Eigen::VectorXd>& angles, const Eigen::Ref<const Eigen::VectorXd>& target);
 
-  // One iteration. Returns true while the solve is still running. No allocation.
+  // One iteration. Returns true while the solve is still running. No allocation. Between steps
+  // the Kinematics may be used by others (posed elsewhere): every method re-poses what it reads.
   bool step();
 
   // start() and step() until stopped. Returns the summary.
@@ -116,6 +126,7 @@ class Solver {
   Eigen::Map<const Eigen::VectorXd> error_history() const {
     return Eigen::Map<const Eigen::VectorXd>(history_.data(), history_size_);
   }
+  // The options of the current solve (set_options() shows here after the next start()).
   const SolverOptions& options() const { return opt_; }
   const Kinematics& kinematics() const { return kin_; }
 
@@ -155,7 +166,8 @@ class Solver {
   bool out_of_time() const;
 
   Kinematics& kin_;
-  SolverOptions opt_;
+  SolverOptions opt_;       // the current solve's
+  SolverOptions next_opt_;  // from set_options(), copied into opt_ by start()
   int n_ = 0;  // #angles
   int m_ = 0;  // #residuals
   Eigen::VectorXd target_, a_, trial_, r_, r_trial_, g_;

@@ -40,7 +40,9 @@ TEST_P(EveryMethod, IteratesStayInsideTheLimits) {
 }
 
 TEST_P(EveryMethod, SteppingEqualsSolving) {
+  // Between steps the rig is posed elsewhere (as the page does to draw): no effect on the solve.
   Kinematics kin(test::load_a7("knight"));
+  const Eigen::VectorXd elsewhere = Eigen::VectorXd::Constant(kin.num_angles(), 33.0);
   SolverOptions options = test::report_options("knight");
   options.max_iterations = 300;
   auto stepped = make_solver(GetParam(), kin, options);
@@ -49,7 +51,11 @@ TEST_P(EveryMethod, SteppingEqualsSolving) {
     std::vector<double> seen;
     stepped->start(c.start, c.target);
     seen.push_back(stepped->summary().E);
-    while (stepped->step()) seen.push_back(stepped->summary().E);
+    kin.forward(elsewhere);
+    while (stepped->step()) {
+      seen.push_back(stepped->summary().E);
+      kin.forward(elsewhere);
+    }
     const SolverSummary& a = stepped->summary();
     const SolverSummary& b = solved->solve(c.start, c.target);
     EXPECT_EQ(a.stop_reason, b.stop_reason);
@@ -172,6 +178,19 @@ TEST(StopReasons, HaveTheirEnumeratorNames) {
   EXPECT_STREQ(stop_reason_name(StopReason::timeout), "timeout");
   EXPECT_STREQ(stop_reason_name(StopReason::invalid_input), "invalid_input");
   EXPECT_STREQ(stop_reason_name(StopReason::numerical_failure), "numerical_failure");
+}
+
+TEST(SolverOptions, SetOptionsTakesEffectAtTheNextStart) {
+  Kinematics kin(test::load_a7("beast"));
+  auto solver = make_solver("gd", kin, test::report_options("beast"));
+  const auto c = test::random_targets(kin, 1, 66)[0];
+  solver->start(c.start, c.target);
+  SolverOptions options = test::report_options("beast");
+  options.max_iterations = 3;
+  solver->set_options(options);
+  EXPECT_NE(solver->options().max_iterations, 3);  // the running solve keeps its options
+  EXPECT_EQ(solver->solve(c.start, c.target).iterations, 3);
+  EXPECT_EQ(solver->options().max_iterations, 3);
 }
 
 TEST(SolverLimits, MaxIterationsAndHistoryCapacity) {

@@ -1,0 +1,188 @@
+// The solvers through WebAssembly in Node: every method on the report's incremental targets
+// (PROTOCOL.md) on the five A7 rigs, and the contract of the binding (options, errors, stepping).
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+
+import type { IkCoreModule } from '../../web/src/ik/module.js';
+import { loadIkNode } from '../../web/src/ik/node.js';
+import { IkRig } from '../../web/src/ik/rig.js';
+import { IkSolver, SOLVER_METHODS, type SolverOptions } from '../../web/src/ik/solver.js';
+import { a7Names, loadA7, randomAngles, seeded } from '../helpers/a7.js';
+
+let ik: IkCoreModule;
+const owned: { dispose(): void }[] = [];
+
+beforeAll(async () => {
+  ik = await loadIkNode();
+});
+
+afterAll(() => owned.reverse().forEach((o) => o.dispose()));
+
+function keep<T extends { dispose(): void }>(o: T): T {
+  owned.push(o);
+  return o;
+}
+
+/** The report's tolerances: beast (0.01, 0.002), every other rig (1e-4, 2e-4); no time budget. */
+function reportOptions(rig: string): SolverOptions & { errorTolerance: number } {
+  const beast = rig === 'beast';
+  return { gradientTolerance: beast ? 0.01 : 1e-4, errorTolerance: beast ? 0.002 : 2e-4, timeBudgetSeconds: 0 };
+}
+
+interface TargetCase {
+  start: Float64Array;
+  target: Float64Array;
+}
+
+/** A_0 = 0, A_k = clamp(A_{k-1} + 5 U(-1,1)^(3m)); solve k starts at A_{k-1}, target x(A_k). */
+function incrementalTargets(rig: IkRig, count: number, seed: number): TargetCase[] {
+  const rand = seeded(seed);
+  const cases: TargetCase[] = [];
+  let previous: Float64Array = new Float64Array(rig.numAngles);
+  for (let k = 0; k < count; k++) {
+    const goal = rig.project(previous.map((a) => a + 5 * (2 * rand() - 1)));
+    cases.push({ start: previous, target: rig.tips(goal) });
+    previous = goal;
+  }
+  return cases;
+}
+
+function insideLimits(rig: IkRig, a: Float64Array): boolean {
+  return a.every((x, i) => x >= rig.lower[i] && x <= rig.upper[i]);
+}
+
+// What each method must reach (as the native suite): the share of solves ending with E below
+// the tolerance; the others must stop on the gradient test.
+const expectations: Record<string, { samples: number; maxIterations: number; minSuccess: number }> = {
+  lm: { samples: 30, maxIterations: 200, minSuccess: 1 },
+  newton: { samples: 30, maxIterations: 200, minSuccess: 1 },
+  gn: { samples: 30, maxIterations: 200, minSuccess: 0.9 },
+  bfgs: { samples: 30, maxIterations: 2000, minSuccess: 0.85 },
+  gd: { samples: 15, maxIterations: 20000, minSuccess: 0.5 },
+};
+
+describe('the methods', () => {
+  it('are the registered ones, lm first', () => {
+    expect(IkSolver.methods(ik)).toEqual([...SOLVER_METHODS]);
+    for (const m of SOLVER_METHODS) expect(IkSolver.describe(ik, m).length).toBeGreaterThan(10);
+    expect(() => IkSolver.describe(ik, 'simplex')).toThrow(/unknown solver method "simplex"/);
+  });
+});
+
+describe.each(a7Names)('%s: incremental targets through WebAssembly', (name) => {
+  it.each([...SOLVER_METHODS])('%s solves them to the report tolerances, inside the limits', (method) => {
+    const rig = keep(new IkRig(ik, loadA7(name)));
+    const expectation = expectations[method];
+    const options = { ...reportOptions(name), maxIterations: expectation.maxIterations };
+    const solver = keep(new IkSolver(rig, method, options));
+    const cases = incrementalTargets(rig, expectation.samples, 41);
+    let successes = 0;
+    for (const c of cases) {
+      const r = solver.solve(c.start, c.target);
+      expect(['converged_E', 'converged_grad'], `${method} ${r.stopReason}`).toContain(r.stopReason);
+      expect(r.E).toBeLessThanOrEqual(r.initialE);
+      expect(insideLimits(rig, r.angles)).toBe(true);
+      expect(rig.objective(r.angles, c.target)).toBeCloseTo(r.E, 12);
+      if (r.E < options.errorTolerance) successes++;
+    }
+    expect(successes, `${successes} of ${cases.length}`).toBeGreaterThanOrEqual(expectation.minSuccess * cases.length);
+  });
+});
+
+describe('the Solver binding', () => {
+  it('fills in defaults and reports the options of the current solve', () => {
+    const rig = keep(new IkRig(ik, loadA7('knight')));
+    const solver = keep(new IkSolver(rig));
+    expect(solver.method).toBe('lm');
+    const o = solver.options();
+    expect(o).toMatchObject({ gradientTolerance: 1e-4, errorTolerance: 2e-4, timeBudgetSeconds: 1, restarts: 0 });
+    solver.setOptions({ maxIterations: 3, restarts: 2 });
+    expect(solver.options().maxIterations).toBe(100000); // applies at the next start
+    solver.start(new Float64Array(rig.numAngles), rig.tips(new Float64Array(rig.numAngles)));
+    expect(solver.options()).toMatchObject({ maxIterations: 3, restarts: 2, gradientTolerance: 1e-4 });
+  });
+
+  it('stepping gives the same solve as solve(), with E per iteration', () => {
+    const rig = keep(new IkRig(ik, loadA7('beast')));
+    const stepped = keep(new IkSolver(rig, 'gn', reportOptions('beast')));
+    const solved = keep(new IkSolver(rig, 'gn', reportOptions('beast')));
+    const rand = seeded(5);
+    for (let s = 0; s < 3; s++) {
+      const start = new Float64Array(rig.numAngles);
+      const target = rig.tips(randomAngles(rig.spec, rand));
+      expect(stepped.start(start, target)).toBe('running');
+      let steps = 0;
+      while (stepped.step()) {
+        expect(stepped.running).toBe(true);
+        expect(stepped.errorHistory().length).toBe(++steps + 1);
+        rig.tips(rig.upper.map((u, i) => Math.min(u, Math.max(rig.lower[i], 33)))); // pose the rig elsewhere
+      }
+      const a = stepped.result(), b = solved.solve(start, target);
+      expect(a).toEqual({ ...b, elapsedSeconds: a.elapsedSeconds });
+      expect(stepped.errorHistory()).toEqual(solved.errorHistory());
+      expect(solved.errorHistory().length).toBe(b.iterations + 1);
+      expect(solved.errorHistory()[0]).toBe(b.initialE);
+      expect(stepped.angles()).toEqual(a.angles);
+    }
+  });
+
+  it('turns bad input into Errors with the message', () => {
+    const rig = keep(new IkRig(ik, loadA7('ikea-lamp')));
+    const a = new Float64Array(rig.numAngles), t = rig.tips(a);
+    expect(() => new IkSolver(rig, 'simplex')).toThrow(/unknown solver method "simplex" \(known: lm, gn, bfgs, newton, gd\)/);
+    expect(() => new IkSolver(rig, 'lm', { maxIteration: 3 } as SolverOptions)).toThrow(/unknown solver option "maxIteration"/);
+    expect(() => new IkSolver(rig, 'lm', { maxIterations: 2.5 })).toThrow(/maxIterations must be an integer/);
+    expect(() => new IkSolver(rig, 'lm', { paperMode: 1 } as unknown as SolverOptions)).toThrow(/paperMode must be true or false/);
+    const solver = keep(new IkSolver(rig, 'bfgs'));
+    expect(() => solver.solve(a, t.slice(1))).toThrow(/target has 2 values, expected 3/);
+    expect(() => solver.solve(new Float64Array(rig.numAngles + 3), t)).toThrow(/angles has 18 values, expected 15/);
+    expect(() => solver.solve(a, t.map((x, i) => (i === 1 ? NaN : x)))).toThrow(/target\[1\] is not a finite number/);
+    expect(() => solver.start(a.map((x, i) => (i === 2 ? Infinity : x)), t)).toThrow(/angles\[2\] is not a finite number/);
+    solver.setOptions({ errorTolerance: -1 });
+    expect(() => solver.solve(a, t)).toThrow(/solver option errorTolerance must be a number >= 0/);
+    solver.setOptions({});
+    expect(solver.solve(a, t).stopReason).toBe('converged_E');
+  });
+
+  it('follows the rig when its end effectors change', () => {
+    const rig = keep(new IkRig(ik, loadA7('knight')));
+    const solver = keep(new IkSolver(rig, 'lm', reportOptions('knight')));
+    const [c] = incrementalTargets(rig, 1, 7);
+    expect(solver.solve(c.start, c.target).stopReason).toBe('converged_E');
+    rig.setEffectors([18, 14]);
+    expect(() => solver.solve(c.start, c.target)).toThrow(/target has 15 values, expected 6/);
+    const goal = rig.project(c.start.map((x) => x + 3));
+    const r = solver.solve(c.start, rig.tips(goal));
+    expect(r.stopReason).toBe('converged_E');
+    rig.setEffectors([18, 14, 8, 3, 5]);
+    expect(solver.solve(c.start, c.target).stopReason).toBe('converged_E');
+  });
+
+  it('lm with restarts solves random targets the plain run gets stuck on', () => {
+    const rig = keep(new IkRig(ik, loadA7('knight')));
+    const plain = keep(new IkSolver(rig, 'lm', reportOptions('knight')));
+    const restarting = keep(new IkSolver(rig, 'lm', { ...reportOptions('knight'), restarts: 200 }));
+    const rand = seeded(9);
+    let plainSolved = 0;
+    for (let s = 0; s < 20; s++) {
+      const start = new Float64Array(rig.numAngles);
+      const target = rig.tips(randomAngles(rig.spec, rand));
+      if (plain.solve(start, target).E < 2e-4) plainSolved++;
+      const r = restarting.solve(start, target);
+      expect(r.E, `target ${s}: ${r.stopReason} after ${r.restarts} restarts`).toBeLessThan(2e-4);
+      expect(insideLimits(rig, r.angles)).toBe(true);
+    }
+    expect(plainSolved).toBeLessThan(20);
+  });
+
+  it('refuses use after dispose, and after its rig was disposed', () => {
+    const rig = new IkRig(ik, loadA7('ikea-lamp'));
+    const solver = new IkSolver(rig, 'gd');
+    solver.dispose();
+    solver.dispose();
+    expect(() => solver.step()).toThrow(/this solver was disposed/);
+    const orphan = new IkSolver(rig, 'gn');
+    rig.dispose();
+    expect(() => orphan.step()).toThrow(/this rig was disposed/);
+    orphan.dispose();
+  });
+});

@@ -1,0 +1,141 @@
+// embind bindings for the solvers: a Solver is one method (solver_registry.h) on one Rig.
+// Arrays cross as typed arrays in bulk; results are copied out. C++ errors and bad input become
+// JavaScript Errors with the C++ message. The Rig must outlive the Solver; JavaScript must call
+// delete() on the Solver (the TS wrapper's dispose() does).
+#include <emscripten/bind.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "js_arrays.h"
+#include "rig_binding.h"
+#include "solver_options.h"
+#include "solvers/solver_registry.h"
+
+namespace ik::js {
+
+using emscripten::val;
+
+class SolverBinding {
+ public:
+  // Throws a JS Error for an unknown method or a malformed options object.
+  SolverBinding(RigBinding& rig, const std::string& method, const val& options)
+      : rig_(rig), solver_(guarded([&] { return make_solver(method, rig.kinematics(), read_options(options)); })) {}
+
+  // The registered method names, in display order.
+  static val methods() {
+    val names = val::array();
+    for (const SolverEntry& e : solver_registry()) names.call<void>("push", std::string(e.name));
+    return names;
+  }
+
+  // One line describing `method`; throws for an unknown name.
+  static std::string describe(const std::string& method) {
+    return guarded([&] {
+      for (const SolverEntry& e : solver_registry())
+        if (method == e.name) return std::string(e.description);
+      throw RigError("unknown solver method \"" + method + "\"");
+    });
+  }
+
+  std::string method() const { return solver_->name(); }
+  bool running() const { return solver_->running(); }
+
+  // Replaces the options (same object shape as the constructor's); they apply from the next start().
+  void set_options(const val& options) {
+    guarded([&] {
+      solver_->set_options(read_options(options));
+      return 0;
+    });
+  }
+
+  // The options of the current solve, every field.
+  val options() const { return write_options(solver_->options()); }
+
+  // Begins a solve: angles (3 per bone, degrees), target (3 per end effector, rig units).
+  // Returns the stop reason after the start ("running" unless already converged).
+  std::string start(const val& angles, const val& target) {
+    return guarded([&] {
+      begin(angles, target);
+      return std::string(stop_reason_name(solver_->summary().stop_reason));
+    });
+  }
+
+  // One iteration; true while still running. No allocation on the C++ side.
+  bool step() { return solver_->step(); }
+
+  // start() and step() to the end; returns the result object.
+  val solve(const val& angles, const val& target) {
+    return guarded([&] {
+      begin(angles, target);
+      while (solver_->step()) {
+      }
+      return result();
+    });
+  }
+
+  // { angles, E, initialE, gradNorm, iterations, functionEvaluations, jacobianEvaluations,
+  //   restarts, stopReason, message, elapsedSeconds } of the solve so far (best angles found).
+  val result() const {
+    const SolverSummary& s = solver_->summary();
+    val r = val::object();
+    r.set("angles", copy_out(s.angles.data(), s.angles.size()));
+    r.set("E", s.E);
+    r.set("initialE", s.initial_E);
+    r.set("gradNorm", s.gradient_norm);
+    r.set("iterations", s.iterations);
+    r.set("functionEvaluations", s.function_evaluations);
+    r.set("jacobianEvaluations", s.jacobian_evaluations);
+    r.set("restarts", s.restarts);
+    r.set("stopReason", std::string(stop_reason_name(s.stop_reason)));
+    r.set("message", s.message);
+    r.set("elapsedSeconds", s.elapsed_s);
+    return r;
+  }
+
+  // E at the start and after each iteration so far (Float64Array copy).
+  val error_history() const {
+    const auto h = solver_->error_history();
+    return copy_out(h.data(), h.size());
+  }
+
+  // The current iterate (Float64Array copy, degrees).
+  val angles() const { return copy_out(solver_->angles().data(), solver_->angles().size()); }
+
+ private:
+  // Copies the arrays in and starts; throws for wrong lengths and for invalid_input.
+  void begin(const val& angles, const val& target) {
+    const Kinematics& kin = rig_.kinematics();
+    copy_in(angles, kin.num_angles(), angles_, "angles");
+    copy_in(target, kin.num_residuals(), target_, "target");  // the rig's effectors right now
+    const StopReason reason =
+        solver_->start(Eigen::Map<const Eigen::VectorXd>(angles_.data(), angles_.size()),
+                       Eigen::Map<const Eigen::VectorXd>(target_.data(), target_.size()));
+    if (reason == StopReason::invalid_input) throw RigError(with_js_option_names(solver_->summary().message));
+  }
+
+  RigBinding& rig_;
+  std::unique_ptr<Solver> solver_;
+  std::vector<double> angles_, target_;
+};
+
+}  // namespace ik::js
+
+EMSCRIPTEN_BINDINGS(ik_solvers) {
+  using ik::js::SolverBinding;
+  emscripten::class_<SolverBinding>("Solver")
+      .constructor<ik::js::RigBinding&, const std::string&, const emscripten::val&>()
+      .class_function("methods", &SolverBinding::methods)
+      .class_function("describe", &SolverBinding::describe)
+      .property("method", &SolverBinding::method)
+      .property("running", &SolverBinding::running)
+      .function("setOptions", &SolverBinding::set_options)
+      .function("options", &SolverBinding::options)
+      .function("start", &SolverBinding::start)
+      .function("step", &SolverBinding::step)
+      .function("solve", &SolverBinding::solve)
+      .function("result", &SolverBinding::result)
+      .function("errorHistory", &SolverBinding::error_history)
+      .function("angles", &SolverBinding::angles);
+}

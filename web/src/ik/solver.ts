@@ -1,0 +1,180 @@
+// The IK solvers living in WebAssembly: one method (lm, gn, bfgs, newton, gd) bound to one rig.
+// Angles are 3 numbers per bone in DEGREES (XZX); targets are 3 numbers per end effector in rig
+// units; E = 1/2 |tips - target|^2. The object owns WebAssembly memory: call dispose() when done,
+// and dispose it before its rig.
+import type { EmbindSolver, EmbindSolverOptions, EmbindSolverResult, IkCoreModule } from './generated/ik_core.mjs';
+import type { IkRig, Numbers } from './rig.js';
+
+/** The registered methods, lm first (the default). `IkSolver.methods(module)` lists the build's. */
+export const SOLVER_METHODS = ['lm', 'gn', 'bfgs', 'newton', 'gd'] as const;
+export type SolverMethod = (typeof SOLVER_METHODS)[number];
+
+/** Why a solve stopped (wasm/src/solvers/solver.h gives each one's exact test). */
+export type StopReason =
+  | 'running' // not stopped yet
+  | 'converged_E' // E < errorTolerance
+  | 'converged_grad' // |grad E| (free angles) < gradientTolerance
+  | 'zero_step' // no step lowered E (and restarts, if any, were used up)
+  | 'max_iterations' // iterations reached maxIterations
+  | 'timeout' // the time budget ran out
+  | 'invalid_input' // never returned: bad input throws an Error instead
+  | 'numerical_failure'; // E or a derivative became non-finite
+
+/**
+ * Solver options; every field is optional and defaults to the C++ SolverOptions default.
+ * Tolerances default to the report's for rigs of about unit size (1e-4, 2e-4).
+ */
+export interface SolverOptions {
+  /** Stop when |grad E| < this (rig units^2 per degree). Default 1e-4. */
+  gradientTolerance?: number;
+  /** Stop when E < this (rig units^2). Default 2e-4. */
+  errorTolerance?: number;
+  /** Iteration cap. Default 100000. */
+  maxIterations?: number;
+  /** Time budget of one solve, seconds (time spent inside start/step); 0 or Infinity: none. Default 1. */
+  timeBudgetSeconds?: number;
+  /** E values kept per solve for errorHistory(). Default 10000. */
+  historyCapacity?: number;
+  /** Reproduce the original program (finite differences, its line searches). Default false. */
+  paperMode?: boolean;
+  /** Finite-difference step in paper mode, degrees. Default 1e-7. */
+  fdStepDeg?: number;
+  /** Gradient descent's first trial step. Default 180/pi. */
+  gdInitialStep?: number;
+  /** Backtracking factor, in (0, 1). Default 0.5. */
+  backtrackFactor?: number;
+  /** Sufficient-decrease constant of the line searches. Default 1e-3. */
+  armijoC1?: number;
+  /** Backtracking trials before giving up (outside paper mode). Default 60. */
+  maxBacktracks?: number;
+  /** Gauss-Newton: singular values below this times the largest are dropped (not in paper mode). Default 3e-3. */
+  gnSingularCutoff?: number;
+  /** Newton's largest step per angle, degrees. Default 45. */
+  newtonMaxStepDeg?: number;
+  /** Levenberg-Marquardt (and Newton) initial damping factor. Default 1. */
+  lmInitialMu?: number;
+  /** Smallest damping, relative to the mean diagonal of J J^T. Default 1e-12. */
+  lmDampingFloor?: number;
+  /** Damping increases per iteration before stopping with zero_step. Default 30. */
+  lmMaxRejections?: number;
+  /** lm: restarts from quasi-random points after a stall (keep 0 while dragging). Default 0. */
+  restarts?: number;
+  /** lm: iterations without a 10% improvement that count as a stall. Default 30. */
+  stallIterations?: number;
+  /** lm: the restart sequence's seed, an integer in [0, 2^32). Default 1. */
+  seed?: number;
+}
+
+export interface SolverResult {
+  /** Best angles found (a fresh array), degrees, inside the limits. */
+  angles: Float64Array;
+  /** E at `angles`. */
+  E: number;
+  /** E at the start angles (after clamping into the limits). */
+  initialE: number;
+  /** |grad E| over the free angles at `angles` (paper mode: the full gradient). */
+  gradNorm: number;
+  iterations: number;
+  functionEvaluations: number;
+  jacobianEvaluations: number;
+  restarts: number;
+  stopReason: StopReason;
+  /** Explains numerical_failure; empty otherwise. */
+  message: string;
+  /** Seconds spent inside start() and step(). */
+  elapsedSeconds: number;
+}
+
+function toResult(r: EmbindSolverResult): SolverResult {
+  return { ...r, stopReason: r.stopReason as StopReason };
+}
+
+export class IkSolver {
+  readonly handle: EmbindSolver;
+  readonly method: string;
+  private disposed = false;
+
+  /** The methods this build registers, in display order. */
+  static methods(module: IkCoreModule): string[] {
+    return module.Solver.methods();
+  }
+
+  /** One line describing a method. Throws for an unknown name. */
+  static describe(module: IkCoreModule, method: string): string {
+    return module.Solver.describe(method);
+  }
+
+  /**
+   * A solver of `method` on `rig`. Throws an Error for an unknown method or option name, or a
+   * value of the wrong type; option ranges are checked by start() and solve().
+   */
+  constructor(
+    readonly rig: IkRig,
+    method: SolverMethod | string = 'lm',
+    options: SolverOptions = {},
+  ) {
+    this.handle = new rig.module.Solver(rig.handle, method, options as EmbindSolverOptions);
+    this.method = this.handle.method;
+  }
+
+  /** Options for the next start() or solve(); the solve in progress keeps its own. */
+  setOptions(options: SolverOptions): void {
+    this.live().setOptions(options as EmbindSolverOptions);
+  }
+
+  /** The options of the current solve, every field filled in. */
+  options(): Required<SolverOptions> {
+    return this.live().options();
+  }
+
+  /**
+   * Begins a solve from `angles` towards `target` (3 numbers per current end effector). Returns
+   * 'running', or 'converged_E' / 'converged_grad' if the start already meets a tolerance.
+   * Throws an Error for wrong lengths, non-finite numbers or out-of-range options.
+   */
+  start(angles: Numbers, target: Numbers): StopReason {
+    return this.live().start(angles, target) as StopReason;
+  }
+
+  /** One iteration; true while the solve is still running. */
+  step(): boolean {
+    return this.live().step();
+  }
+
+  get running(): boolean {
+    return this.live().running;
+  }
+
+  /** start() then step() to the end. Throws like start(). */
+  solve(angles: Numbers, target: Numbers): SolverResult {
+    return toResult(this.live().solve(angles, target));
+  }
+
+  /** The solve so far (or the finished one). */
+  result(): SolverResult {
+    return toResult(this.live().result());
+  }
+
+  /** E at the start and after each iteration so far (a fresh array). */
+  errorHistory(): Float64Array {
+    return this.live().errorHistory();
+  }
+
+  /** The current iterate, degrees (a fresh array). With restarts it can differ from result().angles. */
+  angles(): Float64Array {
+    return this.live().angles();
+  }
+
+  /** Frees the WebAssembly object. Safe to call twice. */
+  dispose(): void {
+    if (this.disposed) return;
+    this.disposed = true;
+    this.handle.delete();
+  }
+
+  private live(): EmbindSolver {
+    if (this.disposed) throw new Error('this solver was disposed');
+    void this.rig.numEffectors; // throws if the rig was disposed first
+    return this.handle;
+  }
+}
