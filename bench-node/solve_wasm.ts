@@ -1,21 +1,78 @@
-// Our solvers through the WebAssembly API (web/src/ik/solver.ts).
+// Our solvers through the WebAssembly API (web/src/ik/solver.ts), as a user calls them: one
+// IkSolver per (rig, method, options), solve(start, target) per target.
 import type { IkCoreModule } from '../web/src/ik/module.js';
+import { IkRig } from '../web/src/ik/rig.js';
 import type { RigSpec } from '../web/src/ik/rig_spec.js';
+import { IkSolver, type SolverOptions } from '../web/src/ik/solver.js';
+import { pinnedDeviation } from './evaluate.js';
 import type { SolveResult } from './metrics.js';
 import type { Runner, RunSettings, SolveInput } from './runner.js';
+import { project } from './targets.js';
 
 export class WasmSolverRunner implements Runner {
+  private readonly rig: IkRig;
+  /** A second rig for observing poses, so the solvers' own rig is never re-posed between steps. */
+  private readonly observer: IkRig;
+  private readonly solver: IkSolver;
+  private readonly options: SolverOptions;
+  private replayer: IkSolver | undefined;
+  /** Where the previous solve ended: the start of a chained (drag) solve. */
+  private current: Float64Array;
+
   constructor(ik: IkCoreModule, spec: RigSpec, settings: RunSettings) {
-    void ik;
-    void spec;
-    void settings;
-    throw new Error('the WebAssembly solver API (web/src/ik/solver.ts) is not available yet');
+    this.rig = new IkRig(ik, spec);
+    this.observer = new IkRig(ik, spec);
+    this.options = {
+      gradientTolerance: settings.gtol,
+      errorTolerance: settings.ftol,
+      timeBudgetSeconds: settings.timeoutSeconds,
+      paperMode: settings.paper,
+    };
+    this.solver = new IkSolver(this.rig, settings.method, this.options);
+    this.current = project(spec, new Float64Array(this.rig.numAngles));
   }
 
   solve(input: SolveInput): SolveResult {
-    void input;
-    throw new Error('unreachable');
+    const start = input.start ?? this.current;
+    let result;
+    const t0 = performance.now();
+    try {
+      result = this.solver.solve(start, input.target);
+    } catch {
+      // The API throws for invalid input instead of returning invalid_input.
+      return { E: NaN, iterations: 0, seconds: (performance.now() - t0) / 1000, stopReason: 'invalid_input', wobbleDuring: NaN, wobbleAfter: NaN };
+    }
+    const seconds = (performance.now() - t0) / 1000;
+    this.current = result.angles;
+    const after = pinnedDeviation(this.observer.tips(result.angles), input.target, input.dragged);
+    const during = Number.isNaN(after) ? NaN : this.replayWobble(start, input, result.iterations, after);
+    return { E: result.E, iterations: result.iterations, seconds, stopReason: result.stopReason, wobbleDuring: during, wobbleAfter: after };
   }
 
-  dispose(): void {}
+  /**
+   * The largest pinned deviation over the iterates of the same solve, replayed step by step with
+   * the timed solve's iteration count and no time budget (deterministic, so the same iterates).
+   */
+  private replayWobble(start: Float64Array, input: SolveInput, iterations: number, after: number): number {
+    if (iterations === 0) return after;
+    this.replayer ??= new IkSolver(this.rig, this.solver.method, this.options);
+    this.replayer.setOptions({ ...this.options, maxIterations: iterations, timeBudgetSeconds: 0 });
+    this.replayer.start(start, input.target);
+    let worst = 0, seen = 0;
+    while (this.replayer.running) {
+      this.replayer.step();
+      const done = this.replayer.result().iterations;
+      if (done === seen) continue;
+      seen = done;
+      worst = Math.max(worst, pinnedDeviation(this.observer.tips(this.replayer.angles()), input.target, input.dragged));
+    }
+    return worst;
+  }
+
+  dispose(): void {
+    this.replayer?.dispose();
+    this.solver.dispose();
+    this.observer.dispose();
+    this.rig.dispose();
+  }
 }

@@ -91,11 +91,15 @@ export function groupRows(rows: readonly Row[]): Row[][] {
   return [...groups.values()];
 }
 
-/** Speed of each engine against the first one, per (rig, experiment, method). */
+/** Speed of each engine against the first one, per (rig, experiment, method): mean and median time. */
 export function engineRatioTable(rows: readonly Row[], engines: readonly string[]): Table | undefined {
   if (engines.length < 2) return undefined;
   const [base, ...others] = engines;
-  const headers = ['rig', 'experiment', 'method', ...engines.map((e) => `t_avg ${e}`), ...others.map((e) => `${base} / ${e}`)];
+  const headers = [
+    'rig', 'experiment', 'method',
+    ...engines.map((e) => `t_avg ${e}`), ...others.map((e) => `t_avg ${base} / ${e}`),
+    ...engines.map((e) => `t_median ${e}`), ...others.map((e) => `t_median ${base} / ${e}`),
+  ];
   const out: string[][] = [];
   const seen = new Set<string>();
   for (const r of rows) {
@@ -104,12 +108,12 @@ export function engineRatioTable(rows: readonly Row[], engines: readonly string[
     seen.add(key);
     const byEngine = engines.map((e) => rows.find((x) => x.rig === r.rig && x.experiment === r.experiment && x.method === r.method && x.engine === e));
     if (byEngine.some((x) => x === undefined)) continue;
-    const t = byEngine.map((x) => x!.t_avg_s);
-    out.push([r.rig, r.experiment, r.method, ...t.map(formatNumber), ...t.slice(1).map((x) => `${formatNumber(t[0] / x)}x`)]);
+    const cells = (t: number[]): string[] => [...t.map(formatNumber), ...t.slice(1).map((x) => `${formatNumber(t[0] / x)}x`)];
+    out.push([r.rig, r.experiment, r.method, ...cells(byEngine.map((x) => x!.t_avg_s)), ...cells(byEngine.map((x) => x!.t_median_s))]);
   }
   if (out.length === 0) return undefined;
   return {
-    title: `engines: t_avg ${base} / t_avg ${others.join(', ')} (above 1: ${base} is slower)`,
+    title: `engines: time ${base} / time ${others.join(', ')} (above 1: ${base} is slower)`,
     headers,
     numeric: headers.map((_, i) => i >= 3),
     rows: out,
