@@ -234,7 +234,7 @@ describe('the page', () => {
     const { page, errors } = await openPage(browser, ctx);
     await gotoRig(page, 'knight');
     const hand = await selectTarget(page, await effectorNamed(page, /hand/i));
-    await dragBy(page, hand, 40, -110);
+    await dragBy(page, hand, 30, -70);
     await waitForSettled(page);
     // Compare every method from the rest pose to these targets.
     await page.locator('.lil-controller', { has: page.locator('.lil-name', { hasText: /^compare: start from$/ }) }).locator('select').selectOption('rest pose');

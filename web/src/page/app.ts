@@ -69,6 +69,7 @@ export class PageApp {
       maxIterations: 50,
       timeBudgetMs: 3,
       restarts: 0,
+      paperMode: false,
       compareTimeBudgetMs: 1000,
       compareMaxIterations: 100000,
       compareFrom: 'current pose',
@@ -286,6 +287,7 @@ export class PageApp {
       maxIterations: s.maxIterations,
       timeBudgetMs: s.timeBudgetMs,
       restarts: 0,
+      paperMode: s.paperMode,
     };
   }
 
@@ -430,6 +432,7 @@ export class PageApp {
       maxIterations: s.compareMaxIterations,
       timeBudgetMs: s.compareTimeBudgetMs,
       restarts: s.restarts,
+      paperMode: s.paperMode,
     };
     this.compareView.begin(`${live.name}, from the ${s.compareFrom} (budget ${s.compareTimeBudgetMs} ms, restarts ${s.restarts})`);
     try {

@@ -17,6 +17,7 @@ export interface PageSettings {
   maxIterations: number;
   timeBudgetMs: number;
   restarts: number;
+  paperMode: boolean;
   compareTimeBudgetMs: number;
   compareMaxIterations: number;
   compareFrom: CompareStart;
@@ -71,6 +72,7 @@ export class Panel {
     solver.add(s, 'errorTolerance').name('E tolerance').onChange(() => actions.settingsChanged());
     solver.add(s, 'maxIterations', 1, 1000, 1).name('iterations / frame').onChange(() => actions.settingsChanged());
     solver.add(s, 'timeBudgetMs', 0.25, 16, 0.25).name('ms budget / frame').onChange(() => actions.settingsChanged());
+    solver.add(s, 'paperMode').name('paper mode (the report’s algorithms)').onChange(() => actions.settingsChanged());
 
     const teach = this.gui.addFolder('Teaching');
     teach.add(s, 'stepMode').name('step mode').onChange(() => actions.stepModeChanged());

@@ -28,8 +28,10 @@ export interface SolveSettings {
   maxIterations: number;
   /** Wall-clock budget of one solve, milliseconds. */
   timeBudgetMs: number;
-  /** Random restarts after a stall; the page forces 0 while a target is dragged. */
+  /** Random restarts after a stall (lm); the per-frame solve forces 0. */
   restarts: number;
+  /** The report's original algorithms (finite-difference Jacobian, its line searches). */
+  paperMode: boolean;
 }
 
 /** The outcome of a solve or of one step. `angles` is a fresh array the caller may keep. */

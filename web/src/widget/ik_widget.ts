@@ -220,6 +220,7 @@ export class IkWidget extends HTMLElement {
         maxIterations: 50,
         timeBudgetMs: 3,
         restarts: 0,
+        paperMode: false,
       };
       try {
         const { outcome: out, ms, again } = solveFrame(live.session, this.method, settings);
