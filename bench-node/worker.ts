@@ -8,6 +8,7 @@ import { IkRig } from '../web/src/ik/rig.js';
 import type { SolveResult } from './metrics.js';
 import { makeRunner } from './runners.js';
 import type { Runner } from './runner.js';
+import { warmUp } from './warm_up.js';
 import type { WorkerInit, WorkerReply, WorkerTask } from './worker_protocol.js';
 
 const port = parentPort;
@@ -29,7 +30,9 @@ function runnerFor(task: WorkerTask): { runner: Runner; rig: IkRig } {
   cached?.runner.dispose();
   cached?.rig.dispose();
   const rig = new IkRig(ik, task.spec);
-  cached = { key, rig, runner: makeRunner(ik, task.spec, task.settings) };
+  const runner = makeRunner(ik, task.spec, task.settings);
+  warmUp(runner, task.spec, (a) => rig.tips(a));
+  cached = { key, rig, runner };
   return cached;
 }
 
