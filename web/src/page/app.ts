@@ -57,6 +57,8 @@ export class PageApp {
   private draggedEffector: number | null = null;
   /** Completed loads, successful or not (for tests and tools). */
   loads = 0;
+  /** The slowest per-frame solve since the rig loaded: page ms, ms inside the solver, iterations, stop. */
+  slowest: { ms: number; solverMs: number; iterations: number; stopReason: string } | null = null;
 
   constructor(private readonly module: IkCoreModule, private readonly el: PageElements) {
     const url = readUrlState();
@@ -141,6 +143,11 @@ export class PageApp {
 
   get current(): LiveRig | null {
     return this.live;
+  }
+
+  /** The running window of per-frame solve times (ms). */
+  get solveTimes(): StatsPanel['median'] {
+    return this.stats.median;
   }
 
   get renderer(): Stage['renderer'] {
@@ -246,6 +253,7 @@ export class PageApp {
     this.el.rigName.textContent = `${live.name} — ${live.loaded.format}, ${s.rig.numBones} bones, ${effectors} end effector${effectors === 1 ? '' : 's'}`;
     this.el.root.dataset.rig = live.name;
     this.stats.reset();
+    this.slowest = null;
     this.stats.showIdle(this.settings.method, s.objective());
     this.plot.clear();
     this.compareView.hide();
@@ -300,6 +308,8 @@ export class PageApp {
     try {
       const { outcome: out, ms, again } = solveFrame(session, this.settings.method, this.frameSettings());
       this.needsSolve = again;
+      if (ms > (this.slowest?.ms ?? -1))
+        this.slowest = { ms, solverMs: out.elapsedSeconds * 1000, iterations: out.iterations, stopReason: out.stopReason };
       if (out.iterations > 0) this.plot.record(this.settings.method, out.history);
       this.stats.show({
         method: this.settings.method,

@@ -15,6 +15,10 @@ export interface PageProbe {
   loads(): number;
   rigName(): string | null;
   effectors(): number[];
+  /** Main-thread ms per live solve over the stats window (the last 121): median, p95, max, window size, solves so far. */
+  solveMs(): { median: number; p95: number; max: number; n: number; total: number };
+  /** The slowest per-frame solve since the rig loaded. */
+  slowestSolve(): PageApp['slowest'];
   /** The E tolerance in use (the panel's). */
   errorTolerance(): number;
   /** Bone names, in bone order. */
@@ -45,6 +49,11 @@ export function makeProbe(app: PageApp): PageProbe {
     rigName: () => app.current?.name ?? null,
     effectors: () => Array.from(app.current?.session.effectors() ?? []),
     errorTolerance: () => app.settings.errorTolerance,
+    slowestSolve: () => app.slowest,
+    solveMs: () => {
+      const t = app.solveTimes;
+      return { median: t.median(), p95: t.quantile(0.95), max: t.max(), n: t.size, total: t.total };
+    },
     boneNames: () => [...(app.current?.session.spec.names ?? [])],
     targetScreen(k) {
       const live = app.current;

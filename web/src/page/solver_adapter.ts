@@ -18,13 +18,16 @@ function toOptions(s: SolveSettings): SolverOptions {
 
 export function createWasmSolver(rig: IkRig, method: Method): MethodSolver {
   const solver = new IkSolver(rig, method);
-  let sent = '';
+  let sent: SolveSettings | null = null;
   const configure = (s: SolveSettings): void => {
-    const options = toOptions(s);
-    const key = JSON.stringify(options, (_k, v: unknown) => (v === Infinity ? 'Infinity' : v));
-    if (key === sent) return;
-    solver.setOptions(options);
-    sent = key;
+    if (
+      sent && sent.gradientTolerance === s.gradientTolerance && sent.errorTolerance === s.errorTolerance &&
+      sent.maxIterations === s.maxIterations && sent.timeBudgetMs === s.timeBudgetMs &&
+      sent.restarts === s.restarts && sent.paperMode === s.paperMode
+    )
+      return;
+    solver.setOptions(toOptions(s));
+    sent = { ...s };
   };
   const outcome = (r: SolverResult): SolveOutcome => ({
     angles: r.angles,

@@ -14,7 +14,11 @@ export class RunningMedian {
     this.sorted = new Float64Array(capacity);
   }
 
+  /** Samples pushed since the last clear (also those that left the window). */
+  total = 0;
+
   push(x: number): void {
+    this.total++;
     this.ring[this.next] = x;
     this.next = (this.next + 1) % this.capacity;
     this.count = Math.min(this.count + 1, this.capacity);
@@ -25,15 +29,29 @@ export class RunningMedian {
   }
 
   median(): number {
+    return this.quantile(0.5);
+  }
+
+  /** Quantile q in [0, 1] of the window, interpolating between closest ranks. */
+  quantile(q: number): number {
     if (this.count === 0) return NaN;
     const s = this.sorted.subarray(0, this.count);
     s.set(this.ring.subarray(0, this.count));
     s.sort();
-    const h = this.count >> 1;
-    return this.count % 2 ? s[h] : (s[h - 1] + s[h]) / 2;
+    const at = q * (this.count - 1);
+    const lo = Math.floor(at);
+    return lo + 1 < this.count ? s[lo] + (s[lo + 1] - s[lo]) * (at - lo) : s[lo];
+  }
+
+  /** Largest sample in the window. */
+  max(): number {
+    let m = -Infinity;
+    for (let i = 0; i < this.count; i++) m = Math.max(m, this.ring[i]);
+    return this.count ? m : NaN;
   }
 
   clear(): void {
+    this.total = 0;
     this.count = 0;
     this.next = 0;
   }
