@@ -85,13 +85,16 @@ export interface BrowserSession {
   close(): Promise<void>;
 }
 
-export async function launchBrowser(): Promise<BrowserSession> {
+/** Chromium with a fresh profile; `phone` emulates a 390x844 touch screen. */
+export async function launchBrowser(phone = false): Promise<BrowserSession> {
   const dir = mkdtempSync(join(tmpdir(), 'ik-chromium-'));
   const context = await chromium.launchPersistentContext(dir, {
     executablePath: process.env.CHROMIUM_PATH ?? '/usr/bin/chromium',
     headless: true,
     args: CHROMIUM_FLAGS,
-    viewport: { width: 1280, height: 800 },
+    ...(phone
+      ? { viewport: { width: 390, height: 844 }, deviceScaleFactor: 2, isMobile: true, hasTouch: true }
+      : { viewport: { width: 1280, height: 800 } }),
   });
   return {
     context,

@@ -178,6 +178,70 @@ describe('the page', () => {
     expect(errors).toEqual([]);
   });
 
+  it('clicking a bone makes its tip an effector and clicking again removes it; R resets', async (ctx) => {
+    const { page, errors } = await openPage(browser, ctx);
+    await gotoRig(page, 'robot-arm');
+    const before = await page.evaluate(() => window.ikPage?.effectors() ?? []);
+    // The longest bone that is not an effector.
+    const bone = await page.evaluate((eff) => {
+      const lengths = window.ikPage?.boneLengths() ?? [];
+      let best = -1;
+      lengths.forEach((l, i) => {
+        if (!eff.includes(i) && (best < 0 || l > lengths[best])) best = i;
+      });
+      return best;
+    }, before);
+    expect(bone).toBeGreaterThanOrEqual(0);
+    const at = await page.evaluate((i) => window.ikPage?.boneScreen(i) ?? null, bone);
+    if (!at) throw new Error('bone off screen');
+    await page.mouse.click(at.x, at.y);
+    await page.waitForFunction((n) => (window.ikPage?.effectors().length ?? 0) === n + 1, before.length);
+    expect(await page.evaluate(() => window.ikPage?.effectors())).toEqual([...before, bone]);
+    expect(await page.textContent('#selection')).toContain('(end effector)');
+    // Its limits are listed as text.
+    expect(await page.$$eval('#selection li', (li) => li.length)).toBe(3);
+    // The new effector's target can be dragged (it got the gizmo).
+    expect(await page.evaluate(() => window.ikPage?.selectedTarget())).toBe(before.length);
+    await dragTowardsRoot(page, before.length, 0.1);
+    await waitForSettled(page);
+    await selectTarget(page, 0); // take the gizmo off the bone
+    const moved = await page.evaluate((i) => window.ikPage?.boneScreen(i) ?? null, bone);
+    if (!moved) throw new Error('bone off screen');
+    await page.mouse.click(moved.x, moved.y);
+    await page.waitForFunction((n) => (window.ikPage?.effectors().length ?? 0) === n, before.length);
+    expect(await page.evaluate(() => window.ikPage?.effectors())).toEqual(before);
+    // R puts the rig back at rest with its targets on the tips.
+    await page.keyboard.press('r');
+    await page.waitForFunction(() => window.ikPage?.effectorError(0) === 0);
+    expect(await stat(page, 'E')).toBe('0');
+    expect(errors).toEqual([]);
+  });
+
+  it('works with touch on a phone-sized screen', async (ctx) => {
+    const phone = await launchBrowser(true);
+    try {
+      const { page, errors } = await openPage(phone, ctx);
+      await gotoRig(page, 'lamp');
+      const from = await targetScreen(page, 0);
+      const cdp = await phone.context.newCDPSession(page);
+      const touch = (type: 'touchStart' | 'touchMove' | 'touchEnd', x = 0, y = 0) =>
+        cdp.send('Input.dispatchTouchEvent', { type, touchPoints: type === 'touchEnd' ? [] : [{ x, y }] });
+      await touch('touchStart', from.x, from.y);
+      for (let i = 1; i <= 10; i++) await touch('touchMove', from.x - 2 * i, from.y + 2 * i);
+      await touch('touchEnd');
+      const to = await targetScreen(page, 0);
+      expect(Math.hypot(to.x - from.x + 20, to.y - from.y - 20)).toBeLessThan(3);
+      await waitForConvergence(page);
+      // The side column sits below the view on a narrow screen.
+      const view = await page.$eval('#viewport', (e) => e.getBoundingClientRect().bottom);
+      const side = await page.$eval('#side', (e) => e.getBoundingClientRect().top);
+      expect(side).toBeGreaterThanOrEqual(view - 1);
+      expect(errors).toEqual([]);
+    } finally {
+      await phone.close();
+    }
+  });
+
   it('a broken file shows the error and keeps the previous rig', async (ctx) => {
     const { page, errors } = await openPage(browser, ctx);
     await gotoRig(page, 'knight');
@@ -260,6 +324,7 @@ describe('the page', () => {
 
   it('measures the main-thread time per solve while dragging on the largest rig', async (ctx) => {
     const { page, errors } = await openPage(browser, ctx);
+    await page.setViewportSize({ width: 800, height: 500 }); // software WebGL draws more frames per second
     await gotoRig(page, 'character');
     const bones = await page.evaluate(() => document.getElementById('rig-name')?.textContent ?? '');
     const hand = await selectTarget(page, await effectorNamed(page, /hand|wrist/i));

@@ -23,6 +23,8 @@ export interface PageProbe {
   errorTolerance(): number;
   /** Bone names, in bone order. */
   boneNames(): string[];
+  /** Bone lengths, in bone order (rig units). */
+  boneLengths(): number[];
   /** Where target k is on screen (client pixels), or null. */
   targetScreen(k: number): ScreenPoint | null;
   /** Where the middle of bone i is on screen, or null. */
@@ -55,6 +57,7 @@ export function makeProbe(app: PageApp): PageProbe {
       return { median: t.median(), p95: t.quantile(0.95), max: t.max(), n: t.size, total: t.total };
     },
     boneNames: () => [...(app.current?.session.spec.names ?? [])],
+    boneLengths: () => Array.from(app.current?.session.spec.lengths ?? []),
     targetScreen(k) {
       const live = app.current;
       if (!live || k < 0 || 3 * k >= live.session.targets.length) return null;
