@@ -10,13 +10,13 @@
 // Option `restarts` (off by default; keep it off while dragging): when a run stalls above the
 // error tolerance (zero step, a stationary point, or best E down < 10% in stall_iterations),
 // restart from the next quasi-random point inside the limits; the best point is kept.
-#include <Eigen/Cholesky>
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <memory>
 
 #include "quasi_random.h"
+#include "small_cholesky.h"
 #include "solver.h"
 
 namespace ik {
@@ -30,11 +30,20 @@ class LevenbergMarquardt final : public Solver {
 
  private:
   void resize(int m, int n) override {
-    Jf_.resize(m, n);
+    // Per angle, the effectors whose tips it moves (those whose chain holds its bone), ascending.
+    column_start_.assign(n + 1, 0);
+    column_effectors_.clear();
+    for (int j = 0; j < n; ++j) {
+      column_start_[j] = static_cast<int>(column_effectors_.size());
+      for (int e = 0; e < kin_.num_effectors(); ++e) {
+        const std::vector<int>& chain = kin_.chain(kin_.rig().effectors[e]);
+        if (std::find(chain.begin(), chain.end(), j / 3) != chain.end()) column_effectors_.push_back(e);
+      }
+    }
+    column_start_[n] = static_cast<int>(column_effectors_.size());
     normal_.resize(m, m);
     reduced_.resize(m, m);
     shifted_.resize(m, m);
-    llt_ = Eigen::LLT<Eigen::MatrixXd>(m);
     y_.resize(m);
     rhs_.resize(m);
     jd_.resize(m);
@@ -65,9 +74,21 @@ class LevenbergMarquardt final : public Solver {
   Progress iterate() override {
     const int nf = num_free_;
     if (nf == 0) return Progress::stuck;
-    for (int c = 0; c < nf; ++c) Jf_.col(c) = J_.col(free_[c]);
-    const auto Jf = Jf_.leftCols(nf);
-    normal_.noalias() = Jf * Jf.transpose();
+    // Jf Jf^T from the 3x1 blocks of J that can be non-zero: column j of J moves only the tips
+    // of the effectors whose chain holds j's bone.
+    normal_.setZero();
+    for (int c = 0; c < nf; ++c) {
+      const int j = free_[c];
+      for (int p = column_start_[j]; p < column_start_[j + 1]; ++p) {
+        const int e = column_effectors_[p];
+        for (int q = p; q < column_start_[j + 1]; ++q) {
+          const int f = column_effectors_[q];
+          normal_.block<3, 3>(3 * e, 3 * f).noalias() += block(e, j) * block(f, j).transpose();
+        }
+      }
+    }
+    for (int e = 0; e < m_ / 3; ++e)
+      for (int f = e + 1; f < m_ / 3; ++f) normal_.block<3, 3>(3 * f, 3 * e) = normal_.block<3, 3>(3 * e, 3 * f).transpose();
     const double s = normal_.trace() / m_;
     if (!std::isfinite(s)) return fail("the Jacobian is not finite");
     if (!(s > 0)) return Progress::stuck;  // no free angle moves a tip
@@ -80,8 +101,13 @@ class LevenbergMarquardt final : public Solver {
       const double E_trial = evaluate(trial_, r_trial_);
       // Gain ratio: actual decrease over the decrease the linear model predicts for the
       // (projected) step taken.
-      for (int c = 0; c < nf; ++c) delta_[c] = trial_[free_[c]] - a_[free_[c]];
-      jd_.noalias() = Jf * delta_.head(nf);
+      jd_.setZero();
+      for (int c = 0; c < nf; ++c) {
+        const int j = free_[c];
+        const double d = trial_[j] - a_[j];
+        for (int p = column_start_[j]; p < column_start_[j + 1]; ++p)
+          jd_.segment<3>(3 * column_effectors_[p]) += d * block(column_effectors_[p], j);
+      }
       const double predicted = -r_.dot(jd_) - 0.5 * jd_.squaredNorm();
       const double rho = (E_ - E_trial) / predicted;
       if (std::isfinite(E_trial) && E_trial < E_ && predicted > 0 && rho > kMinGain) {
@@ -100,33 +126,42 @@ class LevenbergMarquardt final : public Solver {
     return Progress::stuck;
   }
 
+  // The 3x1 block of J: effector e's tip against angle j.
+  Eigen::Block<Eigen::MatrixXd, 3, 1> block(int e, int j) { return J_.block<3, 1>(3 * e, j); }
+
   // Writes trial_ = P(a_ + d) for the damped step d with `lambda`, bounds handled by the active
   // set. Returns false if the factorisation failed.
   bool damped_step(double lambda, int nf) {
-    const auto Jf = Jf_.leftCols(nf);
     reduced_ = normal_;
     rhs_ = r_;
     std::fill(clipped_.begin(), clipped_.begin() + nf, 0);
     for (int pass = 0; pass < kActiveSetPasses; ++pass) {
       shifted_ = reduced_;
       shifted_.diagonal().array() += lambda;
-      llt_.compute(shifted_);
-      if (llt_.info() != Eigen::Success) return false;
+      if (!small_cholesky(shifted_, m_)) return false;
       y_ = rhs_;
-      llt_.solveInPlace(y_);
+      small_cholesky_solve(shifted_, m_, y_);
       bool clipped_more = false;
       for (int c = 0; c < nf; ++c) {
         if (clipped_[c]) continue;
         const int i = free_[c];
-        double d = -Jf.col(c).dot(y_);
+        double d = 0;  // -(Jf^T y)_c
+        for (int p = column_start_[i]; p < column_start_[i + 1]; ++p)
+          d -= block(column_effectors_[p], i).dot(y_.segment<3>(3 * column_effectors_[p]));
         const double to = a_[i] + d;
         if (to < kin_.lower()[i] || to > kin_.upper()[i]) {
           d = (to < kin_.lower()[i] ? kin_.lower()[i] : kin_.upper()[i]) - a_[i];
           clipped_[c] = 1;
           clipped_more = true;
-          // This angle now moves by a known d: take it out of the system.
-          reduced_.noalias() -= Jf.col(c) * Jf.col(c).transpose();
-          rhs_.noalias() += d * Jf.col(c);
+          // This angle now moves by a known d: take its column out of the system.
+          for (int p = column_start_[i]; p < column_start_[i + 1]; ++p) {
+            const int e = column_effectors_[p];
+            rhs_.segment<3>(3 * e) += d * block(e, i);
+            for (int q = column_start_[i]; q < column_start_[i + 1]; ++q) {
+              const int f = column_effectors_[q];
+              reduced_.block<3, 3>(3 * e, 3 * f).noalias() -= block(e, i) * block(f, i).transpose();
+            }
+          }
         }
         delta_[c] = d;
       }
@@ -165,8 +200,8 @@ class LevenbergMarquardt final : public Solver {
   static constexpr double kMaxMu = 1e16;
   static constexpr double kMaxNu = 64;
 
-  Eigen::MatrixXd Jf_, normal_, reduced_, shifted_;
-  Eigen::LLT<Eigen::MatrixXd> llt_;
+  std::vector<int> column_start_, column_effectors_;  // per angle j: column_effectors_[start[j]..start[j+1])
+  Eigen::MatrixXd normal_, reduced_, shifted_;
   Eigen::VectorXd y_, rhs_, jd_, delta_, unit_;
   std::vector<char> clipped_;
   double mu_ = 1, nu_ = 2;

@@ -102,7 +102,8 @@ StopReason Solver::start(const Eigen::Ref<const Eigen::VectorXd>& angles,
     return summary_.stop_reason;
   }
   // Workspace: sized here only, so that step() never allocates.
-  if (m_ != kin_.num_residuals() || n_ != kin_.num_angles()) {
+  if (m_ != kin_.num_residuals() || n_ != kin_.num_angles() || effectors_ != kin_.rig().effectors) {
+    effectors_ = kin_.rig().effectors;
     m_ = kin_.num_residuals();
     n_ = kin_.num_angles();
     target_.resize(m_);
@@ -160,7 +161,7 @@ bool Solver::step() {
   if (!running()) return false;
   call_start_ = Clock::now();
   StopReason reason = StopReason::running;
-  if (kin_.num_residuals() != m_) {
+  if (kin_.rig().effectors != effectors_) {
     summary_.message = "the rig's end effectors changed during the solve; call start() again";
     reason = StopReason::invalid_input;
   } else {
@@ -202,14 +203,14 @@ bool Solver::step() {
       }
     }
   }
+  elapsed_before_call_ += seconds_since(call_start_);  // one clock read per step
   if (reason == StopReason::running) {
     if (summary_.iterations >= opt_.max_iterations)
       reason = StopReason::max_iterations;
-    else if (out_of_time())
+    else if (has_budget() && elapsed_before_call_ >= opt_.time_budget_s)
       reason = StopReason::timeout;
   }
   summary_.stop_reason = reason;
-  elapsed_before_call_ += seconds_since(call_start_);
   summary_.elapsed_s = elapsed_before_call_;
   return reason == StopReason::running;
 }
@@ -285,9 +286,10 @@ Solver::Progress Solver::fail(const char* message) {
   return Progress::failed;
 }
 
+bool Solver::has_budget() const { return opt_.time_budget_s > 0 && !std::isinf(opt_.time_budget_s); }
+
 bool Solver::out_of_time() const {
-  if (!(opt_.time_budget_s > 0) || std::isinf(opt_.time_budget_s)) return false;
-  return elapsed_before_call_ + seconds_since(call_start_) >= opt_.time_budget_s;
+  return has_budget() && elapsed_before_call_ + seconds_since(call_start_) >= opt_.time_budget_s;
 }
 
 StopReason Solver::check_stop() const {

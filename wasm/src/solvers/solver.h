@@ -138,7 +138,8 @@ class Solver {
     failed,  // numerical failure; message set through fail()
   };
 
-  // Method workspace for `residuals` x `angles` (called by start() when sizes change).
+  // Method workspace for `residuals` x `angles` (called by start() when the sizes or the
+  // effector list changed).
   virtual void resize(int residuals, int angles) = 0;
   // Method state at the start of a solve (e.g. BFGS's H = I).
   virtual void reset() {}
@@ -170,6 +171,7 @@ class Solver {
   SolverOptions next_opt_;  // from set_options(), copied into opt_ by start()
   int n_ = 0;  // #angles
   int m_ = 0;  // #residuals
+  std::vector<int> effectors_;  // the rig's effector list the workspace was sized for
   Eigen::VectorXd target_, a_, trial_, r_, r_trial_, g_;
   Eigen::MatrixXd J_;
   double E_ = 0;
@@ -183,6 +185,7 @@ class Solver {
 
  private:
   StopReason check_stop() const;
+  bool has_budget() const;  // a finite time budget is set
   void record();
   void note_best();
   bool validate(const Eigen::Ref<const Eigen::VectorXd>& angles, const Eigen::Ref<const Eigen::VectorXd>& target);

@@ -1,0 +1,18 @@
+// Cholesky factorisation and solve for small dense symmetric positive definite matrices (the
+// residual-size systems of lm, 3 x #effectors): plain loops, which beat Eigen's blocked LLT by
+// several times at these sizes.
+#pragma once
+
+#include <Eigen/Core>
+
+namespace ik {
+
+// Factors the leading n x n block of `a` in place: its lower triangle becomes L with
+// a = L L^T (the strict upper triangle is left alone). Returns false, with `a` partly
+// overwritten, if the matrix is not numerically positive definite. No allocation.
+bool small_cholesky(Eigen::Ref<Eigen::MatrixXd> a, int n);
+
+// Solves L L^T x = b in place (`b` becomes x) with the factor from small_cholesky. No allocation.
+void small_cholesky_solve(const Eigen::Ref<const Eigen::MatrixXd>& factor, int n, Eigen::Ref<Eigen::VectorXd> b);
+
+}  // namespace ik
