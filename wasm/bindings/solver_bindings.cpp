@@ -17,6 +17,16 @@ namespace ik::js {
 
 using emscripten::val;
 
+// The result object JavaScript receives (converted by embind's value_object, which is faster
+// than setting fields one by one).
+struct SolverResultJs {
+  val angles = val::undefined();  // Float64Array copy
+  double E = 0, initial_E = 0, gradient_norm = 0;
+  int iterations = 0, function_evaluations = 0, jacobian_evaluations = 0, restarts = 0;
+  std::string stop_reason, message;
+  double elapsed_s = 0;
+};
+
 class SolverBinding {
  public:
   // Throws a JS Error for an unknown method or a malformed options object.
@@ -66,7 +76,7 @@ class SolverBinding {
   bool step() { return solver_->step(); }
 
   // start() and step() to the end; returns the result object.
-  val solve(const val& angles, const val& target) {
+  SolverResultJs solve(const val& angles, const val& target) {
     return guarded([&] {
       begin(angles, target);
       while (solver_->step()) {
@@ -77,20 +87,20 @@ class SolverBinding {
 
   // { angles, E, initialE, gradNorm, iterations, functionEvaluations, jacobianEvaluations,
   //   restarts, stopReason, message, elapsedSeconds } of the solve so far (best angles found).
-  val result() const {
+  SolverResultJs result() const {
     const SolverSummary& s = solver_->summary();
-    val r = val::object();
-    r.set("angles", copy_out(s.angles.data(), s.angles.size()));
-    r.set("E", s.E);
-    r.set("initialE", s.initial_E);
-    r.set("gradNorm", s.gradient_norm);
-    r.set("iterations", s.iterations);
-    r.set("functionEvaluations", s.function_evaluations);
-    r.set("jacobianEvaluations", s.jacobian_evaluations);
-    r.set("restarts", s.restarts);
-    r.set("stopReason", std::string(stop_reason_name(s.stop_reason)));
-    r.set("message", s.message);
-    r.set("elapsedSeconds", s.elapsed_s);
+    SolverResultJs r;
+    r.angles = copy_out(s.angles.data(), s.angles.size());
+    r.E = s.E;
+    r.initial_E = s.initial_E;
+    r.gradient_norm = s.gradient_norm;
+    r.iterations = s.iterations;
+    r.function_evaluations = s.function_evaluations;
+    r.jacobian_evaluations = s.jacobian_evaluations;
+    r.restarts = s.restarts;
+    r.stop_reason = stop_reason_name(s.stop_reason);
+    r.message = s.message;
+    r.elapsed_s = s.elapsed_s;
     return r;
   }
 
@@ -124,6 +134,19 @@ class SolverBinding {
 
 EMSCRIPTEN_BINDINGS(ik_solvers) {
   using ik::js::SolverBinding;
+  using ik::js::SolverResultJs;
+  emscripten::value_object<SolverResultJs>("SolverResult")
+      .field("angles", &SolverResultJs::angles)
+      .field("E", &SolverResultJs::E)
+      .field("initialE", &SolverResultJs::initial_E)
+      .field("gradNorm", &SolverResultJs::gradient_norm)
+      .field("iterations", &SolverResultJs::iterations)
+      .field("functionEvaluations", &SolverResultJs::function_evaluations)
+      .field("jacobianEvaluations", &SolverResultJs::jacobian_evaluations)
+      .field("restarts", &SolverResultJs::restarts)
+      .field("stopReason", &SolverResultJs::stop_reason)
+      .field("message", &SolverResultJs::message)
+      .field("elapsedSeconds", &SolverResultJs::elapsed_s);
   emscripten::class_<SolverBinding>("Solver")
       .constructor<ik::js::RigBinding&, const std::string&, const emscripten::val&>()
       .class_function("methods", &SolverBinding::methods)

@@ -150,6 +150,13 @@ TEST_P(EveryMethod, NoticesWhenTheRigsEffectorsChange) {
   const SolverSummary& s = solver->solve(cases[0].start, target);
   EXPECT_TRUE(s.stop_reason == StopReason::converged_E || s.stop_reason == StopReason::converged_grad)
       << stop_reason_name(s.stop_reason);
+  // Other effectors, same count: the workspace's structure follows them too.
+  kin.set_effectors({3, 5});
+  kin.tips(cases[0].goal, target);
+  const SolverSummary& t = solver->solve(cases[0].start, target);
+  EXPECT_TRUE(t.stop_reason == StopReason::converged_E || t.stop_reason == StopReason::converged_grad)
+      << stop_reason_name(t.stop_reason);
+  EXPECT_LT(t.E, 2e-4);
 }
 
 INSTANTIATE_TEST_SUITE_P(Methods, EveryMethod, ::testing::ValuesIn(solver_names()),
