@@ -56,7 +56,7 @@ const expectations: Record<string, { samples: number; maxIterations: number; min
   lm: { samples: 30, maxIterations: 200, minSuccess: 1 },
   newton: { samples: 30, maxIterations: 200, minSuccess: 1 },
   gn: { samples: 30, maxIterations: 200, minSuccess: 0.9 },
-  bfgs: { samples: 30, maxIterations: 2000, minSuccess: 0.85 },
+  bfgs: { samples: 30, maxIterations: 500, minSuccess: 0.95 },
   gd: { samples: 15, maxIterations: 20000, minSuccess: 0.5 },
 };
 

@@ -3,8 +3,10 @@
 //   theta = 1 if s'y >= 0.2 s'Bs, else 0.8 s'Bs / (s'Bs - s'y);  r = theta y + (1 - theta) B s
 //   B <- B - B s s'B / s'Bs + r r' / s'r,   H <- (I - rho s r') H (I - rho r s') + rho s s',  rho = 1 / s'r
 // B and H are both kept (O(n^2) each), so s'Bs needs no solve. Paper mode starts from H = I and
-// uses the full gradient. Outside it, H is first scaled by s'y / y'y (Nocedal & Wright 6.20),
-// angles that cannot move are left out of the direction, and a failed search restarts from H = I.
+// uses the full gradient. Outside it, H starts as the inverse diagonal of J^T J, angles that
+// cannot move are left out of the direction and of y, and a failed search restarts the estimate.
+#include <algorithm>
+#include <cmath>
 #include <memory>
 
 #include "solver.h"
@@ -22,34 +24,35 @@ class DampedBfgs final : public Solver {
   void resize(int /*residuals*/, int n) override {
     H_.resize(n, n);
     B_.resize(n, n);
-    for (Eigen::VectorXd* v : {&direction_, &s_, &y_, &g_old_, &Bs_, &r_update_, &Hr_, &gf_}) v->resize(n);
+    for (Eigen::VectorXd* v : {&direction_, &s_, &y_, &g_old_, &Bs_, &r_update_, &Hr_, &gf_, &movable_}) v->resize(n);
+    for (int i = 0; i < n; ++i) movable_[i] = kin_.lower()[i] < kin_.upper()[i] ? 1.0 : 0.0;
   }
 
   void reset() override {
-    H_.setIdentity();
-    B_.setIdentity();
+    fresh_ = true;  // H is set from J at the first iteration
     have_pair_ = false;
-    scaled_ = false;
   }
 
   Progress iterate() override {
-    if (have_pair_) update();
+    if (fresh_)
+      start_curvature();
+    else if (have_pair_)
+      update();
     if (opt_.paper_mode) {
       direction_.noalias() = H_ * g_;
       direction_ *= -1;
     } else {
       gf_ = g_.cwiseProduct(free_mask_);
-      direction_.noalias() = H_ * gf_;
-      direction_ = -direction_.cwiseProduct(free_mask_);
+      free_direction();
       if (!(direction_.dot(gf_) < 0)) {  // not a descent direction: forget the curvature
-        reset();
-        direction_ = -gf_;
+        start_curvature();
+        free_direction();
       }
     }
     bool moved = backtrack(direction_, 1, opt_.armijo_c1);
-    if (!moved && !opt_.paper_mode && scaled_) {  // H had learned curvature: retry downhill
-      reset();
-      direction_ = -gf_;
+    if (!moved && !opt_.paper_mode && learned_) {  // H had learned curvature: retry from the start
+      start_curvature();
+      free_direction();
       moved = backtrack(direction_, 1, opt_.armijo_c1);
     }
     if (!moved) return Progress::stuck;
@@ -59,16 +62,47 @@ class DampedBfgs final : public Solver {
     return Progress::moved;
   }
 
-  // The damped update with the last step s_ and the gradient change y = g - g_old.
-  void update() {
-    y_ = g_ - g_old_;
-    const double sy = s_.dot(y_);
-    if (!opt_.paper_mode && !scaled_ && sy > 0) {
-      const double gamma = sy / y_.squaredNorm();  // H0 = gamma I, B0 = I / gamma
-      H_ *= gamma;
-      B_ /= gamma;
+  // direction_ = -H gf on the free angles.
+  void free_direction() {
+    direction_.noalias() = H_ * gf_;
+    direction_ = -direction_.cwiseProduct(free_mask_);
+  }
+
+  // The first curvature estimate. Paper mode: H = B = I, as the original. Otherwise the
+  // diagonal of the Gauss-Newton Hessian J^T J, B = diag(|J_i|^2) and H = B^-1, so the first
+  // step already has the right scale per angle (degrees on a 0.2-unit finger and on a 45-unit
+  // leg differ by orders of magnitude in effect).
+  void start_curvature() {
+    fresh_ = false;
+    learned_ = false;
+    have_pair_ = false;
+    H_.setIdentity();
+    B_.setIdentity();
+    if (opt_.paper_mode) return;
+    // Angles that barely move a tip would get a huge 1/d: floor d at a share of the mean.
+    double mean = 0;
+    int count = 0;
+    for (int i = 0; i < n_; ++i)
+      if (movable_[i] != 0) {
+        mean += J_.col(i).squaredNorm();
+        ++count;
+      }
+    mean = count ? mean / count : 1.0;
+    for (int i = 0; i < n_; ++i) {
+      const double d = movable_[i] != 0 ? std::max(J_.col(i).squaredNorm(), kDiagonalFloor * mean) : 1.0;
+      if (!(d > 0) || !std::isfinite(d)) continue;
+      B_(i, i) = d;
+      H_(i, i) = 1 / d;
     }
-    scaled_ = true;
+  }
+
+  // The damped update with the last step s_ and the gradient change y = g - g_old over the
+  // angles that can move (a fixed angle's analytic derivative is not 0, but it never moves: its
+  // y would only pollute H; the original's finite differences give it exactly 0).
+  void update() {
+    y_ = (g_ - g_old_).cwiseProduct(movable_);
+    const double sy = s_.dot(y_);
+    learned_ = true;
     Bs_.noalias() = B_ * s_;
     const double sBs = s_.dot(Bs_);
     if (!(sBs > 0)) return;  // s = 0: nothing learned
@@ -87,10 +121,13 @@ class DampedBfgs final : public Solver {
     H_.noalias() += ((rho * rho * rHr + rho) * s_) * s_.transpose();
   }
 
+  static constexpr double kDiagonalFloor = 0.1;  // of the mean |J_i|^2
   Eigen::MatrixXd H_, B_;
   Eigen::VectorXd direction_, s_, y_, g_old_, Bs_, r_update_, Hr_, gf_;
-  bool have_pair_ = false;
-  bool scaled_ = false;
+  Eigen::VectorXd movable_;  // 1 for an angle with min < max, 0 for a fixed one
+  bool have_pair_ = false;  // s_ and g_old_ hold the last step
+  bool fresh_ = true;       // the next iteration starts the curvature estimate
+  bool learned_ = false;    // H holds at least one update
 };
 
 }  // namespace

@@ -28,7 +28,8 @@ enum class StopReason {
                       // equalled A, or max_backtracks tries failed; restarts exhausted if enabled
   max_iterations,     // iterations >= max_iterations
   timeout,            // time spent inside start() and step() since start() >= time_budget_s
-  invalid_input,      // start() got a wrong length, a non-finite angle or target, or a bad option (see message)
+  invalid_input,      // start() got a wrong length, a non-finite angle or target, or a bad option; or the rig's
+                      // effector list changed between start() and step() (see message)
   numerical_failure,  // E or a derivative became non-finite, or a factorisation failed at every damping
 };
 
@@ -43,8 +44,11 @@ struct SolverOptions {
   double time_budget_s = 1.0;        // seconds; 0 or infinity: no limit
   int history_capacity = 10000;      // E values kept per solve (the first ones; see error_history())
 
-  // Reproduce the original program: central finite-difference Jacobian (fd_step_deg, clamped to
-  // the limits), the full |grad E| in the gradient test, and the report's line searches.
+  // Reproduce the original program (shiinamiyuki/CSC466_Project): its central difference with
+  // step fd_step_deg clamped to the limits, divided by h as it did (twice the derivative away
+  // from the limits), the full |grad E| in the gradient test, and its line searches (Armijo on
+  // alpha grad.p, halving until the step is 0). Counting differs by one: the original counted the
+  // final call that found a stopping test true; iterations here counts accepted steps.
   bool paper_mode = false;
   double fd_step_deg = 1e-7;
 
@@ -59,11 +63,12 @@ struct SolverOptions {
   // which a nearly singular J sends the step thousands of degrees along its weakest direction).
   double gn_singular_cutoff = 3e-3;
 
-  // Newton: largest step per angle before the line search, degrees (outside paper mode).
+  // Newton: largest step per angle, degrees.
   double newton_max_step_deg = 45.0;
 
-  // Levenberg-Marquardt: damping lambda = mu * (|r| / reach)^2 * s + lm_damping_floor * s, where s is
-  // the mean diagonal of J J^T over the free angles and reach the rig's longest effector chain.
+  // Levenberg-Marquardt (and Newton's shift): damping lambda = mu * (|r| / reach)^2 * s +
+  // lm_damping_floor * s, where s is the mean diagonal of J J^T (Newton: of Hess E) over the free
+  // angles, reach the rig's longest effector chain, and mu starts at lm_initial_mu.
   double lm_initial_mu = 1.0;
   double lm_damping_floor = 1e-12;
   int lm_max_rejections = 30;   // damping increases per iteration before zero_step
@@ -80,7 +85,7 @@ struct SolverSummary {
   double initial_E = 0;         // E at the start angles (after projection into the limits)
   double E = 0;                 // E at `angles`
   double gradient_norm = 0;     // |g| at `angles` as the gradient test measures it
-  int iterations = 0;           // accepted steps
+  int iterations = 0;           // accepted steps (a restart counts as one)
   int function_evaluations = 0; // forward-kinematics evaluations of E (line-search trials included)
   int jacobian_evaluations = 0; // Jacobian evaluations (one finite-difference Jacobian counts once)
   int restarts = 0;             // restarts performed

@@ -16,7 +16,7 @@ struct Expectation {
 
 Expectation expectation(const std::string& method) {
   if (method == "gd") return {20, 20000, 0.5};  // slow: stops on the gradient test just above E's
-  if (method == "bfgs") return {40, 2000, 0.85};
+  if (method == "bfgs") return {40, 500, 0.95};
   if (method == "gn") return {40, 200, 0.9};  // a few stop on |g| < tolerance above E's
   return {40, 200, 1.0};
 }
