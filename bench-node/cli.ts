@@ -1,6 +1,8 @@
 // `npm run bench -- [options]`: benchmarks the IK methods on the report's target sets and prints a
 // table per rig and experiment. See bench-node/README.md for the options, metrics and peers.
+import { spawnSync } from 'node:child_process';
 import { availableParallelism, cpus } from 'node:os';
+import { fileURLToPath } from 'node:url';
 
 import { loadIkNode } from '../web/src/ik/node.js';
 import { prepareRigs, runBench, totalSolves } from './bench.js';
@@ -16,7 +18,15 @@ const notes = [
   'Columns as in the report: t_avg (s), iter_avg, E_avg, E_IQM (mean of the middle half of the sorted final E), ' +
     'max E; plus success (final E < ftol), median, 95th percentile and max time per solve, and the stop reasons. ' +
     'Definitions, the drag experiment and the peers\' settings: bench-node/README.md.',
+  'Times are per solve in seconds, measured on a machine that may be shared: a solve that is descheduled for ' +
+    'milliseconds moves t_avg and t_max far more than t_median, so compare speeds by the medians. Wobble is in rig units.',
 ];
+
+/** The checked-out commit, for the record; empty outside a git checkout. */
+function gitCommit(): string {
+  const r = spawnSync('git', ['rev-parse', '--short', 'HEAD'], { cwd: fileURLToPath(new URL('..', import.meta.url)), encoding: 'utf8' });
+  return r.status === 0 ? r.stdout.trim() : '';
+}
 
 async function main(argv: string[]): Promise<number> {
   const opts = parseOptions(argv, process.stderr.isTTY === true);
@@ -45,6 +55,7 @@ async function main(argv: string[]): Promise<number> {
 
   const info: RunInfo = {
     command: `npm run bench -- ${argv.join(' ')}`,
+    commit: gitCommit(),
     date: new Date().toISOString().slice(0, 10),
     node: process.versions.node,
     cpu: cpus()[0]?.model.trim() ?? 'unknown CPU',

@@ -8,6 +8,8 @@ import { formatStopReasons, renderTable, type Table } from './table.js';
 /** Facts about a run, written beside the rows so a file says how it was made. */
 export interface RunInfo {
   command: string;
+  /** Short hash of the checked-out commit ('' when unknown). */
+  commit: string;
   date: string;
   node: string;
   cpu: string;
@@ -58,7 +60,7 @@ export function markdownText(tables: readonly Table[], info: RunInfo, notes: rea
   return [
     '# Benchmark results',
     '',
-    `Made by \`${info.command}\` on ${info.date}.`,
+    `Made by \`${info.command}\` on ${info.date}${info.commit ? ` at commit ${info.commit}` : ''}.`,
     '',
     `Machine: ${info.cpu}, ${info.cores} cores; Node ${info.node}; ${info.workers} workers. Seed ${info.seed}, ` +
       `time budget ${info.timeoutSeconds} s per solve${info.paper ? ', paper mode (the original algorithms)' : ''}.`,
