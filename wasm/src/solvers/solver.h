@@ -73,9 +73,11 @@ struct SolverOptions {
   double lm_damping_floor = 1e-12;
   int lm_max_rejections = 30;   // damping increases per iteration before zero_step
 
-  // Restarts (lm only; 0 = off, the default for interactive dragging): when a run stalls above
-  // error_tolerance it restarts from a quasi-random point inside the limits, keeping the best.
-  int restarts = 0;
+  // Restarts (lm only): when a run stalls above error_tolerance it restarts from a quasi-random
+  // point inside the limits, keeping the best, until this many restarts or the time budget are
+  // spent. On by default (the project's default method solves every reachable target); set 0
+  // while a user drags, where a restart would make the pose jump.
+  int restarts = 1000;
   int stall_iterations = 30;     // a run whose best E fell by < 10% over this many iterations stalls
   std::uint32_t seed = 1;        // quasi-random sequence offset; same seed, same restarts
 };

@@ -57,7 +57,7 @@ export interface SolverOptions {
   lmDampingFloor?: number;
   /** Damping increases per iteration before stopping with zero_step. Default 30. */
   lmMaxRejections?: number;
-  /** lm: restarts from quasi-random points after a stall (keep 0 while dragging). Default 0. */
+  /** lm: restarts from quasi-random points after a stall, within the time budget (set 0 while dragging). Default 1000. */
   restarts?: number;
   /** lm: iterations without a 10% improvement that count as a stall. Default 30. */
   stallIterations?: number;
