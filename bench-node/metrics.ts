@@ -87,6 +87,7 @@ export interface Row {
   t_avg_s: number;
   t_median_s: number;
   t_p95_s: number;
+  t_p99_s: number;
   t_max_s: number;
   iter_avg: number;
   E_avg: number;
@@ -124,6 +125,7 @@ export function summarize(key: RowKey, results: readonly SolveResult[], ftol: nu
     t_avg_s: mean(t),
     t_median_s: median(t),
     t_p95_s: quantile(t, 0.95),
+    t_p99_s: quantile(t, 0.99),
     t_max_s: maxOf(t),
     iter_avg: mean(results.map((r) => r.iterations)),
     E_avg: mean(E),

@@ -1,0 +1,9 @@
+#!/usr/bin/env bash
+# npm run bench:report: install and build what is missing (native and WebAssembly, with the
+# benchmark tools), then run the whole measurement set into docs/benchmarks.md.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash scripts/setup.sh --native
+cmake --build build/native --target solver_speed scale_bench ik_bench_native >/dev/null
+NODE_PATH=/usr/share/nodejs cmake --build build/wasm --target solver_speed scale_bench >/dev/null
+exec npx tsx bench-node/report/report.ts "$@"
