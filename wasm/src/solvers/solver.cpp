@@ -150,6 +150,21 @@ StopReason Solver::start(const Eigen::Ref<const Eigen::VectorXd>& angles,
   record();
   if (running()) {
     summary_.stop_reason = check_stop();
+    // A start on a stationary point above the error tolerance (a tip pointing straight away from
+    // its target, say) restarts at once, as a stalled run would.
+    while (summary_.stop_reason == StopReason::converged_grad && E_ >= opt_.error_tolerance &&
+           summary_.iterations < opt_.max_iterations && !out_of_time() && restart()) {
+      ++summary_.restarts;
+      ++summary_.iterations;
+      if (!finite(E_) || !update_derivatives(true)) {
+        summary_.stop_reason = StopReason::numerical_failure;
+        summary_.message = "E or its gradient is not finite at a restart point";
+        break;
+      }
+      record();
+      note_best();
+      summary_.stop_reason = check_stop();
+    }
     if (running() && opt_.max_iterations == 0) summary_.stop_reason = StopReason::max_iterations;
   }
   elapsed_before_call_ = seconds_since(call_start_);

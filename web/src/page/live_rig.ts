@@ -9,7 +9,7 @@ import type { LoadedRig } from './rig_source.js';
 import { RigView } from './rig_view.js';
 import { IkSession } from './session.js';
 import type { SolverFactory } from './solver_port.js';
-import { defaultTolerances } from './tolerances.js';
+import { defaultTolerances, rigSize } from '../rig/tolerances.js';
 
 export class LiveRig {
   /** Bone selected for the limits readout, or null. */
@@ -52,7 +52,9 @@ export class LiveRig {
 
   /** The rig's default stopping tolerances (the benchmark's rule, see tolerances.ts). */
   tolerances(): { gradientTolerance: number; errorTolerance: number } {
-    return defaultTolerances(this.session.rig, this.loaded.name, this.loaded.a7);
+    const rig = this.session.rig;
+    const t = defaultTolerances(this.loaded.name, this.loaded.a7, rigSize(rig.boneTips(new Float64Array(rig.numAngles))));
+    return { gradientTolerance: t.gtol, errorTolerance: t.ftol };
   }
 
   /** The objects to add to the scene. */

@@ -1,0 +1,46 @@
+// Default stopping tolerances of a rig, shared by the page, the widget and the benchmark:
+// the report's values for its five A7 rigs (beast: gradient 0.01, E 0.002; the others: 0.0001,
+// 0.0002); for any other rig both scale with the square of the rig's size (the diagonal of the
+// bounding box of every bone tip at the rest pose) relative to 1 rig unit, since E is a squared
+// distance and grad E = J^T r scales the same way.
+
+export interface Tolerances {
+  /** |grad E| threshold, rig units^2 per degree. */
+  gtol: number;
+  /** E threshold (and the success test), rig units^2. */
+  ftol: number;
+}
+
+/** The report's rigs and their tolerances (PROTOCOL.md). */
+export const reportTolerances: Readonly<Record<string, Tolerances>> = {
+  'ikea-lamp': { gtol: 1e-4, ftol: 2e-4 },
+  'robot-arm': { gtol: 1e-4, ftol: 2e-4 },
+  knight: { gtol: 1e-4, ftol: 2e-4 },
+  'chimpanzee-hand': { gtol: 1e-4, ftol: 2e-4 },
+  beast: { gtol: 0.01, ftol: 0.002 },
+};
+
+/** Reference size (rig units) at which an unknown rig gets the report's usual tolerances. */
+export const REFERENCE_SIZE = 1;
+const REFERENCE_TOL: Tolerances = { gtol: 1e-4, ftol: 2e-4 };
+
+/** Rig size: the diagonal of the bounding box of the bone tips (3 numbers per bone), rig units. */
+export function rigSize(boneTipsAtRest: ArrayLike<number>): number {
+  if (boneTipsAtRest.length === 0) return REFERENCE_SIZE;
+  const lo = [Infinity, Infinity, Infinity];
+  const hi = [-Infinity, -Infinity, -Infinity];
+  for (let i = 0; i < boneTipsAtRest.length; i++) {
+    const axis = i % 3;
+    lo[axis] = Math.min(lo[axis], boneTipsAtRest[i]);
+    hi[axis] = Math.max(hi[axis], boneTipsAtRest[i]);
+  }
+  return Math.hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]);
+}
+
+/** Default tolerances of the rig `name` (file base name); `a7` says it came from an A7 .json file. */
+export function defaultTolerances(name: string, a7: boolean, size: number): Tolerances {
+  const report = a7 ? reportTolerances[name] : undefined;
+  if (report) return { ...report };
+  const scale = (size / REFERENCE_SIZE) ** 2;
+  return { gtol: REFERENCE_TOL.gtol * scale, ftol: REFERENCE_TOL.ftol * scale };
+}
