@@ -2,11 +2,12 @@
 // method, engine) on them and summarise each into a row. Knows nothing of argv or output files.
 import type { IkCoreModule } from '../web/src/ik/module.js';
 import { IkRig } from '../web/src/ik/rig.js';
+import { defaultTolerances, rigSize } from '../web/src/rig/tolerances.js';
 import { BenchError } from './errors.js';
 import { summarize, type Row } from './metrics.js';
 import { isPeer, type BenchOptions, type Method } from './options.js';
 import type { Progress } from './progress.js';
-import { defaultTolerances, loadBenchRig, rigSize, type BenchRig } from './rigs.js';
+import { loadBenchRig, type BenchRig } from './rigs.js';
 import { checkNativeTool, runNative } from './run_native.js';
 import { runOnPool, WorkerPool } from './run_wasm.js';
 import type { RunSettings } from './runner.js';
@@ -34,7 +35,7 @@ export async function prepareRigs(opts: BenchOptions, ik: IkCoreModule): Promise
     if (rig.spec.effectors.length === 0) throw new BenchError(`rig ${entry}: no end effectors`);
     if (opts.experiments.includes('drag') && draggableEffectors(rig.spec).length === 0)
       throw new BenchError(`rig ${entry}: the drag experiment needs an end effector that can move while the others stay pinned`);
-    const defaults = defaultTolerances(rig, size);
+    const defaults = defaultTolerances(rig.name, rig.format === 'a7', size);
     out.push({ ...rig, size, gtol: opts.gtol ?? defaults.gtol, ftol: opts.ftol ?? defaults.ftol });
   }
   return out;

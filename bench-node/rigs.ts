@@ -3,10 +3,9 @@
 // A rig is a path to a .glb, .gltf or A7 .json file, or a bare name (`knight`) meaning the
 // project rig web/public/models/NAME.glb. Its display name is the file's base name.
 //
-// Default tolerances: the report's values for its five A7 rigs (beast: gtol 0.01, ftol 0.002;
-// the others: gtol 0.0001, ftol 0.0002). For any other rig both scale with the square of the rig's
-// size relative to a reference size of 1 rig unit (E is a squared distance and grad E = J^T r is
-// a length times a length per degree):
+// Default tolerances (web/src/rig/tolerances.ts, shared with the page): the report's values for
+// its five A7 rigs (beast: gtol 0.01, ftol 0.002; the others: gtol 0.0001, ftol 0.0002). For any
+// other rig both scale with the square of the rig's size relative to a reference size of 1 rig unit:
 //   ftol = 0.0002 * (size / 1)^2,   gtol = 0.0001 * (size / 1)^2
 // where size is the diagonal of the bounding box of every bone's tip at the rest pose. The four
 // smaller A7 rigs measure 0.74 (robot-arm) to 1.73 (chimpanzee-hand) by that rule, hence the
@@ -22,18 +21,7 @@ import { BenchError } from './errors.js';
 
 export const projectModelsDir = fileURLToPath(new URL('../web/public/models/', import.meta.url));
 
-/** The report's rigs and their tolerances (PROTOCOL.md). */
-export const reportTolerances: Readonly<Record<string, { gtol: number; ftol: number }>> = {
-  'ikea-lamp': { gtol: 1e-4, ftol: 2e-4 },
-  'robot-arm': { gtol: 1e-4, ftol: 2e-4 },
-  knight: { gtol: 1e-4, ftol: 2e-4 },
-  'chimpanzee-hand': { gtol: 1e-4, ftol: 2e-4 },
-  beast: { gtol: 0.01, ftol: 0.002 },
-};
-
-/** Reference size (rig units) at which an unknown rig gets the report's usual tolerances. */
-export const REFERENCE_SIZE = 1;
-const REFERENCE_TOL = { gtol: 1e-4, ftol: 2e-4 };
+export { REFERENCE_SIZE, rigSize } from '../web/src/rig/tolerances.js';
 
 export interface BenchRig {
   /** The file's base name without extension: "knight". */
@@ -70,24 +58,4 @@ export async function loadBenchRig(entry: string): Promise<BenchRig> {
 function oneLine(e: unknown): string {
   const text = e instanceof Error ? e.message : String(e);
   return text.split('\n')[0];
-}
-
-/** Diagonal of the bounding box of all bone tips (3 per bone) at the rest pose. */
-export function rigSize(boneTipsAtRest: ArrayLike<number>): number {
-  const lo = [Infinity, Infinity, Infinity];
-  const hi = [-Infinity, -Infinity, -Infinity];
-  for (let i = 0; i < boneTipsAtRest.length; i++) {
-    const axis = i % 3;
-    lo[axis] = Math.min(lo[axis], boneTipsAtRest[i]);
-    hi[axis] = Math.max(hi[axis], boneTipsAtRest[i]);
-  }
-  return Math.hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]);
-}
-
-/** Default (gtol, ftol) of a rig: the report's for its A7 rigs, otherwise scaled by size^2. */
-export function defaultTolerances(rig: Pick<BenchRig, 'name' | 'format'>, size: number): { gtol: number; ftol: number } {
-  const report = rig.format === 'a7' ? reportTolerances[rig.name] : undefined;
-  if (report) return { ...report };
-  const scale = (size / REFERENCE_SIZE) ** 2;
-  return { gtol: REFERENCE_TOL.gtol * scale, ftol: REFERENCE_TOL.ftol * scale };
 }
