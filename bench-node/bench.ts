@@ -92,6 +92,8 @@ export async function runBench(rigs: readonly PreparedRig[], ctx: RunContext): P
             timeoutSeconds: opts.timeoutSeconds,
             paper: opts.paper,
             rigSize: rig.size,
+            // Dragging never restarts (as on the page): a restart jumps the whole pose.
+            ...(experiment === 'drag' ? { restarts: 0 } : {}),
           };
           for (const engine of enginesFor(method, opts)) {
             progress.label(`${rig.name} ${experiment} ${method} ${engine}`);

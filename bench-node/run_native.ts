@@ -98,6 +98,7 @@ export async function runNative(
         const args = ['--rig', rigFile, '--method', settings.method, '--input', input, '--output', output,
           '--gtol', String(settings.gtol), '--ftol', String(settings.ftol), '--timeout', String(settings.timeoutSeconds)];
         if (settings.paper) args.push('--paper');
+        if (settings.restarts !== undefined) args.push('--restarts', String(settings.restarts));
         await runProcess(args);
         results[b] = decodeResults(readFileSync(output, 'utf8'), end - begin, output);
         onProgress(end - begin);

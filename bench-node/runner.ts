@@ -21,6 +21,11 @@ export interface RunSettings {
   paper: boolean;
   /** Rig size (rig units; see rigs.ts), for peers whose settings are lengths. */
   rigSize: number;
+  /**
+   * Restarts from quasi-random points after a stall (lm): undefined keeps the solver's default;
+   * the drag experiment sets 0, as the page does while dragging (a restart jumps the whole pose).
+   */
+  restarts?: number;
 }
 
 export interface Runner {

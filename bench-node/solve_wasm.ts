@@ -27,6 +27,7 @@ export class WasmSolverRunner implements Runner {
       errorTolerance: settings.ftol,
       timeBudgetSeconds: settings.timeoutSeconds,
       paperMode: settings.paper,
+      ...(settings.restarts === undefined ? {} : { restarts: settings.restarts }),
     };
     this.solver = new IkSolver(this.rig, settings.method, this.options);
     this.current = project(spec, new Float64Array(this.rig.numAngles));

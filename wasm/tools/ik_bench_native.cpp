@@ -4,7 +4,7 @@
 //
 // Usage:
 //   ik_bench_native --rig RIG.json --method NAME --input JOB.bin --output RESULTS.tsv
-//                   [--gtol X] [--ftol Y] [--timeout SECONDS] [--paper]
+//                   [--gtol X] [--ftol Y] [--timeout SECONDS] [--paper] [--restarts N]
 //
 // JOB.bin, little-endian:
 //   header  char[8] "IKBJOB1\0", int32 count, int32 #angles, int32 #residuals, int32 0
@@ -46,7 +46,7 @@ struct Args {
 [[noreturn]] void usage(const std::string& problem) {
   throw std::invalid_argument(problem +
                               "\nusage: ik_bench_native --rig RIG.json --method NAME --input JOB.bin --output "
-                              "RESULTS.tsv [--gtol X] [--ftol Y] [--timeout S] [--paper]");
+                              "RESULTS.tsv [--gtol X] [--ftol Y] [--timeout S] [--paper] [--restarts N]");
 }
 
 double number_arg(const std::string& flag, const char* text) {
@@ -73,6 +73,7 @@ Args parse_args(int argc, char** argv) {
     else if (flag == "--gtol") a.options.gradient_tolerance = number_arg(flag, value);
     else if (flag == "--ftol") a.options.error_tolerance = number_arg(flag, value);
     else if (flag == "--timeout") a.options.time_budget_s = number_arg(flag, value);
+    else if (flag == "--restarts") a.options.restarts = static_cast<int>(number_arg(flag, value));
     else usage("unknown option " + flag);
   }
   if (a.rig.empty() || a.method.empty() || a.input.empty() || a.output.empty())
