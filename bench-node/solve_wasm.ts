@@ -18,6 +18,7 @@ export class WasmSolverRunner implements Runner {
   private replayer: IkSolver | undefined;
   /** Where the previous solve ended: the start of a chained (drag) solve. */
   private current: Float64Array;
+  private readonly buffers: [Float64Array, Float64Array];
 
   constructor(ik: IkCoreModule, spec: RigSpec, settings: RunSettings) {
     this.rig = new IkRig(ik, spec);
@@ -31,6 +32,7 @@ export class WasmSolverRunner implements Runner {
     };
     this.solver = new IkSolver(this.rig, settings.method, this.options);
     this.current = project(spec, new Float64Array(this.rig.numAngles));
+    this.buffers = [new Float64Array(this.rig.numAngles), new Float64Array(this.rig.numAngles)];
   }
 
   solve(input: SolveInput): SolveResult {
@@ -38,7 +40,9 @@ export class WasmSolverRunner implements Runner {
     let result;
     const t0 = performance.now();
     try {
-      result = this.solver.solve(start, input.target);
+      // Into one of two buffers of our own, never the start's (the replay below reads the start):
+      // no new array per solve.
+      result = this.solver.solve(start, input.target, start === this.buffers[0] ? this.buffers[1] : this.buffers[0]);
     } catch {
       // The API throws for invalid input instead of returning invalid_input.
       return { E: NaN, iterations: 0, seconds: (performance.now() - t0) / 1000, stopReason: 'invalid_input', wobbleDuring: NaN, wobbleAfter: NaN };

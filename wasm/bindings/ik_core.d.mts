@@ -81,6 +81,10 @@ export interface EmbindSolver {
   result(): EmbindSolverResult;
   errorHistory(): Float64Array;
   angles(): Float64Array;
+  /** n angles | m target | 8 result numbers (E, initialE, gradNorm, iterations, functionEvaluations, jacobianEvaluations, restarts, elapsedSeconds); stale (length 0) after memory growth. */
+  ioView(n: number, m: number): Float64Array;
+  /** Solves from the angles and target in ioView(); returns the stop reason's index in stopReasons(). */
+  solveIo(): number;
   delete(): void;
 }
 
@@ -88,6 +92,7 @@ export interface EmbindSolverClass {
   new (rig: EmbindRig, method: string, options: EmbindSolverOptions): EmbindSolver;
   methods(): string[];
   describe(method: string): string;
+  stopReasons(): string[];
 }
 
 export interface IkCoreModule {

@@ -4,6 +4,7 @@
 // delete() on the Solver (the TS wrapper's dispose() does).
 #include <emscripten/bind.h>
 
+#include <algorithm>
 #include <memory>
 #include <string>
 #include <vector>
@@ -113,6 +114,56 @@ class SolverBinding {
   // The current iterate (Float64Array copy, degrees).
   val angles() const { return copy_out(solver_->angles().data(), solver_->angles().size()); }
 
+  // The fast path of solve(): one call with no JavaScript values crossing. io_view(n, m) sizes a
+  // buffer of n angles | m target numbers | kIoStats result numbers and returns a Float64Array
+  // view on it (it goes stale, length 0, when the WebAssembly memory grows: ask again). JavaScript
+  // writes the start angles (degrees) and target (rig units) there; solve_io() solves and writes
+  // the best angles over the start angles and the result numbers after the target (see
+  // IoStat). Returns the stop reason as its enumerator index (stop_reasons() names them).
+  val io_view(int n, int m) {
+    io_n_ = n;
+    io_m_ = m;
+    const size_t size = static_cast<size_t>(std::max(n, 0) + std::max(m, 0)) + kIoStats;
+    if (io_.size() != size) io_.assign(size, 0.0);
+    return val(emscripten::typed_memory_view(io_.size(), io_.data()));
+  }
+
+  int solve_io() {
+    return guarded([&] {
+      const Kinematics& kin = rig_.kinematics();
+      check_length(io_n_, kin.num_angles(), "angles");
+      check_length(io_m_, kin.num_residuals(), "target");
+      const StopReason started = solver_->start(Eigen::Map<const Eigen::VectorXd>(io_.data(), io_n_),
+                                                Eigen::Map<const Eigen::VectorXd>(io_.data() + io_n_, io_m_));
+      if (started == StopReason::invalid_input) throw RigError(with_js_option_names(solver_->summary().message));
+      while (solver_->step()) {
+      }
+      const SolverSummary& s = solver_->summary();
+      std::copy(s.angles.data(), s.angles.data() + io_n_, io_.begin());
+      double* stats = io_.data() + io_n_ + io_m_;
+      stats[kE] = s.E;
+      stats[kInitialE] = s.initial_E;
+      stats[kGradNorm] = s.gradient_norm;
+      stats[kIterations] = s.iterations;
+      stats[kFunctionEvaluations] = s.function_evaluations;
+      stats[kJacobianEvaluations] = s.jacobian_evaluations;
+      stats[kRestarts] = s.restarts;
+      stats[kElapsed] = s.elapsed_s;
+      return static_cast<int>(s.stop_reason);
+    });
+  }
+
+  // The stop reasons' names, indexed by solve_io()'s return value.
+  static val stop_reasons() {
+    val names = val::array();
+    for (int i = 0; i <= static_cast<int>(StopReason::numerical_failure); ++i)
+      names.call<void>("push", std::string(stop_reason_name(static_cast<StopReason>(i))));
+    return names;
+  }
+
+  // Where solve_io() writes each result number, after the target.
+  enum IoStat { kE, kInitialE, kGradNorm, kIterations, kFunctionEvaluations, kJacobianEvaluations, kRestarts, kElapsed, kIoStats };
+
  private:
   // Copies the arrays in and starts; throws for wrong lengths and for invalid_input.
   void begin(const val& angles, const val& target) {
@@ -125,9 +176,16 @@ class SolverBinding {
     if (reason == StopReason::invalid_input) throw RigError(with_js_option_names(solver_->summary().message));
   }
 
+  static void check_length(int given, int expected, const char* what) {
+    if (given != expected)
+      throw RigError(std::string(what) + " has " + std::to_string(given) + " values, expected " + std::to_string(expected));
+  }
+
   RigBinding& rig_;
   std::unique_ptr<Solver> solver_;
   std::vector<double> angles_, target_;
+  std::vector<double> io_;  // solve_io(): angles | target | result numbers
+  int io_n_ = 0, io_m_ = 0;
 };
 
 }  // namespace ik::js
@@ -160,5 +218,8 @@ EMSCRIPTEN_BINDINGS(ik_solvers) {
       .function("solve", &SolverBinding::solve)
       .function("result", &SolverBinding::result)
       .function("errorHistory", &SolverBinding::error_history)
-      .function("angles", &SolverBinding::angles);
+      .function("angles", &SolverBinding::angles)
+      .function("ioView", &SolverBinding::io_view)
+      .function("solveIo", &SolverBinding::solve_io)
+      .class_function("stopReasons", &SolverBinding::stop_reasons);
 }

@@ -82,6 +82,11 @@ export class IkRig {
     return this.live().project(angles);
   }
 
+  /** True after dispose(). */
+  get isDisposed(): boolean {
+    return this.disposed;
+  }
+
   /** Frees the WebAssembly object. Safe to call twice. */
   dispose(): void {
     if (this.disposed) return;

@@ -89,10 +89,23 @@ function toResult(r: EmbindSolverResult): SolverResult {
   return { ...r, stopReason: r.stopReason as StopReason };
 }
 
+/** Result numbers after the angles and target in the solve buffer (solver_bindings.cpp IoStat). */
+const IO_STATS = 8;
+const stopReasonCache = new WeakMap<IkCoreModule, readonly string[]>();
+
+/** The stop reasons by the index solveIo() returns, read once per module. */
+function stopReasonNames(module: IkCoreModule): readonly string[] {
+  let names = stopReasonCache.get(module);
+  if (!names) stopReasonCache.set(module, (names = module.Solver.stopReasons()));
+  return names;
+}
+
 export class IkSolver {
   readonly handle: EmbindSolver;
   readonly method: string;
   private disposed = false;
+  /** solve()'s buffer in WebAssembly memory: angles | target | IO_STATS result numbers. */
+  private io: Float64Array<ArrayBufferLike> = new Float64Array(0);
 
   /** The methods this build registers, in display order. */
   static methods(module: IkCoreModule): string[] {
@@ -145,9 +158,36 @@ export class IkSolver {
     return this.live().running;
   }
 
-  /** start() then step() to the end. Throws like start(). */
-  solve(angles: Numbers, target: Numbers): SolverResult {
-    return toResult(this.live().solve(angles, target));
+  /**
+   * start() then step() to the end. Throws like start(). The numbers cross in one shared buffer
+   * (ioView / solveIo), so a call costs well under a microsecond more than the solve itself.
+   * `out` (optional, #angles long): the result's angles are written there and it is returned as
+   * `angles` (no new array per call; it may be `angles` itself). Otherwise `angles` is a new array.
+   */
+  solve(angles: Numbers, target: Numbers, out?: Float64Array): SolverResult {
+    const handle = this.live();
+    const n = angles.length, m = target.length;
+    let io = this.io;
+    if (io.length !== n + m + IO_STATS) io = this.io = handle.ioView(n, m);
+    io.set(angles, 0);
+    io.set(target, n);
+    const code = handle.solveIo();
+    if (io.length === 0) io = this.io = handle.ioView(n, m); // the memory grew during the solve
+    const stats = n + m;
+    const stopReason = stopReasonNames(this.rig.module)[code] as StopReason;
+    return {
+      angles: out && out.length === n ? (out.set(io.subarray(0, n)), out) : io.slice(0, n),
+      E: io[stats],
+      initialE: io[stats + 1],
+      gradNorm: io[stats + 2],
+      iterations: io[stats + 3],
+      functionEvaluations: io[stats + 4],
+      jacobianEvaluations: io[stats + 5],
+      restarts: io[stats + 6],
+      stopReason,
+      message: stopReason === 'numerical_failure' ? handle.result().message : '',
+      elapsedSeconds: io[stats + 7],
+    };
   }
 
   /** The solve so far (or the finished one). */
@@ -174,7 +214,7 @@ export class IkSolver {
 
   private live(): EmbindSolver {
     if (this.disposed) throw new Error('this solver was disposed');
-    void this.rig.numEffectors; // throws if the rig was disposed first
+    if (this.rig.isDisposed) throw new Error('this rig was disposed (dispose its solvers first)');
     return this.handle;
   }
 }
