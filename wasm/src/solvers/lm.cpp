@@ -7,15 +7,12 @@
 // leave its limits is fixed on the limit and the rest re-solved (a few active-set passes);
 // angles that are fixed or pushed outward by grad E are not in Jf at all.
 //
-// Option `restarts` (off by default; keep it off while dragging): when a run stalls above the
-// error tolerance (zero step, a stationary point, or best E down < 10% in stall_iterations),
-// restart from the next quasi-random point inside the limits; the best point is kept.
+// Restarts after a stall (option `restarts`) are the base Solver's, as for every method.
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <memory>
 
-#include "quasi_random.h"
 #include "small_cholesky.h"
 #include "solver.h"
 
@@ -49,26 +46,11 @@ class LevenbergMarquardt final : public Solver {
     jd_.resize(m);
     delta_.resize(n);
     clipped_.assign(n, 0);
-    unit_.resize(n);
-    sequence_ = QuasiRandom(n, opt_.seed);
-    sequence_seed_ = opt_.seed;
   }
 
   void reset() override {
-    if (sequence_seed_ != opt_.seed) {  // resize() ran with another seed's options
-      sequence_ = QuasiRandom(n_, opt_.seed);
-      sequence_seed_ = opt_.seed;
-    }
-    restart_index_ = 0;
-    begin_run();
-  }
-
-  void begin_run() {
     mu_ = opt_.lm_initial_mu;
     nu_ = 2;
-    run_iterations_ = 0;
-    run_best_E_ = std::numeric_limits<double>::infinity();
-    run_best_iteration_ = 0;
   }
 
   Progress iterate() override {
@@ -117,7 +99,6 @@ class LevenbergMarquardt final : public Solver {
         a_.swap(trial_);
         r_.swap(r_trial_);
         E_ = E_trial;
-        note_stall();
         return Progress::moved;
       }
       mu_ = std::min(mu_ * nu_, kMaxMu);
@@ -173,27 +154,6 @@ class LevenbergMarquardt final : public Solver {
     return true;
   }
 
-  // With restarts on: a run whose best E fell by less than 10% in stall_iterations stalls.
-  void note_stall() {
-    if (opt_.restarts == 0) return;
-    ++run_iterations_;
-    if (E_ < 0.9 * run_best_E_) {
-      run_best_E_ = E_;
-      run_best_iteration_ = run_iterations_;
-    } else if (run_iterations_ - run_best_iteration_ >= opt_.stall_iterations) {
-      stop_requested_ = true;
-    }
-  }
-
-  bool restart() override {
-    if (restart_index_ >= opt_.restarts) return false;
-    ++restart_index_;
-    sequence_.point(restart_index_, unit_);
-    point_in_limits(unit_, kin_.lower(), kin_.upper(), a_);
-    begin_run();
-    return reinitialise_at_current();
-  }
-
   static constexpr int kActiveSetPasses = 4;
   static constexpr double kMinGain = 1e-4;
   static constexpr double kMinMu = 1e-12;
@@ -202,14 +162,9 @@ class LevenbergMarquardt final : public Solver {
 
   std::vector<int> column_start_, column_effectors_;  // per angle j: column_effectors_[start[j]..start[j+1])
   Eigen::MatrixXd normal_, reduced_, shifted_;
-  Eigen::VectorXd y_, rhs_, jd_, delta_, unit_;
+  Eigen::VectorXd y_, rhs_, jd_, delta_;
   std::vector<char> clipped_;
   double mu_ = 1, nu_ = 2;
-  int run_iterations_ = 0, run_best_iteration_ = 0;
-  double run_best_E_ = 0;
-  QuasiRandom sequence_;
-  std::uint32_t sequence_seed_ = 0;
-  long restart_index_ = 0;
 };
 
 }  // namespace

@@ -18,6 +18,8 @@ class QuasiRandom {
   // No allocation.
   void point(long k, Eigen::Ref<Eigen::VectorXd> out) const;
 
+  int dimension() const { return static_cast<int>(alpha_.size()); }
+
  private:
   Eigen::VectorXd alpha_, shift_;
 };

@@ -94,7 +94,6 @@ StopReason Solver::start(const Eigen::Ref<const Eigen::VectorXd>& angles,
   summary_.message.clear();
   history_size_ = 0;
   failure_ = nullptr;
-  stop_requested_ = false;
   if (!validate(angles, target)) {
     summary_.stop_reason = StopReason::invalid_input;
     summary_.initial_E = summary_.E = summary_.gradient_norm = std::numeric_limits<double>::quiet_NaN();
@@ -126,8 +125,16 @@ StopReason Solver::start(const Eigen::Ref<const Eigen::VectorXd>& angles,
       reach_ = std::max(reach_, length);
     }
     if (!(reach_ > 0)) reach_ = 1;
+    unit_.resize(n_);
     resize(m_, n_);
   }
+  if (sequence_seed_ != opt_.seed || sequence_.dimension() != n_) {
+    sequence_ = QuasiRandom(n_, opt_.seed);
+    sequence_seed_ = opt_.seed;
+  }
+  restart_index_ = 0;
+  run_iterations_ = run_best_iteration_ = 0;
+  run_best_E_ = std::numeric_limits<double>::infinity();
   if (static_cast<int>(history_.size()) != opt_.history_capacity) history_.resize(opt_.history_capacity);
 
   target_ = target;
@@ -200,10 +207,9 @@ bool Solver::step() {
         reason = check_stop();
         break;
     }
-    // A run stuck above the error tolerance may restart (methods with restarts enabled).
+    // A run stuck above the error tolerance may restart.
     const bool stuck = reason == StopReason::zero_step || reason == StopReason::converged_grad ||
-                       (reason == StopReason::running && stop_requested_);
-    stop_requested_ = false;
+                       (reason == StopReason::running && stalls());
     if (stuck && summary_.E >= opt_.error_tolerance && !out_of_time() && summary_.iterations < opt_.max_iterations &&
         restart()) {
       ++summary_.restarts;
@@ -291,7 +297,25 @@ bool Solver::update_derivatives(bool posed) {
   return finite(gradient_norm_);
 }
 
-bool Solver::reinitialise_at_current() {
+bool Solver::stalls() {
+  if (opt_.restarts == 0 || opt_.paper_mode) return false;
+  ++run_iterations_;
+  if (E_ < 0.9 * run_best_E_) {
+    run_best_E_ = E_;
+    run_best_iteration_ = run_iterations_;
+    return false;
+  }
+  return run_iterations_ - run_best_iteration_ >= opt_.stall_iterations;
+}
+
+bool Solver::restart() {
+  if (opt_.paper_mode || restart_index_ >= opt_.restarts) return false;
+  ++restart_index_;
+  sequence_.point(restart_index_, unit_);
+  point_in_limits(unit_, kin_.lower(), kin_.upper(), a_);
+  run_iterations_ = run_best_iteration_ = 0;
+  run_best_E_ = std::numeric_limits<double>::infinity();
+  reset();
   E_ = evaluate(a_, r_);
   return finite(E_);
 }

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "kinematics.h"
+#include "quasi_random.h"
 
 namespace ik {
 
@@ -73,10 +74,11 @@ struct SolverOptions {
   double lm_damping_floor = 1e-12;
   int lm_max_rejections = 30;   // damping increases per iteration before zero_step
 
-  // Restarts (lm only): when a run stalls above error_tolerance it restarts from a quasi-random
-  // point inside the limits, keeping the best, until this many restarts or the time budget are
-  // spent. On by default (the project's default method solves every reachable target); set 0
-  // while a user drags, where a restart would make the pose jump.
+  // Restarts (every method, outside paper mode): when a run stalls above error_tolerance (zero
+  // step, a stationary point, or best E down < 10% in stall_iterations) it restarts from a
+  // quasi-random point inside the limits, keeping the best, until this many restarts or the time
+  // budget are spent. On by default (every target of the benchmarks is reachable); set 0 while a
+  // user drags, where a restart would make the pose jump.
   int restarts = 1000;
   int stall_iterations = 30;     // a run whose best E fell by < 10% over this many iterations stalls
   std::uint32_t seed = 1;        // quasi-random sequence offset; same seed, same restarts
@@ -148,13 +150,10 @@ class Solver {
   // Method workspace for `residuals` x `angles` (called by start() when the sizes or the
   // effector list changed).
   virtual void resize(int residuals, int angles) = 0;
-  // Method state at the start of a solve (e.g. BFGS's H = I).
+  // Method state at the start of a run: of a solve, and after each restart (e.g. BFGS's H = I).
   virtual void reset() {}
   // One iteration from a_ (with r_, E_, J_, g_, the free set). On `moved`, must leave kin_ posed at a_.
   virtual Progress iterate() = 0;
-  // Called when the solve would stop above error_tolerance (zero_step, converged_grad, or a stall
-  // noticed by the method). Return true after moving to a new start (restart) to keep running.
-  virtual bool restart() { return false; }
 
   // E and the residual at `angles` (poses kin_ there); counts one function evaluation.
   double evaluate(const Eigen::Ref<const Eigen::VectorXd>& angles, Eigen::Ref<Eigen::VectorXd> residual);
@@ -166,8 +165,6 @@ class Solver {
   // J_, g_, the free set and the gradient norm at a_, given r_. `posed`: kin_ is posed at a_.
   // Returns false if the gradient is not finite.
   bool update_derivatives(bool posed);
-  // For restart(): E_ and r_ at a new a_ (the caller set a_). Returns false if E is not finite.
-  bool reinitialise_at_current();
   // Marks a numerical failure with `message` (a string literal); returns Progress::failed.
   Progress fail(const char* message);
   // Is the solve over its time budget right now?
@@ -188,13 +185,18 @@ class Solver {
   Eigen::VectorXd free_mask_;     // 1 for a free angle, 0 otherwise
   int num_free_ = 0;
   double reach_ = 1;              // longest effector chain (sum of bone lengths), rig units
-  bool stop_requested_ = false;   // set by iterate(): the run stalls; base then calls restart()
 
  private:
   StopReason check_stop() const;
   bool has_budget() const;  // a finite time budget is set
   void record();
   void note_best();
+  // With restarts on, after each accepted step: is the run stalling (best E down < 10% over
+  // stall_iterations)?
+  bool stalls();
+  // Moves to the next quasi-random start inside the limits (a new run) if restarts are left.
+  // Returns false when none is left or E is not finite there.
+  bool restart();
   bool validate(const Eigen::Ref<const Eigen::VectorXd>& angles, const Eigen::Ref<const Eigen::VectorXd>& target);
 
   SolverSummary summary_;
@@ -203,6 +205,13 @@ class Solver {
   // Finite-difference workspace (paper mode).
   Eigen::VectorXd fd_scratch_, fd_plus_, fd_minus_;
   const char* failure_ = nullptr;
+  // Restarts.
+  QuasiRandom sequence_;
+  std::uint32_t sequence_seed_ = 0;
+  long restart_index_ = 0;
+  int run_iterations_ = 0, run_best_iteration_ = 0;
+  double run_best_E_ = 0;
+  Eigen::VectorXd unit_;
   std::chrono::steady_clock::time_point call_start_;
   double elapsed_before_call_ = 0;
 };

@@ -57,11 +57,11 @@ export interface SolverOptions {
   lmDampingFloor?: number;
   /** Damping increases per iteration before stopping with zero_step. Default 30. */
   lmMaxRejections?: number;
-  /** lm: restarts from quasi-random points after a stall, within the time budget (set 0 while dragging). Default 1000. */
+  /** Restarts from quasi-random points after a stall, within the time budget (every method outside paper mode; set 0 while dragging). Default 1000. */
   restarts?: number;
-  /** lm: iterations without a 10% improvement that count as a stall. Default 30. */
+  /** Iterations without a 10% improvement that count as a stall (with restarts). Default 30. */
   stallIterations?: number;
-  /** lm: the restart sequence's seed, an integer in [0, 2^32). Default 1. */
+  /** The restart sequence's seed, an integer in [0, 2^32). Default 1. */
   seed?: number;
 }
 

@@ -28,7 +28,7 @@ export interface SolveSettings {
   maxIterations: number;
   /** Wall-clock budget of one solve, milliseconds. */
   timeBudgetMs: number;
-  /** Random restarts after a stall (lm); the per-frame solve forces 0. */
+  /** Random restarts after a stall (every method); the per-frame solve forces 0. */
   restarts: number;
   /** The report's original algorithms (finite-difference Jacobian, its line searches). */
   paperMode: boolean;
