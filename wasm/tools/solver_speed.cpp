@@ -4,7 +4,8 @@
 // The project's full benchmark CLI is `npm run bench`; this one only checks the solvers.
 //
 // Usage: solver_speed RIG.json [--methods gd,bfgs,...] [--set incremental|random|both]
-//                     [--samples N] [--gd-samples N] [--paper] [--restarts N] [--seed S]
+//                     [--samples N] [--gd-samples N] [--paper] [--restarts N] [--stall N] [--seed S]
+// Columns: iterations, time (median, mean, p95), E, success, and the mean number of restarts.
 // Tolerances are the report's: beast (0.01, 0.002), others (1e-4, 2e-4); time budget 1 s.
 // Each (set, method) first solves its targets untimed for 0.3 s (warm-up).
 // Exits 1 if a solve returns invalid_input or numerical_failure, or leaves the limits.
@@ -73,13 +74,13 @@ int main(int argc, char** argv) {
   if (argc < 2) {
     std::fprintf(stderr,
                  "usage: solver_speed RIG.json [--methods a,b] [--set incremental|random|both] [--samples N]\n"
-                 "                    [--gd-samples N] [--paper] [--restarts N] [--seed S]\n");
+                 "                    [--gd-samples N] [--paper] [--restarts N] [--stall N] [--seed S]\n");
     return 2;
   }
   const std::string path = argv[1];
   std::vector<std::string> methods = ik::solver_names();
   std::string set = "both";
-  int samples = 200, gd_samples = -1, restarts = 0;
+  int samples = 200, gd_samples = -1, restarts = 0, stall = 30;
   unsigned seed = 2020;
   bool paper = false;
   for (int i = 2; i < argc; ++i) {
@@ -96,6 +97,7 @@ int main(int argc, char** argv) {
     else if (flag == "--samples") samples = std::atoi(value().c_str());
     else if (flag == "--gd-samples") gd_samples = std::atoi(value().c_str());
     else if (flag == "--restarts") restarts = std::atoi(value().c_str());
+    else if (flag == "--stall") stall = std::atoi(value().c_str());
     else if (flag == "--seed") seed = static_cast<unsigned>(std::atoi(value().c_str()));
     else if (flag == "--paper") paper = true;
     else {
@@ -108,8 +110,8 @@ int main(int argc, char** argv) {
   int status = 0;
   try {
     ik::Kinematics kin(ik::load_a7_rig(path));
-    std::printf("%-11s %-6s %5s %8s %8s %10s %10s %10s %10s %10s %7s\n", "set", "method", "n", "it_med", "it_avg",
-                "t_med_us", "t_avg_us", "E_avg", "E_iqm", "E_max", "success");
+    std::printf("%-11s %-6s %5s %8s %8s %10s %10s %10s %10s %10s %7s %7s %10s\n", "set", "method", "n", "it_med", "it_avg",
+                "t_med_us", "t_avg_us", "E_avg", "E_iqm", "E_max", "success", "rs_avg", "t_p95_us");
     for (const std::string which : {"incremental", "random"}) {
       if (set != "both" && set != which) continue;
       for (const std::string& method : methods) {
@@ -118,6 +120,7 @@ int main(int argc, char** argv) {
         options.error_tolerance = beast ? 0.002 : 2e-4;
         options.paper_mode = paper;
         options.restarts = restarts;
+        options.stall_iterations = stall;
         std::unique_ptr<ik::Solver> solver = ik::make_solver(method, kin, options);
         const int count = method == "gd" ? gd_samples : samples;
         const std::vector<Case> cases = make_cases(kin, which == std::string("incremental"), count, seed);
@@ -126,13 +129,14 @@ int main(int argc, char** argv) {
         const auto warm = std::chrono::steady_clock::now();
         for (size_t k = 0; std::chrono::steady_clock::now() - warm < std::chrono::milliseconds(300); ++k)
           solver->solve(cases[k % cases.size()].start, cases[k % cases.size()].target);
-        std::vector<double> iterations, seconds, errors;
+        std::vector<double> iterations, seconds, errors, restart_counts;
         int successes = 0;
         for (const Case& c : cases) {
           const auto t0 = std::chrono::steady_clock::now();
           const ik::SolverSummary& s = solver->solve(c.start, c.target);
           seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
           iterations.push_back(s.iterations);
+          restart_counts.push_back(s.restarts);
           errors.push_back(s.E);
           successes += s.E < options.error_tolerance;
           const bool inside = ((s.angles - kin.lower()).array() >= 0).all() && ((kin.upper() - s.angles).array() >= 0).all();
@@ -143,10 +147,13 @@ int main(int argc, char** argv) {
             status = 1;
           }
         }
-        std::printf("%-11s %-6s %5d %8.1f %8.2f %10.2f %10.2f %10.3g %10.3g %10.3g %6.1f%%\n", which.c_str(),
+        std::vector<double> sorted = seconds;
+        std::sort(sorted.begin(), sorted.end());
+        std::printf("%-11s %-6s %5d %8.1f %8.2f %10.2f %10.2f %10.3g %10.3g %10.3g %6.1f%% %7.2f %10.2f\n", which.c_str(),
                     method.c_str(), count, median(iterations), mean(iterations), 1e6 * median(seconds),
                     1e6 * mean(seconds), mean(errors), interquartile_mean(errors),
-                    *std::max_element(errors.begin(), errors.end()), 100.0 * successes / count);
+                    *std::max_element(errors.begin(), errors.end()), 100.0 * successes / count, mean(restart_counts),
+                    1e6 * sorted[static_cast<size_t>(0.95 * (sorted.size() - 1))]);
       }
     }
   } catch (const std::exception& e) {

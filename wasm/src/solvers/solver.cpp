@@ -19,6 +19,13 @@ using Clock = std::chrono::steady_clock;
 // alpha until it underflowed); alpha reaches 0 after about 1100 halvings.
 constexpr int kPaperMaxBacktracks = 2000;
 
+// With restarts left, a run above the error tolerance counts as stationary (and restarts) only
+// when |g| is below this share of the gradient tolerance. The protocol's tolerance is absolute
+// (rig units^2 per degree): on a small rig such as the knight, a run still descending towards
+// its target passes it long before it nears a stationary point, and restarting there threw away
+// good runs (knight random gd: 71% success in 20 ms mean; with this test 100% in 0.4 ms).
+constexpr double kStationaryFraction = 0.1;
+
 double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
 bool finite(double x) { return std::isfinite(x); }
@@ -308,6 +315,11 @@ bool Solver::stalls() {
   return run_iterations_ - run_best_iteration_ >= opt_.stall_iterations;
 }
 
+bool Solver::descends_further() const {
+  return !opt_.paper_mode && restart_index_ < opt_.restarts && E_ >= opt_.error_tolerance &&
+         gradient_norm_ >= kStationaryFraction * opt_.gradient_tolerance;
+}
+
 bool Solver::restart() {
   if (opt_.paper_mode || restart_index_ >= opt_.restarts) return false;
   ++restart_index_;
@@ -333,7 +345,7 @@ bool Solver::out_of_time() const {
 
 StopReason Solver::check_stop() const {
   if (E_ < opt_.error_tolerance) return StopReason::converged_E;
-  if (gradient_norm_ < opt_.gradient_tolerance) return StopReason::converged_grad;
+  if (gradient_norm_ < opt_.gradient_tolerance && !descends_further()) return StopReason::converged_grad;
   return StopReason::running;
 }
 

@@ -194,6 +194,9 @@ class Solver {
   // With restarts on, after each accepted step: is the run stalling (best E down < 10% over
   // stall_iterations)?
   bool stalls();
+  // With restarts left and E above the error tolerance: is |g| under the gradient tolerance but
+  // above a tenth of it (still descending: the gradient test does not end the run)?
+  bool descends_further() const;
   // Moves to the next quasi-random start inside the limits (a new run) if restarts are left.
   // Returns false when none is left or E is not finite there.
   bool restart();

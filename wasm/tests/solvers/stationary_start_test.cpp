@@ -44,6 +44,37 @@ TEST_P(StationaryStart, RestartsLeaveAStationaryStartAndWithoutThemTheSolveStops
   EXPECT_EQ(original->solve(rest, target).restarts, 0);
 }
 
+// The gradient tolerance is absolute: a start whose |g| is under it yet far from 0 is not a
+// stationary point. With restarts left the run goes on descending from there (no restart); without
+// restarts the gradient test ends the solve at once, as the protocol has it.
+TEST_P(StationaryStart, AGradientUnderTheToleranceButNotNearZeroKeepsDescendingWhenRestartsAreOn) {
+  Kinematics kin(one_bone());
+  const Eigen::VectorXd rest = Eigen::VectorXd::Zero(3);
+  const Eigen::Vector3d target(0.9, 0.3, 0);  // reachable (|target| < 1), |g| at rest well above 0
+  Eigen::VectorXd residual(3);
+  Eigen::MatrixXd jacobian(3, 3);
+  kin.forward(rest);
+  kin.current_jacobian(jacobian);
+  const double start_gradient = (jacobian.transpose() * (kin.tip(0) - target)).norm();
+  ASSERT_GT(start_gradient, 0);
+
+  SolverOptions options;
+  options.gradient_tolerance = 2 * start_gradient;  // the test fires at the start, |g| = half of it
+  options.error_tolerance = 1e-10;
+  options.restarts = 0;
+  auto plain = make_solver(GetParam(), kin, options);
+  EXPECT_EQ(plain->solve(rest, target).stop_reason, StopReason::converged_grad);
+  EXPECT_EQ(plain->summary().iterations, 0);
+
+  options.restarts = 5;
+  auto going_on = make_solver(GetParam(), kin, options);
+  ASSERT_EQ(going_on->start(rest, target), StopReason::running);
+  EXPECT_EQ(going_on->summary().restarts, 0);
+  going_on->step();  // a descent step from the start (a restart may follow it once |g| is near 0)
+  ASSERT_GE(going_on->error_history().size(), 2);
+  EXPECT_LT(going_on->error_history()[1], going_on->summary().initial_E);
+}
+
 INSTANTIATE_TEST_SUITE_P(EveryMethod, StationaryStart, ::testing::Values("gd", "bfgs", "gn", "newton", "lm"));
 
 }  // namespace
