@@ -1,11 +1,12 @@
 // Gauss-Newton: p = -pinv(J) r through the SVD of J, then projected backtracking from alpha = 1
 // (factor 0.5, sufficient decrease c1 = 1e-3 on the projected point), as the report.
-// Outside paper mode the pseudo-inverse comes from the decomposition of J J^T, at the
+// Outside paper mode the pseudo-inverse comes from the eigen-decomposition of J J^T, at the
 // residual size (3 x #effectors), and drops singular values below gn_singular_cutoff times the
 // largest (a nearly singular J otherwise sends the step far along its weakest direction), the
 // step uses the free angles only (not fixed, not pushed against a bound by grad E), angles on a limit that the step would push further out are held and the rest
 // re-solved; and if that projected path finds no lower point, every angle the step would take
 // past a limit is fixed on it and the rest re-solved, so the step stays inside the box.
+#include <Eigen/Eigenvalues>
 #include <Eigen/SVD>
 #include <algorithm>
 #include <limits>
@@ -31,10 +32,12 @@ class GaussNewton final : public Solver {
     mask_.resize(angles);
     step_.resize(angles);
     rhs_.resize(residuals);
-    normal_.resize(residuals, residuals);
-    normal_svd_ = Eigen::JacobiSVD<Eigen::MatrixXd>(residuals, residuals, Eigen::ComputeFullU);
-    projected_m_.resize(residuals);
-    y_.resize(residuals);
+    if (residuals <= kMaxResiduals) {
+      normal_.resize(residuals, residuals);
+      eigen_ = Eigen::SelfAdjointEigenSolver<SmallMatrix>(residuals);
+      projected_m_.resize(residuals);
+      y_.resize(residuals);
+    }
   }
 
   Progress iterate() override {
@@ -84,7 +87,7 @@ class GaussNewton final : public Solver {
   // direction_ = -pinv(J) rhs with J's columns masked by mask_.
   bool gauss_newton_direction(const Eigen::VectorXd& rhs) {
     jac_.noalias() = J_ * mask_.asDiagonal();
-    if (!opt_.paper_mode) return residual_size_direction(rhs);
+    if (!opt_.paper_mode && m_ <= kMaxResiduals) return residual_size_direction(rhs);
     svd_.compute(jac_);
     // pinv(J) r = V S^+ U^T r; singular values below max(rows, cols) * eps * s_max count as 0
     // (the original's igl::pinv tolerance).
@@ -101,28 +104,33 @@ class GaussNewton final : public Solver {
   }
 
   // Outside paper mode, at the residual size: with J J^T = U diag(s^2) U^T (m x m, symmetric
-  // positive semi-definite, so its SVD is its eigen-decomposition), pinv(J) rhs =
-  // J^T U diag(1 / s^2) U^T rhs over the kept singular values s >= cutoff * s_max: the same step as
-  // the SVD of J, for an m x m decomposition instead of an m x n one. (Eigen's
-  // SelfAdjointEigenSolver would allocate while forming its eigenvectors; JacobiSVD does not.)
+  // positive semi-definite), pinv(J) rhs = J^T U diag(1 / s^2) U^T rhs over the kept singular
+  // values s >= cutoff * s_max: the same step as the SVD of J, for an m x m symmetric
+  // eigen-decomposition instead of an m x n SVD. The m x m matrices have a fixed maximum size
+  // (kMaxResiduals), so the decomposition's temporaries live on the stack: no allocation. Rigs
+  // with more residuals take the SVD of J.
   bool residual_size_direction(const Eigen::VectorXd& rhs) {
     normal_.noalias() = jac_ * jac_.transpose();
-    normal_svd_.compute(normal_);
-    const auto& s2 = normal_svd_.singularValues();  // descending, the squared singular values of J
+    eigen_.compute(normal_);
+    if (eigen_.info() != Eigen::Success) return false;
+    const auto& s2 = eigen_.eigenvalues();  // ascending, the squared singular values of J
     if (!s2.allFinite()) return false;
-    const double cutoff2 = opt_.gn_singular_cutoff * opt_.gn_singular_cutoff * s2[0];
-    projected_m_.noalias() = normal_svd_.matrixU().transpose() * rhs;
+    const double cutoff2 = opt_.gn_singular_cutoff * opt_.gn_singular_cutoff * s2[m_ - 1];
+    projected_m_.noalias() = eigen_.eigenvectors().transpose() * rhs;
     for (Eigen::Index i = 0; i < s2.size(); ++i)
       projected_m_[i] = s2[i] < cutoff2 || s2[i] <= 0 ? 0.0 : projected_m_[i] / s2[i];
-    y_.noalias() = normal_svd_.matrixU() * projected_m_;
+    y_.noalias() = eigen_.eigenvectors() * projected_m_;
     direction_.noalias() = -jac_.transpose() * y_;
     return true;
   }
 
   static constexpr int kActiveSetPasses = 4;
-  Eigen::MatrixXd normal_;
-  Eigen::JacobiSVD<Eigen::MatrixXd> normal_svd_;
-  Eigen::VectorXd projected_m_, y_;
+  static constexpr int kMaxResiduals = 48;  // 16 end effectors
+  using SmallMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxResiduals, kMaxResiduals>;
+  using SmallVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxResiduals, 1>;
+  SmallMatrix normal_;
+  Eigen::SelfAdjointEigenSolver<SmallMatrix> eigen_;
+  SmallVector projected_m_, y_;
   Eigen::MatrixXd jac_;
   Eigen::JacobiSVD<Eigen::MatrixXd> svd_;
   Eigen::VectorXd projected_, direction_, step_, mask_, rhs_;
