@@ -215,7 +215,9 @@ class Solver {
   int run_iterations_ = 0, run_best_iteration_ = 0;
   double run_best_E_ = 0;
   Eigen::VectorXd unit_;
-  std::chrono::steady_clock::time_point call_start_;
+  // step() from `begin`, the time its call started.
+  bool advance(std::chrono::steady_clock::time_point begin);
+  std::chrono::steady_clock::time_point call_start_, last_read_;
   double elapsed_before_call_ = 0;
 };
 
