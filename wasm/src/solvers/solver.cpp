@@ -94,6 +94,11 @@ bool Solver::validate(const Eigen::Ref<const Eigen::VectorXd>& angles, const Eig
 
 StopReason Solver::start(const Eigen::Ref<const Eigen::VectorXd>& angles,
                          const Eigen::Ref<const Eigen::VectorXd>& target) {
+  return begin(angles, target, /*close=*/true);
+}
+
+StopReason Solver::begin(const Eigen::Ref<const Eigen::VectorXd>& angles,
+                         const Eigen::Ref<const Eigen::VectorXd>& target, bool close) {
   call_start_ = Clock::now();
   elapsed_before_call_ = 0;
   opt_ = next_opt_;
@@ -181,8 +186,12 @@ StopReason Solver::start(const Eigen::Ref<const Eigen::VectorXd>& angles,
     }
     if (running() && opt_.max_iterations == 0) summary_.stop_reason = StopReason::max_iterations;
   }
-  last_read_ = Clock::now();
-  elapsed_before_call_ = std::chrono::duration<double>(last_read_ - call_start_).count();
+  if (close || !running()) {
+    last_read_ = Clock::now();
+    elapsed_before_call_ = std::chrono::duration<double>(last_read_ - call_start_).count();
+  } else {
+    elapsed_before_call_ = 0;  // the first step's time runs from call_start_
+  }
   summary_.elapsed_s = elapsed_before_call_;
   return summary_.stop_reason;
 }
@@ -250,10 +259,12 @@ bool Solver::advance(std::chrono::steady_clock::time_point begin) {
 
 const SolverSummary& Solver::solve(const Eigen::Ref<const Eigen::VectorXd>& angles,
                                    const Eigen::Ref<const Eigen::VectorXd>& target) {
-  // Back-to-back steps: each one's time starts at the previous one's closing clock read.
-  if (start(angles, target) == StopReason::running)
-    while (advance(last_read_)) {
-    }
+  // Back-to-back: the first step's time runs from the start's, each later one's from the previous
+  // step's closing clock read (one read per step; two for a solve of one iteration).
+  if (begin(angles, target, /*close=*/false) == StopReason::running) {
+    Clock::time_point from = call_start_;
+    while (advance(from)) from = last_read_;
+  }
   return summary_;
 }
 

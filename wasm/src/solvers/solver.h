@@ -215,6 +215,9 @@ class Solver {
   int run_iterations_ = 0, run_best_iteration_ = 0;
   double run_best_E_ = 0;
   Eigen::VectorXd unit_;
+  // start(); `close`: read the clock at the end (solve() leaves it to the first step).
+  StopReason begin(const Eigen::Ref<const Eigen::VectorXd>& angles, const Eigen::Ref<const Eigen::VectorXd>& target,
+                   bool close);
   // step() from `begin`, the time its call started.
   bool advance(std::chrono::steady_clock::time_point begin);
   std::chrono::steady_clock::time_point call_start_, last_read_;
