@@ -1,11 +1,11 @@
 // Warm-up before timing: V8 compiles WebAssembly and JavaScript lazily and optimises hot code
 // later, so a fresh runner's first solves are slower than the rest (the first solve of a fresh
-// WebAssembly solver took 2-8 ms against a 35 us median). Each worker therefore runs a few
-// untimed solves with every new runner, on random targets of their own stream (never the
-// benchmark's), before timing anything. The native engine is compiled ahead of time and needs none.
-// The warm-up lasts WARM_UP_MS whatever the solves cost: a fixed 30 solves (about 0.1 ms of work
-// on the lamp) left V8's optimising tier unreached, and the lamp's timed median was 2x too slow
-// (9.4 against 4.7 us after 300 ms of warm-up, native 2.7 us).
+// WebAssembly solver took 2-8 ms against a 35 us median). Each worker therefore solves untimed for
+// WARM_UP_MS with every new runner, on random targets of their own stream (never the benchmark's),
+// before timing anything. The native engine is compiled ahead of time and needs none. The warm-up
+// lasts that long whatever the solves cost: a fixed 30 solves (about 0.1 ms of work on the lamp)
+// left V8's optimising tier unreached, and the lamp's timed median was 2x too slow (9.4 against
+// 4.7 us after 300 ms of warm-up, native 2.7 us).
 import type { RigSpec } from '../web/src/ik/rig_spec.js';
 import { signedUnit, streamFor } from './prng.js';
 import type { Runner } from './runner.js';

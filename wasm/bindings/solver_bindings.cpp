@@ -76,12 +76,11 @@ class SolverBinding {
   // One iteration; true while still running. No allocation on the C++ side.
   bool step() { return solver_->step(); }
 
-  // start() and step() to the end; returns the result object.
+  // start() and step() to the end (Solver::solve()); returns the result object.
   SolverResultJs solve(const val& angles, const val& target) {
     return guarded([&] {
-      begin(angles, target);
-      while (solver_->step()) {
-      }
+      take(angles, target);
+      solve_on(angles_.data(), target_.data());
       return result();
     });
   }
@@ -133,12 +132,7 @@ class SolverBinding {
       const Kinematics& kin = rig_.kinematics();
       check_length(io_n_, kin.num_angles(), "angles");
       check_length(io_m_, kin.num_residuals(), "target");
-      const StopReason started = solver_->start(Eigen::Map<const Eigen::VectorXd>(io_.data(), io_n_),
-                                                Eigen::Map<const Eigen::VectorXd>(io_.data() + io_n_, io_m_));
-      if (started == StopReason::invalid_input) throw RigError(with_js_option_names(solver_->summary().message));
-      while (solver_->step()) {
-      }
-      const SolverSummary& s = solver_->summary();
+      const SolverSummary& s = solve_on(io_.data(), io_.data() + io_n_);
       std::copy(s.angles.data(), s.angles.data() + io_n_, io_.begin());
       double* stats = io_.data() + io_n_ + io_m_;
       stats[kE] = s.E;
@@ -167,13 +161,33 @@ class SolverBinding {
  private:
   // Copies the arrays in and starts; throws for wrong lengths and for invalid_input.
   void begin(const val& angles, const val& target) {
+    take(angles, target);
+    solver_->start(Eigen::Map<const Eigen::VectorXd>(angles_.data(), angles_.size()),
+                   Eigen::Map<const Eigen::VectorXd>(target_.data(), target_.size()));
+    throw_if_invalid();
+  }
+
+  // Copies the arrays into angles_ and target_; throws for wrong lengths.
+  void take(const val& angles, const val& target) {
     const Kinematics& kin = rig_.kinematics();
     copy_in(angles, kin.num_angles(), angles_, "angles");
     copy_in(target, kin.num_residuals(), target_, "target");  // the rig's effectors right now
-    const StopReason reason =
-        solver_->start(Eigen::Map<const Eigen::VectorXd>(angles_.data(), angles_.size()),
-                       Eigen::Map<const Eigen::VectorXd>(target_.data(), target_.size()));
-    if (reason == StopReason::invalid_input) throw RigError(with_js_option_names(solver_->summary().message));
+  }
+
+  // Solver::solve() from `angles` (#angles, degrees) towards `target` (#residuals, rig units),
+  // lengths already checked; throws for invalid_input.
+  const SolverSummary& solve_on(const double* angles, const double* target) {
+    const Kinematics& kin = rig_.kinematics();
+    solver_->solve(Eigen::Map<const Eigen::VectorXd>(angles, kin.num_angles()),
+                   Eigen::Map<const Eigen::VectorXd>(target, kin.num_residuals()));
+    throw_if_invalid();
+    return solver_->summary();
+  }
+
+  // invalid_input (bad options or numbers) as an exception, with the options' JavaScript names.
+  void throw_if_invalid() const {
+    if (solver_->summary().stop_reason == StopReason::invalid_input)
+      throw RigError(with_js_option_names(solver_->summary().message));
   }
 
   static void check_length(int given, int expected, const char* what) {

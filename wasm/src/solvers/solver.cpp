@@ -26,7 +26,11 @@ constexpr int kPaperMaxBacktracks = 2000;
 // good runs (knight random gd: 71% success in 20 ms mean; with this test 100% in 0.4 ms).
 constexpr double kStationaryFraction = 0.1;
 
-double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+double seconds_between(Clock::time_point from, Clock::time_point to) {
+  return std::chrono::duration<double>(to - from).count();
+}
+
+double seconds_since(Clock::time_point t) { return seconds_between(t, Clock::now()); }
 
 bool finite(double x) { return std::isfinite(x); }
 
@@ -188,7 +192,7 @@ StopReason Solver::begin(const Eigen::Ref<const Eigen::VectorXd>& angles,
   }
   if (close || !running()) {
     last_read_ = Clock::now();
-    elapsed_before_call_ = std::chrono::duration<double>(last_read_ - call_start_).count();
+    elapsed_before_call_ = seconds_between(call_start_, last_read_);
   } else {
     elapsed_before_call_ = 0;  // the first step's time runs from call_start_
   }
@@ -245,7 +249,7 @@ bool Solver::advance(std::chrono::steady_clock::time_point begin) {
   }
   // One clock read per step (in WebAssembly a read is a call out to JavaScript, ~65 ns in Node).
   last_read_ = Clock::now();
-  elapsed_before_call_ += std::chrono::duration<double>(last_read_ - call_start_).count();
+  elapsed_before_call_ += seconds_between(call_start_, last_read_);
   if (reason == StopReason::running) {
     if (summary_.iterations >= opt_.max_iterations)
       reason = StopReason::max_iterations;
@@ -332,13 +336,14 @@ bool Solver::stalls() {
   return run_iterations_ - run_best_iteration_ >= opt_.stall_iterations;
 }
 
+bool Solver::restarts_left() const { return !opt_.paper_mode && restart_index_ < opt_.restarts; }
+
 bool Solver::descends_further() const {
-  return !opt_.paper_mode && restart_index_ < opt_.restarts && E_ >= opt_.error_tolerance &&
-         gradient_norm_ >= kStationaryFraction * opt_.gradient_tolerance;
+  return restarts_left() && E_ >= opt_.error_tolerance && gradient_norm_ >= kStationaryFraction * opt_.gradient_tolerance;
 }
 
 bool Solver::restart() {
-  if (opt_.paper_mode || restart_index_ >= opt_.restarts) return false;
+  if (!restarts_left()) return false;
   ++restart_index_;
   sequence_.point(restart_index_, unit_);
   point_in_limits(unit_, kin_.lower(), kin_.upper(), a_);

@@ -194,6 +194,8 @@ class Solver {
   // With restarts on, after each accepted step: is the run stalling (best E down < 10% over
   // stall_iterations)?
   bool stalls();
+  // Outside paper mode, fewer restarts done in this solve than the option allows.
+  bool restarts_left() const;
   // With restarts left and E above the error tolerance: is |g| under the gradient tolerance but
   // above a tenth of it (still descending: the gradient test does not end the run)?
   bool descends_further() const;
