@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <limits>
 #include <memory>
+#include <vector>
 
 #include "solver.h"
 
@@ -32,6 +33,8 @@ class GaussNewton final : public Solver {
     mask_.resize(angles);
     step_.resize(angles);
     rhs_.resize(residuals);
+    columns_.resize(angles);
+    step_k_.resize(angles);
     if (residuals <= kMaxResiduals) {
       normal_.resize(residuals, residuals);
       eigen_ = Eigen::SelfAdjointEigenSolver<SmallMatrix>(residuals);
@@ -86,8 +89,8 @@ class GaussNewton final : public Solver {
 
   // direction_ = -pinv(J) rhs with J's columns masked by mask_.
   bool gauss_newton_direction(const Eigen::VectorXd& rhs) {
-    jac_.noalias() = J_ * mask_.asDiagonal();
     if (!opt_.paper_mode && m_ <= kMaxResiduals) return residual_size_direction(rhs);
+    jac_.noalias() = J_ * mask_.asDiagonal();
     svd_.compute(jac_);
     // pinv(J) r = V S^+ U^T r; singular values below max(rows, cols) * eps * s_max count as 0
     // (the original's igl::pinv tolerance).
@@ -110,7 +113,17 @@ class GaussNewton final : public Solver {
   // (kMaxResiduals), so the decomposition's temporaries live on the stack: no allocation. Rigs
   // with more residuals take the SVD of J.
   bool residual_size_direction(const Eigen::VectorXd& rhs) {
-    normal_.noalias() = jac_ * jac_.transpose();
+    // The columns of the angles in mask_, side by side (the others would only add zeros).
+    int k = 0;
+    for (int i = 0; i < n_; ++i)
+      if (mask_[i] != 0) {
+        jac_.col(k) = J_.col(i);
+        columns_[k++] = i;
+      }
+    direction_.setZero();
+    if (k == 0) return true;
+    const auto jac = jac_.leftCols(k);
+    normal_.noalias() = jac * jac.transpose();
     eigen_.compute(normal_);
     if (eigen_.info() != Eigen::Success) return false;
     const auto& s2 = eigen_.eigenvalues();  // ascending, the squared singular values of J
@@ -120,7 +133,8 @@ class GaussNewton final : public Solver {
     for (Eigen::Index i = 0; i < s2.size(); ++i)
       projected_m_[i] = s2[i] < cutoff2 || s2[i] <= 0 ? 0.0 : projected_m_[i] / s2[i];
     y_.noalias() = eigen_.eigenvectors() * projected_m_;
-    direction_.noalias() = -jac_.transpose() * y_;
+    step_k_.head(k).noalias() = jac.transpose() * y_;
+    for (int j = 0; j < k; ++j) direction_[columns_[j]] = -step_k_[j];
     return true;
   }
 
@@ -134,6 +148,8 @@ class GaussNewton final : public Solver {
   Eigen::MatrixXd jac_;
   Eigen::JacobiSVD<Eigen::MatrixXd> svd_;
   Eigen::VectorXd projected_, direction_, step_, mask_, rhs_;
+  std::vector<int> columns_;  // residual-size path: the angle of each column of jac_
+  Eigen::VectorXd step_k_;    // residual-size path: the step over those columns
 };
 
 }  // namespace
