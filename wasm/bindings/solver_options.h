@@ -37,6 +37,7 @@ inline const OptionField kOptionFields[] = {
     {"armijoC1", "armijo_c1", OptionKind::number, &SolverOptions::armijo_c1},
     {"maxBacktracks", "max_backtracks", OptionKind::integer, nullptr, &SolverOptions::max_backtracks},
     {"gnSingularCutoff", "gn_singular_cutoff", OptionKind::number, &SolverOptions::gn_singular_cutoff},
+    {"gnMaxStepDeg", "gn_max_step_deg", OptionKind::number, &SolverOptions::gn_max_step_deg},
     {"newtonMaxStepDeg", "newton_max_step_deg", OptionKind::number, &SolverOptions::newton_max_step_deg},
     {"lmInitialMu", "lm_initial_mu", OptionKind::number, &SolverOptions::lm_initial_mu},
     {"lmDampingFloor", "lm_damping_floor", OptionKind::number, &SolverOptions::lm_damping_floor},

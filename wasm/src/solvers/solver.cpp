@@ -48,6 +48,7 @@ std::string check_options(const SolverOptions& o) {
   if (!(o.armijo_c1 >= 0 && o.armijo_c1 < 1)) return bad("armijo_c1", "in [0, 1)");
   if (o.max_backtracks < 1) return bad("max_backtracks", ">= 1");
   if (!(o.gn_singular_cutoff >= 0 && o.gn_singular_cutoff < 1)) return bad("gn_singular_cutoff", "in [0, 1)");
+  if (!(o.gn_max_step_deg > 0)) return bad("gn_max_step_deg", "> 0");
   if (!(o.newton_max_step_deg > 0)) return bad("newton_max_step_deg", "> 0");
   if (!(finite(o.lm_initial_mu) && o.lm_initial_mu > 0)) return bad("lm_initial_mu", "a number > 0");
   if (!(finite(o.lm_damping_floor) && o.lm_damping_floor >= 0)) return bad("lm_damping_floor", "a number >= 0");

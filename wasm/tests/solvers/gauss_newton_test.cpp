@@ -1,6 +1,7 @@
 // Gauss-Newton outside paper mode takes its pseudo-inverse from the eigen-decomposition of J J^T
 // up to 48 residuals (16 end effectors) and from the SVD of J above that. Both paths must give the
-// Gauss-Newton step: from near a solution of a zero-residual problem, E falls quadratically.
+// Gauss-Newton step: from near a solution of a zero-residual problem, E falls quadratically. Far
+// from it, no angle moves more than gn_max_step_deg in one step.
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
@@ -72,6 +73,28 @@ TEST_P(GaussNewtonSizes, ConvergesQuadraticallyNearASolution) {
 
 // 8 effectors (24 residuals): the eigen-decomposition of J J^T; 20 (60 residuals): the SVD of J.
 INSTANTIATE_TEST_SUITE_P(BothPaths, GaussNewtonSizes, ::testing::Values(8, 20));
+
+// The largest change of one angle in gn's first step from rest towards a far target, degrees.
+double first_step_size(double max_step_deg) {
+  Kinematics kin(fan(2));
+  Eigen::VectorXd goal = Eigen::VectorXd::Constant(kin.num_angles(), 80), target(kin.num_residuals());
+  kin.tips(goal, target);
+  SolverOptions options;
+  options.restarts = 0;
+  options.gn_max_step_deg = max_step_deg;
+  auto gn = make_solver("gn", kin, options);
+  const Eigen::VectorXd rest = Eigen::VectorXd::Zero(kin.num_angles());
+  EXPECT_EQ(gn->start(rest, target), StopReason::running);
+  EXPECT_TRUE(gn->step());
+  return (gn->angles() - rest).cwiseAbs().maxCoeff();
+}
+
+TEST(GaussNewtonStep, MovesNoAngleFurtherThanTheCap) {
+  EXPECT_GT(first_step_size(1e6), 20);  // uncapped, the first step is long
+  const double capped = first_step_size(20);
+  EXPECT_LE(capped, 20 + 1e-9);
+  EXPECT_GT(capped, 0);
+}
 
 }  // namespace
 }  // namespace ik

@@ -49,6 +49,8 @@ export interface SolverOptions {
   maxBacktracks?: number;
   /** Gauss-Newton: singular values below this times the largest are dropped (not in paper mode). Default 3e-3. */
   gnSingularCutoff?: number;
+  /** Gauss-Newton's largest step per angle, degrees (not in paper mode). Default 60. */
+  gnMaxStepDeg?: number;
   /** Newton's largest step per angle, degrees. Default 45. */
   newtonMaxStepDeg?: number;
   /** Levenberg-Marquardt (and Newton) initial damping factor. Default 1. */
