@@ -60,6 +60,7 @@ export interface EmbindSolverOptions {
   armijoC1?: number;
   maxBacktracks?: number;
   gnSingularCutoff?: number;
+  gnMaxStepDeg?: number;
   newtonMaxStepDeg?: number;
   lmInitialMu?: number;
   lmDampingFloor?: number;
