@@ -2,9 +2,10 @@
 // projected Armijo backtracking from alpha = 1. The update is Powell's damped one (PROTOCOL.md):
 //   theta = 1 if s'y >= 0.2 s'Bs, else 0.8 s'Bs / (s'Bs - s'y);  r = theta y + (1 - theta) B s
 //   B <- B - B s s'B / s'Bs + r r' / s'r,   H <- (I - rho s r') H (I - rho r s') + rho s s',  rho = 1 / s'r
-// B and H are both kept (O(k^2) each over the k angles that can move), so s'Bs needs no solve. Paper mode starts from H = I and
-// uses the full gradient. Outside it, H starts as the inverse diagonal of J^T J, angles that
-// cannot move are left out of the direction and of y, and a failed search restarts the estimate.
+// B and H are both kept, over the k angles that can move only (O(k^2) each), so s'Bs needs no
+// solve. Paper mode starts from H = I and uses the full gradient. Outside it, H starts as the
+// inverse diagonal of J^T J, angles pushed against a bound are left out of the direction, and a
+// failed search restarts the estimate.
 #include <algorithm>
 #include <cmath>
 #include <memory>
@@ -78,8 +79,8 @@ class DampedBfgs final : public Solver {
   // direction_ = -H gf on the free movable angles, 0 elsewhere.
   void free_direction() {
     compact_direction_.noalias() = H_ * gf_;
-    for (int j = 0; j < size(); ++j) direction_[movable_[j]] = -compact_direction_[j] * mask_[j];
     compact_direction_ = -compact_direction_.cwiseProduct(mask_);
+    for (int j = 0; j < size(); ++j) direction_[movable_[j]] = compact_direction_[j];
   }
 
   // The first curvature estimate. Paper mode: H = B = I, as the original. Otherwise the

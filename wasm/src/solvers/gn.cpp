@@ -2,9 +2,9 @@
 // (factor 0.5, sufficient decrease c1 = 1e-3 on the projected point), as the report.
 // Outside paper mode the pseudo-inverse comes from the eigen-decomposition of J J^T, at the
 // residual size (3 x #effectors), and drops singular values below gn_singular_cutoff times the
-// largest (a nearly singular J otherwise sends the step far along its weakest direction), the
-// step uses the free angles only (not fixed, not pushed against a bound by grad E), angles on a limit that the step would push further out are held and the rest
-// re-solved; and if that projected path finds no lower point, every angle the step would take
+// largest (a nearly singular J otherwise sends the step far along its weakest direction). The
+// step uses the free angles only (not fixed, not pushed against a bound by grad E); angles on a
+// limit that the step would push further out are held and the rest re-solved; and if that projected path finds no lower point, every angle the step would take
 // past a limit is fixed on it and the rest re-solved, so the step stays inside the box. Either
 // step is scaled down to move no angle more than gn_max_step_deg.
 #include <Eigen/Eigenvalues>
@@ -14,6 +14,7 @@
 #include <memory>
 #include <vector>
 
+#include "line_search.h"
 #include "solver.h"
 
 namespace ik {
@@ -56,17 +57,11 @@ class GaussNewton final : public Solver {
     // lower, with every angle the full step would take past a limit fixed on the limit and the
     // others re-solved for the residual that remains (the step then stays inside the box).
     if (!free_direction(/*clip=*/false)) return fail("the SVD of the Jacobian is not finite");
-    cap_step();
+    cap_largest_change(step_, opt_.gn_max_step_deg);
     if (backtrack(step_, 1, opt_.armijo_c1)) return Progress::moved;
     if (!free_direction(/*clip=*/true)) return fail("the SVD of the Jacobian is not finite");
-    cap_step();
+    cap_largest_change(step_, opt_.gn_max_step_deg);
     return backtrack(step_, 1, opt_.armijo_c1) ? Progress::moved : Progress::stuck;
-  }
-
-  // Scales step_ down so that no angle moves more than gn_max_step_deg.
-  void cap_step() {
-    const double largest = step_.cwiseAbs().maxCoeff();
-    if (largest > opt_.gn_max_step_deg) step_ *= opt_.gn_max_step_deg / largest;
   }
 
   // step_ on the free angles with the active-set passes described in iterate().

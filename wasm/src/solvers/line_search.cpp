@@ -32,4 +32,10 @@ BacktrackingResult projected_backtracking(Kinematics& kin, const Eigen::Ref<cons
   return result;
 }
 
+double cap_largest_change(Eigen::Ref<Eigen::VectorXd> step, double max_change) {
+  const double largest = step.cwiseAbs().maxCoeff();
+  if (std::isfinite(largest) && largest > max_change) step *= max_change / largest;
+  return largest;
+}
+
 }  // namespace ik

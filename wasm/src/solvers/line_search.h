@@ -37,4 +37,8 @@ BacktrackingResult projected_backtracking(Kinematics& kin, const Eigen::Ref<cons
                                           const BacktrackingOptions& options, Eigen::Ref<Eigen::VectorXd> trial,
                                           Eigen::Ref<Eigen::VectorXd> residual);
 
+// Scales `step` (#angles, degrees) down, if need be, so that no entry exceeds `max_change`
+// degrees in size. Returns the largest |entry| before scaling (not finite: `step` is left as is).
+double cap_largest_change(Eigen::Ref<Eigen::VectorXd> step, double max_change);
+
 }  // namespace ik

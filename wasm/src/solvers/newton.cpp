@@ -21,6 +21,7 @@
 #include <limits>
 #include <memory>
 
+#include "line_search.h"
 #include "solver.h"
 #include "tip_hessian.h"
 
@@ -156,9 +157,7 @@ class ProjectedNewton final : public Solver {
       }
       if (!clipped_more) break;
     }
-    const double largest = step_.cwiseAbs().maxCoeff();
-    if (!std::isfinite(largest)) return Step::not_finite;
-    if (largest > opt_.newton_max_step_deg) step_ *= opt_.newton_max_step_deg / largest;
+    if (!std::isfinite(cap_largest_change(step_, opt_.newton_max_step_deg))) return Step::not_finite;
     trial_ = a_ + step_;
     kin_.project(trial_);
     return Step::ok;
