@@ -37,10 +37,13 @@ export interface EmbindSolverResult {
   E: number;
   initialE: number;
   gradNorm: number;
+  tipDistance: number;
+  reached: boolean;
   iterations: number;
   functionEvaluations: number;
   jacobianEvaluations: number;
   restarts: number;
+  escapes: number;
   stopReason: string;
   message: string;
   elapsedSeconds: number;
@@ -52,6 +55,7 @@ export interface EmbindSolverOptions {
   errorTolerance?: number;
   maxIterations?: number;
   timeBudgetSeconds?: number;
+  tipTolerance?: number;
   historyCapacity?: number;
   paperMode?: boolean;
   fdStepDeg?: number;
@@ -68,6 +72,7 @@ export interface EmbindSolverOptions {
   restarts?: number;
   stallIterations?: number;
   seed?: number;
+  escapeSaddles?: boolean;
 }
 
 /** wasm/bindings/solver_bindings.cpp: one method on one Rig (which must outlive it). */
@@ -82,7 +87,7 @@ export interface EmbindSolver {
   result(): EmbindSolverResult;
   errorHistory(): Float64Array;
   angles(): Float64Array;
-  /** n angles | m target | 8 result numbers (E, initialE, gradNorm, iterations, functionEvaluations, jacobianEvaluations, restarts, elapsedSeconds); stale (length 0) after memory growth. */
+  /** n angles | m target | 11 result numbers (E, initialE, gradNorm, iterations, functionEvaluations, jacobianEvaluations, restarts, elapsedSeconds, tipDistance, reached (0/1), escapes); stale (length 0) after memory growth. */
   ioView(n: number, m: number): Float64Array;
   /** Solves from the angles and target in ioView(); returns the stop reason's index in stopReasons(). */
   solveIo(): number;

@@ -22,8 +22,9 @@ using emscripten::val;
 // than setting fields one by one).
 struct SolverResultJs {
   val angles = val::undefined();  // Float64Array copy
-  double E = 0, initial_E = 0, gradient_norm = 0;
-  int iterations = 0, function_evaluations = 0, jacobian_evaluations = 0, restarts = 0;
+  double E = 0, initial_E = 0, gradient_norm = 0, tip_distance = 0;
+  bool reached = false;
+  int iterations = 0, function_evaluations = 0, jacobian_evaluations = 0, restarts = 0, escapes = 0;
   std::string stop_reason, message;
   double elapsed_s = 0;
 };
@@ -85,8 +86,9 @@ class SolverBinding {
     });
   }
 
-  // { angles, E, initialE, gradNorm, iterations, functionEvaluations, jacobianEvaluations,
-  //   restarts, stopReason, message, elapsedSeconds } of the solve so far (best angles found).
+  // { angles, E, initialE, gradNorm, tipDistance, reached, iterations, functionEvaluations,
+  //   jacobianEvaluations, restarts, escapes, stopReason, message, elapsedSeconds } of the solve
+  //   so far (best angles found).
   SolverResultJs result() const {
     const SolverSummary& s = solver_->summary();
     SolverResultJs r;
@@ -94,10 +96,13 @@ class SolverBinding {
     r.E = s.E;
     r.initial_E = s.initial_E;
     r.gradient_norm = s.gradient_norm;
+    r.tip_distance = s.tip_distance;
+    r.reached = s.reached;
     r.iterations = s.iterations;
     r.function_evaluations = s.function_evaluations;
     r.jacobian_evaluations = s.jacobian_evaluations;
     r.restarts = s.restarts;
+    r.escapes = s.escapes;
     r.stop_reason = stop_reason_name(s.stop_reason);
     r.message = s.message;
     r.elapsed_s = s.elapsed_s;
@@ -143,6 +148,9 @@ class SolverBinding {
       stats[kJacobianEvaluations] = s.jacobian_evaluations;
       stats[kRestarts] = s.restarts;
       stats[kElapsed] = s.elapsed_s;
+      stats[kTipDistance] = s.tip_distance;
+      stats[kReached] = s.reached ? 1 : 0;
+      stats[kEscapes] = s.escapes;
       return static_cast<int>(s.stop_reason);
     });
   }
@@ -156,7 +164,10 @@ class SolverBinding {
   }
 
   // Where solve_io() writes each result number, after the target.
-  enum IoStat { kE, kInitialE, kGradNorm, kIterations, kFunctionEvaluations, kJacobianEvaluations, kRestarts, kElapsed, kIoStats };
+  enum IoStat {
+    kE, kInitialE, kGradNorm, kIterations, kFunctionEvaluations, kJacobianEvaluations, kRestarts, kElapsed,
+    kTipDistance, kReached, kEscapes, kIoStats
+  };
 
  private:
   // Copies the arrays in and starts; throws for wrong lengths and for invalid_input.
@@ -212,10 +223,13 @@ EMSCRIPTEN_BINDINGS(ik_solvers) {
       .field("E", &SolverResultJs::E)
       .field("initialE", &SolverResultJs::initial_E)
       .field("gradNorm", &SolverResultJs::gradient_norm)
+      .field("tipDistance", &SolverResultJs::tip_distance)
+      .field("reached", &SolverResultJs::reached)
       .field("iterations", &SolverResultJs::iterations)
       .field("functionEvaluations", &SolverResultJs::function_evaluations)
       .field("jacobianEvaluations", &SolverResultJs::jacobian_evaluations)
       .field("restarts", &SolverResultJs::restarts)
+      .field("escapes", &SolverResultJs::escapes)
       .field("stopReason", &SolverResultJs::stop_reason)
       .field("message", &SolverResultJs::message)
       .field("elapsedSeconds", &SolverResultJs::elapsed_s);

@@ -29,6 +29,7 @@ inline const OptionField kOptionFields[] = {
     {"errorTolerance", "error_tolerance", OptionKind::number, &SolverOptions::error_tolerance},
     {"maxIterations", "max_iterations", OptionKind::integer, nullptr, &SolverOptions::max_iterations},
     {"timeBudgetSeconds", "time_budget_s", OptionKind::number, &SolverOptions::time_budget_s},
+    {"tipTolerance", "tip_tolerance", OptionKind::number, &SolverOptions::tip_tolerance},
     {"historyCapacity", "history_capacity", OptionKind::integer, nullptr, &SolverOptions::history_capacity},
     {"paperMode", "paper_mode", OptionKind::boolean, nullptr, nullptr, &SolverOptions::paper_mode},
     {"fdStepDeg", "fd_step_deg", OptionKind::number, &SolverOptions::fd_step_deg},
@@ -45,6 +46,7 @@ inline const OptionField kOptionFields[] = {
     {"restarts", "restarts", OptionKind::integer, nullptr, &SolverOptions::restarts},
     {"stallIterations", "stall_iterations", OptionKind::integer, nullptr, &SolverOptions::stall_iterations},
     {"seed", "seed", OptionKind::seed},
+    {"escapeSaddles", "escape_saddles", OptionKind::boolean, nullptr, nullptr, &SolverOptions::escape_saddles},
 };
 
 // Reads a JS options object ({} or undefined: the defaults). Throws RigError naming an unknown

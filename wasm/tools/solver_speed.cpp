@@ -5,6 +5,7 @@
 //
 // Usage: solver_speed RIG.json [--methods gd,bfgs,...] [--set incremental|random|both]
 //                     [--samples N] [--gd-samples N] [--paper] [--restarts N] [--stall N] [--gn-cutoff C] [--seed S]
+//                     [--no-escape]
 // Columns: iterations, time (median, mean, p95), E, success, and the mean number of restarts.
 // Tolerances are the report's: beast (0.01, 0.002), others (1e-4, 2e-4); time budget 1 s.
 // Each (set, method) first solves its targets untimed for 0.3 s (warm-up).
@@ -74,7 +75,8 @@ int main(int argc, char** argv) {
   if (argc < 2) {
     std::fprintf(stderr,
                  "usage: solver_speed RIG.json [--methods a,b] [--set incremental|random|both] [--samples N]\n"
-                 "                    [--gd-samples N] [--paper] [--restarts N] [--stall N] [--gn-cutoff C] [--seed S]\n");
+                 "                    [--gd-samples N] [--paper] [--restarts N] [--stall N] [--gn-cutoff C] [--seed S]\n"
+                 "                    [--no-escape]\n");
     return 2;
   }
   const std::string path = argv[1];
@@ -82,7 +84,7 @@ int main(int argc, char** argv) {
   std::string set = "both";
   int samples = 200, gd_samples = -1, restarts = 0, stall = 30;
   unsigned seed = 2020;
-  bool paper = false;
+  bool paper = false, escape = true;
   double gn_cutoff = ik::SolverOptions().gn_singular_cutoff;
   for (int i = 2; i < argc; ++i) {
     const std::string flag = argv[i];
@@ -102,6 +104,7 @@ int main(int argc, char** argv) {
     else if (flag == "--gn-cutoff") gn_cutoff = std::atof(value().c_str());
     else if (flag == "--seed") seed = static_cast<unsigned>(std::atoi(value().c_str()));
     else if (flag == "--paper") paper = true;
+    else if (flag == "--no-escape") escape = false;
     else {
       std::fprintf(stderr, "unknown option %s\n", flag.c_str());
       return 2;
@@ -124,6 +127,7 @@ int main(int argc, char** argv) {
         options.restarts = restarts;
         options.stall_iterations = stall;
         options.gn_singular_cutoff = gn_cutoff;
+        options.escape_saddles = escape;
         std::unique_ptr<ik::Solver> solver = ik::make_solver(method, kin, options);
         const int count = method == "gd" ? gd_samples : samples;
         const std::vector<Case> cases = make_cases(kin, which == std::string("incremental"), count, seed);

@@ -17,14 +17,18 @@
 
 #include "kinematics.h"
 #include "quasi_random.h"
+#include "saddle_escape.h"
 
 namespace ik {
 
 enum class StopReason {
   running,            // no test below has fired; step() may be called
-  converged_E,        // E < error_tolerance
-  converged_grad,     // |g| < gradient_tolerance; g = grad E without the components of fixed angles and of
-                      // angles on a bound that the gradient pushes outward (paper mode: the full grad E)
+  converged_E,        // on target: E < error_tolerance, or with tip_tolerance > 0 every effector's tip
+                      // within tip_tolerance of its target
+  converged_grad,     // |g| < gradient_tolerance, not on target; g = grad E without the components of fixed
+                      // angles and of angles on a bound that the gradient pushes outward (paper mode: the
+                      // full grad E). Outside paper mode no direction of negative curvature was found there
+                      // (a local minimum: the closest point the solver can reach from here)
   zero_step,          // the line search (or damping loop) found no point with lower E: the trial point
                       // equalled A, or max_backtracks tries failed; restarts exhausted if enabled
   max_iterations,     // iterations >= max_iterations
@@ -43,6 +47,9 @@ struct SolverOptions {
   double error_tolerance = 2e-4;     // rig units^2
   int max_iterations = 100000;
   double time_budget_s = 1.0;        // seconds; 0 or infinity: no limit
+  // Rig units. > 0: "on target" means every effector's tip lies within this distance of its
+  // target, and replaces the E test (error_tolerance is then unused). 0: the E test.
+  double tip_tolerance = 0;
   int history_capacity = 10000;      // E values kept per solve (the first ones; see error_history())
 
   // Reproduce the original program (shiinamiyuki/CSC466_Project): its central difference with
@@ -86,6 +93,13 @@ struct SolverOptions {
   int restarts = 1000;
   int stall_iterations = 30;     // a run whose best E fell by < 10% over this many iterations stalls
   std::uint32_t seed = 1;        // quasi-random sequence offset; same seed, same restarts
+
+  // Outside paper mode: a run that stops at a stationary point off target (a straight limb whose
+  // target moved along it, a tip pointing away from its target) first looks for a direction of
+  // negative curvature of E there and, if E falls along it, goes on from the lower point
+  // (saddle_escape.h). The pose moves only as far as E keeps falling: no jump. While restarts
+  // are left they come first (restarts = 0 while a user drags). false: stop at once, as before.
+  bool escape_saddles = true;
 };
 
 struct SolverSummary {
@@ -93,10 +107,15 @@ struct SolverSummary {
   double initial_E = 0;         // E at the start angles (after projection into the limits)
   double E = 0;                 // E at `angles`
   double gradient_norm = 0;     // |g| at `angles` as the gradient test measures it
+  double tip_distance = 0;      // largest distance of an effector's tip from its target at `angles`, rig units
+  bool reached = false;         // `angles` is on target (the test of converged_E)
   int iterations = 0;           // accepted steps (a restart counts as one)
   int function_evaluations = 0; // forward-kinematics evaluations of E (line-search trials included)
   int jacobian_evaluations = 0; // Jacobian evaluations (one finite-difference Jacobian counts once)
   int restarts = 0;             // restarts performed
+  int escapes = 0;              // steps along negative curvature out of a stationary point (escape_saddles)
+  // Describes `angles`: converged_E if and only if `reached`; converged_grad only with
+  // gradient_norm < gradient_tolerance; with restarts, taken from the best point, not the last run.
   StopReason stop_reason = StopReason::invalid_input;
   std::string message;          // why, for invalid_input and numerical_failure
   double elapsed_s = 0;         // seconds spent inside start() and step()
@@ -173,6 +192,10 @@ class Solver {
   Progress fail(const char* message);
   // Is the solve over its time budget right now?
   bool out_of_time() const;
+  // Is the current iterate (E_, r_) on target (the test of converged_E)?
+  bool on_target() const;
+  // The largest distance of an effector's tip from its target in r_, rig units.
+  double largest_tip_distance() const;
 
   Kinematics& kin_;
   SolverOptions opt_;       // the current solve's
@@ -206,6 +229,17 @@ class Solver {
   // Moves to the next quasi-random start inside the limits (a new run) if restarts are left.
   // Returns false when none is left or E is not finite there.
   bool restart();
+  // From a stationary point off target, outside paper mode with escape_saddles: moves to a lower
+  // point along negative curvature (saddle_escape.h). Returns false if there is none.
+  bool escape();
+  // After a run stopped off target with `reason` (zero_step, converged_grad, or running for a
+  // stall): leaves the point by an escape (not for a stall) or a restart, counting it as an
+  // iteration, and sets `reason` to the stop test at the new point (or numerical_failure).
+  // Returns false, `reason` unchanged, when neither applies (or the budget is spent).
+  bool move_on(StopReason& reason);
+  // The stop reason reported for the best point when the solve ends with `reason` (describing
+  // the current iterate): see SolverSummary::stop_reason.
+  StopReason settle(StopReason reason) const;
   bool validate(const Eigen::Ref<const Eigen::VectorXd>& angles, const Eigen::Ref<const Eigen::VectorXd>& target);
 
   SolverSummary summary_;
@@ -221,6 +255,7 @@ class Solver {
   int run_iterations_ = 0, run_best_iteration_ = 0;
   double run_best_E_ = 0;
   Eigen::VectorXd unit_;
+  SaddleEscape escape_;
   // start(); `close`: read the clock at the end (solve() leaves it to the first step).
   StopReason begin(const Eigen::Ref<const Eigen::VectorXd>& angles, const Eigen::Ref<const Eigen::VectorXd>& target,
                    bool close);

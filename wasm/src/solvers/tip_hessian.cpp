@@ -26,8 +26,12 @@ void tip_hessian(const Kinematics& kin, int effector, Eigen::Ref<Eigen::MatrixXd
     }
 }
 
-void add_weighted_tip_hessian(const Kinematics& kin, const Eigen::Ref<const Eigen::VectorXd>& weights,
-                              Eigen::Ref<Eigen::MatrixXd> out) {
+namespace {
+
+// sum_i weights[i] * d2 tips[i] / dA dA into out(at(j), at(k)) for the angles with at(.) >= 0.
+template <class Position>
+void add_weighted(const Kinematics& kin, const Eigen::Ref<const Eigen::VectorXd>& weights, Position at,
+                  Eigen::Ref<Eigen::MatrixXd> out) {
   constexpr double scale = kRadPerDeg * kRadPerDeg;
   for (int e = 0; e < kin.num_effectors(); ++e) {
     const int bone = kin.rig().effectors[e];
@@ -37,17 +41,31 @@ void add_weighted_tip_hessian(const Kinematics& kin, const Eigen::Ref<const Eige
     // w . (a_j x d_k) = a_j . (d_k x w): one cross product per k, one dot per (j, k).
     for (size_t kb = 0; kb < chain.size(); ++kb)
       for (int ka = 0; ka < 3; ++ka) {
-        const int k = 3 * chain[kb] + ka;
+        const int k = at(3 * chain[kb] + ka);
+        if (k < 0) continue;
         const Eigen::Vector3d c = scale * kin.joint_axis(chain[kb], ka).cross(p - kin.joint_origin(chain[kb])).cross(w);
         for (size_t jb = 0; jb <= kb; ++jb)
           for (int ja = 0; ja < (jb == kb ? ka + 1 : 3); ++ja) {
-            const int j = 3 * chain[jb] + ja;
+            const int j = at(3 * chain[jb] + ja);
+            if (j < 0) continue;
             const double v = kin.joint_axis(chain[jb], ja).dot(c);
             out(j, k) += v;
             if (j != k) out(k, j) += v;
           }
       }
   }
+}
+
+}  // namespace
+
+void add_weighted_tip_hessian(const Kinematics& kin, const Eigen::Ref<const Eigen::VectorXd>& weights,
+                              Eigen::Ref<Eigen::MatrixXd> out) {
+  add_weighted(kin, weights, [](int angle) { return angle; }, out);
+}
+
+void add_weighted_tip_hessian(const Kinematics& kin, const Eigen::Ref<const Eigen::VectorXd>& weights,
+                              const std::vector<int>& position, Eigen::Ref<Eigen::MatrixXd> out) {
+  add_weighted(kin, weights, [&position](int angle) { return position[angle]; }, out);
 }
 
 }  // namespace ik

@@ -8,6 +8,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <vector>
 
 #include "kinematics.h"
 
@@ -23,5 +24,10 @@ void tip_hessian(const Kinematics& kin, int effector, Eigen::Ref<Eigen::MatrixXd
 // is the part of Hess E that J^T J leaves out. No allocation.
 void add_weighted_tip_hessian(const Kinematics& kin, const Eigen::Ref<const Eigen::VectorXd>& weights,
                               Eigen::Ref<Eigen::MatrixXd> out);
+
+// The same sum over a subset of the angles: `position` (#angles entries) gives each angle's
+// row and column in `out`, or -1 to leave the angle out. No allocation.
+void add_weighted_tip_hessian(const Kinematics& kin, const Eigen::Ref<const Eigen::VectorXd>& weights,
+                              const std::vector<int>& position, Eigen::Ref<Eigen::MatrixXd> out);
 
 }  // namespace ik

@@ -12,8 +12,8 @@ export type SolverMethod = (typeof SOLVER_METHODS)[number];
 /** Why a solve stopped (wasm/src/solvers/solver.h gives each one's exact test). */
 export type StopReason =
   | 'running' // not stopped yet
-  | 'converged_E' // E < errorTolerance
-  | 'converged_grad' // |grad E| (free angles) < gradientTolerance
+  | 'converged_E' // on target (`reached`): E < errorTolerance, or every tip within tipTolerance when set
+  | 'converged_grad' // |grad E| (free angles) < gradientTolerance off target, no negative curvature: a local closest point
   | 'zero_step' // no step lowered E (and restarts, if any, were used up)
   | 'max_iterations' // iterations reached maxIterations
   | 'timeout' // the time budget ran out
@@ -27,8 +27,13 @@ export type StopReason =
 export interface SolverOptions {
   /** Stop when |grad E| < this (rig units^2 per degree). Default 1e-4. */
   gradientTolerance?: number;
-  /** Stop when E < this (rig units^2). Default 2e-4. */
+  /** Stop when E < this (rig units^2). Default 2e-4. Unused when tipTolerance > 0. */
   errorTolerance?: number;
+  /**
+   * Rig units. > 0: on target means every end effector's tip lies within this distance of its
+   * target (replaces the E test). Default 0 (the E test).
+   */
+  tipTolerance?: number;
   /** Iteration cap. Default 100000. */
   maxIterations?: number;
   /** Time budget of one solve, seconds (time spent inside start/step); 0 or Infinity: none. Default 1. */
@@ -65,6 +70,11 @@ export interface SolverOptions {
   stallIterations?: number;
   /** The restart sequence's seed, an integer in [0, 2^32). Default 1. */
   seed?: number;
+  /**
+   * At a stationary point off target (a straight limb whose target moved along it), step along a
+   * direction of negative curvature of E before stopping or restarting (not in paper mode). Default true.
+   */
+  escapeSaddles?: boolean;
 }
 
 export interface SolverResult {
@@ -76,10 +86,16 @@ export interface SolverResult {
   initialE: number;
   /** |grad E| over the free angles at `angles` (paper mode: the full gradient). */
   gradNorm: number;
+  /** The largest distance of an end effector's tip from its target at `angles`, rig units. */
+  tipDistance: number;
+  /** `angles` is on target (the test of converged_E); stopReason is converged_E exactly when this is true. */
+  reached: boolean;
   iterations: number;
   functionEvaluations: number;
   jacobianEvaluations: number;
   restarts: number;
+  /** Steps out of a stationary point along negative curvature (escapeSaddles). */
+  escapes: number;
   stopReason: StopReason;
   /** Explains numerical_failure; empty otherwise. */
   message: string;
@@ -92,7 +108,7 @@ function toResult(r: EmbindSolverResult): SolverResult {
 }
 
 /** Result numbers after the angles and target in the solve buffer (solver_bindings.cpp IoStat). */
-const IO_STATS = 8;
+const IO_STATS = 11;
 const stopReasonCache = new WeakMap<IkCoreModule, readonly string[]>();
 
 /** The stop reasons by the index solveIo() returns, read once per module. */
@@ -186,6 +202,9 @@ export class IkSolver {
       functionEvaluations: io[stats + 4],
       jacobianEvaluations: io[stats + 5],
       restarts: io[stats + 6],
+      escapes: io[stats + 10],
+      tipDistance: io[stats + 8],
+      reached: io[stats + 9] === 1,
       stopReason,
       message: stopReason === 'numerical_failure' ? handle.result().message : '',
       elapsedSeconds: io[stats + 7],

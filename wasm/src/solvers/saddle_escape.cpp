@@ -1,0 +1,113 @@
+#include "saddle_escape.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "objective.h"
+#include "tip_hessian.h"
+
+namespace ik {
+
+namespace {
+
+// An eigenvalue counts as negative below this share of the largest |eigenvalue| (rounding in H
+// is far smaller; a genuine bend direction far larger).
+constexpr double kRelativeCurvature = 1e-8;
+// Sufficient decrease against the quadratic model lambda |s|^2 / 2.
+constexpr double kDecrease = 0.25;
+// Halvings of the first step before giving up (30 degrees down to about 1e-7 degrees).
+constexpr int kMaxHalvings = 28;
+// Effectors count as off target from this share of the largest tip distance.
+constexpr double kOffTargetShare = 0.1;
+
+}  // namespace
+
+void SaddleEscape::resize(const Kinematics& kin) {
+  position_.assign(kin.num_angles(), -1);
+  index_.assign(kMaxAngles, -1);
+  direction_.resize(kin.num_angles());
+  other_trial_.resize(kin.num_angles());
+  other_residual_.resize(kin.num_residuals());
+}
+
+void SaddleEscape::choose_angles(const Kinematics& kin, const Eigen::Ref<const Eigen::VectorXd>& r) {
+  for (int c = 0; c < count_; ++c) position_[index_[c]] = -1;
+  count_ = 0;
+  double largest = 0;
+  for (int e = 0; e < kin.num_effectors(); ++e) largest = std::max(largest, r.segment<3>(3 * e).norm());
+  if (!(largest > 0)) return;
+  for (int e = 0; e < kin.num_effectors(); ++e) {
+    if (r.segment<3>(3 * e).norm() < kOffTargetShare * largest) continue;
+    const std::vector<int>& chain = kin.chain(kin.rig().effectors[e]);
+    for (auto bone = chain.rbegin(); bone != chain.rend(); ++bone)  // distal bones first
+      for (int k = 0; k < 3; ++k) {
+        const int angle = 3 * *bone + k;
+        if (count_ == kMaxAngles) return;
+        if (position_[angle] >= 0 || !(kin.lower()[angle] < kin.upper()[angle])) continue;
+        position_[angle] = count_;
+        index_[count_++] = angle;
+      }
+  }
+}
+
+EscapeResult SaddleEscape::find(Kinematics& kin, const Eigen::Ref<const Eigen::VectorXd>& target,
+                                const Eigen::Ref<const Eigen::VectorXd>& angles,
+                                const Eigen::Ref<const Eigen::VectorXd>& r, double E,
+                                const Eigen::Ref<const Eigen::MatrixXd>& J, Eigen::Ref<Eigen::VectorXd> trial,
+                                Eigen::Ref<Eigen::VectorXd> residual) {
+  EscapeResult result;
+  choose_angles(kin, r);
+  if (count_ == 0) return result;
+
+  hessian_.resize(count_, count_);
+  for (int p = 0; p < count_; ++p)
+    for (int q = 0; q <= p; ++q) hessian_(p, q) = hessian_(q, p) = J.col(index_[p]).dot(J.col(index_[q]));
+  add_weighted_tip_hessian(kin, r, position_, hessian_);
+  if (!hessian_.allFinite()) return result;
+  eigen_.compute(hessian_);
+  if (eigen_.info() != Eigen::Success) return result;
+  const auto& values = eigen_.eigenvalues();  // ascending
+  const double lambda = values[0];
+  result.curvature = lambda;
+  if (!(lambda < -kRelativeCurvature * std::max(std::abs(values[0]), std::abs(values[count_ - 1])))) return result;
+
+  // The eigenvector scattered over the angles, its largest component +1.
+  const auto v = eigen_.eigenvectors().col(0);
+  Eigen::Index largest = 0;
+  v.cwiseAbs().maxCoeff(&largest);
+  direction_.setZero();
+  for (int p = 0; p < count_; ++p) direction_[index_[p]] = v[p] / v[largest];
+
+  double E_plus = 0, E_minus = 0;
+  const bool plus = search(kin, target, angles, E, lambda, +1, trial, residual, E_plus, result.evaluations);
+  const bool minus = search(kin, target, angles, E, lambda, -1, other_trial_, other_residual_, E_minus, result.evaluations);
+  if (!plus && !minus) return result;
+  result.found = true;
+  if (plus && (!minus || E_plus <= E_minus)) {
+    result.E = E_plus;
+  } else {
+    trial = other_trial_;
+    residual = other_residual_;
+    result.E = E_minus;
+  }
+  return result;
+}
+
+bool SaddleEscape::search(Kinematics& kin, const Eigen::Ref<const Eigen::VectorXd>& target,
+                          const Eigen::Ref<const Eigen::VectorXd>& angles, double E, double curvature, double sign,
+                          Eigen::Ref<Eigen::VectorXd> trial, Eigen::Ref<Eigen::VectorXd> residual, double& E_trial,
+                          int& evaluations) {
+  double step = sign * kFirstStepDeg;
+  for (int i = 0; i <= kMaxHalvings; ++i, step *= 0.5) {
+    trial = angles + step * direction_;
+    kin.project(trial);
+    const double moved2 = (trial - angles).squaredNorm();
+    if (moved2 == 0) return false;  // the bounds block this sign
+    E_trial = objective(kin, trial, target, residual);
+    ++evaluations;
+    if (std::isfinite(E_trial) && E_trial < E + kDecrease * 0.5 * curvature * moved2) return true;
+  }
+  return false;
+}
+
+}  // namespace ik
