@@ -66,8 +66,8 @@ export class PageApp {
     this.settings = {
       rig,
       method: url.method ?? 'lm',
-      gradientTolerance: 1e-4,
-      errorTolerance: 2e-4,
+      gradientTolerance: 1e-7,
+      tipTolerance: 1e-3,
       maxIterations: 50,
       timeBudgetMs: 3,
       restarts: 0,
@@ -291,7 +291,7 @@ export class PageApp {
     const s = this.settings;
     return {
       gradientTolerance: s.gradientTolerance,
-      errorTolerance: s.errorTolerance,
+      tipTolerance: s.tipTolerance,
       maxIterations: s.maxIterations,
       timeBudgetMs: s.timeBudgetMs,
       restarts: 0,
@@ -438,7 +438,7 @@ export class PageApp {
     const s = this.settings;
     const settings: SolveSettings = {
       gradientTolerance: s.gradientTolerance,
-      errorTolerance: s.errorTolerance,
+      tipTolerance: s.tipTolerance,
       maxIterations: s.compareMaxIterations,
       timeBudgetMs: s.compareTimeBudgetMs,
       restarts: s.restarts,

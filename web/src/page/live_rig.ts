@@ -9,7 +9,7 @@ import type { LoadedRig } from './rig_source.js';
 import { RigView } from './rig_view.js';
 import { IkSession } from './session.js';
 import type { SolverFactory } from './solver_port.js';
-import { defaultTolerances, rigSize } from '../rig/tolerances.js';
+import { type DragTolerances, dragTolerances, rigSize } from '../rig/tolerances.js';
 
 export class LiveRig {
   /** Bone selected for the limits readout, or null. */
@@ -50,11 +50,10 @@ export class LiveRig {
     return this.loaded.name;
   }
 
-  /** The rig's default stopping tolerances (the benchmark's rule, see tolerances.ts). */
-  tolerances(): { gradientTolerance: number; errorTolerance: number } {
+  /** The rig's drag tolerances (a tip distance and a gradient tolerance, see tolerances.ts). */
+  tolerances(): DragTolerances {
     const rig = this.session.rig;
-    const t = defaultTolerances(this.loaded.name, this.loaded.a7, rigSize(rig.boneTips(new Float64Array(rig.numAngles))));
-    return { gradientTolerance: t.gtol, errorTolerance: t.ftol };
+    return dragTolerances(rigSize(rig.boneTips(new Float64Array(rig.numAngles))));
   }
 
   /** The objects to add to the scene. */

@@ -13,7 +13,8 @@ export interface PageSettings {
   rig: string;
   method: Method;
   gradientTolerance: number;
-  errorTolerance: number;
+  /** On target when every effector is within this distance of its target, rig units. */
+  tipTolerance: number;
   maxIterations: number;
   timeBudgetMs: number;
   restarts: number;
@@ -68,8 +69,8 @@ export class Panel {
 
     const solver = this.gui.addFolder('Solver (every frame)');
     solver.add(s, 'method', [...METHODS]).name('method').onChange(() => actions.methodChanged());
+    solver.add(s, 'tipTolerance').name('on target within (distance)').onChange(() => actions.settingsChanged());
     solver.add(s, 'gradientTolerance').name('‖∇E‖ tolerance').onChange(() => actions.settingsChanged());
-    solver.add(s, 'errorTolerance').name('E tolerance').onChange(() => actions.settingsChanged());
     solver.add(s, 'maxIterations', 1, 1000, 1).name('iterations / frame').onChange(() => actions.settingsChanged());
     solver.add(s, 'timeBudgetMs', 0.25, 16, 0.25).name('ms budget / frame').onChange(() => actions.settingsChanged());
     solver.add(s, 'paperMode').name('paper mode (the report’s algorithms)').onChange(() => actions.settingsChanged());

@@ -19,8 +19,8 @@ export interface PageProbe {
   solveMs(): { median: number; p95: number; max: number; n: number; total: number };
   /** The slowest per-frame solve since the rig loaded. */
   slowestSolve(): PageApp['slowest'];
-  /** The E tolerance in use (the panel's). */
-  errorTolerance(): number;
+  /** The tip tolerance in use (the panel's): the on-target distance, rig units. */
+  tipTolerance(): number;
   /** Bone names, in bone order. */
   boneNames(): string[];
   /** Bone lengths, in bone order (rig units). */
@@ -50,7 +50,7 @@ export function makeProbe(app: PageApp): PageProbe {
     loads: () => app.loads,
     rigName: () => app.current?.name ?? null,
     effectors: () => Array.from(app.current?.session.effectors() ?? []),
-    errorTolerance: () => app.settings.errorTolerance,
+    tipTolerance: () => app.settings.tipTolerance,
     slowestSolve: () => app.slowest,
     solveMs: () => {
       const t = app.solveTimes;

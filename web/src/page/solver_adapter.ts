@@ -8,7 +8,7 @@ import type { Method, MethodSolver, SolveOutcome, SolveSettings } from './solver
 function toOptions(s: SolveSettings): SolverOptions {
   return {
     gradientTolerance: s.gradientTolerance,
-    errorTolerance: s.errorTolerance,
+    tipTolerance: s.tipTolerance,
     maxIterations: s.maxIterations,
     timeBudgetSeconds: s.timeBudgetMs / 1000,
     restarts: s.restarts,
@@ -21,7 +21,7 @@ export function createWasmSolver(rig: IkRig, method: Method): MethodSolver {
   let sent: SolveSettings | null = null;
   const configure = (s: SolveSettings): void => {
     if (
-      sent && sent.gradientTolerance === s.gradientTolerance && sent.errorTolerance === s.errorTolerance &&
+      sent && sent.gradientTolerance === s.gradientTolerance && sent.tipTolerance === s.tipTolerance &&
       sent.maxIterations === s.maxIterations && sent.timeBudgetMs === s.timeBudgetMs &&
       sent.restarts === s.restarts && sent.paperMode === s.paperMode
     )
@@ -33,6 +33,8 @@ export function createWasmSolver(rig: IkRig, method: Method): MethodSolver {
     angles: r.angles,
     E: r.E,
     gradNorm: r.gradNorm,
+    tipDistance: r.tipDistance,
+    reached: r.reached,
     iterations: r.iterations,
     stopReason: r.stopReason,
     elapsedSeconds: r.elapsedSeconds,

@@ -20,10 +20,10 @@ export function isMethod(value: string | null | undefined): value is Method {
 
 /** The knobs of one solve. Times are milliseconds here (the panel's unit). */
 export interface SolveSettings {
-  /** Stop when ||grad E|| falls below this (delta_g of the report). */
+  /** Stop when ||grad E|| falls below this (rig units^2 per degree). */
   gradientTolerance: number;
-  /** Stop when E falls below this (delta_f of the report). */
-  errorTolerance: number;
+  /** On target when every end effector lies within this distance of its target (rig units). */
+  tipTolerance: number;
   /** Iteration cap of one solve. */
   maxIterations: number;
   /** Wall-clock budget of one solve, milliseconds. */
@@ -39,6 +39,10 @@ export interface SolveOutcome {
   angles: Float64Array;
   E: number;
   gradNorm: number;
+  /** Largest distance of an end effector from its target, rig units. */
+  tipDistance: number;
+  /** Every end effector within the tip tolerance of its target. */
+  reached: boolean;
   iterations: number;
   stopReason: string;
   elapsedSeconds: number;

@@ -1,8 +1,17 @@
-// Default stopping tolerances of a rig, shared by the page, the widget and the benchmark:
-// the report's values for its five A7 rigs (beast: gradient 0.01, E 0.002; the others: 0.0001,
-// 0.0002); for any other rig both scale with the square of the rig's size (the diagonal of the
-// bounding box of every bone tip at the rest pose) relative to 1 rig unit, since E is a squared
-// distance and grad E = J^T r scales the same way.
+// Stopping tolerances of a rig, shared by the page, the widget and the benchmark.
+//
+// Report tolerances (the benchmark's random and incremental experiments): the report's values
+// for its five A7 rigs (beast: gradient 0.01, E 0.002; the others: 0.0001, 0.0002); for any other
+// rig both scale with the square of the rig's size (the diagonal of the bounding box of every
+// bone tip at the rest pose) relative to 1 rig unit, since E is a squared distance and
+// grad E = J^T r scales the same way.
+//
+// Drag tolerances (the page, the widget, the benchmark's drag and reach experiments): a
+// distance. Every end effector must lie within DRAG_TIP_SHARE of the rig size of its target,
+// about one pixel with the rig framed in the view. The gradient test, which stops a solve at a
+// closest point when the target is out of reach, is set far below the gradient an effector that
+// far off its target makes: |grad E| ~ |r| * lever * pi/180 per degree, with the lever (the
+// distance from a joint to the tip) up to the rig size.
 
 export interface Tolerances {
   /** |grad E| threshold, rig units^2 per degree. */
@@ -23,6 +32,24 @@ export const reportTolerances: Readonly<Record<string, Tolerances>> = {
 /** Reference size (rig units) at which an unknown rig gets the report's usual tolerances. */
 export const REFERENCE_SIZE = 1;
 const REFERENCE_TOL: Tolerances = { gtol: 1e-4, ftol: 2e-4 };
+
+/** Share of the rig size within which an end effector is on its target while dragging. */
+export const DRAG_TIP_SHARE = 1e-3;
+/** The drag gradient tolerance over the gradient of an effector one tip tolerance off with the whole rig as lever. */
+export const DRAG_GRADIENT_SHARE = 1e-3;
+
+export interface DragTolerances {
+  /** Largest tip-to-target distance that counts as on target, rig units. */
+  tipTolerance: number;
+  /** |grad E| threshold, rig units^2 per degree. */
+  gradientTolerance: number;
+}
+
+/** The drag tolerances of a rig of size `size` (rig units, see rigSize). */
+export function dragTolerances(size: number): DragTolerances {
+  const tipTolerance = DRAG_TIP_SHARE * size;
+  return { tipTolerance, gradientTolerance: DRAG_GRADIENT_SHARE * tipTolerance * size * (Math.PI / 180) };
+}
 
 /** Rig size: the diagonal of the bounding box of the bone tips (3 numbers per bone), rig units. */
 export function rigSize(boneTipsAtRest: ArrayLike<number>): number {

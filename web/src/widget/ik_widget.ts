@@ -47,7 +47,7 @@ export class IkWidget extends HTMLElement {
   private token = 0;
   private needsSolve = false;
   private needsRedraw = false;
-  private tolerances = { gradientTolerance: 1e-4, errorTolerance: 2e-4 };
+  private tolerances = { gradientTolerance: 1e-7, tipTolerance: 1e-3 };
 
   constructor() {
     super();
