@@ -8,8 +8,19 @@ import { join } from 'node:path';
 import type { Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 
-import type { ScreenPoint } from '../../web/src/page/probe.js';
 import { launchBrowser, openPage, repoRoot, startVite, type BrowserSession } from './harness.js';
+import {
+  dragBy,
+  dragTowardsRoot,
+  effectorNamed,
+  gotoRig as openRig,
+  selectTarget,
+  stat,
+  statText,
+  targetScreen,
+  waitForConvergence,
+  waitForSettled,
+} from './page_helpers.js';
 
 const RIGS = ['lamp', 'robot-arm', 'knight', 'hand', 'beast', 'character'];
 
@@ -26,84 +37,7 @@ afterAll(async () => {
   await server?.close();
 });
 
-async function gotoRig(page: Page, rig: string, query = ''): Promise<void> {
-  await page.goto(`${server.url}?rig=${rig}${query}`);
-  await page.waitForFunction(() => {
-    const s = document.getElementById('app')?.dataset.state;
-    return s === 'ready' || s === 'error';
-  });
-  expect(await page.getAttribute('#app', 'data-state'), (await page.textContent('#message')) ?? '').toBe('ready');
-}
-
-async function stat(page: Page, key: string): Promise<string> {
-  return (await page.getAttribute(`[data-stat="${key}"]`, 'data-value')) ?? '';
-}
-
-async function statText(page: Page, key: string): Promise<string> {
-  return (await page.textContent(`[data-stat="${key}"]`)) ?? '';
-}
-
-async function targetScreen(page: Page, k: number): Promise<ScreenPoint> {
-  const p = await page.evaluate((i) => window.ikPage?.targetScreen(i) ?? null, k);
-  if (!p) throw new Error(`no target ${k}`);
-  return p;
-}
-
-/** Drags the gizmo of the selected target with the mouse by a fraction of the way towards the root joint. */
-async function dragTowardsRoot(page: Page, k: number, fraction: number, steps = 12, pauseMs = 16): Promise<{ from: ScreenPoint; to: ScreenPoint }> {
-  const from = await targetScreen(page, k);
-  const root = await page.evaluate(() => window.ikPage?.boneScreen(0) ?? null);
-  if (!root) throw new Error('no root bone');
-  let dx = (root.x - from.x) * fraction, dy = (root.y - from.y) * fraction;
-  const len = Math.hypot(dx, dy);
-  if (len < 25) [dx, dy] = len > 0 ? [(dx / len) * 25, (dy / len) * 25] : [25, 0];
-  return dragBy(page, k, dx, dy, steps, pauseMs);
-}
-
-/** Drags the gizmo of the selected target k by (dx, dy) pixels with the mouse. */
-async function dragBy(page: Page, k: number, dx: number, dy: number, steps = 12, pauseMs = 16): Promise<{ from: ScreenPoint; to: ScreenPoint }> {
-  const from = await targetScreen(page, k);
-  await page.mouse.move(from.x, from.y);
-  await page.mouse.down();
-  for (let i = 1; i <= steps; i++) {
-    await page.mouse.move(from.x + (dx * i) / steps, from.y + (dy * i) / steps);
-    if (pauseMs) await page.waitForTimeout(pauseMs);
-  }
-  await page.mouse.up();
-  return { from, to: { x: from.x + dx, y: from.y + dy } };
-}
-
-/** Puts the gizmo on target k by clicking it; returns k. */
-async function selectTarget(page: Page, k: number): Promise<number> {
-  if ((await page.evaluate(() => window.ikPage?.selectedTarget())) === k) return k;
-  const p = await targetScreen(page, k);
-  await page.mouse.click(p.x, p.y);
-  await page.waitForFunction((i) => window.ikPage?.selectedTarget() === i, k);
-  return k;
-}
-
-/** The effector (index in effector order) on a bone whose name matches `pattern`, else 0. */
-async function effectorNamed(page: Page, pattern: RegExp): Promise<number> {
-  const { effectors, names } = await page.evaluate(() => ({ effectors: window.ikPage?.effectors() ?? [], names: window.ikPage?.boneNames() ?? [] }));
-  const k = effectors.findIndex((b) => pattern.test(names[b]));
-  return k < 0 ? 0 : k;
-}
-
-/** Waits until the per-frame solve has stopped for a reason other than its budget. */
-async function waitForSettled(page: Page): Promise<string> {
-  await page.waitForFunction(() => {
-    const r = document.querySelector('[data-stat="stopReason"]')?.textContent ?? '';
-    return ['converged_E', 'converged_grad', 'zero_step'].includes(r);
-  }, null, { timeout: 20_000 });
-  return statText(page, 'stopReason');
-}
-
-async function waitForConvergence(page: Page): Promise<void> {
-  await page.waitForFunction(() => {
-    const el = document.querySelector<HTMLElement>('[data-stat="stopReason"]');
-    return el?.textContent === 'converged_E';
-  }, null, { timeout: 20_000 });
-}
+const gotoRig = (page: Page, rig: string, query = ''): Promise<void> => openRig(page, server.url, rig, query);
 
 describe('the page', () => {
   it('loads each project rig with no console errors', async (ctx) => {
@@ -147,7 +81,7 @@ describe('the page', () => {
       await page.waitForFunction(
         (m) => document.querySelector('[data-stat="method"]')?.textContent === m &&
           Number(document.querySelector<HTMLElement>('[data-stat="iterations"]')?.dataset.value) >= 0 &&
-          (document.querySelector('[data-stat="stopReason"]')?.textContent ?? '–') !== '–',
+          (document.querySelector('[data-stat="status"]')?.textContent ?? '–') !== '–',
         method,
       );
     }

@@ -1,10 +1,14 @@
 // The widget as a course page uses it: the single-file build (dist/widget/ik-widget.js) served
 // as static files next to web/embed-example.html and the project models; no bundler on the page.
+// A click or a tap on any target selects it; dragging it solves onto it and the status says so.
 import { join } from 'node:path';
 
+import type { Page } from 'playwright-core';
 import { build } from 'vite';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 
+import type { IkWidget } from '../../web/src/widget/ik_widget.js';
+import type { WidgetProbe } from '../../web/src/widget/probe.js';
 import { launchBrowser, openPage, repoRoot, startStatic, type BrowserSession } from './harness.js';
 
 let server: { url: string; close: () => Promise<void> };
@@ -24,6 +28,42 @@ afterAll(async () => {
   await browser?.close();
   await server?.close();
 });
+
+/** Opens the example course page, waits for its widgets, and scrolls widget `id` to the middle of the view. */
+async function gotoExample(page: Page, id: string): Promise<void> {
+  await page.goto(`${server.url}embed-example.html`);
+  await page.waitForFunction(() => [...document.querySelectorAll('ik-widget')].every((w) => (w as HTMLElement).dataset.state === 'ready'), null, {
+    timeout: 30_000,
+  });
+  await page.$eval(`#${id}`, (w) => w.scrollIntoView({ block: 'center' }));
+  await page.evaluate(() => new Promise((done) => requestAnimationFrame(done)));
+}
+
+/** The probe of widget `id` (its targets, tips, selection, camera). */
+async function probe(page: Page, id: string): Promise<WidgetProbe> {
+  const p = await page.$eval(`#${id}`, (w) => (w as IkWidget).probe);
+  if (!p) throw new Error(`#${id} has no probe: not ready, or the widget predates it`);
+  return p;
+}
+
+/** The status line of widget `id`: its text and attributes. */
+async function status(page: Page, id: string): Promise<{ text: string; kind?: string; reached?: string; title: string }> {
+  return page.$eval(`#${id}`, (w) => {
+    const el = w.shadowRoot?.querySelector<HTMLElement>('.stats');
+    return { text: el?.textContent ?? '', kind: el?.dataset.status, reached: el?.dataset.reached, title: el?.title ?? '' };
+  });
+}
+
+/** Effector k's target, 3 numbers, rig units. */
+function target(p: WidgetProbe, k: number): number[] {
+  return p.targets.slice(3 * k, 3 * k + 3);
+}
+
+/** Distance from effector k's tip to its target, rig units. */
+function tipError(p: WidgetProbe, k: number): number {
+  const [x, y, z] = target(p, k);
+  return Math.hypot(p.tips[3 * k] - x, p.tips[3 * k + 1] - y, p.tips[3 * k + 2] - z);
+}
 
 describe('<ik-widget>', () => {
   it('the example course page renders two widgets from the single-file build', async (ctx) => {
@@ -74,5 +114,73 @@ describe('<ik-widget>', () => {
     await page.waitForFunction(() => [...document.querySelectorAll('ik-widget:not(#broken)')].every((w) => (w as HTMLElement).dataset.state === 'ready'));
     // The browser reports the 404 itself; nothing else went wrong.
     expect(errors.filter((e) => !/404/.test(e))).toEqual([]);
+  });
+
+  it('clicking the second target selects it; dragging it moves that hand onto it, nothing else moves', async (ctx) => {
+    const { page, errors } = await openPage(browser, ctx);
+    await gotoExample(page, 'knight');
+    const before = await probe(page, 'knight');
+    expect(before.selected).toBe(0);
+    expect(before.targets.length / 3).toBeGreaterThan(1);
+    const from = before.targetsOnScreen[1];
+
+    // A click on target 1 gives it the gizmo.
+    await page.mouse.click(from.x, from.y);
+    expect((await probe(page, 'knight')).selected).toBe(1);
+
+    // Drag it by a few dozen pixels with the gizmo.
+    const [dx, dy] = [-24, -40];
+    await page.mouse.move(from.x, from.y);
+    await page.mouse.down();
+    for (let i = 1; i <= 12; i++) {
+      await page.mouse.move(from.x + (dx * i) / 12, from.y + (dy * i) / 12);
+      await page.waitForTimeout(16);
+    }
+    await page.mouse.up();
+    // Settled: the last solve stopped for a reason other than its per-frame budget.
+    await page.evaluate(() => new Promise((done) => requestAnimationFrame(done)));
+    await page.waitForFunction(
+      () => {
+        const kind = document.getElementById('knight')?.shadowRoot?.querySelector<HTMLElement>('.stats')?.dataset.status;
+        return kind !== 'solving' && kind !== 'budget';
+      },
+      null,
+      { timeout: 20_000 },
+    );
+    const after = await probe(page, 'knight');
+
+    // Target 1 moved and followed the mouse; target 0 and the camera stayed.
+    const now = after.targetsOnScreen[1];
+    expect(Math.hypot(now.x - (from.x + dx), now.y - (from.y + dy))).toBeLessThan(3);
+    const moved = Math.hypot(...target(after, 1).map((c, i) => c - target(before, 1)[i]));
+    expect(target(after, 0)).toEqual(target(before, 0));
+    expect(after.camera).toEqual(before.camera);
+
+    // The hand's tip ends on its target (the tolerance is far below the move), and the status says so.
+    expect(after.tipTolerance).toBeLessThan(moved / 20);
+    expect(tipError(after, 1)).toBeLessThan(after.tipTolerance);
+    const line = await status(page, 'knight');
+    expect(line).toMatchObject({ kind: 'on-target', reached: 'true' });
+    expect(line.text).toMatch(/^bfgs · \d+ it · tip error [\d.e-]+ · [\d.]+ ms · on target$/);
+    expect(line.title).toContain('within the tolerance');
+    expect(errors).toEqual([]);
+  });
+
+  it('a tap on a touch screen selects a target as a click does', async (ctx) => {
+    const phone = await launchBrowser(true);
+    try {
+      const { page, errors } = await openPage(phone, ctx);
+      await gotoExample(page, 'knight');
+      const before = await probe(page, 'knight');
+      expect(before.selected).toBe(0);
+      const at = before.targetsOnScreen[1];
+      await page.touchscreen.tap(at.x, at.y);
+      const after = await probe(page, 'knight');
+      expect(after.selected).toBe(1);
+      expect(after.camera).toEqual(before.camera);
+      expect(errors).toEqual([]);
+    } finally {
+      await phone.close();
+    }
   });
 });

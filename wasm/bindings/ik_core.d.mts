@@ -44,6 +44,7 @@ export interface EmbindSolverResult {
   jacobianEvaluations: number;
   restarts: number;
   escapes: number;
+  chainRestarts: number;
   stopReason: string;
   message: string;
   elapsedSeconds: number;
@@ -73,6 +74,7 @@ export interface EmbindSolverOptions {
   stallIterations?: number;
   seed?: number;
   escapeSaddles?: boolean;
+  chainRestarts?: number;
 }
 
 /** wasm/bindings/solver_bindings.cpp: one method on one Rig (which must outlive it). */
@@ -87,7 +89,7 @@ export interface EmbindSolver {
   result(): EmbindSolverResult;
   errorHistory(): Float64Array;
   angles(): Float64Array;
-  /** n angles | m target | 11 result numbers (E, initialE, gradNorm, iterations, functionEvaluations, jacobianEvaluations, restarts, elapsedSeconds, tipDistance, reached (0/1), escapes); stale (length 0) after memory growth. */
+  /** n angles | m target | 12 result numbers (E, initialE, gradNorm, iterations, functionEvaluations, jacobianEvaluations, restarts, elapsedSeconds, tipDistance, reached (0/1), escapes, chainRestarts); stale (length 0) after memory growth. */
   ioView(n: number, m: number): Float64Array;
   /** Solves from the angles and target in ioView(); returns the stop reason's index in stopReasons(). */
   solveIo(): number;

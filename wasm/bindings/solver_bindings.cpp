@@ -24,7 +24,7 @@ struct SolverResultJs {
   val angles = val::undefined();  // Float64Array copy
   double E = 0, initial_E = 0, gradient_norm = 0, tip_distance = 0;
   bool reached = false;
-  int iterations = 0, function_evaluations = 0, jacobian_evaluations = 0, restarts = 0, escapes = 0;
+  int iterations = 0, function_evaluations = 0, jacobian_evaluations = 0, restarts = 0, escapes = 0, chain_restarts = 0;
   std::string stop_reason, message;
   double elapsed_s = 0;
 };
@@ -87,8 +87,8 @@ class SolverBinding {
   }
 
   // { angles, E, initialE, gradNorm, tipDistance, reached, iterations, functionEvaluations,
-  //   jacobianEvaluations, restarts, escapes, stopReason, message, elapsedSeconds } of the solve
-  //   so far (best angles found).
+  //   jacobianEvaluations, restarts, escapes, chainRestarts, stopReason, message, elapsedSeconds }
+  //   of the solve so far (best angles found).
   SolverResultJs result() const {
     const SolverSummary& s = solver_->summary();
     SolverResultJs r;
@@ -103,6 +103,7 @@ class SolverBinding {
     r.jacobian_evaluations = s.jacobian_evaluations;
     r.restarts = s.restarts;
     r.escapes = s.escapes;
+    r.chain_restarts = s.chain_restarts;
     r.stop_reason = stop_reason_name(s.stop_reason);
     r.message = s.message;
     r.elapsed_s = s.elapsed_s;
@@ -151,6 +152,7 @@ class SolverBinding {
       stats[kTipDistance] = s.tip_distance;
       stats[kReached] = s.reached ? 1 : 0;
       stats[kEscapes] = s.escapes;
+      stats[kChainRestarts] = s.chain_restarts;
       return static_cast<int>(s.stop_reason);
     });
   }
@@ -166,7 +168,7 @@ class SolverBinding {
   // Where solve_io() writes each result number, after the target.
   enum IoStat {
     kE, kInitialE, kGradNorm, kIterations, kFunctionEvaluations, kJacobianEvaluations, kRestarts, kElapsed,
-    kTipDistance, kReached, kEscapes, kIoStats
+    kTipDistance, kReached, kEscapes, kChainRestarts, kIoStats
   };
 
  private:
@@ -230,6 +232,7 @@ EMSCRIPTEN_BINDINGS(ik_solvers) {
       .field("jacobianEvaluations", &SolverResultJs::jacobian_evaluations)
       .field("restarts", &SolverResultJs::restarts)
       .field("escapes", &SolverResultJs::escapes)
+      .field("chainRestarts", &SolverResultJs::chain_restarts)
       .field("stopReason", &SolverResultJs::stop_reason)
       .field("message", &SolverResultJs::message)
       .field("elapsedSeconds", &SolverResultJs::elapsed_s);

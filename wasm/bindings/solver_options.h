@@ -47,6 +47,7 @@ inline const OptionField kOptionFields[] = {
     {"stallIterations", "stall_iterations", OptionKind::integer, nullptr, &SolverOptions::stall_iterations},
     {"seed", "seed", OptionKind::seed},
     {"escapeSaddles", "escape_saddles", OptionKind::boolean, nullptr, nullptr, &SolverOptions::escape_saddles},
+    {"chainRestarts", "chain_restarts", OptionKind::integer, nullptr, &SolverOptions::chain_restarts},
 };
 
 // Reads a JS options object ({} or undefined: the defaults). Throws RigError naming an unknown

@@ -59,6 +59,7 @@ std::string check_options(const SolverOptions& o) {
   if (o.lm_max_rejections < 1) return bad("lm_max_rejections", ">= 1");
   if (o.restarts < 0) return bad("restarts", ">= 0");
   if (o.stall_iterations < 1) return bad("stall_iterations", ">= 1");
+  if (o.chain_restarts < 0) return bad("chain_restarts", ">= 0");
   return {};
 }
 
@@ -112,7 +113,7 @@ StopReason Solver::begin(const Eigen::Ref<const Eigen::VectorXd>& angles,
   elapsed_before_call_ = 0;
   opt_ = next_opt_;
   summary_.iterations = summary_.function_evaluations = summary_.jacobian_evaluations = summary_.restarts = 0;
-  summary_.escapes = 0;
+  summary_.escapes = summary_.chain_restarts = 0;
   summary_.reached = false;
   summary_.message.clear();
   history_size_ = 0;
@@ -151,6 +152,7 @@ StopReason Solver::begin(const Eigen::Ref<const Eigen::VectorXd>& angles,
     if (!(reach_ > 0)) reach_ = 1;
     unit_.resize(n_);
     escape_.resize(kin_);
+    chain_restart_.resize(kin_);
     resize(m_, n_);
   }
   if (sequence_seed_ != opt_.seed || sequence_.dimension() != n_) {
@@ -357,6 +359,21 @@ bool Solver::escape() {
   return true;
 }
 
+bool Solver::chain_restart() {
+  // Chain restart points come after any whole-pose restart point of the sequence.
+  constexpr long kFirstChainPoint = 1L << 24;
+  if (opt_.paper_mode || summary_.chain_restarts >= opt_.chain_restarts) return false;
+  trial_ = summary_.angles;
+  evaluate(trial_, r_trial_);  // poses kin_ at the best point
+  if (!chain_restart_.propose(kin_, trial_, r_trial_, target_, sequence_, kFirstChainPoint + ++chain_index_, a_))
+    return false;
+  run_iterations_ = run_best_iteration_ = 0;
+  run_best_E_ = std::numeric_limits<double>::infinity();
+  reset();
+  E_ = evaluate(a_, r_);
+  return finite(E_);
+}
+
 bool Solver::move_on(StopReason& reason) {
   if (summary_.reached || out_of_time() || summary_.iterations >= opt_.max_iterations) return false;
   // Restarts come first while any are left: on random targets escaping first cost more than it
@@ -364,6 +381,8 @@ bool Solver::move_on(StopReason& reason) {
   const bool stationary = reason == StopReason::zero_step || reason == StopReason::converged_grad;
   if (stationary && !restarts_left() && escape())
     ++summary_.escapes;
+  else if (stationary && !restarts_left() && chain_restart())
+    ++summary_.chain_restarts;
   else if (restart())
     ++summary_.restarts;
   else

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "kinematics.h"
+#include "chain_restart.h"
 #include "quasi_random.h"
 #include "saddle_escape.h"
 
@@ -100,6 +101,12 @@ struct SolverOptions {
   // (saddle_escape.h). The pose moves only as far as E keeps falling: no jump. While restarts
   // are left they come first (restarts = 0 while a user drags). false: stop at once, as before.
   bool escape_saddles = true;
+  // Outside paper mode, with no restart left: a run that ends at a local minimum off target that
+  // no escape leaves starts again from the best point with only the off-target chains moved
+  // (chain_restart.h), at most this many times per solve. The other chains keep their pose;
+  // an effector whose target is beyond its chain's reach gets none. Successive solves go on
+  // along the sequence (a solve that ran out of budget tries new points the next time).
+  int chain_restarts = 8;
 };
 
 struct SolverSummary {
@@ -114,6 +121,7 @@ struct SolverSummary {
   int jacobian_evaluations = 0; // Jacobian evaluations (one finite-difference Jacobian counts once)
   int restarts = 0;             // restarts performed
   int escapes = 0;              // steps along negative curvature out of a stationary point (escape_saddles)
+  int chain_restarts = 0;       // restarts of the off-target chains only (chain_restarts)
   // Describes `angles`: converged_E if and only if `reached`; converged_grad only with
   // gradient_norm < gradient_tolerance; with restarts, taken from the best point, not the last run.
   StopReason stop_reason = StopReason::invalid_input;
@@ -232,6 +240,9 @@ class Solver {
   // From a stationary point off target, outside paper mode with escape_saddles: moves to a lower
   // point along negative curvature (saddle_escape.h). Returns false if there is none.
   bool escape();
+  // From a local minimum off target, outside paper mode: a new run from the best point with the
+  // off-target chains moved (chain_restart.h). Returns false if none is left or worth trying.
+  bool chain_restart();
   // After a run stopped off target with `reason` (zero_step, converged_grad, or running for a
   // stall): leaves the point by an escape (not for a stall) or a restart, counting it as an
   // iteration, and sets `reason` to the stop test at the new point (or numerical_failure).
@@ -256,6 +267,8 @@ class Solver {
   double run_best_E_ = 0;
   Eigen::VectorXd unit_;
   SaddleEscape escape_;
+  ChainRestart chain_restart_;
+  long chain_index_ = 0;  // chain restarts drawn so far by this solver (not reset by start())
   // start(); `close`: read the clock at the end (solve() leaves it to the first step).
   StopReason begin(const Eigen::Ref<const Eigen::VectorXd>& angles, const Eigen::Ref<const Eigen::VectorXd>& target,
                    bool close);

@@ -29,6 +29,7 @@ TEST_P(StationaryStart, AnEscapeOrARestartLeavesAStationaryStartAndWithNeitherTh
   SolverOptions neither;
   neither.restarts = 0;
   neither.escape_saddles = false;
+  neither.chain_restarts = 0;
   auto plain = make_solver(GetParam(), kin, neither);
   EXPECT_EQ(plain->solve(rest, target).stop_reason, StopReason::converged_grad);
   EXPECT_EQ(plain->summary().iterations, 0);
@@ -79,6 +80,7 @@ TEST_P(StationaryStart, AGradientUnderTheToleranceButNotNearZeroKeepsDescendingW
   options.gradient_tolerance = 2 * start_gradient;  // the test fires at the start, |g| = half of it
   options.error_tolerance = 1e-10;
   options.restarts = 0;
+  options.chain_restarts = 0;
   auto plain = make_solver(GetParam(), kin, options);
   EXPECT_EQ(plain->solve(rest, target).stop_reason, StopReason::converged_grad);
   EXPECT_EQ(plain->summary().iterations, 0);

@@ -75,6 +75,12 @@ export interface SolverOptions {
    * direction of negative curvature of E before stopping or restarting (not in paper mode). Default true.
    */
   escapeSaddles?: boolean;
+  /**
+   * With no restart left (restarts 0 while dragging): restarts of only the off-target chains from
+   * the best point, when a run ends at a local minimum off target that no escape leaves. The other
+   * chains keep their pose. Default 8 per solve.
+   */
+  chainRestarts?: number;
 }
 
 export interface SolverResult {
@@ -96,6 +102,8 @@ export interface SolverResult {
   restarts: number;
   /** Steps out of a stationary point along negative curvature (escapeSaddles). */
   escapes: number;
+  /** Restarts of the off-target chains only (chainRestarts). */
+  chainRestarts: number;
   stopReason: StopReason;
   /** Explains numerical_failure; empty otherwise. */
   message: string;
@@ -108,7 +116,7 @@ function toResult(r: EmbindSolverResult): SolverResult {
 }
 
 /** Result numbers after the angles and target in the solve buffer (solver_bindings.cpp IoStat). */
-const IO_STATS = 11;
+const IO_STATS = 12;
 const stopReasonCache = new WeakMap<IkCoreModule, readonly string[]>();
 
 /** The stop reasons by the index solveIo() returns, read once per module. */
@@ -203,6 +211,7 @@ export class IkSolver {
       jacobianEvaluations: io[stats + 5],
       restarts: io[stats + 6],
       escapes: io[stats + 10],
+      chainRestarts: io[stats + 11],
       tipDistance: io[stats + 8],
       reached: io[stats + 9] === 1,
       stopReason,

@@ -17,8 +17,8 @@ import { ConvergencePlot } from './plots.js';
 import { DEFAULT_RIG, type LoadedRig, loadProjectRig, loadUserFile, PROJECT_RIGS } from './rig_source.js';
 import { Stage } from './scene.js';
 import { createSolver } from './solvers.js';
-import type { SolveSettings } from './solver_port.js';
-import { StatsPanel } from './stats.js';
+import type { SolveOutcome, SolveSettings } from './solver_port.js';
+import { StatsPanel, type StatsValues } from './stats.js';
 import { readUrlState, writeUrlState } from './url_state.js';
 
 /** The page's DOM slots (see index.html). */
@@ -169,6 +169,11 @@ export class PageApp {
     return { x: rect.left + ((v.x + 1) / 2) * rect.width, y: rect.top + ((1 - v.y) / 2) * rect.height };
   }
 
+  /** Screen pixels (CSS) per rig unit at world point `p`. */
+  pixelsPerUnit(p: Vector3): number {
+    return this.stage.pixelsPerUnit(p);
+  }
+
   get selectedTarget(): number | null {
     return this.handles.selected;
   }
@@ -311,20 +316,31 @@ export class PageApp {
       if (ms > (this.slowest?.ms ?? -1))
         this.slowest = { ms, solverMs: out.elapsedSeconds * 1000, iterations: out.iterations, stopReason: out.stopReason };
       if (out.iterations > 0) this.plot.record(this.settings.method, out.history);
-      this.stats.show({
-        method: this.settings.method,
-        iterations: out.iterations,
-        E: out.E,
-        gradNorm: out.gradNorm,
-        stopReason: out.stopReason,
-        ms,
-        pinnedDrift: pinnedDrift(session.tips(), session.targets, this.draggedEffector),
-      });
+      this.stats.show(this.statsOf(live, out, ms, this.draggedEffector));
       this.needsRedraw = true;
     } catch (e) {
       this.needsSolve = false;
       this.showMessage(`solver error: ${e instanceof Error ? e.message : String(e)}`, 'error');
     }
+  }
+
+  /** The stats of one solve: `except` is the dragged effector (not counted as pinned), or null. */
+  private statsOf(live: LiveRig, out: SolveOutcome, ms: number, except: number | null): StatsValues {
+    const session = live.session;
+    const k = this.handles.selected ?? 0;
+    return {
+      method: this.settings.method,
+      iterations: out.iterations,
+      E: out.E,
+      gradNorm: out.gradNorm,
+      reached: out.reached,
+      tipDistance: out.tipDistance,
+      pixelsPerUnit: this.stage.pixelsPerUnit(v.fromArray(session.targets, 3 * Math.min(k, session.targets.length / 3 - 1))),
+      stopReason: out.stopReason,
+      paperMode: this.settings.paperMode,
+      ms,
+      pinnedDrift: pinnedDrift(session.tips(), session.targets, except),
+    };
   }
 
   private moveTarget(k: number, x: number, y: number, z: number): void {
@@ -411,18 +427,7 @@ export class PageApp {
       const out = r.outcome;
       live.showGhost(r.stepLength > 0 ? r.before : null);
       this.plot.record(method, out.history);
-      this.stats.show(
-        {
-          method,
-          iterations: out.iterations,
-          E: out.E,
-          gradNorm: out.gradNorm,
-          stopReason: out.stopReason,
-          ms: r.ms,
-          pinnedDrift: pinnedDrift(session.tips(), session.targets, null),
-        },
-        false,
-      );
+      this.stats.show(this.statsOf(live, out, r.ms, null), false);
       this.showStepInfo(r.text);
       this.el.stepInfo.dataset.iterations = String(out.iterations);
       this.needsRedraw = true;
@@ -437,17 +442,15 @@ export class PageApp {
     this.busy = true;
     const s = this.settings;
     const settings: SolveSettings = {
-      gradientTolerance: s.gradientTolerance,
-      tipTolerance: s.tipTolerance,
+      ...this.frameSettings(),
       maxIterations: s.compareMaxIterations,
       timeBudgetMs: s.compareTimeBudgetMs,
       restarts: s.restarts,
-      paperMode: s.paperMode,
     };
     this.compareView.begin(`${live.name}, from the ${s.compareFrom} (budget ${s.compareTimeBudgetMs} ms, restarts ${s.restarts})`);
     try {
       await compareMethods(live.session, settings, s.compareFrom, (row) => {
-        this.compareView.addRow(row);
+        this.compareView.addRow(row, s.paperMode);
         if (row.outcome) this.plot.record(row.method, row.outcome.history);
       });
     } finally {

@@ -1,9 +1,11 @@
 // "Compare": solves the current targets with every method from the same start, the current pose
-// or the rest pose (the pose on screen is left as it was) and shows the report's columns (t, iterations, E, stop reason) with the
-// convergence histories overlaid.
+// or the rest pose (the pose on screen is left as it was) and shows the report's columns (t,
+// iterations, E, ||grad E||) with the tip error and the outcome in words (the stop reason's code in
+// its tooltip), and the convergence histories overlaid.
 import { ConvergencePlot, METHOD_COLORS } from './plots.js';
 import type { IkSession } from './session.js';
 import { formatNumber } from './stats.js';
+import { statusWords } from './status_words.js';
 import { METHOD_LABELS, METHODS, type Method, type SolveOutcome, type SolveSettings } from './solver_port.js';
 
 export interface CompareRow {
@@ -60,7 +62,7 @@ export class CompareView {
     const table = document.createElement('table');
     table.className = 'compare-table';
     const thead = table.createTHead().insertRow();
-    for (const h of ['method', 't (s)', 'iterations', 'E', '‖∇E‖', 'stop reason']) {
+    for (const h of ['method', 't (s)', 'iterations', 'E', '‖∇E‖', 'tip error', 'outcome']) {
       const th = document.createElement('th');
       th.textContent = h;
       thead.append(th);
@@ -80,7 +82,8 @@ export class CompareView {
     this.element.dataset.state = 'running';
   }
 
-  addRow(row: CompareRow): void {
+  /** Adds one method's row; `paperMode` words a stationary point off target as paper mode has it. */
+  addRow(row: CompareRow, paperMode = false): void {
     const tr = this.body.insertRow();
     tr.dataset.method = row.method;
     const name = tr.insertCell();
@@ -91,9 +94,18 @@ export class CompareView {
     name.title = METHOD_LABELS[row.method];
     const o = row.outcome;
     const cells = o
-      ? [formatNumber(o.elapsedSeconds), String(o.iterations), formatNumber(o.E), formatNumber(o.gradNorm), o.stopReason]
-      : ['–', '–', '–', '–', row.error ?? 'failed'];
+      ? [formatNumber(o.elapsedSeconds), String(o.iterations), formatNumber(o.E), formatNumber(o.gradNorm), formatNumber(o.tipDistance)]
+      : ['–', '–', '–', '–', '–'];
     for (const c of cells) tr.insertCell().textContent = c;
+    const outcome = tr.insertCell();
+    if (o) {
+      const words = statusWords(o.reached, o.stopReason, paperMode);
+      outcome.textContent = words.text;
+      outcome.title = words.title;
+      outcome.dataset.reason = o.stopReason;
+    } else {
+      outcome.textContent = row.error ?? 'failed';
+    }
     if (o) this.plot.record(row.method, o.history);
   }
 

@@ -34,6 +34,14 @@ export interface PageProbe {
   cameraPosition(): [number, number, number];
   /** Distance from effector k's tip to its target. */
   effectorError(k: number): number;
+  /** Target k's world position, or null. */
+  targetPosition(k: number): [number, number, number] | null;
+  /** End effector k's tip, world position, or null. */
+  tipPosition(k: number): [number, number, number] | null;
+  /** Screen pixels per rig unit at the selected target (target 0 if none), as the stats use. */
+  pixelsPerUnit(): number;
+  /** The rig's bounding box at the current pose (world): min and max corners. */
+  bounds(): { min: [number, number, number]; max: [number, number, number] } | null;
   /** Objects alive now: IK sessions and solvers (WebAssembly), geometries and textures (GPU). */
   alive(): { sessions: number; solvers: number; geometries: number; textures: number };
 }
@@ -75,6 +83,24 @@ export function makeProbe(app: PageApp): PageProbe {
     alive() {
       const memory = app.renderer.info.memory;
       return { ...IkSession.alive, geometries: memory.geometries, textures: memory.textures };
+    },
+    targetPosition(k) {
+      const t = app.current?.session.targets;
+      return t && k >= 0 && 3 * k < t.length ? [t[3 * k], t[3 * k + 1], t[3 * k + 2]] : null;
+    },
+    tipPosition(k) {
+      const t = app.current?.session.tips();
+      return t && k >= 0 && 3 * k < t.length ? [t[3 * k], t[3 * k + 1], t[3 * k + 2]] : null;
+    },
+    pixelsPerUnit() {
+      const t = app.current?.session.targets;
+      if (!t) return NaN;
+      const k = Math.min(app.selectedTarget ?? 0, t.length / 3 - 1);
+      return app.pixelsPerUnit(a.fromArray(t, 3 * k));
+    },
+    bounds() {
+      const box = app.current?.view.bounds();
+      return box ? { min: box.min.toArray(), max: box.max.toArray() } : null;
     },
     effectorError(k) {
       const live = app.current;

@@ -15,6 +15,8 @@ import {
 } from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 
+const viewPoint = new Vector3();
+
 export type FrameCallback = (seconds: number) => void;
 
 export class Stage {
@@ -55,6 +57,14 @@ export class Stage {
     this.resizeObserver.observe(container);
     this.resize();
     this.renderer.setAnimationLoop((t) => this.tick(t));
+  }
+
+  /** Screen pixels (CSS) per world unit at world point `p`, seen by the camera now. */
+  pixelsPerUnit(p: Vector3): number {
+    const depth = viewPoint.copy(p).applyMatrix4(this.camera.matrixWorldInverse).z;
+    const height = this.canvas.clientHeight;
+    const fov = (this.camera.fov * Math.PI) / 180;
+    return depth < 0 ? height / (2 * -depth * Math.tan(fov / 2)) : NaN;
   }
 
   get canvas(): HTMLCanvasElement {

@@ -1,6 +1,9 @@
-// Live solver statistics: iterations, E, ||grad||, stop reason and the main-thread time of one
-// solve with its running median. Values are written as text; each field also carries its raw
-// number in data-value so tests and tools can read it without parsing the display.
+// Live solver statistics: what the last solve reached in words (statusWords), the largest tip
+// error as a distance and in screen pixels, iterations, E, ||grad||, and the main-thread time of
+// one solve with its running median. Values are written as text; each field also carries its raw
+// number in data-value so tests and tools can read it without parsing the display (the status
+// carries the solver's stop reason code in data-reason and its tooltip).
+import { statusWords } from './status_words.js';
 
 /** Running median over the last `capacity` samples. */
 export class RunningMedian {
@@ -62,18 +65,27 @@ export interface StatsValues {
   iterations: number;
   E: number;
   gradNorm: number;
+  /** Every end effector within the tip tolerance of its target. */
+  reached: boolean;
+  /** Largest distance of an end effector from its target, rig units. */
+  tipDistance: number;
+  /** Screen pixels per rig unit near the targets (for the tip error in pixels); NaN: unknown. */
+  pixelsPerUnit: number;
   stopReason: string;
+  /** The report's algorithms (no escape from stationary points): changes the words of converged_grad. */
+  paperMode: boolean;
   ms: number;
   /** Largest distance from a pinned (not dragged) effector to its target: the report's "wobble". */
   pinnedDrift: number;
 }
 
-const FIELDS: { key: keyof StatsValues | 'median'; label: string; title: string }[] = [
+const FIELDS: { key: keyof StatsValues | 'median' | 'status'; label: string; title: string }[] = [
   { key: 'method', label: 'method', title: 'the method solving every frame' },
+  { key: 'status', label: 'status', title: 'what the last solve reached' },
+  { key: 'tipDistance', label: 'tip error', title: 'largest distance of an end effector from its target (rig units, and screen pixels)' },
   { key: 'iterations', label: 'iterations', title: 'iterations of the last solve' },
   { key: 'E', label: 'E', title: 'E = ½ Σ |tip − target|² after the last solve' },
   { key: 'gradNorm', label: '‖∇E‖', title: 'gradient norm after the last solve' },
-  { key: 'stopReason', label: 'stop', title: 'why the last solve stopped' },
   { key: 'ms', label: 'ms / solve', title: 'main-thread milliseconds of the last solve (JS + WebAssembly)' },
   { key: 'median', label: 'median ms', title: 'running median of ms / solve over the last solves' },
   { key: 'pinnedDrift', label: 'pinned drift', title: 'largest distance of a pinned effector from its target (the report’s “wobble”)' },
@@ -116,7 +128,9 @@ export class StatsPanel {
     this.set('iterations', String(v.iterations), v.iterations);
     this.set('E', formatNumber(v.E), v.E);
     this.set('gradNorm', formatNumber(v.gradNorm), v.gradNorm);
-    this.set('stopReason', v.stopReason || '–', NaN);
+    const px = v.tipDistance * v.pixelsPerUnit;
+    this.set('tipDistance', `${formatNumber(v.tipDistance)}${Number.isFinite(px) ? ` (${px.toFixed(1)} px)` : ''}`, v.tipDistance);
+    this.showStatus(v.reached, v.stopReason, v.paperMode);
     this.set('ms', v.ms.toFixed(3), v.ms);
     const m = this.median.median();
     this.set('median', Number.isNaN(m) ? '–' : `${m.toFixed(3)} (n=${this.median.size})`, m);
@@ -129,9 +143,25 @@ export class StatsPanel {
     this.set('E', formatNumber(E), E);
   }
 
+  private showStatus(reached: boolean, stopReason: string, paperMode: boolean): void {
+    const cell = this.cells.get('status');
+    if (!cell) return;
+    const words = statusWords(reached, stopReason, paperMode);
+    this.set('status', words.text, NaN);
+    cell.title = words.title;
+    cell.dataset.reason = stopReason;
+    cell.dataset.kind = words.kind;
+    cell.dataset.reached = String(reached);
+  }
+
   reset(): void {
     this.median.clear();
     for (const [key, cell] of this.cells) this.set(key, '–', NaN, cell);
+    const status = this.cells.get('status');
+    if (status) {
+      status.title = '';
+      for (const k of ['reason', 'kind', 'reached']) delete status.dataset[k];
+    }
   }
 
   private set(key: string, text: string, value: number, cell = this.cells.get(key)): void {

@@ -1,26 +1,31 @@
 // <ik-widget src="models/lamp.glb" method="lm" effectors="head, 3"></ik-widget>
-// One custom element: a rig, its targets and the solver running live, in a shadow root. Loading
+// One custom element: a rig, its targets and the solver running live, in a shadow root. A click
+// or tap on a target gives it the gizmo; the status line says what the last solve reached. Loading
 // problems (file, format, WebAssembly, WebGL) show as a message inside the widget and never
 // throw into the host page. Names from files are shown as text, never as HTML.
 import type { IkCoreModule } from '../ik/module.js';
 import { Handles } from '../page/handles.js';
 import { LiveRig } from '../page/live_rig.js';
 import { solveFrame } from '../page/live_solve.js';
+import { listenForClicks, type ViewClick } from '../page/picking.js';
 import { loadRigUrl } from '../page/rig_source.js';
 import { Stage } from '../page/scene.js';
 import { createSolver } from '../page/solvers.js';
 import { isMethod, METHOD_LABELS, METHODS, type Method, type SolveSettings } from '../page/solver_port.js';
+import type { DragTolerances } from '../rig/tolerances.js';
 import { widgetCore } from './core.js';
+import { widgetProbe, type WidgetProbe } from './probe.js';
+import { showNote, showSolve } from './status_line.js';
 
 const STYLE = `
 :host { display: block; position: relative; height: 320px; min-height: 160px; background: #20242b; color: #dfe4ea;
   font: 12px/1.4 system-ui, sans-serif; border-radius: 6px; overflow: hidden; contain: content; }
 :host([hidden]) { display: none; }
 .view { position: absolute; inset: 0; }
-.bar { position: absolute; left: 0; right: 0; bottom: 0; display: flex; gap: 8px; align-items: center; padding: 4px 8px;
+.bar { position: absolute; left: 0; right: 0; bottom: 0; display: flex; flex-wrap: wrap; gap: 2px 8px; align-items: center; padding: 4px 8px;
   background: #171a1fcc; font-variant-numeric: tabular-nums; }
 .bar .name { color: #ffb454; overflow: hidden; text-overflow: ellipsis; white-space: nowrap; }
-.bar .stats { margin-left: auto; white-space: nowrap; }
+.bar .stats { margin-left: auto; text-align: right; }
 .bar select, .bar button { font: inherit; background: #2a2f37; color: inherit; border: 1px solid #3a414c; border-radius: 3px; }
 .message { position: absolute; inset: 0; display: grid; place-items: center; padding: 12px; text-align: center; }
 .message[data-kind='error'] { color: #ffd9dc; background: #4a1f25; }
@@ -44,10 +49,12 @@ export class IkWidget extends HTMLElement {
   private stage: Stage | null = null;
   private handles: Handles | null = null;
   private live: LiveRig | null = null;
+  /** The rig's drag tolerances (tip distance and gradient), set with the rig. */
+  private tolerances: DragTolerances | null = null;
+  private stopClicks: (() => void) | null = null;
   private token = 0;
   private needsSolve = false;
   private needsRedraw = false;
-  private tolerances = { gradientTolerance: 1e-7, tipTolerance: 1e-3 };
 
   constructor() {
     super();
@@ -93,6 +100,12 @@ export class IkWidget extends HTMLElement {
   /** 'loading', 'ready' or 'error' (also the data-state attribute). */
   get state(): string {
     return this.dataset.state ?? 'loading';
+  }
+
+  /** For tests and tools: the selected target, targets, tips, the tolerance, the camera; null until ready. */
+  get probe(): WidgetProbe | null {
+    const { live, handles, stage, tolerances } = this;
+    return live && handles && stage && tolerances ? widgetProbe(live, handles, stage, tolerances.tipTolerance) : null;
   }
 
   connectedCallback(): void {
@@ -154,7 +167,8 @@ export class IkWidget extends HTMLElement {
     this.stage = stage;
     const handles = new Handles(stage);
     this.handles = handles;
-    stage.connectOrbit();
+    stage.connectOrbit(); // after the gizmo: a drag on the gizmo must not orbit
+    this.stopClicks = listenForClicks(stage.canvas, stage.camera, () => handles.dragging || handles.hovering, (c) => this.pickTarget(c));
     this.live = live;
     this.tolerances = live.tolerances();
     stage.scene.add(...live.objects);
@@ -180,10 +194,10 @@ export class IkWidget extends HTMLElement {
   /** The `effectors` attribute: bone names or indices, separated by commas. */
   private applyEffectors(live: LiveRig): void {
     const attr = this.getAttribute('effectors');
+    const unknown: string[] = [];
     if (attr && attr.trim()) {
       const names = live.session.spec.names;
       const bones: number[] = [];
-      const unknown: string[] = [];
       for (const raw of attr.split(',')) {
         const item = raw.trim();
         if (!item) continue;
@@ -194,8 +208,8 @@ export class IkWidget extends HTMLElement {
         } else unknown.push(item);
       }
       if (bones.length) live.session.setEffectors(bones);
-      if (unknown.length) this.statsEl.textContent = `unknown effector ${unknown.join(', ')}`;
     }
+    showNote(this.statsEl, unknown.length ? `unknown effector ${unknown.join(', ')}` : '');
     this.handles?.setTargets(live.session.targets);
     this.needsSolve = false;
     this.needsRedraw = true;
@@ -206,17 +220,24 @@ export class IkWidget extends HTMLElement {
     if (!live) return;
     live.session.reset();
     this.handles?.setTargets(live.session.targets);
+    showNote(this.statsEl, '');
     this.needsSolve = false;
     this.needsRedraw = true;
   }
 
+  /** A click or tap on the view: the target under it, if any, takes the gizmo (and shows as selected). */
+  private pickTarget(c: ViewClick): void {
+    const k = this.handles?.pick(c.raycaster) ?? null;
+    if (k !== null) this.handles?.select(k);
+  }
+
   private frame(): void {
-    const live = this.live;
-    const handles = this.handles;
-    if (!live || !handles) return;
+    const { live, handles, tolerances } = this;
+    if (!live || !handles || !tolerances) return;
     if (this.needsSolve || handles.dragging) {
       const settings: SolveSettings = {
-        ...this.tolerances,
+        tipTolerance: tolerances.tipTolerance,
+        gradientTolerance: tolerances.gradientTolerance,
         maxIterations: 50,
         timeBudgetMs: 3,
         restarts: 0,
@@ -225,11 +246,10 @@ export class IkWidget extends HTMLElement {
       try {
         const { outcome: out, ms, again } = solveFrame(live.session, this.method, settings);
         this.needsSolve = again;
-        this.statsEl.textContent = `${this.method} · ${out.iterations} it · E ${out.E.toExponential(1)} · ${ms.toFixed(2)} ms`;
-        this.statsEl.dataset.e = String(out.E);
+        showSolve(this.statsEl, this.method, out, ms);
       } catch (e) {
         this.needsSolve = false;
-        this.statsEl.textContent = `solver error: ${errorText(e)}`;
+        showNote(this.statsEl, `solver error: ${errorText(e)}`, 'failed');
       }
       this.needsRedraw = true;
     }
@@ -241,6 +261,9 @@ export class IkWidget extends HTMLElement {
   }
 
   private teardown(): void {
+    this.stopClicks?.();
+    this.stopClicks = null;
+    this.tolerances = null;
     if (this.live) {
       for (const o of this.live.objects) o.removeFromParent();
       this.live.dispose();

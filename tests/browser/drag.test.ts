@@ -1,0 +1,130 @@
+// Dragging as a user does, from the pose a user starts in (the rest pose, straight limbs), with
+// real mouse events on the page's gizmo: the README's knight drag ends on target; lifting the
+// character's foot straight up bends the leg and the foot follows within the tip tolerance at
+// every step while the hands and the head stay on theirs; a target dragged past a limb's reach
+// ends at the closest point and says so. Writes docs/foot-lift.png when UPDATE_SCREENSHOT=1.
+import { mkdirSync } from 'node:fs';
+import { join } from 'node:path';
+
+import type { Page } from 'playwright-core';
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+
+import { launchBrowser, openPage, repoRoot, startVite, type BrowserSession } from './harness.js';
+import { dragBy, effectorNamed, gotoRig, selectTarget, statText, targetScreen, waitForConvergence, waitForSettled } from './page_helpers.js';
+
+let server: { url: string; close: () => Promise<void> };
+let browser: BrowserSession;
+
+beforeAll(async () => {
+  server = await startVite();
+  browser = await launchBrowser();
+});
+
+afterAll(async () => {
+  await browser?.close();
+  await server?.close();
+});
+
+/** Distance of every effector's tip from its target (rig units), in effector order. */
+async function tipErrors(page: Page): Promise<number[]> {
+  return page.evaluate(() => {
+    const p = window.ikPage;
+    return (p?.effectors() ?? []).map((_, k) => p?.effectorError(k) ?? NaN);
+  });
+}
+
+async function tipTolerance(page: Page): Promise<number> {
+  return page.evaluate(() => window.ikPage?.tipTolerance() ?? 0);
+}
+
+describe('dragging from the rest pose', () => {
+  it("the README's knight drag: hand.L dragged by (30, -70) px ends on its target", async (ctx) => {
+    const { page, errors } = await openPage(browser, ctx);
+    await gotoRig(page, server.url, 'knight');
+    const hand = await selectTarget(page, await effectorNamed(page, /^hand\.L$/));
+    await dragBy(page, hand, 30, -70);
+    await waitForConvergence(page);
+    const tolerance = await tipTolerance(page);
+    for (const e of await tipErrors(page)) expect(e).toBeLessThan(tolerance);
+    expect(errors).toEqual([]);
+  });
+
+  it("lifting the character's foot by 30% of its height: the foot follows at every step, hands and head stay", async (ctx) => {
+    const { page, errors } = await openPage(browser, ctx);
+    await gotoRig(page, server.url, 'character');
+    const names = await page.evaluate(() => {
+      const p = window.ikPage;
+      return (p?.effectors() ?? []).map((b) => p?.boneNames()[b] ?? '');
+    });
+    const foot = names.findIndex((n) => /LeftFoot$/.test(n));
+    expect(foot, names.join(', ')).toBeGreaterThanOrEqual(0);
+    const pinned = names.map((n, k) => (/hand|head/i.test(n) ? k : -1)).filter((k) => k >= 0);
+    expect(pinned.length).toBeGreaterThanOrEqual(3);
+    await selectTarget(page, foot);
+    const tolerance = await tipTolerance(page);
+    const bounds = await page.evaluate(() => window.ikPage?.bounds() ?? null);
+    if (!bounds) throw new Error('no bounds');
+    const height = bounds.max[1] - bounds.min[1];
+    const start = await page.evaluate((k) => window.ikPage?.targetPosition(k) ?? null, foot);
+    if (!start) throw new Error('no target');
+
+    // Screen pixels for 30% of the height straight up from the foot (the view looks about level).
+    const from = await targetScreen(page, foot);
+    const pixelsPerUnit = await page.evaluate(() => window.ikPage?.pixelsPerUnit() ?? NaN);
+    const dy = -0.3 * height * pixelsPerUnit;
+    const steps = 20;
+    await page.mouse.move(from.x, from.y);
+    await page.mouse.down();
+    let worstFoot = 0, worstPinned = 0;
+    for (let i = 1; i <= steps; i++) {
+      await page.mouse.move(from.x, from.y + (dy * i) / steps);
+      // The per-frame solve brings the foot onto its moved target; waiting times out if it does not.
+      await page.waitForFunction(
+        ([k, tol]) => (window.ikPage?.effectorError(k) ?? Infinity) < tol,
+        [foot, tolerance] as const,
+        { timeout: 5_000 },
+      );
+      const e = await tipErrors(page);
+      worstFoot = Math.max(worstFoot, e[foot]);
+      for (const k of pinned) worstPinned = Math.max(worstPinned, e[k]);
+    }
+    await page.mouse.up();
+    await waitForConvergence(page);
+    const end = await page.evaluate((k) => window.ikPage?.targetPosition(k) ?? null, foot);
+    if (!end) throw new Error('no target');
+    expect(end[1] - start[1]).toBeGreaterThan(0.25 * height); // the target went up by about 30% of the height
+    expect(Math.hypot(end[0] - start[0], end[2] - start[2])).toBeLessThan(0.05 * height);
+    expect(worstFoot).toBeLessThan(tolerance);
+    expect(worstPinned).toBeLessThan(tolerance);
+    expect(await statText(page, 'status')).toBe('on target');
+
+    const shot = process.env.UPDATE_SCREENSHOT === '1' ? 'docs/foot-lift.png' : 'test-results/foot-lift.png';
+    mkdirSync(join(repoRoot, shot, '..'), { recursive: true });
+    await page.screenshot({ path: join(repoRoot, shot) });
+    expect(errors).toEqual([]);
+  });
+
+  it('a target dragged past the arm ends at the closest point, says so, and the pinned effectors stay', async (ctx) => {
+    const { page, errors } = await openPage(browser, ctx);
+    await gotoRig(page, server.url, 'knight');
+    const hand = await selectTarget(page, await effectorNamed(page, /^hand\.L$/));
+    const from = await targetScreen(page, hand);
+    const root = await page.evaluate(() => window.ikPage?.boneScreen(0) ?? null);
+    if (!root) throw new Error('no root');
+    // Straight away from the body, far past the arm's length.
+    const away = { x: from.x - root.x, y: from.y - root.y };
+    const len = Math.hypot(away.x, away.y);
+    await dragBy(page, hand, (away.x / len) * 400, (away.y / len) * 400, 20);
+    const reason = await waitForSettled(page);
+    expect(reason).toBe('converged_grad');
+    expect(await statText(page, 'status')).toBe('out of reach (closest point)');
+    expect(await page.getAttribute('[data-stat="status"]', 'data-reached')).toBe('false');
+    const tolerance = await tipTolerance(page);
+    const e = await tipErrors(page);
+    expect(e[hand]).toBeGreaterThan(10 * tolerance);
+    e.forEach((d, k) => {
+      if (k !== hand) expect(d, `effector ${k}`).toBeLessThan(tolerance);
+    });
+    expect(errors).toEqual([]);
+  });
+});

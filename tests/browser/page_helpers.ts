@@ -1,0 +1,87 @@
+// What the page's browser tests share: opening a rig, reading the stats, and dragging a target's
+// gizmo with real mouse events (screen positions come from window.ikPage, web/src/page/probe.ts).
+import type { Page } from 'playwright-core';
+import { expect } from 'vitest';
+
+import type { ScreenPoint } from '../../web/src/page/probe.js';
+
+/** Opens the page at `url` with `?rig=NAME` (and `query`) and waits until the rig is ready. */
+export async function gotoRig(page: Page, url: string, rig: string, query = ''): Promise<void> {
+  await page.goto(`${url}?rig=${rig}${query}`);
+  await page.waitForFunction(() => {
+    const s = document.getElementById('app')?.dataset.state;
+    return s === 'ready' || s === 'error';
+  });
+  expect(await page.getAttribute('#app', 'data-state'), (await page.textContent('#message')) ?? '').toBe('ready');
+}
+
+export async function stat(page: Page, key: string): Promise<string> {
+  return (await page.getAttribute(`[data-stat="${key}"]`, 'data-value')) ?? '';
+}
+
+export async function statText(page: Page, key: string): Promise<string> {
+  return (await page.textContent(`[data-stat="${key}"]`)) ?? '';
+}
+
+export async function targetScreen(page: Page, k: number): Promise<ScreenPoint> {
+  const p = await page.evaluate((i) => window.ikPage?.targetScreen(i) ?? null, k);
+  if (!p) throw new Error(`no target ${k}`);
+  return p;
+}
+
+/** Drags the gizmo of the selected target with the mouse by a fraction of the way towards the root joint. */
+export async function dragTowardsRoot(page: Page, k: number, fraction: number, steps = 12, pauseMs = 16): Promise<{ from: ScreenPoint; to: ScreenPoint }> {
+  const from = await targetScreen(page, k);
+  const root = await page.evaluate(() => window.ikPage?.boneScreen(0) ?? null);
+  if (!root) throw new Error('no root bone');
+  let dx = (root.x - from.x) * fraction, dy = (root.y - from.y) * fraction;
+  const len = Math.hypot(dx, dy);
+  if (len < 25) [dx, dy] = len > 0 ? [(dx / len) * 25, (dy / len) * 25] : [25, 0];
+  return dragBy(page, k, dx, dy, steps, pauseMs);
+}
+
+/** Drags the gizmo of the selected target k by (dx, dy) pixels with the mouse. */
+export async function dragBy(page: Page, k: number, dx: number, dy: number, steps = 12, pauseMs = 16): Promise<{ from: ScreenPoint; to: ScreenPoint }> {
+  const from = await targetScreen(page, k);
+  await page.mouse.move(from.x, from.y);
+  await page.mouse.down();
+  for (let i = 1; i <= steps; i++) {
+    await page.mouse.move(from.x + (dx * i) / steps, from.y + (dy * i) / steps);
+    if (pauseMs) await page.waitForTimeout(pauseMs);
+  }
+  await page.mouse.up();
+  return { from, to: { x: from.x + dx, y: from.y + dy } };
+}
+
+/** Puts the gizmo on target k by clicking it; returns k. */
+export async function selectTarget(page: Page, k: number): Promise<number> {
+  if ((await page.evaluate(() => window.ikPage?.selectedTarget())) === k) return k;
+  const p = await targetScreen(page, k);
+  await page.mouse.click(p.x, p.y);
+  await page.waitForFunction((i) => window.ikPage?.selectedTarget() === i, k);
+  return k;
+}
+
+/** The effector (index in effector order) on a bone whose name matches `pattern`, else 0. */
+export async function effectorNamed(page: Page, pattern: RegExp): Promise<number> {
+  const { effectors, names } = await page.evaluate(() => ({ effectors: window.ikPage?.effectors() ?? [], names: window.ikPage?.boneNames() ?? [] }));
+  const k = effectors.findIndex((b) => pattern.test(names[b]));
+  return k < 0 ? 0 : k;
+}
+
+/** Waits until the per-frame solve has stopped for a reason other than its budget; returns the stop reason. */
+export async function waitForSettled(page: Page): Promise<string> {
+  await page.waitForFunction(() => {
+    const r = document.querySelector<HTMLElement>('[data-stat="status"]')?.dataset.reason ?? '';
+    return ['converged_E', 'converged_grad', 'zero_step'].includes(r);
+  }, null, { timeout: 20_000 });
+  return (await page.getAttribute('[data-stat="status"]', 'data-reason')) ?? '';
+}
+
+/** Waits until the stats say "on target" (every effector within the tip tolerance). */
+export async function waitForConvergence(page: Page): Promise<void> {
+  await page.waitForFunction(() => document.querySelector<HTMLElement>('[data-stat="status"]')?.dataset.reached === 'true', null, {
+    timeout: 20_000,
+  });
+  expect(await statText(page, 'status')).toBe('on target');
+}

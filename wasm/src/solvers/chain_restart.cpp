@@ -1,0 +1,85 @@
+#include "chain_restart.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace ik {
+
+namespace {
+
+// Effectors count as off target from this share of the largest tip distance (as saddle_escape).
+constexpr double kOffTargetShare = 0.1;
+// Perturbation radii, degrees, used in turn.
+constexpr double kRadiiDeg[] = {15, 30, 60, 120};
+
+bool movable(const Kinematics& kin, int bone) {
+  for (int k = 0; k < 3; ++k)
+    if (kin.lower()[3 * bone + k] < kin.upper()[3 * bone + k]) return true;
+  return false;
+}
+
+Eigen::Vector3d rest_origin(const Rig& rig, int bone) { return rig.bones[bone].rest.block<3, 1>(0, 3); }
+
+}  // namespace
+
+void ChainRestart::resize(const Kinematics& kin) {
+  const int m = kin.num_effectors();
+  first_movable_.assign(m, -1);
+  reach_.assign(m, 0);
+  for (int e = 0; e < m; ++e) {
+    const int bone = kin.rig().effectors[e];
+    const std::vector<int>& chain = kin.chain(bone);  // root first
+    for (size_t i = 0; i < chain.size(); ++i) {
+      if (!movable(kin, chain[i])) continue;
+      first_movable_[e] = chain[i];
+      // Joint to joint down the chain, then the effector bone itself: rigid at any pose.
+      double length = kin.rig().bones[bone].length;
+      for (size_t j = i; j + 1 < chain.size(); ++j)
+        length += (rest_origin(kin.rig(), chain[j + 1]) - rest_origin(kin.rig(), chain[j])).norm();
+      reach_[e] = length;
+      break;
+    }
+  }
+  moved_.assign(kin.num_bones(), 0);
+  kept_.assign(kin.num_bones(), 0);
+  unit_.resize(kin.num_angles());
+}
+
+bool ChainRestart::beyond_reach(const Kinematics& kin, int e, const Eigen::Ref<const Eigen::VectorXd>& target) const {
+  const int top = first_movable_[e];
+  if (top < 0) return true;  // nothing on its chain moves
+  return (target.segment<3>(3 * e) - kin.joint_origin(top)).norm() >= reach_[e];
+}
+
+bool ChainRestart::propose(const Kinematics& kin, const Eigen::Ref<const Eigen::VectorXd>& best,
+                           const Eigen::Ref<const Eigen::VectorXd>& r, const Eigen::Ref<const Eigen::VectorXd>& target,
+                           const QuasiRandom& sequence, long index, Eigen::Ref<Eigen::VectorXd> start) {
+  double largest = 0;
+  for (int e = 0; e < kin.num_effectors(); ++e) largest = std::max(largest, r.segment<3>(3 * e).norm());
+  if (!(largest > 0)) return false;
+  std::fill(moved_.begin(), moved_.end(), 0);
+  std::fill(kept_.begin(), kept_.end(), 0);
+  bool any = false;
+  for (int e = 0; e < kin.num_effectors(); ++e) {
+    const bool off = r.segment<3>(3 * e).norm() >= kOffTargetShare * largest;
+    if (off && beyond_reach(kin, e, target)) continue;
+    for (int b : kin.chain(kin.rig().effectors[e])) (off ? moved_ : kept_)[b] = 1;
+    any = any || off;
+  }
+  if (!any) return false;
+  // Bones shared with an on-target chain stay, unless that leaves nothing to move.
+  bool exclusive = false;
+  for (int b = 0; b < kin.num_bones(); ++b) exclusive = exclusive || (moved_[b] && !kept_[b] && movable(kin, b));
+
+  sequence.point(index, unit_);
+  const double radius = kRadiiDeg[(index - 1) % (sizeof kRadiiDeg / sizeof kRadiiDeg[0])];
+  start = best;
+  for (int b = 0; b < kin.num_bones(); ++b) {
+    if (!moved_[b] || (exclusive && kept_[b])) continue;
+    for (int k = 3 * b; k < 3 * b + 3; ++k) start[k] += radius * (2 * unit_[k] - 1);
+  }
+  kin.project(start);
+  return true;
+}
+
+}  // namespace ik

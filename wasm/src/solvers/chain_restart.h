@@ -1,0 +1,46 @@
+// Restarting only the chains that are off target, for a solve that must not move the rest of the
+// pose (restarts = 0 while a user drags).
+//
+// A run can end at a true local minimum off target that no escape along negative curvature
+// leaves: a character's foot whose effector is the toe, with the ankle on its limit, cannot rise
+// further by any small move of hip, knee and ankle (bending the knee first lowers the toe), yet a
+// bent leg reaches the target. A chain restart starts a new run from the best point with only the
+// movable angles of the off-target effectors' chains moved, by up to 15, 30, 60 or 120 degrees in
+// turn (quasi-random, inside the limits), leaving the bones that also carry an effector on
+// target as they are. An effector whose target lies beyond everything its chain can reach (the
+// distance from the fixed joint of its first movable bone exceeds the sum of the rigid segments
+// below it) is left out: its closest point is not a local accident.
+#pragma once
+
+#include <Eigen/Core>
+#include <vector>
+
+#include "kinematics.h"
+#include "quasi_random.h"
+
+namespace ik {
+
+class ChainRestart {
+ public:
+  // Workspace and the per-effector reach for `kin` (allocates).
+  void resize(const Kinematics& kin);
+
+  // From the best point `best` (#angles, degrees; `kin` posed there) with residual `r`
+  // (tips - target, #residuals): writes a start to `start` with the off-target chains moved by
+  // point `index` (>= 1) of `sequence`. Returns false when no effector is off target within its
+  // reach (nothing worth restarting). No allocation.
+  bool propose(const Kinematics& kin, const Eigen::Ref<const Eigen::VectorXd>& best,
+               const Eigen::Ref<const Eigen::VectorXd>& r, const Eigen::Ref<const Eigen::VectorXd>& target,
+               const QuasiRandom& sequence, long index, Eigen::Ref<Eigen::VectorXd> start);
+
+ private:
+  // Is effector e's target farther from its chain's fixed joint than the chain can reach?
+  bool beyond_reach(const Kinematics& kin, int e, const Eigen::Ref<const Eigen::VectorXd>& target) const;
+
+  std::vector<int> first_movable_;  // per effector: the first bone of its chain with a movable angle, or -1
+  std::vector<double> reach_;       // per effector: the rigid segments' lengths from that bone's joint to the tip
+  std::vector<char> moved_, kept_;  // per bone: on an off-target chain / on an on-target chain
+  Eigen::VectorXd unit_;
+};
+
+}  // namespace ik
