@@ -70,6 +70,35 @@ Rig two_legs() {
   return rig;
 }
 
+// As two_legs, each leg ending in a foot bone of length 0.3 pointing forward (+x) from the ankle,
+// with a character's limits: the pelvis fixed, the hip swinging -30..110 degrees (positive: the
+// thigh forward), the knee bending backwards only (-150..0, no twist), the ankle turning the toe
+// up by at most 30 degrees and down by 50. The effectors are the toes (the feet's tips).
+Rig legs_with_feet() {
+  Rig rig = two_legs();
+  rig.bones[0].min_deg.setZero();
+  rig.bones[0].max_deg.setZero();
+  for (int leg = 0; leg < 2; ++leg) {
+    const double z = leg == 0 ? 0.1 : -0.1;
+    Bone& thigh = rig.bones[1 + 2 * leg];
+    thigh.min_deg = Eigen::Vector3d(-40, -30, -40);
+    thigh.max_deg = Eigen::Vector3d(40, 110, 40);
+    Bone& shin = rig.bones[2 + 2 * leg];
+    shin.min_deg = Eigen::Vector3d(0, -150, 0);
+    shin.max_deg = Eigen::Vector3d(0, 0, 0);
+    Bone foot;
+    foot.name = leg == 0 ? "foot.L" : "foot.R";
+    foot.parent = 2 + 2 * leg;
+    foot.rest = translation(0.2, -2, z);
+    foot.length = 0.3;
+    foot.min_deg = Eigen::Vector3d(-20, -50, -20);
+    foot.max_deg = Eigen::Vector3d(20, 30, 20);
+    rig.bones.push_back(foot);
+  }
+  rig.effectors = {5, 6};
+  return rig;
+}
+
 Eigen::VectorXd tips_at(Kinematics& kin, const Eigen::VectorXd& angles) {
   Eigen::VectorXd tips(kin.num_residuals());
   kin.tips(angles, tips);
@@ -151,6 +180,38 @@ TEST_P(StraightLimb, ATargetPastTheLimbsLengthEndsAtTheClosestPointAndSaysSo) {
   EXPECT_NEAR(s.tip_distance, target.norm() - 2, 1e-3);
   const Eigen::VectorXd tip = tips_at(kin, s.angles);
   EXPECT_NEAR(tip.normalized().dot(target.normalized()), 1, 1e-6);
+}
+
+// Lifting a toe straight up: the ankle turns the toe up until its limit, and from there no small
+// move raises the toe (bending the knee first lowers it): a local minimum, not a saddle. A
+// restart of that leg alone reaches the target; the other foot stays on its target.
+TEST_P(StraightLimb, AToeLiftedPastWhatTheAnkleAllowsIsReachedByRestartingThatLegOnly) {
+  Kinematics kin(legs_with_feet());
+  const Eigen::VectorXd rest = Eigen::VectorXd::Zero(kin.num_angles());
+  const Eigen::VectorXd start_tips = tips_at(kin, rest);
+  const double tolerance = 1e-4;
+  for (int chain_restarts : {0, 8}) {
+    SolverOptions o = drag_options(tolerance);
+    o.chain_restarts = chain_restarts;
+    o.max_iterations = 20000;
+    auto solver = make_solver(GetParam(), kin, o);
+    Eigen::VectorXd pose = rest, target = start_tips;
+    int missed = 0, chain_restarts_used = 0;
+    for (int step = 1; step <= 20; ++step) {  // 0.6 up, 30% of the legs' height
+      target[1] = start_tips[1] + 0.03 * step;
+      const SolverSummary& s = solver->solve(pose, target);
+      pose = s.angles;
+      missed += s.reached ? 0 : 1;
+      chain_restarts_used += s.chain_restarts;
+      EXPECT_LT((tips_at(kin, pose).segment<3>(3) - target.segment<3>(3)).norm(), tolerance) << "the pinned foot moved";
+    }
+    if (chain_restarts == 0) {
+      EXPECT_GT(missed, 0) << "the lift should need more than small moves";
+    } else {
+      EXPECT_EQ(missed, 0);
+      EXPECT_GT(chain_restarts_used, 0);
+    }
+  }
 }
 
 TEST_P(StraightLimb, TheEscapeAllocatesNothing) {

@@ -241,7 +241,10 @@ export class PageApp {
     this.rigKey = key;
     this.stage.scene.add(...live.objects);
     this.panel.showRig(key ?? FILE_KEY);
-    Object.assign(this.settings, live.tolerances());
+    // The rig's drag tolerances, shown to 3 significant digits in the panel.
+    const t = live.tolerances();
+    this.settings.tipTolerance = Number(t.tipTolerance.toPrecision(3));
+    this.settings.gradientTolerance = Number(t.gradientTolerance.toPrecision(3));
     this.panel.refresh();
     writeUrlState({ rig: key, method: this.settings.method });
 

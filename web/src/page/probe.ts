@@ -25,6 +25,8 @@ export interface PageProbe {
   boneNames(): string[];
   /** Bone lengths, in bone order (rig units). */
   boneLengths(): number[];
+  /** Where a world point is on screen (client pixels). */
+  worldToScreen(p: [number, number, number]): ScreenPoint;
   /** Where target k is on screen (client pixels), or null. */
   targetScreen(k: number): ScreenPoint | null;
   /** Where the middle of bone i is on screen, or null. */
@@ -66,6 +68,7 @@ export function makeProbe(app: PageApp): PageProbe {
     },
     boneNames: () => [...(app.current?.session.spec.names ?? [])],
     boneLengths: () => Array.from(app.current?.session.spec.lengths ?? []),
+    worldToScreen: (p) => app.toScreen(a.set(p[0], p[1], p[2])),
     targetScreen(k) {
       const live = app.current;
       if (!live || k < 0 || 3 * k >= live.session.targets.length) return null;
