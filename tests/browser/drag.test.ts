@@ -107,6 +107,12 @@ describe('dragging from the rest pose', () => {
     expect(worstPinned).toBeLessThan(tolerance);
     expect(await statText(page, 'status')).toBe('on target');
 
+    // Orbit to a side view (drag on empty ground) so that the picture shows the bent leg.
+    await page.mouse.move(800, 650);
+    await page.mouse.down();
+    await page.mouse.move(800 - 300, 650, { steps: 10 });
+    await page.mouse.up();
+    await page.waitForTimeout(200);
     const shot = process.env.UPDATE_SCREENSHOT === '1' ? 'docs/foot-lift.png' : 'test-results/foot-lift.png';
     mkdirSync(join(repoRoot, shot, '..'), { recursive: true });
     await page.screenshot({ path: join(repoRoot, shot) });
