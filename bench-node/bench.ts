@@ -2,24 +2,37 @@
 // method, engine) on them and summarise each into a row. Knows nothing of argv or output files.
 import type { IkCoreModule } from '../web/src/ik/module.js';
 import { IkRig } from '../web/src/ik/rig.js';
-import { defaultTolerances, rigSize } from '../web/src/rig/tolerances.js';
+import { defaultTolerances, dragTolerances, rigSize } from '../web/src/rig/tolerances.js';
+import { draggableEffectors } from './effectors.js';
 import { BenchError } from './errors.js';
 import { summarize, type Row } from './metrics.js';
 import { isPeer, type BenchOptions, type Method } from './options.js';
 import type { Progress } from './progress.js';
+import { REACH_PATH_STEPS, reachPaths } from './reach.js';
+import { markReachable, REFERENCE_METHOD } from './reachability.js';
 import { loadBenchRig, type BenchRig } from './rigs.js';
 import { checkNativeTool, runNative } from './run_native.js';
 import { runOnPool, WorkerPool } from './run_wasm.js';
 import type { RunSettings } from './runner.js';
-import { draggableEffectors, generateTargets, prefix, type Experiment, type TargetSet } from './targets.js';
+import { generateTargets, isDragging, prefix, project, type Experiment, type TargetSet } from './targets.js';
 
 export interface PreparedRig extends BenchRig {
+  /** Rig units (rigSize). */
   size: number;
+  /** The report's tolerances (random, incremental): gradient, and E (the success test). */
   gtol: number;
   ftol: number;
+  /** Drag and reach: the gradient tolerance, and the tip tolerance of the success test (0: E < ftol). */
+  drag: { gtol: number; tipTolerance: number };
+  /** Samples in the whole reach set. */
+  reachSteps: number;
 }
 
-/** Loads every rig and checks it in the WebAssembly core; fills in tolerances. */
+/**
+ * Loads every rig and checks it in the WebAssembly core; fills in tolerances. Drag and reach use
+ * the page's drag tolerances (dragTolerances); --gtol replaces their gradient tolerance, and
+ * --ftol their tip test by E < ftol.
+ */
 export async function prepareRigs(opts: BenchOptions, ik: IkCoreModule): Promise<PreparedRig[]> {
   const out: PreparedRig[] = [];
   for (const entry of opts.rigs) {
@@ -31,12 +44,23 @@ export async function prepareRigs(opts: BenchOptions, ik: IkCoreModule): Promise
       throw new BenchError(`rig ${entry}: ${(e as Error).message.split('\n')[0]}`);
     }
     const size = rigSize(core.boneTips(new Float64Array(core.numAngles)));
+    const reachSteps = reachPaths(rig.spec, core.tips(project(rig.spec, new Float64Array(core.numAngles)))).length * REACH_PATH_STEPS;
     core.dispose();
     if (rig.spec.effectors.length === 0) throw new BenchError(`rig ${entry}: no end effectors`);
     if (opts.experiments.includes('drag') && draggableEffectors(rig.spec).length === 0)
       throw new BenchError(`rig ${entry}: the drag experiment needs an end effector that can move while the others stay pinned`);
+    if (opts.experiments.includes('reach') && reachSteps === 0)
+      throw new BenchError(`rig ${entry}: the reach experiment needs an end effector that can move while the others stay pinned, its tip off its chain root`);
     const defaults = defaultTolerances(rig.name, rig.format === 'a7', size);
-    out.push({ ...rig, size, gtol: opts.gtol ?? defaults.gtol, ftol: opts.ftol ?? defaults.ftol });
+    const drag = dragTolerances(size);
+    out.push({
+      ...rig,
+      size,
+      gtol: opts.gtol ?? defaults.gtol,
+      ftol: opts.ftol ?? defaults.ftol,
+      drag: { gtol: opts.gtol ?? drag.gradientTolerance, tipTolerance: opts.ftol === undefined ? drag.tipTolerance : 0 },
+      reachSteps,
+    });
   }
   return out;
 }
@@ -46,11 +70,31 @@ export function enginesFor(method: Method, opts: BenchOptions): string[] {
   return isPeer(method) ? ['js'] : opts.engines;
 }
 
-/** Number of solves a run will do, for the progress bar. */
-export function totalSolves(opts: BenchOptions, rigs: number): number {
+/** Samples of `experiment` that `method` solves on `rig` (reach: at most its whole set). */
+function samplesOf(rig: PreparedRig, experiment: Experiment, method: Method, opts: BenchOptions): number {
+  return experiment === 'reach' ? Math.min(opts.samples[method], rig.reachSteps) : opts.samples[method];
+}
+
+/** Number of solves a run will do (reach's reference solves included), for the progress bar. */
+export function totalSolves(opts: BenchOptions, rigs: readonly PreparedRig[]): number {
   let n = 0;
-  for (const method of opts.methods) n += opts.samples[method] * enginesFor(method, opts).length;
-  return n * rigs * opts.experiments.length;
+  for (const rig of rigs)
+    for (const experiment of opts.experiments) {
+      const counts = opts.methods.map((m) => samplesOf(rig, experiment, m, opts));
+      opts.methods.forEach((m, i) => (n += counts[i] * enginesFor(m, opts).length));
+      if (experiment === 'reach') n += Math.max(...counts);
+    }
+  return n;
+}
+
+/**
+ * The settings of `method` on `rig` for `experiment`: the report's tolerances for random and
+ * incremental; for drag and reach a user's drag (the rig's drag tolerances, and no restarts: a
+ * restart jumps the whole pose).
+ */
+export function runSettings(rig: PreparedRig, experiment: Experiment, method: Method, opts: BenchOptions): RunSettings {
+  const common = { method, ftol: rig.ftol, timeoutSeconds: opts.timeoutSeconds, paper: opts.paper, rigSize: rig.size };
+  return isDragging(experiment) ? { ...common, ...rig.drag, restarts: 0 } : { ...common, gtol: rig.gtol, tipTolerance: 0 };
 }
 
 export interface RunContext {
@@ -75,33 +119,29 @@ export function targetSetsFor(rig: PreparedRig, opts: BenchOptions, ik: IkCoreMo
 /** Runs everything; rows in (rig, experiment, method, engine) order. */
 export async function runBench(rigs: readonly PreparedRig[], ctx: RunContext): Promise<Row[]> {
   const { opts, ik, progress } = ctx;
-  const needsPool = opts.methods.some((m) => isPeer(m) || opts.engines.includes('wasm'));
+  const needsPool = opts.experiments.includes('reach') || opts.methods.some((m) => isPeer(m) || opts.engines.includes('wasm'));
   if (opts.methods.some((m) => !isPeer(m)) && opts.engines.includes('native')) checkNativeTool();
   const pool = needsPool ? await WorkerPool.create(opts.workers) : undefined;
   const rows: Row[] = [];
   try {
     for (const rig of rigs) {
       const sets = targetSetsFor(rig, opts, ik);
+      const reach = sets.get('reach');
+      if (reach) {
+        progress.label(`${rig.name} reach: reachability (${REFERENCE_METHOD} with restarts, untimed)`);
+        await markReachable(pool!, rig.path, rig.spec, runSettings(rig, 'reach', REFERENCE_METHOD, opts), reach, (n) => progress.advance(n));
+      }
       for (const experiment of opts.experiments) {
         for (const method of opts.methods) {
           const set = prefix(sets.get(experiment)!, opts.samples[method]);
-          const settings: RunSettings = {
-            method,
-            gtol: rig.gtol,
-            ftol: rig.ftol,
-            timeoutSeconds: opts.timeoutSeconds,
-            paper: opts.paper,
-            rigSize: rig.size,
-            // Dragging never restarts (as on the page): a restart jumps the whole pose.
-            ...(experiment === 'drag' ? { restarts: 0 } : {}),
-          };
+          const settings = runSettings(rig, experiment, method, opts);
           for (const engine of enginesFor(method, opts)) {
             progress.label(`${rig.name} ${experiment} ${method} ${engine}`);
             const results =
               engine === 'native'
                 ? await runNative(rig.spec, settings, set, opts.workers, (n) => progress.advance(n))
                 : await runOnPool(pool!, rig.path, rig.spec, settings, set, (n) => progress.advance(n));
-            const row = summarize({ rig: rig.name, experiment, method, engine }, results, rig.ftol);
+            const row = summarize({ rig: rig.name, experiment, method, engine }, results, settings, set.reachable);
             rows.push(row);
             ctx.onRow?.(row);
           }

@@ -17,7 +17,9 @@ import { engineRatioTable, groupRows, renderTable, resultsTable, type Table } fr
 const notes = [
   'Columns as in the report: t_avg (s), iter_avg, E_avg, E_IQM (mean of the middle half of the sorted final E), ' +
     'max E; plus success (final E < ftol), median, 95th percentile and max time per solve, and the stop reasons. ' +
-    'Definitions, the drag experiment and the peers\' settings: bench-node/README.md.',
+    'Drag and reach: success means every tip within the tip tolerance of its target, over the reachable steps; ' +
+    'unreachable steps (reach) are counted apart; jump_max_deg is the largest change of one angle in one step. ' +
+    'Definitions, the drag and reach experiments and the peers\' settings: bench-node/README.md.',
   'Times are per solve in seconds, measured on a machine that may be shared: a solve that is descheduled for ' +
     'milliseconds moves t_avg and t_max far more than t_median, so compare speeds by the medians. Wobble is in rig units.',
 ];
@@ -34,7 +36,7 @@ async function main(argv: string[]): Promise<number> {
   const reference = opts.compare ? readReferenceCsv(opts.compare) : undefined;
   const ik = await loadIkNode();
   const rigs = await prepareRigs(opts, ik);
-  const progress = makeProgress(opts.progress, totalSolves(opts, rigs.length));
+  const progress = makeProgress(opts.progress, totalSolves(opts, rigs));
   let rows: Row[];
   try {
     rows = await runBench(rigs, { opts, ik, progress });
@@ -72,6 +74,8 @@ async function main(argv: string[]): Promise<number> {
       size: r.size,
       gtol: r.gtol,
       ftol: r.ftol,
+      dragGtol: r.drag.gtol,
+      tipTolerance: r.drag.tipTolerance,
     })),
   };
   if (opts.json) writeJson(opts.json, rows, info);

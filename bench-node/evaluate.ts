@@ -1,4 +1,5 @@
-// E and the drag experiment's wobble from end-effector positions, the same for every method.
+// E, tip distances, the on-target test, wobble and jumps from end-effector positions and angles,
+// the same for every method and engine.
 
 /** E = 1/2 |tips - target|^2 (tips and target: 3 per end effector). */
 export function errorOf(tips: ArrayLike<number>, target: ArrayLike<number>): number {
@@ -10,18 +11,47 @@ export function errorOf(tips: ArrayLike<number>, target: ArrayLike<number>): num
   return 0.5 * s;
 }
 
+/** The largest distance (rig units) of an end effector other than `skip` (-1: none) from its target. */
+function largestDistance(tips: ArrayLike<number>, target: ArrayLike<number>, skip: number): number {
+  let worst = 0;
+  for (let e = 0; e < target.length / 3; e++) {
+    if (e === skip) continue;
+    const dx = tips[3 * e] - target[3 * e], dy = tips[3 * e + 1] - target[3 * e + 1], dz = tips[3 * e + 2] - target[3 * e + 2];
+    worst = Math.max(worst, Math.hypot(dx, dy, dz));
+  }
+  return worst;
+}
+
+/** The largest distance (rig units) of any end effector's tip from its target. */
+export function tipDistance(tips: ArrayLike<number>, target: ArrayLike<number>): number {
+  return largestDistance(tips, target, -1);
+}
+
 /**
  * The largest distance of a pinned end effector (every effector but `dragged`) from its target.
  * NaN when nothing is pinned (no drag, or a single end effector).
  */
 export function pinnedDeviation(tips: ArrayLike<number>, target: ArrayLike<number>, dragged: number): number {
-  const n = target.length / 3;
-  if (dragged < 0 || n < 2) return NaN;
+  if (dragged < 0 || target.length < 6) return NaN;
+  return largestDistance(tips, target, dragged);
+}
+
+/** What "on target" means in a run. */
+export interface OnTargetTest {
+  /** E threshold, rig units^2: the test when tipTolerance is 0. */
+  ftol: number;
+  /** Rig units; > 0: every tip within this distance of its target (the solvers' tipTolerance). */
+  tipTolerance: number;
+}
+
+/** Whether a pose with error E and largest tip distance `tip` (rig units) is on target. */
+export function isOnTarget(test: OnTargetTest, E: number, tip: number): boolean {
+  return test.tipTolerance > 0 ? tip < test.tipTolerance : E < test.ftol;
+}
+
+/** The largest single-angle change from `from` to `to` (degrees, same lengths): a step's jump. */
+export function largestChange(from: ArrayLike<number>, to: ArrayLike<number>): number {
   let worst = 0;
-  for (let e = 0; e < n; e++) {
-    if (e === dragged) continue;
-    const dx = tips[3 * e] - target[3 * e], dy = tips[3 * e + 1] - target[3 * e + 1], dz = tips[3 * e + 2] - target[3 * e + 2];
-    worst = Math.max(worst, Math.hypot(dx, dy, dz));
-  }
+  for (let i = 0; i < from.length; i++) worst = Math.max(worst, Math.abs(to[i] - from[i]));
   return worst;
 }

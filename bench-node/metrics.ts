@@ -10,10 +10,16 @@
 //                   interval and the weighted sum is divided by n/2. For n divisible by 4 this is
 //                   the plain mean of x_(n/4) .. x_(3n/4 - 1); otherwise the two boundary values
 //                   enter with a fractional weight (n = 5: 0.75 x_(1) + x_(2) + 0.75 x_(3), over 2.5).
-//   success rate    fraction of solves whose final E < ftol
-//   wobble (drag)   per step, the largest distance (rig units) of a pinned end effector from its
-//                   target; "during" is the largest over the solve's iterates, "after" at its end.
-import type { Experiment } from './targets.js';
+//   success rate    fraction of the reachable samples whose final pose is on target: E < ftol, or
+//                   with a tip tolerance (drag, reach) every tip within it of its target
+//   unreachable     samples whose targets the reference solve could not reach (reachability.ts);
+//                   left out of the success rate
+//   wobble (drag,   per step, the largest distance (rig units) of a pinned end effector from its
+//   reach)          target; "during" is the largest over the solve's iterates, "after" at its end.
+//   jump (drag,     per step, the largest single-angle change (degrees) from the step's start pose
+//   reach)          to its solution; jump_max_deg is the largest over the row's steps.
+import { isOnTarget, type OnTargetTest } from './evaluate.js';
+import { isDragging, type Experiment } from './targets.js';
 
 export function mean(values: ArrayLike<number>): number {
   if (values.length === 0) return NaN;
@@ -66,15 +72,19 @@ export function interquartileMean(values: ArrayLike<number>): number {
   return sum / (n / 2);
 }
 
-/** What one solve produced. Times in seconds, E in rig units^2, wobble in rig units. */
+/** What one solve produced. Times in seconds, E in rig units^2, distances in rig units, angles in degrees. */
 export interface SolveResult {
   E: number;
+  /** The largest distance of an end effector's tip from its target at the final pose. */
+  tipDistance: number;
   iterations: number;
   seconds: number;
   stopReason: string;
-  /** drag only: pinned effectors' largest distance from their targets over the iterates / at the end. */
+  /** drag, reach: pinned effectors' largest distance from their targets over the iterates / at the end. */
   wobbleDuring: number;
   wobbleAfter: number;
+  /** The largest single-angle change from the start pose to the final pose. */
+  jumpDeg: number;
 }
 
 /** One row of the tables and of --json. */
@@ -93,7 +103,10 @@ export interface Row {
   E_avg: number;
   E_iqm: number;
   E_max: number;
+  /** Over the reachable samples. */
   success_rate: number;
+  /** Samples judged unreachable (reach; 0 elsewhere: reachable by construction). */
+  unreachable: number;
   /** Count per stop reason, e.g. {"converged_E": 180, "timeout": 20}. */
   stop_reasons: Record<string, number>;
   /** drag only (null otherwise, and when the rig has a single end effector). */
@@ -101,6 +114,8 @@ export interface Row {
   wobble_during_max: number | null;
   wobble_after_avg: number | null;
   wobble_after_max: number | null;
+  /** drag and reach only (null otherwise): the largest single-angle change in one step, degrees. */
+  jump_max_deg: number | null;
 }
 
 export interface RowKey {
@@ -110,15 +125,20 @@ export interface RowKey {
   engine: string;
 }
 
-/** Summarises per-solve results into a table row; success means final E < ftol. */
-export function summarize(key: RowKey, results: readonly SolveResult[], ftol: number): Row {
+/**
+ * Summarises per-solve results into a table row. `test`: what counts as on target (success);
+ * `reachable`: 1 per result whose targets are reachable (the others are left out of success).
+ */
+export function summarize(key: RowKey, results: readonly SolveResult[], test: OnTargetTest, reachable: ArrayLike<number>): Row {
   const E = results.map((r) => r.E);
   const t = results.map((r) => r.seconds);
   const stop: Record<string, number> = {};
   for (const r of results) stop[r.stopReason] = (stop[r.stopReason] ?? 0) + 1;
   const during = results.map((r) => r.wobbleDuring).filter((w) => Number.isFinite(w));
   const after = results.map((r) => r.wobbleAfter).filter((w) => Number.isFinite(w));
+  const jumps = results.map((r) => r.jumpDeg).filter((j) => Number.isFinite(j));
   const orNull = (v: number): number | null => (Number.isFinite(v) ? v : null);
+  const judged = results.filter((_, k) => reachable[k] === 1);
   return {
     ...key,
     samples: results.length,
@@ -131,11 +151,13 @@ export function summarize(key: RowKey, results: readonly SolveResult[], ftol: nu
     E_avg: mean(E),
     E_iqm: interquartileMean(E),
     E_max: maxOf(E),
-    success_rate: results.length ? results.filter((r) => r.E < ftol).length / results.length : NaN,
+    success_rate: judged.length ? judged.filter((r) => isOnTarget(test, r.E, r.tipDistance)).length / judged.length : NaN,
+    unreachable: results.length - judged.length,
     stop_reasons: stop,
     wobble_during_avg: orNull(mean(during)),
     wobble_during_max: orNull(maxOf(during)),
     wobble_after_avg: orNull(mean(after)),
     wobble_after_max: orNull(maxOf(after)),
+    jump_max_deg: isDragging(key.experiment) ? orNull(maxOf(jumps)) : null,
   };
 }

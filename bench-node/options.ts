@@ -95,7 +95,7 @@ function program(): Command {
     .option('--samples <n>', 'samples per experiment; per-method overrides like 1000,gd=100', '1000')
     .option('--seed <s>', 'seed of the target sets', '1')
     .option('--gtol <x>', 'gradient tolerance (default: per rig, see README)')
-    .option('--ftol <y>', 'E tolerance, also the success threshold (default: per rig)')
+    .option('--ftol <y>', 'E tolerance, also the success threshold (default: per rig; drag and reach: a tip distance, see README)')
     .option('--timeout <seconds>', 'time budget per solve', '1')
     .option('--paper', "the report's original algorithms (solver paper mode)", false)
     .option('--engine <list>', 'wasm, native, or both (prints the ratio)', 'wasm')

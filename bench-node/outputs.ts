@@ -18,8 +18,18 @@ export interface RunInfo {
   seed: number;
   timeoutSeconds: number;
   paper: boolean;
-  /** Per rig: size and the tolerances used. */
-  rigs: Array<{ rig: string; path: string; bones: number; effectors: number; size: number; gtol: number; ftol: number }>;
+  /** Per rig: size and the tolerances used (dragGtol, tipTolerance: drag and reach's; tipTolerance 0: E < ftol). */
+  rigs: Array<{
+    rig: string;
+    path: string;
+    bones: number;
+    effectors: number;
+    size: number;
+    gtol: number;
+    ftol: number;
+    dragGtol: number;
+    tipTolerance: number;
+  }>;
 }
 
 function write(file: string, text: string): void {
@@ -36,8 +46,8 @@ export function writeJson(file: string, rows: readonly Row[], info: RunInfo): vo
 
 const csvColumns = [
   'rig', 'experiment', 'method', 'engine', 'samples', 't_avg_s', 't_median_s', 't_p95_s', 't_max_s',
-  'iter_avg', 'E_avg', 'E_iqm', 'E_max', 'success_rate',
-  'wobble_during_avg', 'wobble_during_max', 'wobble_after_avg', 'wobble_after_max', 'stop_reasons',
+  'iter_avg', 'E_avg', 'E_iqm', 'E_max', 'success_rate', 'unreachable',
+  'wobble_during_avg', 'wobble_during_max', 'wobble_after_avg', 'wobble_after_max', 'jump_max_deg', 'stop_reasons',
 ] as const;
 
 export function csvText(rows: readonly Row[]): string {
@@ -55,7 +65,9 @@ export function writeCsv(file: string, rows: readonly Row[]): void {
 
 export function markdownText(tables: readonly Table[], info: RunInfo, notes: readonly string[]): string {
   const rigLines = info.rigs.map(
-    (r) => `| ${r.rig} | ${r.bones} | ${r.effectors} | ${r.size.toPrecision(4)} | ${r.gtol} | ${r.ftol} |`,
+    (r) =>
+      `| ${r.rig} | ${r.bones} | ${r.effectors} | ${r.size.toPrecision(4)} | ${r.gtol} | ${r.ftol} | ` +
+      `${r.dragGtol.toPrecision(3)} | ${r.tipTolerance ? r.tipTolerance.toPrecision(3) : '- (E < ftol)'} |`,
   );
   return [
     '# Benchmark results',
@@ -65,8 +77,8 @@ export function markdownText(tables: readonly Table[], info: RunInfo, notes: rea
     `Machine: ${info.cpu}, ${info.cores} cores; Node ${info.node}; ${info.workers} workers. Seed ${info.seed}, ` +
       `time budget ${info.timeoutSeconds} s per solve${info.paper ? ', paper mode (the original algorithms)' : ''}.`,
     '',
-    '| rig | bones | end effectors | size | gtol | ftol |',
-    '| --- | ---: | ---: | ---: | ---: | ---: |',
+    '| rig | bones | end effectors | size | gtol | ftol | drag gtol | drag tip tolerance |',
+    '| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: |',
     ...rigLines,
     '',
     ...notes.flatMap((n) => [n, '']),

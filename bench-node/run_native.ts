@@ -51,7 +51,16 @@ export function decodeResults(text: string, expected: number, file: string): Sol
   return lines.map((line) => {
     const f = line.split('\t');
     const num = (i: number): number => (f[i] === 'nan' || f[i] === '-nan' ? NaN : Number(f[i]));
-    return { E: num(0), iterations: num(2), seconds: num(5), stopReason: f[6], wobbleDuring: num(7), wobbleAfter: num(8) };
+    return {
+      E: num(0),
+      tipDistance: num(9),
+      iterations: num(2),
+      seconds: num(5),
+      stopReason: f[6],
+      wobbleDuring: num(7),
+      wobbleAfter: num(8),
+      jumpDeg: num(10),
+    };
   });
 }
 
@@ -96,7 +105,8 @@ export async function runNative(
         const input = join(dir, `job${b}.bin`), output = join(dir, `results${b}.tsv`);
         writeFileSync(input, encodeJob(set, begin, end));
         const args = ['--rig', rigFile, '--method', settings.method, '--input', input, '--output', output,
-          '--gtol', String(settings.gtol), '--ftol', String(settings.ftol), '--timeout', String(settings.timeoutSeconds)];
+          '--gtol', String(settings.gtol), '--ftol', String(settings.ftol), '--tip-tol', String(settings.tipTolerance),
+          '--timeout', String(settings.timeoutSeconds)];
         if (settings.paper) args.push('--paper');
         if (settings.restarts !== undefined) args.push('--restarts', String(settings.restarts));
         await runProcess(args);

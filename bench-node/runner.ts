@@ -1,29 +1,32 @@
 // What every method looks like to a worker: solve one target from a start (or from where the
 // previous solve ended), time it, and report the result. Implemented for our solvers
 // (solve_wasm.ts) and for the peers (peers/).
+import type { OnTargetTest } from './evaluate.js';
 import type { SolveResult } from './metrics.js';
 
 export interface SolveInput {
-  /** Start angles (#angles, degrees), or null to continue from the previous solve's pose (drag). */
+  /** Start angles (#angles, degrees), or null to continue from the previous solve's pose (drag, reach). */
   start: Float64Array | null;
   /** Targets x_b (3 per end effector, rig units). */
   target: Float64Array;
-  /** Drag: the dragged effector (index into the rig's effectors); the others are pinned. -1: none. */
+  /** Drag, reach: the dragged effector (index into the rig's effectors); the others are pinned. -1: none. */
   dragged: number;
 }
 
-/** Settings shared by every method of a run, for one rig. */
-export interface RunSettings {
+/**
+ * Settings of one method on one rig and experiment. The on-target test (ftol, tipTolerance) is
+ * both the solvers' stopping test and the success test; the peers stop on it too.
+ */
+export interface RunSettings extends OnTargetTest {
   method: string;
   gtol: number;
-  ftol: number;
   timeoutSeconds: number;
   paper: boolean;
   /** Rig size (rig units; see rigs.ts), for peers whose settings are lengths. */
   rigSize: number;
   /**
    * Restarts from quasi-random points after a stall (lm): undefined keeps the solver's default;
-   * the drag experiment sets 0, as the page does while dragging (a restart jumps the whole pose).
+   * drag and reach set 0, as the page does while dragging (a restart jumps the whole pose).
    */
   restarts?: number;
 }

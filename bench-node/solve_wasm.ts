@@ -4,7 +4,7 @@ import type { IkCoreModule } from '../web/src/ik/module.js';
 import { IkRig } from '../web/src/ik/rig.js';
 import type { RigSpec } from '../web/src/ik/rig_spec.js';
 import { IkSolver, type SolverOptions } from '../web/src/ik/solver.js';
-import { pinnedDeviation } from './evaluate.js';
+import { largestChange, pinnedDeviation, tipDistance } from './evaluate.js';
 import type { SolveResult } from './metrics.js';
 import type { Runner, RunSettings, SolveInput } from './runner.js';
 import { project } from './targets.js';
@@ -16,7 +16,7 @@ export class WasmSolverRunner implements Runner {
   private readonly solver: IkSolver;
   private readonly options: SolverOptions;
   private replayer: IkSolver | undefined;
-  /** Where the previous solve ended: the start of a chained (drag) solve. */
+  /** Where the previous solve ended: the start of a chained (drag, reach) solve. */
   private current: Float64Array;
   private readonly buffers: [Float64Array, Float64Array];
 
@@ -26,6 +26,7 @@ export class WasmSolverRunner implements Runner {
     this.options = {
       gradientTolerance: settings.gtol,
       errorTolerance: settings.ftol,
+      tipTolerance: settings.tipTolerance,
       timeBudgetSeconds: settings.timeoutSeconds,
       paperMode: settings.paper,
       ...(settings.restarts === undefined ? {} : { restarts: settings.restarts }),
@@ -45,13 +46,24 @@ export class WasmSolverRunner implements Runner {
       result = this.solver.solve(start, input.target, start === this.buffers[0] ? this.buffers[1] : this.buffers[0]);
     } catch {
       // The API throws for invalid input instead of returning invalid_input.
-      return { E: NaN, iterations: 0, seconds: (performance.now() - t0) / 1000, stopReason: 'invalid_input', wobbleDuring: NaN, wobbleAfter: NaN };
+      const seconds = (performance.now() - t0) / 1000;
+      return { E: NaN, tipDistance: NaN, iterations: 0, seconds, stopReason: 'invalid_input', wobbleDuring: NaN, wobbleAfter: NaN, jumpDeg: NaN };
     }
     const seconds = (performance.now() - t0) / 1000;
     this.current = result.angles;
-    const after = pinnedDeviation(this.observer.tips(result.angles), input.target, input.dragged);
+    const tips = this.observer.tips(result.angles);
+    const after = pinnedDeviation(tips, input.target, input.dragged);
     const during = Number.isNaN(after) ? NaN : this.replayWobble(start, input, result.iterations, after);
-    return { E: result.E, iterations: result.iterations, seconds, stopReason: result.stopReason, wobbleDuring: during, wobbleAfter: after };
+    return {
+      E: result.E,
+      tipDistance: tipDistance(tips, input.target),
+      iterations: result.iterations,
+      seconds,
+      stopReason: result.stopReason,
+      wobbleDuring: during,
+      wobbleAfter: after,
+      jumpDeg: largestChange(start, result.angles),
+    };
   }
 
   /**

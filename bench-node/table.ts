@@ -1,5 +1,6 @@
 // Tables: the report's columns per rig and experiment, in plain text (aligned) or Markdown.
 import type { Row } from './metrics.js';
+import { isDragging } from './targets.js';
 
 export type TableFormat = 'text' | 'markdown';
 
@@ -39,12 +40,15 @@ export function formatStopReasons(counts: Record<string, number>): string {
     .join(', ');
 }
 
-/** The results table of one rig and experiment. */
+/**
+ * The results table of one rig and experiment. Drag and reach add the unreachable steps (left out
+ * of success), the wobble and the largest jump.
+ */
 export function resultsTable(rows: readonly Row[]): Table {
   const first = rows[0];
-  const drag = first.experiment === 'drag';
+  const drag = isDragging(first.experiment);
   const headers = ['method', 'engine', 'samples', 't_avg', 'iter_avg', 'E_avg', 'E_IQM', 'max E', 'success', 't_median', 't_p95', 't_max'];
-  if (drag) headers.push('wobble_during avg', 'wobble_during max', 'wobble_after avg', 'wobble_after max');
+  if (drag) headers.push('unreachable', 'wobble_during avg', 'wobble_during max', 'wobble_after avg', 'wobble_after max', 'jump_max_deg');
   headers.push('stop reasons');
   const numeric = headers.map((h) => !['method', 'engine', 'stop reasons'].includes(h));
   return {
@@ -68,10 +72,12 @@ export function resultsTable(rows: readonly Row[]): Table {
       ];
       if (drag)
         cells.push(
+          String(r.unreachable),
           formatNumber(r.wobble_during_avg),
           formatNumber(r.wobble_during_max),
           formatNumber(r.wobble_after_avg),
           formatNumber(r.wobble_after_max),
+          formatNumber(r.jump_max_deg),
         );
       cells.push(formatStopReasons(r.stop_reasons));
       return cells;

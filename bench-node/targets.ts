@@ -1,6 +1,6 @@
-// The target sets of PROTOCOL.md, plus the drag experiment. Generated once per (rig, experiment)
-// in the main thread from a seeded stream, before any solve, so every method, engine and worker
-// count sees identical starts and targets; a method asked for fewer samples takes a prefix.
+// The target sets of PROTOCOL.md, plus the drag and reach experiments. Generated once per (rig,
+// experiment) in the main thread from a seeded stream, before any solve, so every method, engine
+// and worker count sees identical starts and targets; a method asked for fewer samples takes a prefix.
 //
 //   random:      A_k = P(360 * U(-1,1)^(3m)); each solve starts from P(0) (the rest pose).
 //   incremental: A_0 = P(0), A_k = P(A_(k-1) + 5 * U(-1,1)^(3m)); solve k starts from A_(k-1).
@@ -9,12 +9,26 @@
 //                other angle stays at the base, so the other effectors are pinned by construction.
 //                The first step of a path starts from the base pose; the others start from the
 //                previous step's solution (`chained`), as when a user drags an effector.
-// Every target is x_b = x(A_k): reachable by construction. Angles are degrees, P clamps to limits.
+//   reach:       straight paths of one effector's target from its rest tip, the others pinned at
+//                theirs, from P(0), chained (reach.ts). Not seeded: the set is the same for every seed.
+// The targets of random, incremental and drag are x_b = x(A_k): reachable by construction. Reach
+// targets are points, reachable or not: `reachable` says which (reachability.ts fills it in).
+// Angles are degrees, P clamps to limits.
 import type { RigSpec } from '../web/src/ik/rig_spec.js';
+import { draggableEffectors, exclusiveAngles } from './effectors.js';
 import { signedUnit, streamFor } from './prng.js';
+import { fillReach, REACH_PATH_STEPS, reachPaths } from './reach.js';
 
-export type Experiment = 'random' | 'incremental' | 'drag';
-export const experiments: readonly Experiment[] = ['random', 'incremental', 'drag'];
+export type Experiment = 'random' | 'incremental' | 'drag' | 'reach';
+export const experiments: readonly Experiment[] = ['random', 'incremental', 'drag', 'reach'];
+
+/**
+ * Drag and reach: paths a user drags an effector along. Solved as the page solves while dragging
+ * (the drag tolerances, no restarts), judged by the tip test, with wobble and jump columns.
+ */
+export function isDragging(experiment: Experiment): boolean {
+  return experiment === 'drag' || experiment === 'reach';
+}
 
 /** Steps per drag path. */
 export const DRAG_PATH_STEPS = 40;
@@ -32,18 +46,20 @@ export interface TargetSet {
   count: number;
   numAngles: number;
   numResiduals: number;
-  /** count x numAngles: start angles of each solve (for chained drag steps: the ideal previous pose). */
+  /** count x numAngles: start angles of each solve (chained steps: drag's ideal previous pose, reach's rest pose). */
   starts: Float64Array;
-  /** count x numAngles: the angles A_k the target was made from. */
-  targetAngles: Float64Array;
-  /** count x numResiduals: x_b = x(A_k). */
+  /** count x numAngles: the angles A_k the target was made from; null for reach (its targets are points). */
+  targetAngles: Float64Array | null;
+  /** count x numResiduals: x_b = x(A_k) (reach: the path's points). */
   targets: Float64Array;
-  /** 1 where the solve starts from the previous solve's result instead of `starts` (drag). */
+  /** 1 where the solve starts from the previous solve's result instead of `starts` (drag, reach). */
   chained: Uint8Array;
-  /** drag: the dragged effector (index into spec.effectors) per sample; -1 otherwise. */
+  /** drag, reach: the dragged effector (index into spec.effectors) per sample; -1 otherwise. */
   dragged: Int32Array;
-  /** drag: path index per sample; for other experiments each sample is its own group. */
+  /** drag, reach: path index per sample; for other experiments each sample is its own group. */
   group: Int32Array;
+  /** 1 where the sample's targets can be reached together (all but reach: by construction). */
+  reachable: Uint8Array;
 }
 
 /** A view of samples [0, count) of a set (a prefix: what a method with fewer samples gets). */
@@ -54,11 +70,12 @@ export function prefix(set: TargetSet, count: number): TargetSet {
     ...set,
     count: n,
     starts: set.starts.subarray(0, n * m),
-    targetAngles: set.targetAngles.subarray(0, n * m),
+    targetAngles: set.targetAngles?.subarray(0, n * m) ?? null,
     targets: set.targets.subarray(0, n * r),
     chained: set.chained.subarray(0, n),
     dragged: set.dragged.subarray(0, n),
     group: set.group.subarray(0, n),
+    reachable: set.reachable.subarray(0, n),
   };
 }
 
@@ -68,7 +85,10 @@ export function project(spec: RigSpec, a: Float64Array): Float64Array {
   return a;
 }
 
-/** Generates `count` samples of `experiment` for a run seeded with `seed`. */
+/**
+ * Generates `count` samples of `experiment` for a run seeded with `seed`; reach has at most
+ * reachPaths(...).length * REACH_PATH_STEPS samples (its whole set), so it may return fewer.
+ */
 export function generateTargets(
   spec: RigSpec,
   experiment: Experiment,
@@ -78,42 +98,51 @@ export function generateTargets(
 ): TargetSet {
   const m = spec.lower.length;
   const r = 3 * spec.effectors.length;
+  const rest = project(spec, new Float64Array(m));
+  const restTips = tips(rest);
+  const paths = experiment === 'reach' ? reachPaths(spec, restTips) : [];
+  const n = experiment === 'reach' ? Math.min(count, paths.length * REACH_PATH_STEPS) : count;
   const set: TargetSet = {
     experiment,
-    count,
+    count: n,
     numAngles: m,
     numResiduals: r,
-    starts: new Float64Array(count * m),
-    targetAngles: new Float64Array(count * m),
-    targets: new Float64Array(count * r),
-    chained: new Uint8Array(count),
-    dragged: new Int32Array(count).fill(-1),
-    group: Int32Array.from({ length: count }, (_, k) => k),
+    starts: new Float64Array(n * m),
+    targetAngles: null,
+    targets: new Float64Array(n * r),
+    chained: new Uint8Array(n),
+    dragged: new Int32Array(n).fill(-1),
+    group: Int32Array.from({ length: n }, (_, k) => k),
+    reachable: new Uint8Array(n).fill(1),
   };
+  if (experiment === 'reach') {
+    fillReach(set, paths, rest, restTips);
+    return set;
+  }
+  const targetAngles = (set.targetAngles = new Float64Array(n * m));
   const rand = streamFor(seed, experiment);
-  if (experiment === 'random') fillRandom(spec, set, rand);
-  else if (experiment === 'incremental') fillIncremental(spec, set, rand);
-  else fillDrag(spec, set, rand);
-  for (let k = 0; k < count; k++) set.targets.set(tips(set.targetAngles.subarray(k * m, (k + 1) * m)), k * r);
+  if (experiment === 'random') fillRandom(spec, set, targetAngles, rest, rand);
+  else if (experiment === 'incremental') fillIncremental(spec, set, targetAngles, rest, rand);
+  else fillDrag(spec, set, targetAngles, rand);
+  for (let k = 0; k < n; k++) set.targets.set(tips(targetAngles.subarray(k * m, (k + 1) * m)), k * r);
   return set;
 }
 
-function fillRandom(spec: RigSpec, set: TargetSet, rand: () => number): void {
+function fillRandom(spec: RigSpec, set: TargetSet, angles: Float64Array, rest: Float64Array, rand: () => number): void {
   const m = set.numAngles;
-  const rest = project(spec, new Float64Array(m));
   for (let k = 0; k < set.count; k++) {
-    const a = set.targetAngles.subarray(k * m, (k + 1) * m);
+    const a = angles.subarray(k * m, (k + 1) * m);
     for (let i = 0; i < m; i++) a[i] = 360 * signedUnit(rand);
     project(spec, a);
     set.starts.set(rest, k * m);
   }
 }
 
-function fillIncremental(spec: RigSpec, set: TargetSet, rand: () => number): void {
+function fillIncremental(spec: RigSpec, set: TargetSet, angles: Float64Array, rest: Float64Array, rand: () => number): void {
   const m = set.numAngles;
-  let previous = project(spec, new Float64Array(m));
+  let previous = rest;
   for (let k = 0; k < set.count; k++) {
-    const a = set.targetAngles.subarray(k * m, (k + 1) * m);
+    const a = angles.subarray(k * m, (k + 1) * m);
     for (let i = 0; i < m; i++) a[i] = previous[i] + INCREMENTAL_STEP_DEG * signedUnit(rand);
     project(spec, a);
     set.starts.set(previous, k * m);
@@ -121,37 +150,7 @@ function fillIncremental(spec: RigSpec, set: TargetSet, rand: () => number): voi
   }
 }
 
-/** Bones from a root down to `bone`, inclusive. */
-function chainOf(spec: RigSpec, bone: number): number[] {
-  const chain: number[] = [];
-  for (let b = bone; b !== -1; b = spec.parents[b]) chain.push(b);
-  return chain;
-}
-
-/**
- * Per end effector (index into spec.effectors), the movable angles that move it and no other
- * effector: angles of bones on its chain that are on no other effector's chain, and not fixed.
- */
-export function exclusiveAngles(spec: RigSpec): number[][] {
-  const chains = Array.from(spec.effectors, (b) => new Set(chainOf(spec, b)));
-  return chains.map((chain, e) => {
-    const angles: number[] = [];
-    for (const bone of [...chain].sort((x, y) => x - y)) {
-      if (chains.some((other, f) => f !== e && other.has(bone))) continue;
-      for (let k = 3 * bone; k < 3 * bone + 3; k++) if (spec.lower[k] < spec.upper[k]) angles.push(k);
-    }
-    return angles;
-  });
-}
-
-/** Effectors a drag path can move with the others pinned (non-empty exclusive angle sets). */
-export function draggableEffectors(spec: RigSpec): number[] {
-  return exclusiveAngles(spec)
-    .map((angles, e) => (angles.length > 0 ? e : -1))
-    .filter((e) => e >= 0);
-}
-
-function fillDrag(spec: RigSpec, set: TargetSet, rand: () => number): void {
+function fillDrag(spec: RigSpec, set: TargetSet, angles: Float64Array, rand: () => number): void {
   const m = set.numAngles;
   const exclusive = exclusiveAngles(spec);
   const draggable = draggableEffectors(spec);
@@ -174,19 +173,19 @@ function fillDrag(spec: RigSpec, set: TargetSet, rand: () => number): void {
         pose[i] = base[i] + amplitude[j] * (Math.sin((2 * Math.PI * t) / DRAG_PATH_STEPS + phase[j]) - Math.sin(phase[j]));
       });
       project(spec, pose);
-      set.targetAngles.set(pose, k * m);
+      angles.set(pose, k * m);
       set.starts.set(previous, k * m);
       set.chained[k] = t > 1 ? 1 : 0;
       set.dragged[k] = effector;
       set.group[k] = path;
-      previous = set.targetAngles.subarray(k * m, (k + 1) * m);
+      previous = angles.subarray(k * m, (k + 1) * m);
     }
   }
 }
 
 /**
  * Ranges [begin, end) of samples that can be solved independently: single samples, or whole
- * drag paths. Workers take whole ranges, so results never depend on the partition.
+ * drag and reach paths. Workers take whole ranges, so results never depend on the partition.
  */
 export function independentRanges(set: TargetSet): Array<[number, number]> {
   const ranges: Array<[number, number]> = [];

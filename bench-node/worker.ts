@@ -5,6 +5,7 @@ import { parentPort, workerData } from 'node:worker_threads';
 import type { IkCoreModule } from '../web/src/ik/module.js';
 import { loadIk } from '../web/src/ik/module.js';
 import { IkRig } from '../web/src/ik/rig.js';
+import { errorOf, tipDistance } from './evaluate.js';
 import type { SolveResult } from './metrics.js';
 import { makeRunner } from './runners.js';
 import type { Runner } from './runner.js';
@@ -49,11 +50,17 @@ function run(task: WorkerTask): SolveResult[] {
     try {
       result = runner.solve({ start, target, dragged: task.dragged[k] });
     } catch (e) {
-      result = { E: NaN, iterations: 0, seconds: 0, stopReason: `exception: ${(e as Error).message.split('\n')[0]}`, wobbleDuring: NaN, wobbleAfter: NaN };
+      const stopReason = `exception: ${(e as Error).message.split('\n')[0]}`;
+      result = { E: NaN, tipDistance: NaN, iterations: 0, seconds: 0, stopReason, wobbleDuring: NaN, wobbleAfter: NaN, jumpDeg: NaN };
     }
     // A solve that failed before producing a pose (invalid input, an exception) is counted with
-    // the E of its start, so averages stay finite and the failure shows in the stop reasons.
-    if (!Number.isFinite(result.E)) result.E = rig.objective(task.starts.subarray(k * m, (k + 1) * m), target);
+    // the E and tip distance of its start, so averages stay finite and the failure shows in the
+    // stop reasons.
+    if (!Number.isFinite(result.E)) {
+      const tips = rig.tips(task.starts.subarray(k * m, (k + 1) * m));
+      result.E = errorOf(tips, target);
+      result.tipDistance = tipDistance(tips, target);
+    }
     results.push(result);
     const now = performance.now();
     if (now - lastReport > 100 || k === task.count - 1) {

@@ -16,7 +16,7 @@ import { Goal, Joint, Link, Solver, SOLVE_STATUS_NAMES } from 'closed-chain-ik/s
 import { Matrix4, Quaternion, Vector3 } from 'three';
 
 import type { RigSpec } from '../../web/src/ik/rig_spec.js';
-import { errorOf, pinnedDeviation } from '../evaluate.js';
+import { errorOf, isOnTarget, largestChange, pinnedDeviation, tipDistance } from '../evaluate.js';
 import type { SolveResult } from '../metrics.js';
 import type { Runner, RunSettings, SolveInput } from '../runner.js';
 import { REFERENCE_SIZE } from '../rigs.js';
@@ -107,7 +107,9 @@ export class ClosedChainIkRunner implements Runner {
     this.solver.maxIterations = CHUNK_ITERATIONS;
     this.solver.useSVD = false; // the library's default; its README warns SVD can diverge
     this.solver.restPoseFactor = 0; // no rest pose is set: skip the null-space term
-    this.solver.translationConvergeThreshold = Math.sqrt((2 * settings.ftol) / spec.effectors.length);
+    // Every goal nearer than this: on target by the run's test (tipTolerance, or E < ftol).
+    this.solver.translationConvergeThreshold =
+      settings.tipTolerance > 0 ? settings.tipTolerance : Math.sqrt((2 * settings.ftol) / spec.effectors.length);
     // Lengths in the library's defaults assume a rig about 1 unit across; scale them with the rig.
     this.solver.translationErrorClamp = 0.1 * size;
     this.solver.dampingFactor = 0.001 * size;
@@ -172,15 +174,17 @@ export class ClosedChainIkRunner implements Runner {
     this.copyOut();
     const seconds = (performance.now() - t0) / 1000;
     const iterations = this.iterations;
+    const jumpDeg = largestChange(start, this.poseOut);
 
     const tips = this.readTips();
     const E = errorOf(tips, input.target);
+    const distance = tipDistance(tips, input.target);
     // The library's convergence test is per goal in float32; report our own test's verdict.
-    if (stopReason === 'converged_E' && !(E < this.settings.ftol)) stopReason = 'converged_float32';
+    if (stopReason === 'converged_E' && !isOnTarget(this.settings, E, distance)) stopReason = 'converged_float32';
     const after = pinnedDeviation(tips, input.target, input.dragged);
     let during = after;
     if (input.dragged >= 0 && Number.isFinite(after) && iterations > 0) during = this.replayWobble(start, input, iterations);
-    return { E, iterations, seconds, stopReason, wobbleDuring: during, wobbleAfter: after };
+    return { E, tipDistance: distance, iterations, seconds, stopReason, wobbleDuring: during, wobbleAfter: after, jumpDeg };
   }
 
   /** Replays the solve (same start, same iteration count) observing the pinned effectors. */

@@ -7,8 +7,8 @@
 // canonical frame T_i * rest_i of PROTOCOL.md, so tip_i sits at the protocol's tip.
 // One IK chain per end effector: effector tip_i, links = the joints from bone i up to the root
 // (bones whose three angles are all fixed are left out), target = a Bone under the scene root.
-// One solve = CCDIKSolver.update() passes (iteration 1 per chain per pass) until E < ftol, no
-// link moved in a pass (zero_step), the best E fell by less than STALL_RATIO over STALL_PASSES
+// One solve = CCDIKSolver.update() passes (iteration 1 per chain per pass) until the pose is on
+// target (the run's test: E < ftol, or every tip within tipTolerance), no link moved in a pass (zero_step), the best E fell by less than STALL_RATIO over STALL_PASSES
 // passes (stalled), or the time budget is spent (timeout).
 // CCD clamps Euler XYZ angles per link, not XZX ones, and no Euler XYZ box equals an XZX box (see
 // eulerBox). So after every pass the adapter reads each joint back as XZX angles inside the rig's
@@ -18,7 +18,7 @@ import { Bone, BufferGeometry, Matrix4, MeshBasicMaterial, Object3D, Quaternion,
 import { CCDIKSolver, type IK } from 'three/examples/jsm/animation/CCDIKSolver.js';
 
 import type { RigSpec } from '../../web/src/ik/rig_spec.js';
-import { errorOf, pinnedDeviation } from '../evaluate.js';
+import { errorOf, isOnTarget, largestChange, pinnedDeviation, tipDistance } from '../evaluate.js';
 import type { SolveResult } from '../metrics.js';
 import type { Runner, RunSettings, SolveInput } from '../runner.js';
 import { project } from '../targets.js';
@@ -82,6 +82,7 @@ export class ThreeCcdRunner implements Runner {
   private readonly solver: CCDIKSolver;
   private readonly tipBuffer: Float64Array;
   private readonly poseOut: Float64Array;
+  /** The XZX angles of the current pose (degrees). */
   private readonly angles: Float64Array;
 
   constructor(
@@ -144,7 +145,8 @@ export class ThreeCcdRunner implements Runner {
   }
 
   private setPose(angles: Float64Array): void {
-    const a = project(this.spec, angles.slice());
+    this.angles.set(angles);
+    const a = project(this.spec, this.angles);
     for (let i = 0; i < this.joints.length; i++) xzxQuaternion(a[3 * i], a[3 * i + 1], a[3 * i + 2], this.joints[i].quaternion);
   }
 
@@ -169,7 +171,8 @@ export class ThreeCcdRunner implements Runner {
   }
 
   solve(input: SolveInput): SolveResult {
-    const { ftol, timeoutSeconds } = this.settings;
+    const { timeoutSeconds } = this.settings;
+    const from = input.start ? project(this.spec, input.start.slice()) : this.angles.slice(); // for the jump, untimed
     const t0 = performance.now();
     const deadline = t0 + 1000 * timeoutSeconds;
     if (input.start) this.setPose(input.start);
@@ -182,7 +185,8 @@ export class ThreeCcdRunner implements Runner {
     let passes = 0;
     let best = E, bestAt = 0;
     let stopReason = 'converged_E';
-    while (!(E < ftol)) {
+    // tipBuffer holds the tips readTips() read last.
+    while (!isOnTarget(this.settings, E, tipDistance(this.tipBuffer, input.target))) {
       if (performance.now() >= deadline) {
         stopReason = 'timeout';
         break;
@@ -213,14 +217,17 @@ export class ThreeCcdRunner implements Runner {
     // Copy the pose out as a user would (one quaternion per joint).
     for (let i = 0; i < this.joints.length; i++) this.joints[i].quaternion.toArray(this.poseOut, 4 * i);
     const seconds = (performance.now() - t0) / 1000;
-    const after = pinnedDeviation(this.readTips(), input.target, input.dragged);
+    const tips = this.readTips();
+    const after = pinnedDeviation(tips, input.target, input.dragged);
     return {
       E,
+      tipDistance: tipDistance(tips, input.target),
       iterations: passes,
       seconds,
       stopReason,
       wobbleDuring: passes === 0 ? after : during,
       wobbleAfter: after,
+      jumpDeg: largestChange(from, this.angles),
     };
   }
 

@@ -7,7 +7,8 @@
 //   3. the peers three-ccd and closed-chain-ik on the A7 rigs;
 //   4. the solver core alone, native against WebAssembly (wasm/tools/solver_speed, one program);
 //   5. time per iteration on synthetic chains and trees (wasm/tools/scale_bench);
-//   6. the WebAssembly heap after 10^3 and 10^6 solves (bench-node/report/heap_growth.ts).
+//   6. the WebAssembly heap after 10^3 and 10^6 solves (bench-node/report/heap_growth.ts);
+//   7. lm while a user drags: the drag and reach experiments on every rig (report/dragging.ts).
 // Usage: npm run bench:report [-- --samples N]   (default 1000 per rig and experiment; gd 100)
 import { spawnSync } from 'node:child_process';
 import { mkdirSync, readFileSync, writeFileSync } from 'node:fs';
@@ -16,6 +17,8 @@ import { join } from 'node:path';
 
 import { parseReferenceCsv, type ReferenceRow } from '../compare.js';
 import type { Row } from '../metrics.js';
+import { draggingSection } from './dragging.js';
+import { mark, pct, table, us } from './markdown.js';
 import { barChartSvg } from './svg_chart.js';
 
 const argAt = process.argv.indexOf('--samples');
@@ -41,12 +44,6 @@ function bench(name: string, args: string[]): Row[] {
   run('npx', ['tsx', 'bench-node/cli.ts', ...args, '--no-progress', '--json', file]);
   return (JSON.parse(readFileSync(file, 'utf8')) as { rows: Row[] }).rows;
 }
-
-const us = (s: number): string => (s * 1e6 < 10 ? (s * 1e6).toFixed(2) : (s * 1e6).toFixed(1));
-const pct = (x: number): string => `${(100 * x).toFixed(1)}%`;
-const mark = (ok: boolean): string => (ok ? 'yes' : '**no**');
-const table = (head: string[], rows: string[][]): string =>
-  [`| ${head.join(' | ')} |`, `| ${head.map(() => '---').join(' | ')} |`, ...rows.map((r) => `| ${r.join(' | ')} |`)].join('\n');
 
 // 1. The default method everywhere, both engines.
 const defaults = bench('default', ['--rig', [...a7, ...projectRigs].join(','), '--methods', 'lm', '--samples', String(samples), '--engine', 'wasm,native']);
@@ -74,6 +71,12 @@ for (const path of a7) {
 const scaleNative = run('build/native/scale_bench', ['--csv']);
 const scaleWasm = run('node', ['build/wasm/scale_bench.cjs', '--csv']);
 const heap = run('npx', ['tsx', 'bench-node/report/heap_growth.ts', '--solves', String(samples * 1000)]);
+// 7. Dragging; the A7 rigs and the project's share names, so the A7 ones are labelled.
+const dragArgs = ['--experiment', 'drag,reach', '--methods', 'lm', '--samples', String(samples)];
+const dragging = [
+  ...bench('dragging-a7', ['--rig', a7.join(','), ...dragArgs]).map((r) => ({ ...r, rig: `${r.rig} (A7)` })),
+  ...bench('dragging-project', ['--rig', projectRigs.join(','), ...dragArgs]),
+];
 
 // ---- the document
 const md: string[] = [];
@@ -129,6 +132,8 @@ const scaleTable = (csv: string, engine: string): string[][] =>
 md.push(table(['engine', 'shape', 'bones', 'angles', 'effectors', 'us / iteration', 'ns / (angle x effector)', 'iterations (median)', 'success'], [...scaleTable(scaleNative, 'native'), ...scaleTable(scaleWasm, 'wasm')]), '');
 
 md.push('## 6. Memory', '', 'Incremental solves on the project lamp through `IkSolver`, with a new rig and solver every 1000 solves (bench-node/report/heap_growth.ts):', '', '```', heap.trim(), '```', '');
+
+md.push(...draggingSection(dragging));
 
 md.push('## All rows', '', 'The raw rows of sets 1-3 (`npm run bench` columns).', '');
 md.push(table(['rig', 'experiment', 'method', 'engine', 'samples', 't_avg', 't_median', 't_p95', 't_p99', 't_max', 'iter_avg', 'E_avg', 'E_IQM', 'max E', 'success'], [...defaults, ...classic, ...peers].map((r) => [r.rig, r.experiment, r.method, r.engine, String(r.samples), r.t_avg_s.toPrecision(3), r.t_median_s.toPrecision(3), r.t_p95_s.toPrecision(3), r.t_p99_s.toPrecision(3), r.t_max_s.toPrecision(3), r.iter_avg.toPrecision(4), r.E_avg.toPrecision(3), r.E_iqm.toPrecision(3), r.E_max.toPrecision(3), pct(r.success_rate)])), '');

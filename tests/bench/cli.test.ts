@@ -7,7 +7,9 @@ import { join, resolve } from 'node:path';
 
 import { afterAll, describe, expect, it } from 'vitest';
 
+import { writeA7Rig } from '../../bench-node/a7_writer.js';
 import { a7Path } from '../helpers/a7.js';
+import { straightLimb } from '../helpers/rig_builder.js';
 
 const root = resolve(import.meta.dirname, '../..');
 const knight = a7Path('knight');
@@ -74,7 +76,7 @@ interface JsonRow {
 const schema: Record<string, string> = {
   rig: 'string', experiment: 'string', method: 'string', engine: 'string', samples: 'number',
   t_avg_s: 'number', t_median_s: 'number', t_p95_s: 'number', t_max_s: 'number',
-  iter_avg: 'number', E_avg: 'number', E_iqm: 'number', E_max: 'number', success_rate: 'number',
+  iter_avg: 'number', E_avg: 'number', E_iqm: 'number', E_max: 'number', success_rate: 'number', unreachable: 'number',
 };
 
 function runJson(args: string[]): JsonRow[] {
@@ -115,7 +117,7 @@ describe('a small run', () => {
   });
 
   it('the same seed gives the same solves across engines and worker counts', () => {
-    const args = ['--rig', knight, '--samples', '12', '--methods', 'gn,lm', '--experiment', 'incremental,drag', '--seed', '5'];
+    const args = ['--rig', knight, '--samples', '12', '--methods', 'gn,lm', '--experiment', 'incremental,drag,reach', '--seed', '5'];
     const one = runJson([...args, '--workers', '1', '--engine', 'wasm,native']);
     const three = runJson([...args, '--workers', '3', '--engine', 'wasm,native']);
     const key = (row: JsonRow): string => `${row.experiment} ${row.method} ${row.engine}`;
@@ -131,6 +133,39 @@ describe('a small run', () => {
       const n = one.find((row) => row.engine === 'native' && row.method === w.method && row.experiment === w.experiment)!;
       expect(n.iter_avg).toBe(w.iter_avg);
       expect(Math.abs((n.E_avg as number) - (w.E_avg as number))).toBeLessThanOrEqual(1e-9 * (w.E_avg as number));
+    }
+  });
+});
+
+describe('the reach experiment', () => {
+  it('runs on a project rig, with the drag columns', () => {
+    const file = join(dir, 'reach.json');
+    const csv = join(dir, 'reach.csv');
+    const r = bench('--rig', 'lamp', '--experiment', 'reach', '--methods', 'lm', '--samples', '40', '--json', file, '--csv', csv);
+    expect(r.stderr).toBe('');
+    expect(r.code).toBe(0);
+    expect(r.stdout).toMatch(/lamp, reach targets/);
+    expect(r.stdout).toMatch(/unreachable .* jump_max_deg/);
+    const [row] = (JSON.parse(readFileSync(file, 'utf8')) as { rows: JsonRow[] }).rows;
+    for (const [key, type] of Object.entries(schema)) expect(typeof row[key], key).toBe(type);
+    expect(row).toMatchObject({ rig: 'lamp', experiment: 'reach', method: 'lm', samples: 40 });
+    expect(row.jump_max_deg as number).toBeGreaterThan(0);
+    expect(readFileSync(csv, 'utf8').split('\n')[0]).toMatch(/,success_rate,unreachable,.*,jump_max_deg,stop_reasons$/);
+  });
+
+  it('counts steps out of reach as unreachable and leaves them out of success, on both engines', () => {
+    // A straight limb of length 2 from the origin (size 1, tip tolerance 0.001): the path towards
+    // its root can be reached by bending. Step t of either path sideways puts the target
+    // hypot(2, 0.02 t) from the root, out of reach by more than the tip tolerance from t = 4 on.
+    const limb = join(dir, 'limb.json');
+    writeFileSync(limb, writeA7Rig(straightLimb()));
+    const outOfReach = Array.from({ length: 40 }, (_, i) => Math.hypot(2, 0.02 * (i + 1)) - 2 >= 0.001).filter(Boolean).length;
+    expect(outOfReach).toBe(37);
+    const rows = runJson(['--rig', limb, '--experiment', 'reach', '--methods', 'lm', '--engine', 'wasm,native', '--timeout', '0.2']);
+    expect(rows.map((row) => row.engine)).toEqual(['wasm', 'native']);
+    for (const row of rows) {
+      expect(row).toMatchObject({ experiment: 'reach', samples: 120, unreachable: 2 * outOfReach });
+      expect(row.success_rate).toBe(1);
     }
   });
 });

@@ -52,8 +52,10 @@ describe('quantiles', () => {
 
 describe('summarize', () => {
   const result = (E: number, seconds: number, stopReason: string, iterations = 3): SolveResult => ({
-    E, seconds, stopReason, iterations, wobbleDuring: NaN, wobbleAfter: NaN,
+    E, tipDistance: Math.sqrt(2 * E), seconds, stopReason, iterations, wobbleDuring: NaN, wobbleAfter: NaN, jumpDeg: NaN,
   });
+  const eTest = { ftol: 2e-4, tipTolerance: 0 };
+  const all = (n: number): Uint8Array => new Uint8Array(n).fill(1);
 
   it('success means final E < ftol; stop reasons are counted; times summarised', () => {
     const rows = [
@@ -62,7 +64,7 @@ describe('summarize', () => {
       result(0.5, 1.0, 'timeout', 900),
       result(1e-4, 0.003, 'converged_E'),
     ];
-    const row = summarize({ rig: 'knight', experiment: 'random', method: 'gn', engine: 'wasm' }, rows, 2e-4);
+    const row = summarize({ rig: 'knight', experiment: 'random', method: 'gn', engine: 'wasm' }, rows, eTest, all(4));
     expect(row.samples).toBe(4);
     expect(row.success_rate).toBe(0.5);
     expect(row.stop_reasons).toEqual({ converged_E: 2, converged_grad: 1, timeout: 1 });
@@ -73,6 +75,8 @@ describe('summarize', () => {
     expect(row.E_max).toBe(0.5);
     expect(row.E_iqm).toBeCloseTo((1e-4 + 2e-4) / 2, 15);
     expect(row.wobble_during_avg).toBeNull();
+    expect(row.unreachable).toBe(0);
+    expect(row.jump_max_deg).toBeNull();
   });
 
   it('wobble: averages and maxima over the solves that have pinned effectors', () => {
@@ -80,10 +84,44 @@ describe('summarize', () => {
       { ...result(0, 0.001, 'converged_E'), wobbleDuring: 0.2, wobbleAfter: 0.1 },
       { ...result(0, 0.001, 'converged_E'), wobbleDuring: 0.4, wobbleAfter: 0.0 },
     ];
-    const row = summarize({ rig: 'knight', experiment: 'drag', method: 'bfgs', engine: 'native' }, rows, 2e-4);
+    const row = summarize({ rig: 'knight', experiment: 'drag', method: 'bfgs', engine: 'native' }, rows, eTest, all(2));
     expect(row.wobble_during_avg).toBeCloseTo(0.3, 12);
     expect(row.wobble_during_max).toBe(0.4);
     expect(row.wobble_after_avg).toBeCloseTo(0.05, 12);
     expect(row.wobble_after_max).toBe(0.1);
+  });
+
+  it('with a tip tolerance, success is every tip within it, whatever E', () => {
+    const rows = [
+      { ...result(1e-8, 0.001, 'converged_E'), tipDistance: 0.0009 }, // on target
+      { ...result(1e-8, 0.001, 'converged_grad'), tipDistance: 0.001 }, // E tiny, a tip not within 0.001
+      { ...result(0.5, 0.001, 'converged_E'), tipDistance: 1e-4 }, // E above ftol, every tip within
+    ];
+    const row = summarize({ rig: 'knight', experiment: 'reach', method: 'lm', engine: 'wasm' }, rows, { ftol: 2e-4, tipTolerance: 0.001 }, all(3));
+    expect(row.success_rate).toBeCloseTo(2 / 3, 12);
+  });
+
+  it('unreachable samples are counted apart and left out of success', () => {
+    const rows = [
+      { ...result(0, 0.001, 'converged_E'), tipDistance: 0 },
+      { ...result(0, 0.001, 'converged_grad'), tipDistance: 0.3 }, // unreachable, missed
+      { ...result(0, 0.001, 'converged_grad'), tipDistance: 0.2 }, // reachable, missed
+      { ...result(0, 0.001, 'converged_grad'), tipDistance: 0.4 }, // unreachable, missed
+    ];
+    const test = { ftol: 2e-4, tipTolerance: 0.01 };
+    const row = summarize({ rig: 'knight', experiment: 'reach', method: 'lm', engine: 'wasm' }, rows, test, Uint8Array.from([1, 0, 1, 0]));
+    expect(row.unreachable).toBe(2);
+    expect(row.success_rate).toBe(0.5);
+    expect(row.samples).toBe(4);
+    const none = summarize({ rig: 'knight', experiment: 'reach', method: 'lm', engine: 'wasm' }, rows, test, new Uint8Array(4));
+    expect(none.unreachable).toBe(4);
+    expect(none.success_rate).toBeNaN();
+  });
+
+  it('jump_max_deg: the largest step jump of drag and reach rows, finite values only', () => {
+    const rows = [2.5, 40, NaN, 0].map((jumpDeg) => ({ ...result(0, 0.001, 'converged_E'), jumpDeg }));
+    expect(summarize({ rig: 'knight', experiment: 'reach', method: 'lm', engine: 'wasm' }, rows, eTest, all(4)).jump_max_deg).toBe(40);
+    expect(summarize({ rig: 'knight', experiment: 'drag', method: 'lm', engine: 'wasm' }, rows.slice(0, 1), eTest, all(1)).jump_max_deg).toBe(2.5);
+    expect(summarize({ rig: 'knight', experiment: 'incremental', method: 'lm', engine: 'wasm' }, rows, eTest, all(4)).jump_max_deg).toBeNull();
   });
 });

@@ -21,12 +21,12 @@ beforeAll(async () => {
   ik = await loadIkNode();
   const spec = loadA7('knight');
   rig = new IkRig(ik, spec);
-  for (const e of ['random', 'incremental', 'drag'] as const) sets[e] = generateTargets(spec, e, 130, 11, (a) => rig.tips(a));
+  for (const e of ['random', 'incremental', 'drag', 'reach'] as const) sets[e] = generateTargets(spec, e, 130, 11, (a) => rig.tips(a));
 });
 afterAll(() => rig.dispose());
 
 describe('batches', () => {
-  it.each(['random', 'incremental', 'drag'])('%s: any batch count covers every sample once, in order, whole paths only', (e) => {
+  it.each(['random', 'incremental', 'drag', 'reach'])('%s: any batch count covers every sample once, in order, whole paths only', (e) => {
     const set = sets[e];
     for (let batches = 1; batches <= 40; batches++) {
       const parts = batchesOf(set, batches);
@@ -35,7 +35,7 @@ describe('batches', () => {
       for (let i = 1; i < parts.length; i++) expect(parts[i][0]).toBe(parts[i - 1][1]);
       for (const [begin, end] of parts) {
         expect(end).toBeGreaterThan(begin);
-        expect(set.chained[begin]).toBe(0); // a batch never starts inside a drag path
+        expect(set.chained[begin]).toBe(0); // a batch never starts inside a drag or reach path
       }
     }
   });
@@ -62,11 +62,14 @@ describe('native job file', () => {
   });
 
   it('results parse back, nan included', () => {
-    const text = '0.5\t1\t3\t4\t2\t0.25\tconverged_E\tnan\tnan\n1e-05\t0\t0\t1\t1\t1e-06\ttimeout\t0.1\t0.2\n';
+    const text =
+      '0.5\t1\t3\t4\t2\t0.25\tconverged_E\tnan\tnan\t0.01\t2.5\n' + '1e-05\t0\t0\t1\t1\t1e-06\ttimeout\t0.1\t0.2\tnan\tnan\n';
     const results = decodeResults(text, 2, 'x.tsv');
-    expect(results[0]).toMatchObject({ E: 0.5, iterations: 3, seconds: 0.25, stopReason: 'converged_E' });
+    expect(results[0]).toMatchObject({ E: 0.5, iterations: 3, seconds: 0.25, stopReason: 'converged_E', tipDistance: 0.01, jumpDeg: 2.5 });
     expect(results[0].wobbleDuring).toBeNaN();
     expect(results[1]).toMatchObject({ E: 1e-5, stopReason: 'timeout', wobbleDuring: 0.1, wobbleAfter: 0.2 });
+    expect(results[1].tipDistance).toBeNaN();
+    expect(results[1].jumpDeg).toBeNaN();
     expect(() => decodeResults(text, 3, 'x.tsv')).toThrow(/2 results, expected 3/);
   });
 });

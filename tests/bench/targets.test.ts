@@ -2,14 +2,14 @@
 // the drag experiment's pinned effectors. FK is checked with the reference composition in plain JS.
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 
+import { draggableEffectors, exclusiveAngles } from '../../bench-node/effectors.js';
 import {
   DRAG_PATH_STEPS,
-  draggableEffectors,
-  exclusiveAngles,
   generateTargets,
   independentRanges,
   INCREMENTAL_STEP_DEG,
   prefix,
+  type Experiment,
   type TargetSet,
 } from '../../bench-node/targets.js';
 import type { IkCoreModule } from '../../web/src/ik/module.js';
@@ -26,7 +26,7 @@ beforeAll(async () => {
 });
 afterAll(() => rigs.forEach((r) => r.dispose()));
 
-function setOf(name: string, experiment: 'random' | 'incremental' | 'drag', count: number, seed = 7): { spec: RigSpec; set: TargetSet } {
+function setOf(name: string, experiment: Experiment, count: number, seed = 7): { spec: RigSpec; set: TargetSet } {
   const spec = loadA7(name);
   const rig = new IkRig(ik, spec);
   rigs.push(rig);
@@ -45,8 +45,9 @@ function expectInsideLimits(spec: RigSpec, angles: Float64Array): void {
 
 function expectReachable(spec: RigSpec, set: TargetSet): void {
   const m = set.numAngles, r = set.numResiduals;
+  expect(set.reachable.every((v) => v === 1)).toBe(true);
   for (let k = 0; k < set.count; k++) {
-    const x = referenceTips(spec, row(set.targetAngles, k, m));
+    const x = referenceTips(spec, row(set.targetAngles!, k, m));
     expect(maxAbsDiff(x, row(set.targets, k, r))).toBeLessThan(1e-9 * Math.max(1, ...Array.from(x, Math.abs)));
   }
 }
@@ -54,25 +55,25 @@ function expectReachable(spec: RigSpec, set: TargetSet): void {
 describe.each(a7Names)('%s', (name) => {
   it('random: A_k = P(360 U(-1,1)) inside the limits, x_b = x(A_k), starts at the rest pose', () => {
     const { spec, set } = setOf(name, 'random', 40);
-    expectInsideLimits(spec, set.targetAngles);
+    expectInsideLimits(spec, set.targetAngles!);
     expectReachable(spec, set);
     const rest = Float64Array.from(spec.lower, (lo, i) => Math.min(spec.upper[i], Math.max(lo, 0)));
     for (let k = 0; k < set.count; k++) expect(Array.from(row(set.starts, k, set.numAngles))).toEqual(Array.from(rest));
     expect(set.chained.every((c) => c === 0)).toBe(true);
     // The draws span the limits: some angle of a wide joint reaches far from 0.
-    expect(Math.max(...Array.from(set.targetAngles, Math.abs))).toBeGreaterThan(20);
+    expect(Math.max(...Array.from(set.targetAngles!, Math.abs))).toBeGreaterThan(20);
   });
 
   it('incremental: steps of at most 5 degrees per angle, start k = A_(k-1), A_0 = rest', () => {
     const { spec, set } = setOf(name, 'incremental', 200);
     const m = set.numAngles;
-    expectInsideLimits(spec, set.targetAngles);
+    expectInsideLimits(spec, set.targetAngles!);
     expectReachable(spec, set);
     expect(Array.from(row(set.starts, 0, m))).toEqual(Array.from(spec.lower, (lo, i) => Math.min(spec.upper[i], Math.max(lo, 0))));
     let largest = 0;
     for (let k = 1; k < set.count; k++) {
-      expect(Array.from(row(set.starts, k, m))).toEqual(Array.from(row(set.targetAngles, k - 1, m)));
-      largest = Math.max(largest, maxAbsDiff(row(set.targetAngles, k, m), row(set.starts, k, m)));
+      expect(Array.from(row(set.starts, k, m))).toEqual(Array.from(row(set.targetAngles!, k - 1, m)));
+      largest = Math.max(largest, maxAbsDiff(row(set.targetAngles!, k, m), row(set.starts, k, m)));
     }
     expect(largest).toBeLessThanOrEqual(INCREMENTAL_STEP_DEG);
     expect(largest).toBeGreaterThan(INCREMENTAL_STEP_DEG * 0.8);
@@ -81,7 +82,7 @@ describe.each(a7Names)('%s', (name) => {
   it('drag: one effector moves along a path, every other target stays where it was', () => {
     const { spec, set } = setOf(name, 'drag', 2 * DRAG_PATH_STEPS + 5);
     const m = set.numAngles, r = set.numResiduals;
-    expectInsideLimits(spec, set.targetAngles);
+    expectInsideLimits(spec, set.targetAngles!);
     expectReachable(spec, set);
     const ranges = independentRanges(set);
     expect(ranges.map(([b, e]) => e - b)).toEqual([DRAG_PATH_STEPS, DRAG_PATH_STEPS, 5]);
@@ -94,7 +95,7 @@ describe.each(a7Names)('%s', (name) => {
         expect(set.dragged[k]).toBe(dragged);
         expect(set.chained[k]).toBe(k > begin ? 1 : 0);
         // Only the dragged effector's exclusive angles change, by at most 5 degrees a step.
-        const a = row(set.targetAngles, k, m), before = row(set.starts, k, m);
+        const a = row(set.targetAngles!, k, m), before = row(set.starts, k, m);
         for (let i = 0; i < m; i++) if (!exclusive[dragged].includes(i)) expect(a[i]).toBe(before[i]);
         expect(maxAbsDiff(a, before)).toBeLessThanOrEqual(INCREMENTAL_STEP_DEG);
         const x = row(set.targets, k, r);
@@ -119,7 +120,7 @@ describe('seeds', () => {
   });
 
   it('a shorter run is a prefix of a longer one (a method with fewer samples gets the first ones)', () => {
-    for (const experiment of ['random', 'incremental', 'drag'] as const) {
+    for (const experiment of ['random', 'incremental', 'drag', 'reach'] as const) {
       const long = setOf('beast', experiment, 90).set;
       const short = setOf('beast', experiment, 50).set;
       const head = prefix(long, 50);
@@ -136,6 +137,6 @@ describe('seeds', () => {
     setOf('knight', 'incremental', 10);
     const again = setOf('knight', 'random', 10).set;
     expect(Array.from(again.targets)).toEqual(Array.from(first.targets));
-    expect(Array.from(setOf('knight', 'incremental', 10).set.targetAngles)).not.toEqual(Array.from(first.targetAngles));
+    expect(Array.from(setOf('knight', 'incremental', 10).set.targetAngles!)).not.toEqual(Array.from(first.targetAngles!));
   });
 });

@@ -4,17 +4,22 @@
 //
 // Usage:
 //   ik_bench_native --rig RIG.json --method NAME --input JOB.bin --output RESULTS.tsv
-//                   [--gtol X] [--ftol Y] [--timeout SECONDS] [--paper] [--restarts N]
+//                   [--gtol X] [--ftol Y] [--tip-tol Z] [--timeout SECONDS] [--paper] [--restarts N]
+// --tip-tol Z > 0 makes "on target" every tip within Z (rig units) of its target (SolverOptions::
+// tip_tolerance) instead of E < Y.
 //
 // JOB.bin, little-endian:
 //   header  char[8] "IKBJOB1\0", int32 count, int32 #angles, int32 #residuals, int32 0
 //   count records of float64: chained (0 or 1), dragged effector (-1: none), start (#angles,
 //   degrees), target (#residuals, rig units). A chained record starts from the previous record's
-//   solution instead of its start (drag paths).
+//   solution instead of its start (drag and reach paths).
 // RESULTS.tsv: one line per record, tab-separated:
 //   E  gradient_norm  iterations  function_evaluations  jacobian_evaluations  seconds  stop_reason
-//   wobble_during  wobble_after
-// `seconds` is steady_clock around Solver::solve(). Wobble (records with a dragged effector and
+//   wobble_during  wobble_after  tip_distance  jump_deg
+// `seconds` is steady_clock around Solver::solve(). tip_distance: the largest distance of an
+// effector's tip from its target at the solution (rig units); jump_deg: the largest change of one
+// angle from the start to the solution (degrees); both "nan" for invalid input. Wobble (records
+// with a dragged effector and
 // other effectors to pin; "nan" otherwise): the largest distance of a pinned effector from its
 // target, over the iterates of a replay of the same solve (max_iterations = the solve's count, no
 // time budget) for "during", at the solution for "after".
@@ -46,7 +51,7 @@ struct Args {
 [[noreturn]] void usage(const std::string& problem) {
   throw std::invalid_argument(problem +
                               "\nusage: ik_bench_native --rig RIG.json --method NAME --input JOB.bin --output "
-                              "RESULTS.tsv [--gtol X] [--ftol Y] [--timeout S] [--paper] [--restarts N]");
+                              "RESULTS.tsv [--gtol X] [--ftol Y] [--tip-tol Z] [--timeout S] [--paper] [--restarts N]");
 }
 
 double number_arg(const std::string& flag, const char* text) {
@@ -72,6 +77,7 @@ Args parse_args(int argc, char** argv) {
     else if (flag == "--output") a.output = value;
     else if (flag == "--gtol") a.options.gradient_tolerance = number_arg(flag, value);
     else if (flag == "--ftol") a.options.error_tolerance = number_arg(flag, value);
+    else if (flag == "--tip-tol") a.options.tip_tolerance = number_arg(flag, value);
     else if (flag == "--timeout") a.options.time_budget_s = number_arg(flag, value);
     else if (flag == "--restarts") a.options.restarts = static_cast<int>(number_arg(flag, value));
     else usage("unknown option " + flag);
@@ -106,13 +112,14 @@ Job read_job(const std::string& path) {
   return job;
 }
 
-// Largest distance of an effector other than `dragged` from its target, with `kin` posed at `angles`.
-double pinned_deviation(ik::Kinematics& kin, const Eigen::VectorXd& angles, const Eigen::Ref<const Eigen::VectorXd>& target,
-                        int dragged, Eigen::VectorXd& tips) {
+// Largest distance (rig units) of an effector other than `skip` (-1: none) from its target, with
+// `kin` posed at `angles`; `tips` is workspace.
+double largest_distance(ik::Kinematics& kin, const Eigen::VectorXd& angles, const Eigen::Ref<const Eigen::VectorXd>& target,
+                        int skip, Eigen::VectorXd& tips) {
   kin.tips(angles, tips);
   double worst = 0;
   for (int e = 0; e < kin.num_effectors(); ++e)
-    if (e != dragged) worst = std::max(worst, (tips.segment<3>(3 * e) - target.segment<3>(3 * e)).norm());
+    if (e != skip) worst = std::max(worst, (tips.segment<3>(3 * e) - target.segment<3>(3 * e)).norm());
   return worst;
 }
 
@@ -145,9 +152,12 @@ void run(const Args& args) {
     const int iterations = s.iterations, fevals = s.function_evaluations, jevals = s.jacobian_evaluations;
     const std::string reason = ik::stop_reason_name(s.stop_reason);
 
+    const bool valid = s.stop_reason != ik::StopReason::invalid_input;
+    const double tip_distance = valid ? largest_distance(observer, previous, target, -1, tips) : nan;
+    const double jump = valid ? (previous - start).cwiseAbs().maxCoeff() : nan;
     double during = nan, after = nan;
-    if (dragged >= 0 && kin.num_effectors() > 1 && s.stop_reason != ik::StopReason::invalid_input) {
-      after = pinned_deviation(observer, previous, target, dragged, tips);
+    if (dragged >= 0 && kin.num_effectors() > 1 && valid) {
+      after = largest_distance(observer, previous, target, dragged, tips);
       ik::SolverOptions replay_options = args.options;
       replay_options.max_iterations = iterations;
       replay_options.time_budget_s = 0;
@@ -159,12 +169,12 @@ void run(const Args& args) {
         replay->step();
         if (replay->summary().iterations == seen) continue;
         seen = replay->summary().iterations;
-        during = std::max(during, pinned_deviation(observer, replay->angles(), target, dragged, tips));
+        during = std::max(during, largest_distance(observer, replay->angles(), target, dragged, tips));
       }
       if (seen == 0) during = after;  // no iterate: the start already met a stopping test
     }
-    std::fprintf(out, "%.17g\t%.17g\t%d\t%d\t%d\t%.17g\t%s\t%.17g\t%.17g\n", E, gradient_norm, iterations, fevals, jevals,
-                 seconds, reason.c_str(), during, after);
+    std::fprintf(out, "%.17g\t%.17g\t%d\t%d\t%d\t%.17g\t%s\t%.17g\t%.17g\t%.17g\t%.17g\n", E, gradient_norm, iterations,
+                 fevals, jevals, seconds, reason.c_str(), during, after, tip_distance, jump);
   }
   if (std::fclose(out) != 0) throw std::runtime_error(args.output + ": write failed");
 }

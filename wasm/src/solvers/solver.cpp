@@ -159,7 +159,7 @@ StopReason Solver::begin(const Eigen::Ref<const Eigen::VectorXd>& angles,
     sequence_ = QuasiRandom(n_, opt_.seed);
     sequence_seed_ = opt_.seed;
   }
-  restart_index_ = 0;
+  restart_index_ = chain_index_ = 0;
   run_iterations_ = run_best_iteration_ = 0;
   run_best_E_ = std::numeric_limits<double>::infinity();
   if (static_cast<int>(history_.size()) != opt_.history_capacity) history_.resize(opt_.history_capacity);

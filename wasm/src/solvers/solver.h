@@ -104,8 +104,8 @@ struct SolverOptions {
   // Outside paper mode, with no restart left: a run that ends at a local minimum off target that
   // no escape leaves starts again from the best point with only the off-target chains moved
   // (chain_restart.h), at most this many times per solve. The other chains keep their pose;
-  // an effector whose target is beyond its chain's reach gets none. Successive solves go on
-  // along the sequence (a solve that ran out of budget tries new points the next time).
+  // an effector whose target is beyond its chain's reach gets none. Same start, target and
+  // options: same chain restarts.
   int chain_restarts = 8;
 };
 
@@ -268,7 +268,7 @@ class Solver {
   Eigen::VectorXd unit_;
   SaddleEscape escape_;
   ChainRestart chain_restart_;
-  long chain_index_ = 0;  // chain restarts drawn so far by this solver (not reset by start())
+  long chain_index_ = 0;  // chain restarts drawn in this solve
   // start(); `close`: read the clock at the end (solve() leaves it to the first step).
   StopReason begin(const Eigen::Ref<const Eigen::VectorXd>& angles, const Eigen::Ref<const Eigen::VectorXd>& target,
                    bool close);

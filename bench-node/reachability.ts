@@ -1,0 +1,46 @@
+// Which reach steps can be reached at all, decided before any timing by an untimed reference
+// solve per step: lm with its default restarts and a 1 s budget, the run's drag on-target test,
+// each step starting from the reference's own solution of the previous step (chained like the
+// path). A step is reachable when that solve ends on target. Drag, random and incremental targets
+// are poses' tips, reachable by construction, and are never solved here.
+import type { RigSpec } from '../web/src/ik/rig_spec.js';
+import { isOnTarget } from './evaluate.js';
+import type { RunSettings } from './runner.js';
+import { runOnPool, type WorkerPool } from './run_wasm.js';
+import type { TargetSet } from './targets.js';
+
+/** The reference solve's method and time budget (seconds). */
+export const REFERENCE_METHOD = 'lm';
+export const REFERENCE_BUDGET_S = 1;
+
+/** The reference's settings: the run's drag settings (on-target test, gtol) with lm's defaults otherwise. */
+export function referenceSettings(drag: RunSettings): RunSettings {
+  return {
+    method: REFERENCE_METHOD,
+    gtol: drag.gtol,
+    ftol: drag.ftol,
+    tipTolerance: drag.tipTolerance,
+    timeoutSeconds: REFERENCE_BUDGET_S,
+    paper: false,
+    rigSize: drag.rigSize,
+  };
+}
+
+/**
+ * Solves every sample of `set` with the reference on the pool and writes set.reachable (1: the
+ * reference ended on target). `rigKey` names the rig for the workers' runner cache.
+ */
+export async function markReachable(
+  pool: WorkerPool,
+  rigKey: string,
+  spec: RigSpec,
+  drag: RunSettings,
+  set: TargetSet,
+  onProgress: (solved: number) => void,
+): Promise<void> {
+  const settings = referenceSettings(drag);
+  // No dragged effector: the reference measures no wobble, so no replay of its solves.
+  const unobserved = { ...set, dragged: new Int32Array(set.count).fill(-1) };
+  const results = await runOnPool(pool, rigKey, spec, settings, unobserved, onProgress);
+  results.forEach((r, k) => (set.reachable[k] = isOnTarget(settings, r.E, r.tipDistance) ? 1 : 0));
+}
