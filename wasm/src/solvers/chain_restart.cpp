@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace ik {
 
@@ -9,8 +10,10 @@ namespace {
 
 // Effectors count as off target from this share of the largest tip distance (as saddle_escape).
 constexpr double kOffTargetShare = 0.1;
-// Perturbation radii, degrees, used in turn.
-constexpr double kRadiiDeg[] = {15, 30, 60, 120};
+// Chain restarts use the sequence's points from here on, after any whole-pose restart's.
+constexpr long kFirstPoint = 1L << 24;
+// Perturbation radii, degrees, used in turn; infinity: anywhere inside the limits (as a restart).
+constexpr double kRadiiDeg[] = {15, 30, 60, 120, std::numeric_limits<double>::infinity()};
 
 bool movable(const Kinematics& kin, int bone) {
   for (int k = 0; k < 3; ++k)
@@ -43,17 +46,19 @@ void ChainRestart::resize(const Kinematics& kin) {
   moved_.assign(kin.num_bones(), 0);
   kept_.assign(kin.num_bones(), 0);
   unit_.resize(kin.num_angles());
+  anywhere_.resize(kin.num_angles());
 }
 
-bool ChainRestart::beyond_reach(const Kinematics& kin, int e, const Eigen::Ref<const Eigen::VectorXd>& target) const {
+bool ChainRestart::beyond_reach(const Kinematics& kin, int e, const Eigen::Ref<const Eigen::VectorXd>& target,
+                                double slack) const {
   const int top = first_movable_[e];
   if (top < 0) return true;  // nothing on its chain moves
-  return (target.segment<3>(3 * e) - kin.joint_origin(top)).norm() >= reach_[e];
+  return (target.segment<3>(3 * e) - kin.joint_origin(top)).norm() >= reach_[e] + slack;
 }
 
 bool ChainRestart::propose(const Kinematics& kin, const Eigen::Ref<const Eigen::VectorXd>& best,
                            const Eigen::Ref<const Eigen::VectorXd>& r, const Eigen::Ref<const Eigen::VectorXd>& target,
-                           const QuasiRandom& sequence, long index, Eigen::Ref<Eigen::VectorXd> start) {
+                           double slack, const QuasiRandom& sequence, long attempt, Eigen::Ref<Eigen::VectorXd> start) {
   double largest = 0;
   for (int e = 0; e < kin.num_effectors(); ++e) largest = std::max(largest, r.segment<3>(3 * e).norm());
   if (!(largest > 0)) return false;
@@ -62,7 +67,7 @@ bool ChainRestart::propose(const Kinematics& kin, const Eigen::Ref<const Eigen::
   bool any = false;
   for (int e = 0; e < kin.num_effectors(); ++e) {
     const bool off = r.segment<3>(3 * e).norm() >= kOffTargetShare * largest;
-    if (off && beyond_reach(kin, e, target)) continue;
+    if (off && beyond_reach(kin, e, target, slack)) continue;
     for (int b : kin.chain(kin.rig().effectors[e])) (off ? moved_ : kept_)[b] = 1;
     any = any || off;
   }
@@ -71,12 +76,13 @@ bool ChainRestart::propose(const Kinematics& kin, const Eigen::Ref<const Eigen::
   bool exclusive = false;
   for (int b = 0; b < kin.num_bones(); ++b) exclusive = exclusive || (moved_[b] && !kept_[b] && movable(kin, b));
 
-  sequence.point(index, unit_);
-  const double radius = kRadiiDeg[(index - 1) % (sizeof kRadiiDeg / sizeof kRadiiDeg[0])];
+  sequence.point(kFirstPoint + attempt, unit_);
+  const double radius = kRadiiDeg[(attempt - 1) % (sizeof kRadiiDeg / sizeof kRadiiDeg[0])];
+  if (std::isinf(radius)) point_in_limits(unit_, kin.lower(), kin.upper(), anywhere_);
   start = best;
   for (int b = 0; b < kin.num_bones(); ++b) {
     if (!moved_[b] || (exclusive && kept_[b])) continue;
-    for (int k = 3 * b; k < 3 * b + 3; ++k) start[k] += radius * (2 * unit_[k] - 1);
+    for (int k = 3 * b; k < 3 * b + 3; ++k) start[k] = std::isinf(radius) ? anywhere_[k] : start[k] + radius * (2 * unit_[k] - 1);
   }
   kin.project(start);
   return true;

@@ -5,8 +5,8 @@
 // leaves: a character's foot whose effector is the toe, with the ankle on its limit, cannot rise
 // further by any small move of hip, knee and ankle (bending the knee first lowers the toe), yet a
 // bent leg reaches the target. A chain restart starts a new run from the best point with only the
-// movable angles of the off-target effectors' chains moved, by up to 15, 30, 60 or 120 degrees in
-// turn (quasi-random, inside the limits), leaving the bones that also carry an effector on
+// movable angles of the off-target effectors' chains moved, by up to 15, 30, 60 or 120 degrees or
+// anywhere inside their limits, in turn (quasi-random), leaving the bones that also carry an effector on
 // target as they are. An effector whose target lies beyond everything its chain can reach (the
 // distance from the fixed joint of its first movable bone exceeds the sum of the rigid segments
 // below it) is left out: its closest point is not a local accident.
@@ -26,21 +26,23 @@ class ChainRestart {
   void resize(const Kinematics& kin);
 
   // From the best point `best` (#angles, degrees; `kin` posed there) with residual `r`
-  // (tips - target, #residuals): writes a start to `start` with the off-target chains moved by
-  // point `index` (>= 1) of `sequence`. Returns false when no effector is off target within its
-  // reach (nothing worth restarting). No allocation.
+  // (tips - target, #residuals): writes the start of chain restart `attempt` (1, 2, ... in a
+  // solve) to `start`, with the off-target chains moved by a point of `sequence`. Returns false
+  // when no effector is off target within its reach (nothing worth restarting). `slack` (rig
+  // units): how far off a tip may be and count as on target; a target that much beyond the
+  // chain's reach still counts as within it. No allocation.
   bool propose(const Kinematics& kin, const Eigen::Ref<const Eigen::VectorXd>& best,
                const Eigen::Ref<const Eigen::VectorXd>& r, const Eigen::Ref<const Eigen::VectorXd>& target,
-               const QuasiRandom& sequence, long index, Eigen::Ref<Eigen::VectorXd> start);
+               double slack, const QuasiRandom& sequence, long attempt, Eigen::Ref<Eigen::VectorXd> start);
 
  private:
   // Is effector e's target farther from its chain's fixed joint than the chain can reach?
-  bool beyond_reach(const Kinematics& kin, int e, const Eigen::Ref<const Eigen::VectorXd>& target) const;
+  bool beyond_reach(const Kinematics& kin, int e, const Eigen::Ref<const Eigen::VectorXd>& target, double slack) const;
 
   std::vector<int> first_movable_;  // per effector: the first bone of its chain with a movable angle, or -1
   std::vector<double> reach_;       // per effector: the rigid segments' lengths from that bone's joint to the tip
   std::vector<char> moved_, kept_;  // per bone: on an off-target chain / on an on-target chain
-  Eigen::VectorXd unit_;
+  Eigen::VectorXd unit_, anywhere_;
 };
 
 }  // namespace ik

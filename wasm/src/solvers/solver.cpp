@@ -110,6 +110,11 @@ StopReason Solver::start(const Eigen::Ref<const Eigen::VectorXd>& angles,
 StopReason Solver::begin(const Eigen::Ref<const Eigen::VectorXd>& angles,
                          const Eigen::Ref<const Eigen::VectorXd>& target, bool close) {
   call_start_ = Clock::now();
+  // A solve from where the previous one ended, towards the same target (a held drag whose frame
+  // budget ran out), goes on along the chain restarts instead of trying the same ones again.
+  const bool continues = chain_index_ > 0 && target.size() == target_.size() && angles.size() == summary_.angles.size() &&
+                         target == target_ && angles == summary_.angles;
+  if (!continues) chain_index_ = 0;
   elapsed_before_call_ = 0;
   opt_ = next_opt_;
   summary_.iterations = summary_.function_evaluations = summary_.jacobian_evaluations = summary_.restarts = 0;
@@ -159,7 +164,7 @@ StopReason Solver::begin(const Eigen::Ref<const Eigen::VectorXd>& angles,
     sequence_ = QuasiRandom(n_, opt_.seed);
     sequence_seed_ = opt_.seed;
   }
-  restart_index_ = chain_index_ = 0;
+  restart_index_ = 0;
   run_iterations_ = run_best_iteration_ = 0;
   run_best_E_ = std::numeric_limits<double>::infinity();
   if (static_cast<int>(history_.size()) != opt_.history_capacity) history_.resize(opt_.history_capacity);
@@ -360,12 +365,13 @@ bool Solver::escape() {
 }
 
 bool Solver::chain_restart() {
-  // Chain restart points come after any whole-pose restart point of the sequence.
-  constexpr long kFirstChainPoint = 1L << 24;
-  if (opt_.paper_mode || summary_.chain_restarts >= opt_.chain_restarts) return false;
+  if (opt_.paper_mode || chain_index_ >= opt_.chain_restarts) return false;
   trial_ = summary_.angles;
   evaluate(trial_, r_trial_);  // poses kin_ at the best point
-  if (!chain_restart_.propose(kin_, trial_, r_trial_, target_, sequence_, kFirstChainPoint + ++chain_index_, a_))
+  // How far off a tip may be on target: the tip tolerance, or with the E test the distance at which
+  // one effector alone makes E the tolerance.
+  const double slack = opt_.tip_tolerance > 0 ? opt_.tip_tolerance : std::sqrt(2 * opt_.error_tolerance);
+  if (!chain_restart_.propose(kin_, trial_, r_trial_, target_, slack, sequence_, ++chain_index_, a_))
     return false;
   run_iterations_ = run_best_iteration_ = 0;
   run_best_E_ = std::numeric_limits<double>::infinity();
@@ -375,7 +381,14 @@ bool Solver::chain_restart() {
 }
 
 bool Solver::move_on(StopReason& reason) {
-  if (summary_.reached || out_of_time() || summary_.iterations >= opt_.max_iterations) return false;
+  if (summary_.reached) return false;
+  const bool out_of_iterations = summary_.iterations >= opt_.max_iterations;
+  if (out_of_iterations || out_of_time()) {
+    // The budget, not the problem, ends the solve while restarts of either kind are left.
+    const bool left = restarts_left() || (!opt_.paper_mode && chain_index_ < opt_.chain_restarts);
+    if (left) reason = out_of_iterations ? StopReason::max_iterations : StopReason::timeout;
+    return false;
+  }
   // Restarts come first while any are left: on random targets escaping first cost more than it
   // saved (native, lm, 1000 restarts: knight 96 -> 184 us mean, beast 75 -> 137 us).
   const bool stationary = reason == StopReason::zero_step || reason == StopReason::converged_grad;

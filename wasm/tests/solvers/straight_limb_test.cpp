@@ -214,6 +214,44 @@ TEST_P(StraightLimb, AToeLiftedPastWhatTheAnkleAllowsIsReachedByRestartingThatLe
   }
 }
 
+// A target within the limb's length that its limits keep out of reach: every frame of a held
+// drag solves from where the last one ended. Solves cut short by their budget go on with the
+// chain restarts the previous one left; once all are spent, holding costs no more restarts.
+TEST_P(StraightLimb, AHeldTargetGoesOnWithTheChainRestartsTheLastFrameLeft) {
+  Rig rig = straight_limb();
+  rig.bones[0].min_deg = Eigen::Vector3d(0, -10, 0);
+  rig.bones[0].max_deg = Eigen::Vector3d(0, 10, 0);
+  rig.bones[1].min_deg = Eigen::Vector3d(0, 0, 0);
+  rig.bones[1].max_deg = Eigen::Vector3d(0, 20, 0);
+  Kinematics kin(rig);
+  const Eigen::Vector3d target(0.2, 1.5, 0);  // |target| < 2, but the limb turns 30 degrees at most
+  SolverOptions whole = drag_options(1e-4);
+  auto reference = make_solver(GetParam(), kin, whole);
+  const SolverSummary& all = reference->solve(Eigen::VectorXd::Zero(kin.num_angles()), target);
+  ASSERT_FALSE(all.reached);
+  ASSERT_EQ(all.chain_restarts, whole.chain_restarts);
+
+  SolverOptions frame = whole;
+  frame.max_iterations = 25;  // a frame's budget: a few chain restarts each
+  auto solver = make_solver(GetParam(), kin, frame);
+  Eigen::VectorXd pose = Eigen::VectorXd::Zero(kin.num_angles());
+  int spent = 0, frames = 0;
+  StopReason reason = StopReason::running;
+  for (; frames < 1000 && reason != StopReason::converged_grad; ++frames) {
+    const SolverSummary& s = solver->solve(pose, target);
+    pose = s.angles;
+    spent += s.chain_restarts;
+    reason = s.stop_reason;
+  }
+  EXPECT_EQ(reason, StopReason::converged_grad);
+  EXPECT_GT(frames, 2);
+  EXPECT_EQ(spent, whole.chain_restarts);
+  EXPECT_EQ(solver->solve(pose, target).chain_restarts, 0);  // holding on: nothing left to try
+  // The same start and target from scratch: the same solve as the first.
+  auto again = make_solver(GetParam(), kin, whole);
+  EXPECT_EQ(again->solve(Eigen::VectorXd::Zero(kin.num_angles()), target).angles, all.angles);
+}
+
 TEST_P(StraightLimb, TheEscapeAllocatesNothing) {
   Kinematics kin(straight_limb());
   const Eigen::VectorXd rest = Eigen::VectorXd::Zero(kin.num_angles());

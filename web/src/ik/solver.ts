@@ -78,7 +78,7 @@ export interface SolverOptions {
   /**
    * With no restart left (restarts 0 while dragging): restarts of only the off-target chains from
    * the best point, when a run ends at a local minimum off target that no escape leaves. The other
-   * chains keep their pose. Default 8 per solve.
+   * chains keep their pose. Default 64 per solve.
    */
   chainRestarts?: number;
 }
