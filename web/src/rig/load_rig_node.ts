@@ -1,18 +1,21 @@
-// Node-only helper over loadRig: reads the file (and a .gltf's side buffers) from disk.
-// Kept apart from load_rig.ts so the browser bundle never imports node:fs.
-import { readFile } from 'node:fs/promises';
-import { dirname, resolve } from 'node:path';
+// Node-only helper over loadRig: reads the file (and a .gltf's side buffers, confined to its
+// folder: side_files.ts) from disk. Kept apart from load_rig.ts so the browser bundle never
+// imports node:fs.
+import { dirname } from 'node:path';
 
 import { loadRig, RigFormatError, type LoadedRig } from './load_rig.js';
+import { readRegularFile, sideFileReader } from './side_files.js';
 
-/** Loads the rig at `path` (.json, .glb or .gltf). Throws RigFormatError naming the file. */
+/**
+ * Loads the rig at `path` (.json, .glb or .gltf; a regular file of at most MAX_RIG_FILE_BYTES).
+ * Throws RigFormatError naming the file.
+ */
 export async function loadRigFromPath(path: string): Promise<LoadedRig> {
   let bytes: Uint8Array;
   try {
-    bytes = await readFile(path);
+    bytes = await readRegularFile(path);
   } catch (e) {
     throw new RigFormatError(`${path}: cannot read the file: ${(e as Error).message}`);
   }
-  const dir = dirname(path);
-  return loadRig(bytes, path, async (uri) => new Uint8Array(await readFile(resolve(dir, uri))));
+  return loadRig(bytes, path, sideFileReader(dirname(path)));
 }
