@@ -37,9 +37,19 @@ export class IkRig {
     return this.live().effectors();
   }
 
-  /** Replaces the end effectors (bone indices). On error the old list stays. */
+  /**
+   * Replaces the end effectors (bone indices). Throws an Error naming the first bad entry: a
+   * fraction, NaN or a number past 32 bits here (never truncated or wrapped to some bone), an
+   * index that is no bone in the core. On error the old list stays.
+   */
   setEffectors(bones: Numbers): void {
-    this.live().setEffectors(Int32Array.from(bones));
+    const live = this.live();
+    for (let k = 0; k < bones.length; k++) {
+      const b = bones[k];
+      if (!Number.isInteger(b) || Math.abs(b) > 0x7fffffff)
+        throw new Error(`effectors[${k}] is ${String(b)}, not a bone index (an integer in 0..${this.numBones - 1})`);
+    }
+    live.setEffectors(Int32Array.from(bones));
   }
 
   /** End-effector tips (3 per effector) at `angles`. */
@@ -77,8 +87,10 @@ export class IkRig {
     return this.live().gradient(angles, target);
   }
 
-  /** `angles` clamped into the limits (a new array). */
+  /** `angles` (degrees) clamped into the limits (a new array). Throws for a non-finite angle. */
   project(angles: Numbers): Float64Array {
+    for (let k = 0; k < angles.length; k++)
+      if (!Number.isFinite(angles[k])) throw new Error(`angles[${k}] is ${String(angles[k])}, not a finite number of degrees`);
     return this.live().project(angles);
   }
 
