@@ -1,5 +1,8 @@
 #include "objective.h"
 
+#include <algorithm>
+#include <cmath>
+
 namespace ik {
 
 double objective(Kinematics& kin, const Eigen::Ref<const Eigen::VectorXd>& angles,
@@ -17,6 +20,12 @@ double objective_and_gradient(Kinematics& kin, const Eigen::Ref<const Eigen::Vec
   residual -= target;
   gradient.noalias() = jac.transpose() * residual;
   return 0.5 * residual.squaredNorm();
+}
+
+double largest_tip_distance(const Eigen::Ref<const Eigen::VectorXd>& residual) {
+  double largest2 = 0;
+  for (Eigen::Index k = 0; k + 2 < residual.size(); k += 3) largest2 = std::max(largest2, residual.segment<3>(k).squaredNorm());
+  return std::sqrt(largest2);
 }
 
 }  // namespace ik

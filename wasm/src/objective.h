@@ -19,4 +19,17 @@ double objective_and_gradient(Kinematics& kin, const Eigen::Ref<const Eigen::Vec
                               Eigen::Ref<Eigen::VectorXd> residual, Eigen::Ref<Eigen::MatrixXd> jac,
                               Eigen::Ref<Eigen::VectorXd> gradient);
 
+// The largest distance of an end effector's tip from its target: max over the residual's
+// 3-vectors r_k = x_k - x_b,k of |r_k| (rig units). No allocation.
+double largest_tip_distance(const Eigen::Ref<const Eigen::VectorXd>& residual);
+
+// An effector whose distance from its target is at least this share of the largest one still
+// counts as off target when a solver looks for a way out of a stop (saddle_escape, chain_restart).
+constexpr double kOffTargetShare = 0.1;
+
+// Is effector `e` off target in that sense, with `largest` = largest_tip_distance(residual)?
+inline bool off_target(const Eigen::Ref<const Eigen::VectorXd>& residual, int e, double largest) {
+  return residual.segment<3>(3 * e).norm() >= kOffTargetShare * largest;
+}
+
 }  // namespace ik

@@ -4,12 +4,12 @@
 #include <cmath>
 #include <limits>
 
+#include "objective.h"
+
 namespace ik {
 
 namespace {
 
-// Effectors count as off target from this share of the largest tip distance (as saddle_escape).
-constexpr double kOffTargetShare = 0.1;
 // Chain restarts use the sequence's points from here on, after any whole-pose restart's.
 constexpr long kFirstPoint = 1L << 24;
 // Perturbation radii, degrees, used in turn; infinity: anywhere inside the limits (as a restart).
@@ -59,14 +59,13 @@ bool ChainRestart::beyond_reach(const Kinematics& kin, int e, const Eigen::Ref<c
 bool ChainRestart::propose(const Kinematics& kin, const Eigen::Ref<const Eigen::VectorXd>& best,
                            const Eigen::Ref<const Eigen::VectorXd>& r, const Eigen::Ref<const Eigen::VectorXd>& target,
                            double slack, const QuasiRandom& sequence, long attempt, Eigen::Ref<Eigen::VectorXd> start) {
-  double largest = 0;
-  for (int e = 0; e < kin.num_effectors(); ++e) largest = std::max(largest, r.segment<3>(3 * e).norm());
+  const double largest = largest_tip_distance(r);
   if (!(largest > 0)) return false;
   std::fill(moved_.begin(), moved_.end(), 0);
   std::fill(kept_.begin(), kept_.end(), 0);
   bool any = false;
   for (int e = 0; e < kin.num_effectors(); ++e) {
-    const bool off = r.segment<3>(3 * e).norm() >= kOffTargetShare * largest;
+    const bool off = off_target(r, e, largest);
     if (off && beyond_reach(kin, e, target, slack)) continue;
     for (int b : kin.chain(kin.rig().effectors[e])) (off ? moved_ : kept_)[b] = 1;
     any = any || off;

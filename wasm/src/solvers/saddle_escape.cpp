@@ -17,8 +17,6 @@ constexpr double kRelativeCurvature = 1e-8;
 constexpr double kDecrease = 0.25;
 // Halvings of the first step before giving up (30 degrees down to about 1e-7 degrees).
 constexpr int kMaxHalvings = 28;
-// Effectors count as off target from this share of the largest tip distance.
-constexpr double kOffTargetShare = 0.1;
 
 }  // namespace
 
@@ -33,11 +31,10 @@ void SaddleEscape::resize(const Kinematics& kin) {
 void SaddleEscape::choose_angles(const Kinematics& kin, const Eigen::Ref<const Eigen::VectorXd>& r) {
   for (int c = 0; c < count_; ++c) position_[index_[c]] = -1;
   count_ = 0;
-  double largest = 0;
-  for (int e = 0; e < kin.num_effectors(); ++e) largest = std::max(largest, r.segment<3>(3 * e).norm());
+  const double largest = largest_tip_distance(r);
   if (!(largest > 0)) return;
   for (int e = 0; e < kin.num_effectors(); ++e) {
-    if (r.segment<3>(3 * e).norm() < kOffTargetShare * largest) continue;
+    if (!off_target(r, e, largest)) continue;
     const std::vector<int>& chain = kin.chain(kin.rig().effectors[e]);
     for (auto bone = chain.rbegin(); bone != chain.rend(); ++bone)  // distal bones first
       for (int k = 0; k < 3; ++k) {

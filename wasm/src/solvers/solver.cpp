@@ -185,7 +185,7 @@ StopReason Solver::begin(const Eigen::Ref<const Eigen::VectorXd>& angles,
   summary_.initial_E = E_;
   summary_.E = E_;
   summary_.gradient_norm = gradient_norm_;
-  summary_.tip_distance = largest_tip_distance();
+  summary_.tip_distance = largest_tip_distance(r_);
   summary_.reached = finite(E_) && on_target();
   summary_.angles = a_;
   record();
@@ -335,6 +335,8 @@ bool Solver::stalls() {
 
 bool Solver::restarts_left() const { return !opt_.paper_mode && restart_index_ < opt_.restarts; }
 
+bool Solver::chain_restarts_left() const { return !opt_.paper_mode && chain_index_ < opt_.chain_restarts; }
+
 bool Solver::descends_further() const {
   return restarts_left() && !on_target() && gradient_norm_ >= kStationaryFraction * opt_.gradient_tolerance;
 }
@@ -365,7 +367,7 @@ bool Solver::escape() {
 }
 
 bool Solver::chain_restart() {
-  if (opt_.paper_mode || chain_index_ >= opt_.chain_restarts) return false;
+  if (!chain_restarts_left()) return false;
   trial_ = summary_.angles;
   evaluate(trial_, r_trial_);  // poses kin_ at the best point
   // How far off a tip may be on target: the tip tolerance, or with the E test the distance at which
@@ -385,7 +387,7 @@ bool Solver::move_on(StopReason& reason) {
   const bool out_of_iterations = summary_.iterations >= opt_.max_iterations;
   if (out_of_iterations || out_of_time()) {
     // The budget, not the problem, ends the solve while restarts of either kind are left.
-    const bool left = restarts_left() || (!opt_.paper_mode && chain_index_ < opt_.chain_restarts);
+    const bool left = restarts_left() || chain_restarts_left();
     if (left) reason = out_of_iterations ? StopReason::max_iterations : StopReason::timeout;
     return false;
   }
@@ -439,14 +441,8 @@ bool Solver::out_of_time() const {
 }
 
 bool Solver::on_target() const {
-  if (opt_.tip_tolerance > 0) return largest_tip_distance() < opt_.tip_tolerance;
+  if (opt_.tip_tolerance > 0) return largest_tip_distance(r_) < opt_.tip_tolerance;
   return E_ < opt_.error_tolerance;
-}
-
-double Solver::largest_tip_distance() const {
-  double largest2 = 0;
-  for (int e = 0; e < m_ / 3; ++e) largest2 = std::max(largest2, r_.segment<3>(3 * e).squaredNorm());
-  return std::sqrt(largest2);
 }
 
 StopReason Solver::check_stop() const {
@@ -465,7 +461,7 @@ void Solver::note_best() {
   if (reached != summary_.reached ? !reached : !(E_ < summary_.E)) return;
   summary_.E = E_;
   summary_.gradient_norm = gradient_norm_;
-  summary_.tip_distance = largest_tip_distance();
+  summary_.tip_distance = largest_tip_distance(r_);
   summary_.reached = reached;
   summary_.angles = a_;
 }

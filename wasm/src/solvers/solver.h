@@ -205,8 +205,6 @@ class Solver {
   bool out_of_time() const;
   // Is the current iterate (E_, r_) on target (the test of converged_E)?
   bool on_target() const;
-  // The largest distance of an effector's tip from its target in r_, rig units.
-  double largest_tip_distance() const;
 
   Kinematics& kin_;
   SolverOptions opt_;       // the current solve's
@@ -234,6 +232,9 @@ class Solver {
   bool stalls();
   // Outside paper mode, fewer restarts done in this solve than the option allows.
   bool restarts_left() const;
+  // Outside paper mode, fewer chain restarts drawn (in this solve and the ones it continues) than
+  // the option allows.
+  bool chain_restarts_left() const;
   // With restarts left and E above the error tolerance: is |g| under the gradient tolerance but
   // above a tenth of it (still descending: the gradient test does not end the run)?
   bool descends_further() const;
