@@ -7,23 +7,22 @@ import { mkdirSync } from 'node:fs';
 import { join } from 'node:path';
 
 import type { Page } from 'playwright-core';
-import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { describe, expect, it } from 'vitest';
 
-import { launchBrowser, openPage, repoRoot, startVite, type BrowserSession } from './harness.js';
-import { dragBy, effectorNamed, gotoRig, selectTarget, statText, targetScreen, waitForConvergence, waitForSettled } from './page_helpers.js';
+import { openPage, repoRoot } from './harness.js';
+import {
+  dragBy,
+  effectorNamed,
+  gotoRig,
+  selectTarget,
+  statText,
+  targetScreen,
+  usePageServer,
+  waitForConvergence,
+  waitForSettled,
+} from './page_helpers.js';
 
-let server: { url: string; close: () => Promise<void> };
-let browser: BrowserSession;
-
-beforeAll(async () => {
-  server = await startVite();
-  browser = await launchBrowser();
-});
-
-afterAll(async () => {
-  await browser?.close();
-  await server?.close();
-});
+const env = usePageServer();
 
 /** Distance of every effector's tip from its target (rig units), in effector order. */
 async function tipErrors(page: Page): Promise<number[]> {
@@ -39,8 +38,8 @@ async function tipTolerance(page: Page): Promise<number> {
 
 describe('dragging from the rest pose', () => {
   it("the README's knight drag: hand.L dragged by (30, -70) px ends on its target", async (ctx) => {
-    const { page, errors } = await openPage(browser, ctx);
-    await gotoRig(page, server.url, 'knight');
+    const { page, errors } = await openPage(env.browser, ctx);
+    await gotoRig(page, env.url, 'knight');
     const hand = await selectTarget(page, await effectorNamed(page, /^hand\.L$/));
     await dragBy(page, hand, 30, -70);
     await waitForConvergence(page);
@@ -50,8 +49,8 @@ describe('dragging from the rest pose', () => {
   });
 
   it("lifting the character's foot by 30% of its height: the foot follows at every step, hands and head stay", async (ctx) => {
-    const { page, errors } = await openPage(browser, ctx);
-    await gotoRig(page, server.url, 'character');
+    const { page, errors } = await openPage(env.browser, ctx);
+    await gotoRig(page, env.url, 'character');
     const names = await page.evaluate(() => {
       const p = window.ikPage;
       return (p?.effectors() ?? []).map((b) => p?.boneNames()[b] ?? '');
@@ -120,8 +119,8 @@ describe('dragging from the rest pose', () => {
   });
 
   it('a target dragged past the arm ends at the closest point, says so, and the pinned effectors stay', async (ctx) => {
-    const { page, errors } = await openPage(browser, ctx);
-    await gotoRig(page, server.url, 'knight');
+    const { page, errors } = await openPage(env.browser, ctx);
+    await gotoRig(page, env.url, 'knight');
     const hand = await selectTarget(page, await effectorNamed(page, /^hand\.L$/));
     const from = await targetScreen(page, hand);
     const root = await page.evaluate(() => window.ikPage?.boneScreen(0) ?? null);

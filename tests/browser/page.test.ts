@@ -6,9 +6,9 @@ import { mkdirSync } from 'node:fs';
 import { join } from 'node:path';
 
 import type { Page } from 'playwright-core';
-import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { describe, expect, it } from 'vitest';
 
-import { launchBrowser, openPage, repoRoot, startVite, type BrowserSession } from './harness.js';
+import { launchBrowser, openPage, repoRoot } from './harness.js';
 import {
   dragBy,
   dragTowardsRoot,
@@ -18,30 +18,20 @@ import {
   stat,
   statText,
   targetScreen,
+  usePageServer,
   waitForConvergence,
   waitForSettled,
 } from './page_helpers.js';
 
 const RIGS = ['lamp', 'robot-arm', 'knight', 'hand', 'beast', 'character'];
 
-let server: { url: string; close: () => Promise<void> };
-let browser: BrowserSession;
+const env = usePageServer();
 
-beforeAll(async () => {
-  server = await startVite();
-  browser = await launchBrowser();
-});
-
-afterAll(async () => {
-  await browser?.close();
-  await server?.close();
-});
-
-const gotoRig = (page: Page, rig: string, query = ''): Promise<void> => openRig(page, server.url, rig, query);
+const gotoRig = (page: Page, rig: string, query = ''): Promise<void> => openRig(page, env.url, rig, query);
 
 describe('the page', () => {
   it('loads each project rig with no console errors', async (ctx) => {
-    const { page, errors } = await openPage(browser, ctx);
+    const { page, errors } = await openPage(env.browser, ctx);
     for (const rig of RIGS) {
       await gotoRig(page, rig);
       expect(await page.evaluate(() => window.ikPage?.rigName())).toBe(rig);
@@ -56,7 +46,7 @@ describe('the page', () => {
   });
 
   it('dragging a target with the mouse moves the effector onto it, the camera stays still', async (ctx) => {
-    const { page, errors } = await openPage(browser, ctx);
+    const { page, errors } = await openPage(env.browser, ctx);
     await gotoRig(page, 'lamp');
     const camera = await page.evaluate(() => window.ikPage?.cameraPosition());
     const { to } = await dragTowardsRoot(page, 0, 0.2);
@@ -71,7 +61,7 @@ describe('the page', () => {
   });
 
   it('switching methods works (panel select, stats and URL follow)', async (ctx) => {
-    const { page, errors } = await openPage(browser, ctx);
+    const { page, errors } = await openPage(env.browser, ctx);
     await gotoRig(page, 'robot-arm');
     const select = page.locator('.lil-controller', { has: page.locator('.lil-name', { hasText: /^method$/ }) }).locator('select');
     for (const method of ['gd', 'bfgs', 'gn', 'newton', 'lm']) {
@@ -86,14 +76,14 @@ describe('the page', () => {
       );
     }
     // The URL reproduces the view.
-    await page.goto(`${server.url}?rig=robot-arm&method=gn`);
+    await page.goto(`${env.url}?rig=robot-arm&method=gn`);
     await page.waitForFunction(() => document.getElementById('app')?.dataset.state === 'ready');
     expect(await select.inputValue()).toBe('gn');
     expect(errors).toEqual([]);
   });
 
   it('step mode advances one iteration per S', async (ctx) => {
-    const { page, errors } = await openPage(browser, ctx);
+    const { page, errors } = await openPage(env.browser, ctx);
     await gotoRig(page, 'lamp', '&method=gd');
     await page.locator('.lil-controller', { has: page.locator('.lil-name', { hasText: /^step mode$/ }) }).locator('input').check();
     await dragTowardsRoot(page, 0, 0.3);
@@ -110,7 +100,7 @@ describe('the page', () => {
   });
 
   it('clicking a bone makes its tip an effector and clicking again removes it; R resets', async (ctx) => {
-    const { page, errors } = await openPage(browser, ctx);
+    const { page, errors } = await openPage(env.browser, ctx);
     await gotoRig(page, 'robot-arm');
     const before = await page.evaluate(() => window.ikPage?.effectors() ?? []);
     // The longest bone that is not an effector.
@@ -174,7 +164,7 @@ describe('the page', () => {
   });
 
   it('a broken file shows the error and keeps the previous rig', async (ctx) => {
-    const { page, errors } = await openPage(browser, ctx);
+    const { page, errors } = await openPage(env.browser, ctx);
     await gotoRig(page, 'knight');
     const before = await page.evaluate(() => window.ikPage?.loads() ?? 0);
     await page.evaluate(() => {
@@ -197,7 +187,7 @@ describe('the page', () => {
   });
 
   it('loading another rig frees the previous one (WebAssembly and three.js objects)', async (ctx) => {
-    const { page, errors } = await openPage(browser, ctx);
+    const { page, errors } = await openPage(env.browser, ctx);
     await gotoRig(page, 'lamp');
     await dragTowardsRoot(page, 0, 0.1);
     await waitForConvergence(page);
@@ -227,7 +217,7 @@ describe('the page', () => {
 
   // Writes docs/screenshot.png (the README's picture) when UPDATE_SCREENSHOT=1, else test-results/.
   it('shows the knight for the README (docs/screenshot.png)', async (ctx) => {
-    const { page, errors } = await openPage(browser, ctx);
+    const { page, errors } = await openPage(env.browser, ctx);
     await gotoRig(page, 'knight');
     const hand = await selectTarget(page, await effectorNamed(page, /hand/i));
     await dragBy(page, hand, 30, -70);
@@ -256,7 +246,7 @@ describe('the page', () => {
   });
 
   it('measures the main-thread time per solve while dragging on the largest rig', async (ctx) => {
-    const { page, errors } = await openPage(browser, ctx);
+    const { page, errors } = await openPage(env.browser, ctx);
     await page.setViewportSize({ width: 800, height: 500 }); // software WebGL draws more frames per second
     await gotoRig(page, 'character');
     const bones = await page.evaluate(() => document.getElementById('rig-name')?.textContent ?? '');

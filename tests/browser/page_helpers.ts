@@ -1,9 +1,41 @@
 // What the page's browser tests share: opening a rig, reading the stats, and dragging a target's
 // gizmo with real mouse events (screen positions come from window.ikPage, web/src/page/probe.ts).
 import type { Page } from 'playwright-core';
-import { expect } from 'vitest';
+import { afterAll, beforeAll, expect } from 'vitest';
 
 import type { ScreenPoint } from '../../web/src/page/probe.js';
+import { launchBrowser, startVite, type BrowserSession } from './harness.js';
+
+/** The page's vite server and a browser for one test file: started before its tests, closed after. */
+export interface PageServer {
+  /** The page's URL (ends with /). */
+  readonly url: string;
+  readonly browser: BrowserSession;
+}
+
+/** Starts the page's server and Chromium for the calling test file (beforeAll / afterAll). */
+export function usePageServer(): PageServer {
+  let server: { url: string; close: () => Promise<void> } | undefined;
+  let browser: BrowserSession | undefined;
+  beforeAll(async () => {
+    server = await startVite();
+    browser = await launchBrowser();
+  });
+  afterAll(async () => {
+    await browser?.close();
+    await server?.close();
+  });
+  return {
+    get url() {
+      if (!server) throw new Error('the page server has not started');
+      return server.url;
+    },
+    get browser() {
+      if (!browser) throw new Error('the browser has not started');
+      return browser;
+    },
+  };
+}
 
 /** Opens the page at `url` with `?rig=NAME` (and `query`) and waits until the rig is ready. */
 export async function gotoRig(page: Page, url: string, rig: string, query = ''): Promise<void> {

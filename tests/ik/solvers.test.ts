@@ -1,26 +1,21 @@
 // The solvers through WebAssembly in Node: every method on the report's incremental targets
 // (PROTOCOL.md) on the five A7 rigs, and the contract of the binding (options, errors, stepping).
-import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { beforeAll, describe, expect, it } from 'vitest';
 
 import type { IkCoreModule } from '../../web/src/ik/module.js';
 import { loadIkNode } from '../../web/src/ik/node.js';
 import { IkRig } from '../../web/src/ik/rig.js';
 import { IkSolver, SOLVER_METHODS, type SolverOptions } from '../../web/src/ik/solver.js';
 import { a7Names, loadA7, randomAngles, seeded } from '../helpers/a7.js';
+import { disposeAfterAll } from '../helpers/owned.js';
 
 let ik: IkCoreModule;
-const owned: { dispose(): void }[] = [];
+const keep = disposeAfterAll();
 
 beforeAll(async () => {
   ik = await loadIkNode();
 });
 
-afterAll(() => owned.reverse().forEach((o) => o.dispose()));
-
-function keep<T extends { dispose(): void }>(o: T): T {
-  owned.push(o);
-  return o;
-}
 
 /** The report's tolerances: beast (0.01, 0.002), every other rig (1e-4, 2e-4); no time budget. */
 function reportOptions(rig: string): SolverOptions & { errorTolerance: number } {

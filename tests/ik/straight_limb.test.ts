@@ -2,27 +2,22 @@
 // a straight two-bone limb whose target moves along it towards its root bends and reaches the
 // target; a target past its length ends at the closest point, reported as not reached; and the
 // result's stop reason, `reached` and `tipDistance` describe the returned angles.
-import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { beforeAll, describe, expect, it } from 'vitest';
 
 import type { IkCoreModule } from '../../web/src/ik/module.js';
 import { loadIkNode } from '../../web/src/ik/node.js';
 import { IkRig } from '../../web/src/ik/rig.js';
 import type { RigSpec } from '../../web/src/ik/rig_spec.js';
 import { IkSolver, SOLVER_METHODS } from '../../web/src/ik/solver.js';
+import { disposeAfterAll } from '../helpers/owned.js';
 
 let ik: IkCoreModule;
-const owned: { dispose(): void }[] = [];
+const keep = disposeAfterAll();
 
 beforeAll(async () => {
   ik = await loadIkNode();
 });
 
-afterAll(() => owned.reverse().forEach((o) => o.dispose()));
-
-function keep<T extends { dispose(): void }>(o: T): T {
-  owned.push(o);
-  return o;
-}
 
 /** Two bones of length 1 along +x from the origin, limits +-180 degrees; effector: the second tip (2, 0, 0). */
 function straightLimb(): RigSpec {

@@ -1,22 +1,12 @@
 #include <gtest/gtest.h>
 
 #include "a7_fixtures.h"
+#include "small_rigs.h"
 
 namespace ik {
 namespace {
 
-Rig two_bones() {
-  Rig rig;
-  rig.bones.resize(2);
-  rig.bones[0].name = "upper";
-  rig.bones[0].length = 1;
-  rig.bones[1].name = "lower";
-  rig.bones[1].parent = 0;
-  rig.bones[1].length = 1;
-  rig.bones[1].rest(0, 3) = 1;
-  rig.effectors = {1};
-  return rig;
-}
+using test::two_bones;
 
 void expect_error(const Rig& rig, const std::string& fragment) {
   try {

@@ -9,16 +9,13 @@
 #include <string>
 
 #include "../allocation_counter.h"
+#include "../small_rigs.h"
 #include "solvers/solver_registry.h"
 
 namespace ik {
 namespace {
 
-Eigen::Matrix4d translation(double x, double y, double z) {
-  Eigen::Matrix4d m = Eigen::Matrix4d::Identity();
-  m.block<3, 1>(0, 3) = Eigen::Vector3d(x, y, z);
-  return m;
-}
+using test::translation;
 
 // Every angle in [-180, 180] degrees, as the importers give a joint without limits.
 void limit_to_half_turns(Rig& rig) {
@@ -28,17 +25,9 @@ void limit_to_half_turns(Rig& rig) {
   }
 }
 
-// Two bones of length 1 along +x from the origin; the effector is the second bone's tip (2, 0, 0).
+// test::two_bones with limits of +-180 degrees: a straight limb as an imported character has it.
 Rig straight_limb() {
-  Rig rig;
-  rig.bones.resize(2);
-  rig.bones[0].name = "upper";
-  rig.bones[0].length = 1;
-  rig.bones[1].name = "lower";
-  rig.bones[1].parent = 0;
-  rig.bones[1].rest = translation(1, 0, 0);
-  rig.bones[1].length = 1;
-  rig.effectors = {1};
+  Rig rig = test::two_bones();
   limit_to_half_turns(rig);
   return rig;
 }

@@ -164,9 +164,7 @@ export class PageApp {
 
   /** Screen position (client pixels) of a world point, for tests and tools. */
   toScreen(p: Vector3): { x: number; y: number } {
-    const rect = this.stage.canvas.getBoundingClientRect();
-    v.copy(p).project(this.stage.camera);
-    return { x: rect.left + ((v.x + 1) / 2) * rect.width, y: rect.top + ((1 - v.y) / 2) * rect.height };
+    return this.stage.toScreen(p);
   }
 
   /** Screen pixels (CSS) per rig unit at world point `p`. */

@@ -59,6 +59,13 @@ export class Stage {
     this.renderer.setAnimationLoop((t) => this.tick(t));
   }
 
+  /** Where world point `p` is on screen now: client (CSS) pixels. */
+  toScreen(p: Vector3): { x: number; y: number } {
+    const rect = this.canvas.getBoundingClientRect();
+    viewPoint.copy(p).project(this.camera);
+    return { x: rect.left + ((viewPoint.x + 1) / 2) * rect.width, y: rect.top + ((1 - viewPoint.y) / 2) * rect.height };
+  }
+
   /** Screen pixels (CSS) per world unit at world point `p`, seen by the camera now. */
   pixelsPerUnit(p: Vector3): number {
     const depth = viewPoint.copy(p).applyMatrix4(this.camera.matrixWorldInverse).z;

@@ -26,13 +26,9 @@ export interface WidgetProbe {
 /** The snapshot of one installed rig; `tipTolerance` is the one the widget solves with (rig units). */
 export function widgetProbe(live: LiveRig, handles: Handles, stage: Stage, tipTolerance: number): WidgetProbe {
   const targets = live.session.targets;
-  const rect = stage.canvas.getBoundingClientRect();
   const p = new Vector3();
   const targetsOnScreen: ScreenPoint[] = [];
-  for (let k = 0; k < targets.length / 3; k++) {
-    p.fromArray(targets, 3 * k).project(stage.camera);
-    targetsOnScreen.push({ x: rect.left + ((p.x + 1) / 2) * rect.width, y: rect.top + ((1 - p.y) / 2) * rect.height });
-  }
+  for (let k = 0; k < targets.length / 3; k++) targetsOnScreen.push(stage.toScreen(p.fromArray(targets, 3 * k)));
   return {
     selected: handles.selected,
     targets: Array.from(targets),

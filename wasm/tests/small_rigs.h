@@ -1,0 +1,32 @@
+// Small rigs built in code, shared by the native tests that need no A7 file.
+#pragma once
+
+#include <Eigen/Core>
+
+#include "rig.h"
+
+namespace ik::test {
+
+// A rigid transform that only translates by (x, y, z), rig units.
+inline Eigen::Matrix4d translation(double x, double y, double z) {
+  Eigen::Matrix4d m = Eigen::Matrix4d::Identity();
+  m.block<3, 1>(0, 3) = Eigen::Vector3d(x, y, z);
+  return m;
+}
+
+// Two bones "upper" and "lower" of length 1 along +x from the origin, without limits; the
+// effector is the second bone's tip, (2, 0, 0) at rest.
+inline Rig two_bones() {
+  Rig rig;
+  rig.bones.resize(2);
+  rig.bones[0].name = "upper";
+  rig.bones[0].length = 1;
+  rig.bones[1].name = "lower";
+  rig.bones[1].parent = 0;
+  rig.bones[1].rest = translation(1, 0, 0);
+  rig.bones[1].length = 1;
+  rig.effectors = {1};
+  return rig;
+}
+
+}  // namespace ik::test
