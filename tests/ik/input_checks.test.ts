@@ -24,7 +24,7 @@ describe('the rig API refuses careless numbers', () => {
     for (const bad of [NaN, Infinity, -Infinity]) {
       const angles = new Float64Array(rig.numAngles);
       angles[4] = bad;
-      expect(() => rig.project(angles)).toThrow(`angles[4] is ${String(bad)}, not a finite number of degrees`);
+      expect(() => rig.project(angles)).toThrow(`angles[4] is ${String(bad)}, not a finite number`);
     }
     expect(rig.project(new Float64Array(rig.numAngles)).every(Number.isFinite)).toBe(true);
   });
@@ -32,7 +32,7 @@ describe('the rig API refuses careless numbers', () => {
   it('setEffectors: fractions, NaN and out-of-range indices are errors; the old list stays', () => {
     const before = Array.from(rig.effectors());
     for (const bad of [[NaN], [3.7], [-1], [rig.numBones], [0, 1e10], [2 ** 32 + 1]]) {
-      expect(() => rig.setEffectors(bad), JSON.stringify(bad)).toThrow(/not a bone index|is not a bone/);
+      expect(() => rig.setEffectors(bad), JSON.stringify(bad)).toThrow(/not an integer index|is not a bone|listed twice/);
       expect(Array.from(rig.effectors())).toEqual(before);
     }
     rig.setEffectors([0, 1]);

@@ -141,9 +141,9 @@ describe('the WebAssembly rig API', () => {
     expect(() => rig.tips(new Float64Array(5))).toThrow('angles has 5 values, expected 57');
     const a = new Float64Array(57);
     a[4] = NaN;
-    expect(() => rig.tips(a)).toThrow('angles[4] is not a finite number');
+    expect(() => rig.tips(a)).toThrow('angles[4] is NaN, not a finite number');
     expect(() => rig.objective(new Float64Array(57), new Float64Array(15).fill(Infinity))).toThrow(
-      'target[0] is not a finite number',
+      'target[0] is Infinity, not a finite number',
     );
     expect(() => rig.setEffectors([3, 99])).toThrow('end effector 1 is bone 99, which is not a bone');
     expect(Array.from(rig.effectors())).toEqual([18, 14, 8, 3, 5]);

@@ -133,8 +133,8 @@ describe('the Solver binding', () => {
     const solver = keep(new IkSolver(rig, 'bfgs'));
     expect(() => solver.solve(a, t.slice(1))).toThrow(/target has 2 values, expected 3/);
     expect(() => solver.solve(new Float64Array(rig.numAngles + 3), t)).toThrow(/angles has 18 values, expected 15/);
-    expect(() => solver.solve(a, t.map((x, i) => (i === 1 ? NaN : x)))).toThrow(/target\[1\] is not a finite number/);
-    expect(() => solver.start(a.map((x, i) => (i === 2 ? Infinity : x)), t)).toThrow(/angles\[2\] is not a finite number/);
+    expect(() => solver.solve(a, t.map((x, i) => (i === 1 ? NaN : x)))).toThrow(/target\[1\] is NaN, not a finite number/);
+    expect(() => solver.start(a.map((x, i) => (i === 2 ? Infinity : x)), t)).toThrow(/angles\[2\] is Infinity, not a finite number/);
     solver.setOptions({ errorTolerance: -1 });
     expect(() => solver.solve(a, t)).toThrow(/solver option errorTolerance must be a number >= 0/);
     solver.setOptions({});

@@ -1,5 +1,7 @@
 // Hand-written types for the Emscripten module built from wasm/bindings (3.1.6 cannot emit them).
 // CMake copies this file beside the generated ik_core.mjs. The typed API is web/src/ik/.
+// A failed call returns null ("", false, NaN, -1) and leaves its message for takeError(); the
+// bindings expect typed arrays of the right length and plain option objects (web/src/ik/inputs.ts).
 
 export interface RigSpecArrays {
   names?: string[];
@@ -11,24 +13,22 @@ export interface RigSpecArrays {
   effectors: Int32Array;
 }
 
-type Numbers = ArrayLike<number>;
-
 export interface EmbindRig {
   readonly numBones: number;
   readonly numAngles: number;
   readonly numEffectors: number;
   effectors(): Int32Array;
-  setEffectors(effectors: Int32Array): void;
+  setEffectors(effectors: Int32Array): boolean;
   lower(): Float64Array;
   upper(): Float64Array;
-  tips(angles: Numbers): Float64Array;
-  boneTips(angles: Numbers): Float64Array;
-  poses(angles: Numbers): Float64Array;
-  jacobian(angles: Numbers): Float64Array;
-  finiteDifferenceJacobian(angles: Numbers, hDeg: number, clamp: boolean): Float64Array;
-  objective(angles: Numbers, target: Numbers): number;
-  gradient(angles: Numbers, target: Numbers): Float64Array;
-  project(angles: Numbers): Float64Array;
+  tips(angles: Float64Array): Float64Array | null;
+  boneTips(angles: Float64Array): Float64Array | null;
+  poses(angles: Float64Array): Float64Array | null;
+  jacobian(angles: Float64Array): Float64Array | null;
+  finiteDifferenceJacobian(angles: Float64Array, hDeg: number, clamp: boolean): Float64Array | null;
+  objective(angles: Float64Array, target: Float64Array): number;
+  gradient(angles: Float64Array, target: Float64Array): Float64Array | null;
+  project(angles: Float64Array): Float64Array | null;
   delete(): void;
 }
 
@@ -81,30 +81,32 @@ export interface EmbindSolverOptions {
 export interface EmbindSolver {
   readonly method: string;
   readonly running: boolean;
-  setOptions(options: EmbindSolverOptions): void;
+  setOptions(options: EmbindSolverOptions): boolean;
   options(): Required<EmbindSolverOptions>;
-  start(angles: Numbers, target: Numbers): string;
+  start(angles: Float64Array, target: Float64Array): string;
   step(): boolean;
-  solve(angles: Numbers, target: Numbers): EmbindSolverResult;
   result(): EmbindSolverResult;
   errorHistory(): Float64Array;
   angles(): Float64Array;
-  /** n angles | m target | 12 result numbers (E, initialE, gradNorm, iterations, functionEvaluations, jacobianEvaluations, restarts, elapsedSeconds, tipDistance, reached (0/1), escapes, chainRestarts); stale (length 0) after memory growth. */
-  ioView(n: number, m: number): Float64Array;
-  /** Solves from the angles and target in ioView(); returns the stop reason's index in stopReasons(). */
+  /** #angles | #residuals target | 12 result numbers (E, initialE, gradNorm, iterations, functionEvaluations, jacobianEvaluations, restarts, elapsedSeconds, tipDistance, reached (0/1), escapes, chainRestarts); stale (length 0) after memory growth. */
+  ioView(): Float64Array | null;
+  /** Solves from the angles and target in ioView(); returns the stop reason's index in stopReasons(), -1 on failure. */
   solveIo(): number;
   delete(): void;
 }
 
 export interface EmbindSolverClass {
-  new (rig: EmbindRig, method: string, options: EmbindSolverOptions): EmbindSolver;
+  create(rig: EmbindRig, method: string, options: EmbindSolverOptions): EmbindSolver | null;
   methods(): string[];
+  defaultOptions(): Required<EmbindSolverOptions>;
   describe(method: string): string;
   stopReasons(): string[];
 }
 
 export interface IkCoreModule {
-  Rig: new (spec: RigSpecArrays) => EmbindRig;
+  Rig: { create(spec: RigSpecArrays): EmbindRig | null };
+  /** The message of the last failed call, cleared by reading it ("" if none). */
+  takeError(): string;
   Solver: EmbindSolverClass;
   [key: string]: unknown;
   HEAPU8: Uint8Array;

@@ -1,10 +1,20 @@
-// Bulk copies between JavaScript typed arrays and C++ buffers, and C++ errors as JS exceptions.
-// Only the bindings include this file.
+// Bulk copies between JavaScript typed arrays and C++ buffers, and how C++ errors reach
+// JavaScript. Only the bindings include this file.
+//
+// No exception ever crosses into JavaScript: one thrown through WebAssembly frames skips their
+// epilogues and destructors, leaking stack (about 32 bytes per error, until the module traps)
+// and heap. A binding runs its body in guarded(), which catches every C++ exception, keeps the
+// message for take_error() and returns a failure value (null, NaN, false, "" or -1); the
+// TypeScript wrappers (web/src/ik/) turn that into a thrown Error. They also hand the bindings
+// only typed arrays of the right length and plain option objects, so no JavaScript error can be
+// raised inside a binding either.
 #pragma once
 
 #include <emscripten/val.h>
 
 #include <exception>
+#include <new>
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -12,23 +22,32 @@
 
 namespace ik::js {
 
-// Throws a JavaScript Error carrying `message`. The message is copied into a JS string first,
-// so no C++ object is left behind when the exception unwinds into JavaScript.
-[[noreturn]] inline void throw_error(const std::string& message) {
-  emscripten::val error = emscripten::val::global("Error").new_(emscripten::val(message));
-  error.throw_();
+// The message of the last failed binding call ("" if none since the last take_error()).
+inline std::string& last_error() {
+  static std::string message;
+  return message;
 }
 
-// Runs `body` and turns any C++ exception into a JavaScript Error with the same message.
-template <class Body>
-auto guarded(Body body) -> decltype(body()) {
+// Returns and clears the last error message (JavaScript: module.takeError()).
+inline std::string take_error() {
   std::string message;
+  message.swap(last_error());
+  return message;
+}
+
+// Runs `body`; if it throws, keeps the message for take_error() and returns `failure` instead.
+template <class Body, class Result = decltype(std::declval<Body>()())>
+Result guarded(Body body, Result failure) {
   try {
     return body();
+  } catch (const std::bad_alloc&) {
+    last_error() = "out of memory (the WebAssembly heap is at most 2 GiB)";
   } catch (const std::exception& e) {
-    message = e.what();
+    last_error() = e.what();
+  } catch (...) {
+    last_error() = "unknown C++ error";
   }
-  throw_error(message);
+  return failure;
 }
 
 // Length of a JS array-like, or an error naming `what` if it is not one.

@@ -1,8 +1,10 @@
 // embind bindings for the rig and its kinematics. Arrays cross as typed arrays in bulk;
-// results are copied out. Every C++ error becomes a JavaScript Error with the same message.
+// results are copied out. A failed call returns null (NaN, false) and leaves its message for
+// takeError() (js_arrays.h says why nothing is thrown).
 #include <emscripten/bind.h>
 
 #include <Eigen/Core>
+#include <limits>
 
 #include "finite_difference_jacobian.h"
 #include "js_arrays.h"
@@ -14,11 +16,13 @@ namespace ik::js {
 
 using emscripten::val;
 
-RigBinding::RigBinding(const val& spec) : kin_(guarded([&] { return build(spec); })) {
-  angles_.resize(kin_.num_angles());
-  target_.resize(kin_.num_residuals());
-  tips_.resize(kin_.num_residuals());
-  jac_.resize(kin_.num_residuals() * kin_.num_angles());
+RigBinding* RigBinding::create(const val& spec) {
+  return guarded([&] { return new RigBinding(build(spec)); }, static_cast<RigBinding*>(nullptr));
+}
+
+Eigen::Map<Eigen::MatrixXd> RigBinding::jacobian_buffer() {
+  jac_.resize(static_cast<size_t>(kin_.num_residuals()) * kin_.num_angles());
+  return Eigen::Map<Eigen::MatrixXd>(jac_.data(), kin_.num_residuals(), kin_.num_angles());
 }
 
 Kinematics RigBinding::build(const val& spec) {
@@ -62,10 +66,11 @@ Eigen::Map<const Eigen::VectorXd> RigBinding::read_target(const val& target) {
 
 val RigBinding::tips(const val& angles) {
   return guarded([&] {
+    tips_.resize(kin_.num_residuals());
     Eigen::Map<Eigen::VectorXd> tips(tips_.data(), tips_.size());
     kin_.tips(read_angles(angles), tips);
     return copy_out(tips_.data(), tips_.size());
-  });
+  }, val::null());
 }
 
 val RigBinding::bone_tips(const val& angles) {
@@ -75,7 +80,7 @@ val RigBinding::bone_tips(const val& angles) {
     out.resize(3 * kin_.num_bones());
     for (int i = 0; i < kin_.num_bones(); ++i) Eigen::Map<Eigen::Vector3d>(out.data() + 3 * i) = kin_.tip(i);
     return copy_out(out.data(), out.size());
-  });
+  }, val::null());
 }
 
 val RigBinding::poses(const val& angles) {
@@ -86,17 +91,16 @@ val RigBinding::poses(const val& angles) {
     for (int i = 0; i < kin_.num_bones(); ++i)
       Eigen::Map<Eigen::Matrix<double, 4, 4, Eigen::RowMajor>>(out.data() + 16 * i) = kin_.pose(i).matrix();
     return copy_out(out.data(), out.size());
-  });
+  }, val::null());
 }
 
 val RigBinding::jacobian(const val& angles) {
   return guarded([&] {
+    tips_.resize(kin_.num_residuals());
     Eigen::Map<Eigen::VectorXd> tips(tips_.data(), tips_.size());
-    Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::ColMajor>> jac(
-        jac_.data(), kin_.num_residuals(), kin_.num_angles());
-    kin_.jacobian(read_angles(angles), tips, jac);
+    kin_.jacobian(read_angles(angles), tips, jacobian_buffer());
     return row_major_copy();
-  });
+  }, val::null());
 }
 
 val RigBinding::finite_difference_jacobian(const val& angles, double h_deg, bool clamp) {
@@ -104,10 +108,9 @@ val RigBinding::finite_difference_jacobian(const val& angles, double h_deg, bool
     if (!(h_deg > 0)) throw RigError("finite difference step must be > 0 degrees");
     const auto a = read_angles(angles);
     Eigen::VectorXd scratch(kin_.num_angles()), plus(kin_.num_residuals()), minus(kin_.num_residuals());
-    Eigen::Map<Eigen::MatrixXd> jac(jac_.data(), kin_.num_residuals(), kin_.num_angles());
-    ik::finite_difference_jacobian(kin_, a, h_deg, clamp, scratch, plus, minus, jac);
+    ik::finite_difference_jacobian(kin_, a, h_deg, clamp, scratch, plus, minus, jacobian_buffer());
     return row_major_copy();
-  });
+  }, val::null());
 }
 
 val RigBinding::row_major_copy() {
@@ -122,43 +125,43 @@ double RigBinding::objective(const val& angles, const val& target) {
   return guarded([&] {
     const auto a = read_angles(angles);
     const auto t = read_target(target);
+    tips_.resize(kin_.num_residuals());
     Eigen::Map<Eigen::VectorXd> r(tips_.data(), tips_.size());
     return ik::objective(kin_, a, t, r);
-  });
+  }, std::numeric_limits<double>::quiet_NaN());
 }
 
 val RigBinding::gradient(const val& angles, const val& target) {
   return guarded([&] {
     const auto a = read_angles(angles);
     const auto t = read_target(target);
+    tips_.resize(kin_.num_residuals());
     Eigen::Map<Eigen::VectorXd> r(tips_.data(), tips_.size());
-    Eigen::Map<Eigen::MatrixXd> jac(jac_.data(), kin_.num_residuals(), kin_.num_angles());
+    Eigen::Map<Eigen::MatrixXd> jac = jacobian_buffer();
     scratch_.resize(kin_.num_angles());
     Eigen::Map<Eigen::VectorXd> g(scratch_.data(), scratch_.size());
     objective_and_gradient(kin_, a, t, r, jac, g);
     return copy_out(scratch_.data(), scratch_.size());
-  });
+  }, val::null());
 }
 
 val RigBinding::project(const val& angles) {
   return guarded([&] {
     copy_in(angles, kin_.num_angles(), angles_, "angles");
+    check_finite(angles_.data(), angles_.size(), "angles");
     Eigen::Map<Eigen::VectorXd> a(angles_.data(), angles_.size());
     kin_.project(a);
     return copy_out(angles_.data(), angles_.size());
-  });
+  }, val::null());
 }
 
-void RigBinding::set_effectors(const val& effectors) {
-  guarded([&] {
+bool RigBinding::set_effectors(const val& effectors) {
+  return guarded([&] {
     std::vector<int> list;
     copy_in(effectors, list, "effectors");
     kin_.set_effectors(list);
-    target_.resize(kin_.num_residuals());
-    tips_.resize(kin_.num_residuals());
-    jac_.resize(kin_.num_residuals() * kin_.num_angles());
-    return 0;
-  });
+    return true;
+  }, false);
 }
 
 val RigBinding::effectors() const {
@@ -173,8 +176,9 @@ val RigBinding::upper() const { return copy_out(kin_.upper().data(), kin_.upper(
 
 EMSCRIPTEN_BINDINGS(ik_kinematics) {
   using ik::js::RigBinding;
+  emscripten::function("takeError", &ik::js::take_error);
   emscripten::class_<RigBinding>("Rig")
-      .constructor<const emscripten::val&>()
+      .class_function("create", &RigBinding::create, emscripten::allow_raw_pointers())
       .property("numBones", &RigBinding::num_bones)
       .property("numAngles", &RigBinding::num_angles)
       .property("numEffectors", &RigBinding::num_effectors)

@@ -1,10 +1,12 @@
 // The rig object that JavaScript holds: a Kinematics plus reusable buffers for the arrays that
 // cross the boundary. JavaScript must call delete() on it (the TS wrapper's dispose() does).
+// Calls that fail return null (or NaN, false) and leave the message for take_error().
 #pragma once
 
 #include <emscripten/val.h>
 
 #include <Eigen/Core>
+#include <utility>
 #include <vector>
 
 #include "kinematics.h"
@@ -15,14 +17,15 @@ class RigBinding {
  public:
   // spec: { parents: Int32Array(m), rest: Float64Array(16m, row-major canonical->rest),
   //         lengths: Float64Array(m), lower/upper: Float64Array(3m, degrees),
-  //         effectors: Int32Array(n), names?: string[] }. Throws a JS Error on a bad rig.
-  explicit RigBinding(const emscripten::val& spec);
+  //         effectors: Int32Array(n), names?: string[] }. A new rig (JavaScript owns it), or
+  // null for a bad rig.
+  static RigBinding* create(const emscripten::val& spec);
 
   int num_bones() const { return kin_.num_bones(); }
   int num_angles() const { return kin_.num_angles(); }
   int num_effectors() const { return kin_.num_effectors(); }
   emscripten::val effectors() const;             // Int32Array(n) of bone indices
-  void set_effectors(const emscripten::val& effectors);
+  bool set_effectors(const emscripten::val& effectors);  // false (the old list kept) if refused
   emscripten::val lower() const;                 // Float64Array(3m), degrees
   emscripten::val upper() const;                 // Float64Array(3m), degrees
 
@@ -32,7 +35,7 @@ class RigBinding {
   emscripten::val poses(const emscripten::val& angles);      // Float64Array(16m), row-major T_i
   emscripten::val jacobian(const emscripten::val& angles);   // Float64Array(3n*3m), row-major, per degree
   emscripten::val finite_difference_jacobian(const emscripten::val& angles, double h_deg, bool clamp);
-  double objective(const emscripten::val& angles, const emscripten::val& target);  // E
+  double objective(const emscripten::val& angles, const emscripten::val& target);  // E, NaN on failure
   emscripten::val gradient(const emscripten::val& angles, const emscripten::val& target);  // Float64Array(3m)
   emscripten::val project(const emscripten::val& angles);    // clamped copy, Float64Array(3m)
 
@@ -44,11 +47,14 @@ class RigBinding {
   Eigen::Map<const Eigen::VectorXd> read_target(const emscripten::val& target);
 
  private:
+  explicit RigBinding(Kinematics kin) : kin_(std::move(kin)) {}
   static Kinematics build(const emscripten::val& spec);
+  // Sizes jac_ for the current effectors (allocated on first use, inside a guarded call).
+  Eigen::Map<Eigen::MatrixXd> jacobian_buffer();
   emscripten::val row_major_copy();
 
   Kinematics kin_;
-  std::vector<double> angles_, target_, tips_, jac_, scratch_;
+  std::vector<double> angles_, target_, tips_, jac_, scratch_;  // sized on use
 };
 
 }  // namespace ik::js

@@ -1,7 +1,8 @@
 // embind bindings for the solvers: a Solver is one method (solver_registry.h) on one Rig.
-// Arrays cross as typed arrays in bulk; results are copied out. C++ errors and bad input become
-// JavaScript Errors with the C++ message. The Rig must outlive the Solver; JavaScript must call
-// delete() on the Solver (the TS wrapper's dispose() does).
+// Arrays cross as typed arrays in bulk; results are copied out. A failed call returns null ("",
+// false, -1) and leaves the message for takeError() (js_arrays.h says why nothing is thrown).
+// The Rig must outlive the Solver; JavaScript must call delete() on the Solver (the TS wrapper's
+// dispose() does).
 #include <emscripten/bind.h>
 
 #include <algorithm>
@@ -31,9 +32,12 @@ struct SolverResultJs {
 
 class SolverBinding {
  public:
-  // Throws a JS Error for an unknown method or a malformed options object.
-  SolverBinding(RigBinding& rig, const std::string& method, const val& options)
-      : rig_(rig), solver_(guarded([&] { return make_solver(method, rig.kinematics(), read_options(options)); })) {}
+  // A solver of `method` on `rig` (JavaScript owns it), or null for an unknown method or a
+  // malformed options object.
+  static SolverBinding* create(RigBinding& rig, const std::string& method, const val& options) {
+    return guarded([&] { return new SolverBinding(rig, make_solver(method, rig.kinematics(), read_options(options))); },
+                   static_cast<SolverBinding*>(nullptr));
+  }
 
   // The registered method names, in display order.
   static val methods() {
@@ -42,49 +46,44 @@ class SolverBinding {
     return names;
   }
 
-  // One line describing `method`; throws for an unknown name.
+  // One line describing `method`; "" for an unknown name.
   static std::string describe(const std::string& method) {
     return guarded([&] {
       for (const SolverEntry& e : solver_registry())
         if (method == e.name) return std::string(e.description);
       throw RigError("unknown solver method \"" + method + "\"");
-    });
+    }, std::string());
   }
 
   std::string method() const { return solver_->name(); }
   bool running() const { return solver_->running(); }
 
-  // Replaces the options (same object shape as the constructor's); they apply from the next start().
-  void set_options(const val& options) {
-    guarded([&] {
+  // Replaces the options (same object shape as create()'s); they apply from the next start().
+  // False (the old options kept) for a malformed object.
+  bool set_options(const val& options) {
+    return guarded([&] {
       solver_->set_options(read_options(options));
-      return 0;
-    });
+      return true;
+    }, false);
   }
 
   // The options of the current solve, every field.
   val options() const { return write_options(solver_->options()); }
 
+  // The default options, every field (their names are the options a solver takes).
+  static val default_options() { return write_options(SolverOptions()); }
+
   // Begins a solve: angles (3 per bone, degrees), target (3 per end effector, rig units).
-  // Returns the stop reason after the start ("running" unless already converged).
+  // Returns the stop reason after the start ("running" unless already converged), "" on failure.
   std::string start(const val& angles, const val& target) {
     return guarded([&] {
       begin(angles, target);
       return std::string(stop_reason_name(solver_->summary().stop_reason));
-    });
+    }, std::string());
   }
 
   // One iteration; true while still running. No allocation on the C++ side.
   bool step() { return solver_->step(); }
-
-  // start() and step() to the end (Solver::solve()); returns the result object.
-  SolverResultJs solve(const val& angles, const val& target) {
-    return guarded([&] {
-      take(angles, target);
-      solve_on(angles_.data(), target_.data());
-      return result();
-    });
-  }
 
   // { angles, E, initialE, gradNorm, tipDistance, reached, iterations, functionEvaluations,
   //   jacobianEvaluations, restarts, escapes, chainRestarts, stopReason, message, elapsedSeconds }
@@ -119,18 +118,21 @@ class SolverBinding {
   // The current iterate (Float64Array copy, degrees).
   val angles() const { return copy_out(solver_->angles().data(), solver_->angles().size()); }
 
-  // The fast path of solve(): one call with no JavaScript values crossing. io_view(n, m) sizes a
-  // buffer of n angles | m target numbers | kIoStats result numbers and returns a Float64Array
-  // view on it (it goes stale, length 0, when the WebAssembly memory grows: ask again). JavaScript
-  // writes the start angles (degrees) and target (rig units) there; solve_io() solves and writes
-  // the best angles over the start angles and the result numbers after the target (see
-  // IoStat). Returns the stop reason as its enumerator index (stop_reasons() names them).
-  val io_view(int n, int m) {
-    io_n_ = n;
-    io_m_ = m;
-    const size_t size = static_cast<size_t>(std::max(n, 0) + std::max(m, 0)) + kIoStats;
-    if (io_.size() != size) io_.assign(size, 0.0);
-    return val(emscripten::typed_memory_view(io_.size(), io_.data()));
+  // The whole solve in one call with no JavaScript values crossing (the TS wrapper's solve()).
+  // io_view() sizes a buffer of #angles | #residuals target numbers | kIoStats result numbers
+  // for the rig's current effectors and returns a Float64Array view on it (it goes stale, length
+  // 0, when the WebAssembly memory grows: ask again). JavaScript writes the start angles
+  // (degrees) and target (rig units) there; solve_io() solves and writes the best angles over
+  // the start angles and the result numbers after the target (see IoStat). Returns the stop
+  // reason as its enumerator index (stop_reasons() names them), or -1 on failure.
+  val io_view() {
+    return guarded([&] {
+      const Kinematics& kin = rig_.kinematics();
+      io_.assign(static_cast<size_t>(kin.num_angles() + kin.num_residuals()) + kIoStats, 0.0);
+      io_n_ = kin.num_angles();
+      io_m_ = kin.num_residuals();
+      return val(emscripten::typed_memory_view(io_.size(), io_.data()));
+    }, val::null());
   }
 
   int solve_io() {
@@ -154,7 +156,7 @@ class SolverBinding {
       stats[kEscapes] = s.escapes;
       stats[kChainRestarts] = s.chain_restarts;
       return static_cast<int>(s.stop_reason);
-    });
+    }, -1);
   }
 
   // The stop reasons' names, indexed by solve_io()'s return value.
@@ -172,6 +174,8 @@ class SolverBinding {
   };
 
  private:
+  SolverBinding(RigBinding& rig, std::unique_ptr<Solver> solver) : rig_(rig), solver_(std::move(solver)) {}
+
   // Copies the arrays in and starts; throws for wrong lengths and for invalid_input.
   void begin(const val& angles, const val& target) {
     take(angles, target);
@@ -237,16 +241,16 @@ EMSCRIPTEN_BINDINGS(ik_solvers) {
       .field("message", &SolverResultJs::message)
       .field("elapsedSeconds", &SolverResultJs::elapsed_s);
   emscripten::class_<SolverBinding>("Solver")
-      .constructor<ik::js::RigBinding&, const std::string&, const emscripten::val&>()
+      .class_function("create", &SolverBinding::create, emscripten::allow_raw_pointers())
       .class_function("methods", &SolverBinding::methods)
       .class_function("describe", &SolverBinding::describe)
+      .class_function("defaultOptions", &SolverBinding::default_options)
       .property("method", &SolverBinding::method)
       .property("running", &SolverBinding::running)
       .function("setOptions", &SolverBinding::set_options)
       .function("options", &SolverBinding::options)
       .function("start", &SolverBinding::start)
       .function("step", &SolverBinding::step)
-      .function("solve", &SolverBinding::solve)
       .function("result", &SolverBinding::result)
       .function("errorHistory", &SolverBinding::error_history)
       .function("angles", &SolverBinding::angles)

@@ -25,16 +25,9 @@ Kinematics::Kinematics(Rig rig) : rig_(std::move(rig)) {
 }
 
 void Kinematics::set_effectors(const std::vector<int>& effectors) {
-  for (size_t k = 0; k < effectors.size(); ++k) {
-    const int e = effectors[k];
-    if (e < 0 || e >= num_bones())
-      throw RigError("end effector " + std::to_string(k) + " is bone " + std::to_string(e) +
-                     ", which is not a bone of the rig (0.." + std::to_string(num_bones() - 1) + ")");
-    for (size_t j = 0; j < k; ++j)
-      if (effectors[j] == e) throw RigError(bone_label(rig_, e) + ": is listed twice as an end effector");
-  }
-  if (effectors.empty()) throw RigError("rig has no end effectors");
+  validate_effectors(rig_, effectors);
   rig_.effectors = effectors;
+  precompute_chains();
 }
 
 void Kinematics::precompute() {
@@ -46,7 +39,6 @@ void Kinematics::precompute() {
   axes_.assign(n, Eigen::Matrix3d::Identity());
   lower_.resize(3 * n);
   upper_.resize(3 * n);
-  chains_.assign(n, {});
   for (int i = 0; i < n; ++i) {
     const Bone& b = rig_.bones[i];
     rest_[i].matrix() = b.rest;
@@ -58,13 +50,18 @@ void Kinematics::precompute() {
   for (int i = 0; i < n; ++i) {
     const int p = rig_.bones[i].parent;
     from_parent_[i] = (p == -1) ? rest_[i] : rest_inv_[p] * rest_[i];
-    for (int at = i; at != -1; at = rig_.bones[at].parent) chains_[i].insert(chains_[i].begin(), at);
   }
-  // Parents before children: sort by depth (chain length), stable in index.
-  order_.resize(n);
-  for (int i = 0; i < n; ++i) order_[i] = i;
-  std::stable_sort(order_.begin(), order_.end(),
-                   [&](int a, int b) { return chains_[a].size() < chains_[b].size(); });
+  order_ = parents_first(rig_);
+  precompute_chains();
+}
+
+void Kinematics::precompute_chains() {
+  chains_.assign(num_effectors(), {});
+  for (int k = 0; k < num_effectors(); ++k) {
+    std::vector<int>& chain = chains_[k];
+    for (int at = rig_.effectors[k]; at != -1; at = rig_.bones[at].parent) chain.push_back(at);
+    std::reverse(chain.begin(), chain.end());
+  }
 }
 
 void Kinematics::forward(const Eigen::Ref<const Eigen::VectorXd>& angles) {
@@ -92,7 +89,7 @@ void Kinematics::current_jacobian(Eigen::Ref<Eigen::MatrixXd> jac) const {
   jac.setZero();
   for (int k = 0; k < num_effectors(); ++k) {
     const Eigen::Vector3d p = tip(rig_.effectors[k]);
-    for (int j : chains_[rig_.effectors[k]]) {
+    for (int j : chains_[k]) {
       const Eigen::Vector3d r = p - frame_[j].translation();
       for (int a = 0; a < 3; ++a)
         jac.block<3, 1>(3 * k, 3 * j + a) = kRadPerDeg * axes_[j].col(a).cross(r);

@@ -29,7 +29,8 @@ class Kinematics {
   int num_effectors() const { return static_cast<int>(rig_.effectors.size()); }
   int num_residuals() const { return 3 * num_effectors(); }
 
-  // Replaces the end-effector list (bone indices). Throws RigError if one is not a bone.
+  // Replaces the end-effector list (bone indices). Throws RigError if one is not a bone, one is
+  // listed twice, or the list is empty or past the limits (size_limits.h).
   void set_effectors(const std::vector<int>& effectors);
 
   // Poses the rig at `angles` (#angles, degrees). Afterwards pose(), tip(), joint_axis() and
@@ -44,8 +45,8 @@ class Kinematics {
   Eigen::Vector3d joint_axis(int bone, int k) const { return axes_[bone].col(k); }
   // After forward(): the world position of bone i's joint (the tail of the bone).
   Eigen::Vector3d joint_origin(int bone) const { return frame_[bone].translation(); }
-  // Bones from a root down to `bone` (inclusive), parents first.
-  const std::vector<int>& chain(int bone) const { return chains_[bone]; }
+  // Bones from a root down to end effector k's bone (inclusive), parents first.
+  const std::vector<int>& effector_chain(int k) const { return chains_[k]; }
 
   // Poses the rig and writes the end-effector tips (#residuals) to `tips`.
   void tips(const Eigen::Ref<const Eigen::VectorXd>& angles, Eigen::Ref<Eigen::VectorXd> tips);
@@ -67,10 +68,11 @@ class Kinematics {
 
  private:
   void precompute();
+  void precompute_chains();
 
   Rig rig_;
   std::vector<int> order_;                 // bones, parents before children
-  std::vector<std::vector<int>> chains_;   // per bone: root..bone
+  std::vector<std::vector<int>> chains_;   // per end effector: root..its bone
   std::vector<Eigen::Isometry3d> rest_;    // rest_i
   std::vector<Eigen::Isometry3d> rest_inv_;
   std::vector<Eigen::Isometry3d> from_parent_;  // rest_parent^-1 * rest_i (rest_i for a root)

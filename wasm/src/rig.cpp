@@ -5,13 +5,18 @@
 #include <cmath>
 #include <sstream>
 
+#include "size_limits.h"
+
 namespace ik {
 
 std::string bone_label(const Rig& rig, int index) {
   std::ostringstream out;
   out << "bone " << index;
-  if (index >= 0 && index < static_cast<int>(rig.bones.size()) && !rig.bones[index].name.empty())
-    out << " \"" << rig.bones[index].name << "\"";
+  const std::string plain = out.str();
+  if (index >= 0 && index < static_cast<int>(rig.bones.size())) {
+    const std::string& name = rig.bones[index].name;
+    if (!name.empty() && name != plain) out << " \"" << name << "\"";
+  }
   return out.str();
 }
 
@@ -38,6 +43,14 @@ void check_limits(const Rig& rig, int i) {
   for (int k = 0; k < 3; ++k) {
     if (std::isnan(b.min_deg[k]) || std::isnan(b.max_deg[k]))
       fail(rig, i, std::string(kAxis[k]) + " is NaN");
+    // Past +-kMaxLimitDeg a limit means "none" (A7 files write -1e10); a lower limit above it, or
+    // an upper one below its negative, leaves no usable angle.
+    if (b.min_deg[k] > kMaxLimitDeg || b.max_deg[k] < -kMaxLimitDeg) {
+      std::ostringstream out;
+      out << "limit " << kAxis[k] << " is [" << b.min_deg[k] << ", " << b.max_deg[k]
+          << "] degrees, which leaves no angle within +-" << kMaxLimitDeg << " degrees";
+      fail(rig, i, out.str());
+    }
     if (b.min_deg[k] > b.max_deg[k]) {
       std::ostringstream out;
       out << "limit " << kAxis[k] << " has min " << b.min_deg[k] << " > max " << b.max_deg[k];
@@ -49,6 +62,9 @@ void check_limits(const Rig& rig, int i) {
 }  // namespace
 
 void validate_rig(const Rig& rig) {
+  if (rig.bones.size() > static_cast<size_t>(kMaxBones))
+    throw RigError("rig has " + std::to_string(rig.bones.size()) + " bones; the core takes at most " +
+                   std::to_string(kMaxBones));
   const int n = static_cast<int>(rig.bones.size());
   if (n == 0) throw RigError("rig has no bones");
   for (int i = 0; i < n; ++i) {
@@ -64,26 +80,53 @@ void validate_rig(const Rig& rig) {
     check_rest(rig, i);
     check_limits(rig, i);
   }
-  // Cycle check: walking up from any bone must reach a root within n steps.
-  for (int i = 0; i < n; ++i) {
-    int at = i;
-    for (int steps = 0; at != -1; ++steps) {
-      if (steps > n) fail(rig, i, "parent chain has a cycle");
-      at = rig.bones[at].parent;
-    }
-  }
-  if (rig.effectors.empty()) throw RigError("rig has no end effectors");
-  for (size_t k = 0; k < rig.effectors.size(); ++k) {
-    const int e = rig.effectors[k];
+  parents_first(rig);  // throws on a cycle
+  validate_effectors(rig, rig.effectors);
+}
+
+void validate_effectors(const Rig& rig, const std::vector<int>& effectors) {
+  const int n = static_cast<int>(rig.bones.size());
+  if (effectors.empty()) throw RigError("rig has no end effectors");
+  if (effectors.size() > static_cast<size_t>(kMaxEffectors))
+    throw RigError(std::to_string(effectors.size()) + " end effectors; the core takes at most " +
+                   std::to_string(kMaxEffectors));
+  const long long entries = 9LL * static_cast<long long>(effectors.size()) * n;
+  if (entries > kMaxMatrixEntries)
+    throw RigError(std::to_string(effectors.size()) + " end effectors on " + std::to_string(n) +
+                   " bones make a Jacobian of " + std::to_string(entries) + " numbers; the core takes at most " +
+                   std::to_string(kMaxMatrixEntries) + " (fewer end effectors or bones)");
+  for (size_t k = 0; k < effectors.size(); ++k) {
+    const int e = effectors[k];
     if (e < 0 || e >= n) {
       std::ostringstream out;
-      out << "end effector " << k << " is bone " << e << ", which is not a bone of the rig (0.."
-          << n - 1 << ")";
+      out << "end effector " << k << " is bone " << e << ", which is not a bone of the rig (0.." << n - 1 << ")";
       throw RigError(out.str());
     }
     for (size_t j = 0; j < k; ++j)
-      if (rig.effectors[j] == e) fail(rig, e, "is listed twice as an end effector");
+      if (effectors[j] == e) fail(rig, e, "is listed twice as an end effector");
   }
+}
+
+std::vector<int> parents_first(const Rig& rig) {
+  const int n = static_cast<int>(rig.bones.size());
+  // Children lists in one array (counting sort by parent), then a breadth-first walk from the roots.
+  std::vector<int> first(n + 2, 0), children(n);
+  for (const Bone& b : rig.bones) ++first[b.parent + 2];
+  for (int p = 0; p <= n; ++p) first[p + 1] += first[p];  // first[p + 1]: start of parent p's children
+  std::vector<int> fill(first.begin(), first.end() - 1);
+  for (int i = 0; i < n; ++i) children[fill[rig.bones[i].parent + 1]++] = i;
+  std::vector<int> order;
+  order.reserve(n);
+  for (int c = first[0]; c < first[1]; ++c) order.push_back(children[c]);  // the roots
+  for (size_t at = 0; at < order.size(); ++at)
+    for (int c = first[order[at] + 1]; c < first[order[at] + 2]; ++c) order.push_back(children[c]);
+  if (static_cast<int>(order.size()) < n) {
+    std::vector<char> seen(n, 0);
+    for (int i : order) seen[i] = 1;
+    for (int i = 0; i < n; ++i)
+      if (!seen[i]) fail(rig, i, "parent chain has a cycle");
+  }
+  return order;
 }
 
 }  // namespace ik

@@ -34,10 +34,23 @@ class RigError : public std::runtime_error {
 
 // Checks a rig and throws RigError naming the first problem found:
 // parent out of range, a parent cycle, a non-finite number, a rest transform that is not rigid,
-// a limit with min > max, a negative length, or an end effector that is not a bone.
+// a limit with min > max or with no angle within +-kMaxLimitDeg, a negative length, an end effector
+// that is not a bone, or a rig past the limits of size_limits.h. Linear in the number of bones.
 void validate_rig(const Rig& rig);
 
-// A bone's label for messages: `bone 3 "forearm"` or `bone 3`.
+// Checks `effectors` as an end-effector list of `rig` (bone indices, none twice, at least one,
+// within the limits of size_limits.h); throws RigError naming the first problem.
+void validate_effectors(const Rig& rig, const std::vector<int>& effectors);
+
+// The bones ordered parents before children (roots first). Throws RigError naming a bone on a
+// parent cycle. Linear in the number of bones; parents must be in range.
+std::vector<int> parents_first(const Rig& rig);
+
+// Joint limits (degrees) must allow an angle within +-this (100 turns); one farther out means none.
+constexpr double kMaxLimitDeg = 36000;
+
+// A bone's label for messages: `bone 3 "forearm"`, or `bone 3` when it has no name (or its name
+// is "bone 3").
 std::string bone_label(const Rig& rig, int index);
 
 }  // namespace ik

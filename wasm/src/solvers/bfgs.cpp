@@ -11,6 +11,7 @@
 #include <memory>
 #include <vector>
 
+#include "size_limits.h"
 #include "solver.h"
 
 namespace ik {
@@ -23,6 +24,7 @@ class DampedBfgs final : public Solver {
   const char* name() const override { return "bfgs"; }
 
  private:
+  int angle_limit(int /*residuals*/) const override { return kMaxDenseAngles; }
   // H and B cover the movable angles only (min < max): a fixed angle never moves, so its rows
   // would only cost time (the lamp has 4 movable angles of 15, the beast 41 of 66). Paper mode
   // loses nothing by it: the original's finite differences give a fixed angle a zero gradient,

@@ -31,7 +31,7 @@ void ChainRestart::resize(const Kinematics& kin) {
   reach_.assign(m, 0);
   for (int e = 0; e < m; ++e) {
     const int bone = kin.rig().effectors[e];
-    const std::vector<int>& chain = kin.chain(bone);  // root first
+    const std::vector<int>& chain = kin.effector_chain(e);  // root first
     for (size_t i = 0; i < chain.size(); ++i) {
       if (!movable(kin, chain[i])) continue;
       first_movable_[e] = chain[i];
@@ -67,7 +67,7 @@ bool ChainRestart::propose(const Kinematics& kin, const Eigen::Ref<const Eigen::
   for (int e = 0; e < kin.num_effectors(); ++e) {
     const bool off = off_target(r, e, largest);
     if (off && beyond_reach(kin, e, target, slack)) continue;
-    for (int b : kin.chain(kin.rig().effectors[e])) (off ? moved_ : kept_)[b] = 1;
+    for (int b : kin.effector_chain(e)) (off ? moved_ : kept_)[b] = 1;
     any = any || off;
   }
   if (!any) return false;

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "line_search.h"
+#include "size_limits.h"
 #include "solver.h"
 
 namespace ik {
@@ -27,6 +28,10 @@ class GaussNewton final : public Solver {
   const char* name() const override { return "gn"; }
 
  private:
+  // The SVD of the whole Jacobian (paper mode, or more than kMaxResiduals residuals) grows with
+  // #angles times #residuals squared.
+  int angle_limit(int residuals) const override { return residuals > kMaxResiduals ? kMaxDenseAngles : kNoAngleLimit; }
+
   void resize(int residuals, int angles) override {
     jac_.resize(residuals, angles);
     svd_ = Eigen::JacobiSVD<Eigen::MatrixXd>(residuals, angles, Eigen::ComputeThinU | Eigen::ComputeThinV);

@@ -28,6 +28,10 @@ BacktrackingResult projected_backtracking(Kinematics& kin, const Eigen::Ref<cons
       result.E = E;
       return result;
     }
+    if (i % 4 == 3 && options.deadline.passed()) {
+      result.timed_out = true;
+      break;
+    }
   }
   return result;
 }

@@ -4,6 +4,7 @@
 
 #include <Eigen/Core>
 
+#include "deadline.h"
 #include "kinematics.h"
 
 namespace ik {
@@ -16,6 +17,7 @@ struct BacktrackingOptions {
   // unprojected slope the original program used.
   bool projected_slope = true;
   int max_tries = 60;       // trials before giving up
+  Deadline deadline;        // gives up once it passes (checked every few trials)
 };
 
 struct BacktrackingResult {
@@ -23,12 +25,14 @@ struct BacktrackingResult {
   double step = 0;     // the accepted alpha (0 if none)
   double E = 0;        // E at the accepted trial
   int evaluations = 0; // E evaluations made (forward kinematics)
+  bool timed_out = false;  // gave up because the deadline passed
 };
 
 // From `angles` (#angles, degrees) with E = `E0` and gradient `gradient` (#angles) along
 // `direction` (#angles, degrees per unit alpha) towards `target` (#residuals). Writes the
 // accepted trial angles to `trial` and its residual to `residual`; on success `kin` is left
-// posed at `trial`. Gives up as soon as the projected trial equals `angles` (step 0).
+// posed at `trial`. Gives up as soon as the projected trial equals `angles` (step 0), or when the
+// deadline has passed.
 // No allocation.
 BacktrackingResult projected_backtracking(Kinematics& kin, const Eigen::Ref<const Eigen::VectorXd>& target,
                                           const Eigen::Ref<const Eigen::VectorXd>& angles, double E0,

@@ -27,15 +27,21 @@ class LevenbergMarquardt final : public Solver {
 
  private:
   void resize(int m, int n) override {
-    // Per angle, the effectors whose tips it moves (those whose chain holds its bone), ascending.
+    // Per angle, the effectors whose tips it moves (those whose chain holds its bone), ascending:
+    // counted per bone, then filled effector by effector.
+    std::vector<int> per_bone(kin_.num_bones() + 1, 0);
+    for (int e = 0; e < kin_.num_effectors(); ++e)
+      for (int b : kin_.effector_chain(e)) ++per_bone[b + 1];
+    for (int b = 0; b < kin_.num_bones(); ++b) per_bone[b + 1] += per_bone[b];
+    std::vector<int> bone_effectors(per_bone.back()), fill(per_bone.begin(), per_bone.end() - 1);
+    for (int e = 0; e < kin_.num_effectors(); ++e)
+      for (int b : kin_.effector_chain(e)) bone_effectors[fill[b]++] = e;
     column_start_.assign(n + 1, 0);
     column_effectors_.clear();
     for (int j = 0; j < n; ++j) {
       column_start_[j] = static_cast<int>(column_effectors_.size());
-      for (int e = 0; e < kin_.num_effectors(); ++e) {
-        const std::vector<int>& chain = kin_.chain(kin_.rig().effectors[e]);
-        if (std::find(chain.begin(), chain.end(), j / 3) != chain.end()) column_effectors_.push_back(e);
-      }
+      column_effectors_.insert(column_effectors_.end(), bone_effectors.begin() + per_bone[j / 3],
+                               bone_effectors.begin() + per_bone[j / 3 + 1]);
     }
     column_start_[n] = static_cast<int>(column_effectors_.size());
     normal_.resize(m, m);
@@ -60,6 +66,7 @@ class LevenbergMarquardt final : public Solver {
     // of the effectors whose chain holds j's bone.
     normal_.setZero();
     for (int c = 0; c < nf; ++c) {
+      if (c % 64 == 63 && time_is_up()) return Progress::stuck;
       const int j = free_[c];
       for (int p = column_start_[j]; p < column_start_[j + 1]; ++p) {
         const int e = column_effectors_[p];
@@ -77,6 +84,7 @@ class LevenbergMarquardt final : public Solver {
     const double relative_error2 = 2 * E_ / (reach_ * reach_);
 
     for (int attempt = 0; attempt < opt_.lm_max_rejections; ++attempt) {
+      if (attempt > 0 && time_is_up()) return Progress::stuck;
       const double lambda = (mu_ * relative_error2 + opt_.lm_damping_floor) * s;
       if (!damped_step(lambda, nf)) return fail("the damped normal matrix could not be factorised");
       if (trial_ == a_) return Progress::stuck;  // the step is 0

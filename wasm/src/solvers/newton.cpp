@@ -22,6 +22,7 @@
 #include <memory>
 
 #include "line_search.h"
+#include "size_limits.h"
 #include "solver.h"
 #include "tip_hessian.h"
 
@@ -35,6 +36,7 @@ class ProjectedNewton final : public Solver {
   const char* name() const override { return "newton"; }
 
  private:
+  int angle_limit(int /*residuals*/) const override { return kMaxDenseAngles; }
   void resize(int m, int n) override {
     H_.resize(n, n);
     modified_.resize(n, n);
@@ -69,6 +71,7 @@ class ProjectedNewton final : public Solver {
     null_curvature_ = std::sqrt(relative_error2) * s;
 
     for (int attempt = 0; attempt < opt_.lm_max_rejections; ++attempt) {
+      if (attempt > 0 && time_is_up()) return Progress::stuck;
       const double mu = (m_factor_ * relative_error2 + opt_.lm_damping_floor) * s;
       switch (newton_step(mu)) {
         case Step::indefinite:

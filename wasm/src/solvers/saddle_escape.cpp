@@ -22,6 +22,7 @@ constexpr int kMaxHalvings = 28;
 
 void SaddleEscape::resize(const Kinematics& kin) {
   position_.assign(kin.num_angles(), -1);
+  bones_.resize(kin.num_bones());
   index_.assign(kMaxAngles, -1);
   direction_.resize(kin.num_angles());
   other_trial_.resize(kin.num_angles());
@@ -35,7 +36,7 @@ void SaddleEscape::choose_angles(const Kinematics& kin, const Eigen::Ref<const E
   if (!(largest > 0)) return;
   for (int e = 0; e < kin.num_effectors(); ++e) {
     if (!off_target(r, e, largest)) continue;
-    const std::vector<int>& chain = kin.chain(kin.rig().effectors[e]);
+    const std::vector<int>& chain = kin.effector_chain(e);
     for (auto bone = chain.rbegin(); bone != chain.rend(); ++bone)  // distal bones first
       for (int k = 0; k < 3; ++k) {
         const int angle = 3 * *bone + k;
@@ -59,7 +60,7 @@ EscapeResult SaddleEscape::find(Kinematics& kin, const Eigen::Ref<const Eigen::V
   hessian_.resize(count_, count_);
   for (int p = 0; p < count_; ++p)
     for (int q = 0; q <= p; ++q) hessian_(p, q) = hessian_(q, p) = J.col(index_[p]).dot(J.col(index_[q]));
-  add_weighted_tip_hessian(kin, r, position_, hessian_);
+  add_weighted_tip_hessian(kin, r, position_, bones_, hessian_);
   if (!hessian_.allFinite()) return result;
   eigen_.compute(hessian_);
   if (eigen_.info() != Eigen::Success) return result;

@@ -63,6 +63,7 @@ class SaddleEscape {
   SmallMatrix hessian_;
   Eigen::SelfAdjointEigenSolver<SmallMatrix> eigen_{kMaxAngles};
   std::vector<int> position_, index_;
+  std::vector<int> bones_;  // scratch of the tip Hessian: one effector's chain bones with a chosen angle
   int count_ = 0;
   Eigen::VectorXd direction_, other_trial_, other_residual_;
 };

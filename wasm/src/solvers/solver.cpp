@@ -7,6 +7,7 @@
 
 #include "finite_difference_jacobian.h"
 #include "line_search.h"
+#include "size_limits.h"
 #include "objective.h"
 
 namespace ik {
@@ -39,18 +40,20 @@ bool finite(double x) { return std::isfinite(x); }
 
 // The first problem with `o`, or an empty string.
 std::string check_options(const SolverOptions& o) {
-  auto bad = [](const char* field, const char* rule) { return std::string("option ") + field + " must be " + rule; };
+  auto bad = [](const char* field, const std::string& rule) { return std::string("option ") + field + " must be " + rule; };
   if (!(finite(o.gradient_tolerance) && o.gradient_tolerance >= 0)) return bad("gradient_tolerance", "a number >= 0");
   if (!(finite(o.error_tolerance) && o.error_tolerance >= 0)) return bad("error_tolerance", "a number >= 0");
   if (o.max_iterations < 0) return bad("max_iterations", ">= 0");
   if (!(o.time_budget_s >= 0)) return bad("time_budget_s", ">= 0 (0 or infinity: no limit)");
   if (!(finite(o.tip_tolerance) && o.tip_tolerance >= 0)) return bad("tip_tolerance", "a number >= 0 (0: the E test)");
-  if (o.history_capacity < 1) return bad("history_capacity", ">= 1");
+  if (o.history_capacity < 1 || o.history_capacity > kMaxHistory)
+    return bad("history_capacity", "in 1.." + std::to_string(kMaxHistory));
   if (!(finite(o.fd_step_deg) && o.fd_step_deg > 0)) return bad("fd_step_deg", "a number > 0");
   if (!(finite(o.gd_initial_step) && o.gd_initial_step > 0)) return bad("gd_initial_step", "a number > 0");
   if (!(o.backtrack_factor > 0 && o.backtrack_factor < 1)) return bad("backtrack_factor", "in (0, 1)");
   if (!(o.armijo_c1 >= 0 && o.armijo_c1 < 1)) return bad("armijo_c1", "in [0, 1)");
-  if (o.max_backtracks < 1) return bad("max_backtracks", ">= 1");
+  if (o.max_backtracks < 1 || o.max_backtracks > kMaxBacktracks)
+    return bad("max_backtracks", "in 1.." + std::to_string(kMaxBacktracks));
   if (!(o.gn_singular_cutoff >= 0 && o.gn_singular_cutoff < 1)) return bad("gn_singular_cutoff", "in [0, 1)");
   if (!(o.gn_max_step_deg > 0)) return bad("gn_max_step_deg", "> 0");
   if (!(o.newton_max_step_deg > 0)) return bad("newton_max_step_deg", "> 0");
@@ -96,6 +99,11 @@ bool Solver::validate(const Eigen::Ref<const Eigen::VectorXd>& angles, const Eig
   if (problem.empty() && target.size() != kin_.num_residuals())
     problem = "target has " + std::to_string(target.size()) + " values, expected " +
               std::to_string(kin_.num_residuals()) + " (3 per end effector)";
+  const int limit = std::min(angle_limit(kin_.num_residuals()), opt_.paper_mode ? kMaxDenseAngles : kNoAngleLimit);
+  if (problem.empty() && kin_.num_angles() > limit)
+    problem = std::string(name()) + (opt_.paper_mode ? " in paper mode" : "") + " takes rigs of at most " +
+              std::to_string(limit) + " angles (" + std::to_string(limit / 3) + " bones); this one has " +
+              std::to_string(kin_.num_angles()) + ": use lm or gd";
   if (problem.empty()) problem = check_finite(angles, "angles");
   if (problem.empty()) problem = check_finite(target, "target");
   summary_.message = problem;
@@ -149,9 +157,9 @@ StopReason Solver::begin(const Eigen::Ref<const Eigen::VectorXd>& angles,
     fd_minus_.resize(m_);
     summary_.angles.resize(n_);
     reach_ = 0;
-    for (int e : kin_.rig().effectors) {
+    for (int e = 0; e < kin_.num_effectors(); ++e) {
       double length = 0;
-      for (int b : kin_.chain(e)) length += kin_.rig().bones[b].length;
+      for (int b : kin_.effector_chain(e)) length += kin_.rig().bones[b].length;
       reach_ = std::max(reach_, length);
     }
     if (!(reach_ > 0)) reach_ = 1;
@@ -213,6 +221,7 @@ bool Solver::step() { return advance(Clock::now()); }
 bool Solver::advance(std::chrono::steady_clock::time_point begin) {
   if (!running()) return false;
   call_start_ = begin;
+  cut_short_ = false;
   StopReason reason = StopReason::running;
   if (kin_.rig().effectors != effectors_) {
     summary_.message = "the rig's end effectors changed during the solve; call start() again";
@@ -224,7 +233,7 @@ bool Solver::advance(std::chrono::steady_clock::time_point begin) {
         summary_.message = failure_ ? failure_ : "numerical failure";
         break;
       case Progress::stuck:
-        reason = StopReason::zero_step;
+        reason = cut_short_ ? StopReason::timeout : StopReason::zero_step;
         break;
       case Progress::moved:
         ++summary_.iterations;
@@ -281,8 +290,10 @@ bool Solver::backtrack(const Eigen::Ref<const Eigen::VectorXd>& direction, doubl
   search.c1 = c1;
   search.max_tries = opt_.paper_mode ? kPaperMaxBacktracks : opt_.max_backtracks;
   search.projected_slope = !opt_.paper_mode;
+  search.deadline = deadline();
   const BacktrackingResult found = projected_backtracking(kin_, target_, a_, E_, g_, direction, search, trial_, r_trial_);
   summary_.function_evaluations += found.evaluations;
+  cut_short_ = cut_short_ || found.timed_out;
   if (!found.found) return false;
   a_.swap(trial_);
   r_.swap(r_trial_);
@@ -438,6 +449,18 @@ bool Solver::has_budget() const { return opt_.time_budget_s > 0 && !std::isinf(o
 
 bool Solver::out_of_time() const {
   return has_budget() && elapsed_before_call_ + seconds_since(call_start_) >= opt_.time_budget_s;
+}
+
+bool Solver::time_is_up() {
+  cut_short_ = cut_short_ || out_of_time();
+  return cut_short_;
+}
+
+Deadline Solver::deadline() const {
+  constexpr double kYear = 3.2e7;  // seconds; a longer budget is none (and would overflow the clock)
+  if (!has_budget() || opt_.time_budget_s - elapsed_before_call_ > kYear) return Deadline();
+  const auto left = std::chrono::duration<double>(opt_.time_budget_s - elapsed_before_call_);
+  return Deadline(call_start_ + std::chrono::duration_cast<Clock::duration>(left));
 }
 
 bool Solver::on_target() const {

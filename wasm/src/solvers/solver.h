@@ -15,8 +15,9 @@
 #include <string>
 #include <vector>
 
-#include "kinematics.h"
 #include "chain_restart.h"
+#include "deadline.h"
+#include "kinematics.h"
 #include "quasi_random.h"
 #include "saddle_escape.h"
 
@@ -203,6 +204,11 @@ class Solver {
   Progress fail(const char* message);
   // Is the solve over its time budget right now?
   bool out_of_time() const;
+  // For the long loops inside one iteration: out_of_time(), and if so the iteration's `stuck`
+  // reports timeout, not zero_step.
+  bool time_is_up();
+  // When the time budget runs out (never, without a budget).
+  Deadline deadline() const;
   // Is the current iterate (E_, r_) on target (the test of converged_E)?
   bool on_target() const;
 
@@ -221,6 +227,10 @@ class Solver {
   Eigen::VectorXd free_mask_;     // 1 for a free angle, 0 otherwise
   int num_free_ = 0;
   double reach_ = 1;              // longest effector chain (sum of bone lengths), rig units
+  // The largest #angles the method takes with `residuals` residuals (its dense matrices grow
+  // with #angles squared); the base class applies kMaxDenseAngles in paper mode.
+  virtual int angle_limit(int /*residuals*/) const { return kNoAngleLimit; }
+  static constexpr int kNoAngleLimit = 1 << 30;
 
  private:
   StopReason check_stop() const;
@@ -281,6 +291,7 @@ class Solver {
   bool advance(std::chrono::steady_clock::time_point begin);
   std::chrono::steady_clock::time_point call_start_, last_read_;
   double elapsed_before_call_ = 0;
+  bool cut_short_ = false;  // this step's iteration gave up because the time budget ran out
 };
 
 }  // namespace ik

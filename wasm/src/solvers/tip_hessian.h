@@ -26,8 +26,10 @@ void add_weighted_tip_hessian(const Kinematics& kin, const Eigen::Ref<const Eige
                               Eigen::Ref<Eigen::MatrixXd> out);
 
 // The same sum over a subset of the angles: `position` (#angles entries) gives each angle's
-// row and column in `out`, or -1 to leave the angle out. No allocation.
+// row and column in `out`, or -1 to leave the angle out. `scratch` holds at least #bones entries.
+// Costs the subset's size squared, whatever the chains' length. No allocation.
 void add_weighted_tip_hessian(const Kinematics& kin, const Eigen::Ref<const Eigen::VectorXd>& weights,
-                              const std::vector<int>& position, Eigen::Ref<Eigen::MatrixXd> out);
+                              const std::vector<int>& position, std::vector<int>& scratch,
+                              Eigen::Ref<Eigen::MatrixXd> out);
 
 }  // namespace ik

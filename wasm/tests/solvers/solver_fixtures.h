@@ -24,9 +24,9 @@ inline SolverOptions report_options(const std::string& rig) {
 // The rig's size: the longest sum of bone lengths from a root to an end effector.
 inline double reach(const Kinematics& kin) {
   double reach = 0;
-  for (int e : kin.rig().effectors) {
+  for (int e = 0; e < kin.num_effectors(); ++e) {
     double length = 0;
-    for (int b : kin.chain(e)) length += kin.rig().bones[b].length;
+    for (int b : kin.effector_chain(e)) length += kin.rig().bones[b].length;
     reach = std::max(reach, length);
   }
   return reach;

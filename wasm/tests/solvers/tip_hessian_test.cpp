@@ -61,7 +61,7 @@ TEST(TipHessian, AnglesOffTheChainHaveNoCurvature) {
   Eigen::MatrixXd hx(n, n), hy(n, n), hz(n, n);
   tip_hessian(kin, 0, hx, hy, hz);
   std::vector<bool> on_chain(kin.num_bones(), false);
-  for (int b : kin.chain(kin.rig().effectors[0])) on_chain[b] = true;
+  for (int b : kin.effector_chain(0)) on_chain[b] = true;
   for (int j = 0; j < n; ++j)
     if (!on_chain[j / 3]) {
       EXPECT_EQ(hx.row(j).norm() + hy.row(j).norm() + hz.row(j).norm(), 0.0) << "angle " << j;

@@ -1,10 +1,35 @@
 // A rig living in WebAssembly: forward kinematics, tips, Jacobians and the objective.
 // Angles are 3 numbers per bone in DEGREES (XZX); tips are 3 numbers per end effector.
 // The object owns WebAssembly memory: call dispose() when done.
-import type { EmbindRig, IkCoreModule } from './generated/ik_core.mjs';
+//
+// Every method checks and copies its inputs first (inputs.ts) and throws an Error naming the
+// problem; the core reports its own refusals through takeError() (see wasm/bindings/js_arrays.h).
+import type { EmbindRig, IkCoreModule, RigSpecArrays } from './generated/ik_core.mjs';
+import { coreError, toFloat64, toInt32 } from './inputs.js';
 import type { RigSpec } from './rig_spec.js';
 
 export type Numbers = ArrayLike<number>;
+
+/** The spec as the core takes it: typed arrays of the lengths its parents imply, string names. */
+function specArrays(spec: RigSpec): RigSpecArrays {
+  if (typeof spec !== 'object' || spec === null) throw new Error('rig spec must be an object');
+  const parents = toInt32(spec.parents, 'parents');
+  const n = parents.length;
+  const names = spec.names === undefined ? [] : spec.names;
+  if (!Array.isArray(names)) throw new Error('names must be an array of strings');
+  return {
+    names: names.slice(0, n).map((name, i) => {
+      if (typeof name !== 'string') throw new Error(`names[${i}] is not a string`);
+      return name;
+    }),
+    parents,
+    rest: toFloat64(spec.rest, 'rest (16 row-major numbers per bone)', 16 * n, false),
+    lengths: toFloat64(spec.lengths, 'lengths', n, false),
+    lower: toFloat64(spec.lower, 'lower (3 limits per bone, degrees)', 3 * n, false),
+    upper: toFloat64(spec.upper, 'upper (3 limits per bone, degrees)', 3 * n, false),
+    effectors: toInt32(spec.effectors, 'effectors'),
+  };
+}
 
 export class IkRig {
   /** The embind object; other wrappers of the API (solvers) take it. */
@@ -21,11 +46,13 @@ export class IkRig {
     readonly module: IkCoreModule,
     readonly spec: RigSpec,
   ) {
-    this.handle = new module.Rig(spec);
-    this.numBones = this.handle.numBones;
-    this.numAngles = this.handle.numAngles;
-    this.lower = this.handle.lower();
-    this.upper = this.handle.upper();
+    const handle = module.Rig.create(specArrays(spec));
+    if (!handle) throw coreError(module, 'building the rig');
+    this.handle = handle;
+    this.numBones = handle.numBones;
+    this.numAngles = handle.numAngles;
+    this.lower = handle.lower();
+    this.upper = handle.upper();
   }
 
   get numEffectors(): number {
@@ -40,58 +67,64 @@ export class IkRig {
   /**
    * Replaces the end effectors (bone indices). Throws an Error naming the first bad entry: a
    * fraction, NaN or a number past 32 bits here (never truncated or wrapped to some bone), an
-   * index that is no bone in the core. On error the old list stays.
+   * index that is no bone in the core, a bone listed twice, or more than the core takes. On
+   * error the old list stays.
    */
   setEffectors(bones: Numbers): void {
-    const live = this.live();
-    for (let k = 0; k < bones.length; k++) {
-      const b = bones[k];
-      if (!Number.isInteger(b) || Math.abs(b) > 0x7fffffff)
-        throw new Error(`effectors[${k}] is ${String(b)}, not a bone index (an integer in 0..${this.numBones - 1})`);
-    }
-    live.setEffectors(Int32Array.from(bones));
+    const list = toInt32(bones, 'effectors');
+    if (!this.live().setEffectors(list)) throw coreError(this.module, 'setEffectors');
   }
 
   /** End-effector tips (3 per effector) at `angles`. */
   tips(angles: Numbers): Float64Array {
-    return this.live().tips(angles);
+    const a = this.angles(angles);
+    return this.checked(this.live().tips(a), 'tips');
   }
 
   /** Every bone's tip (3 per bone) at `angles`. */
   boneTips(angles: Numbers): Float64Array {
-    return this.live().boneTips(angles);
+    const a = this.angles(angles);
+    return this.checked(this.live().boneTips(a), 'boneTips');
   }
 
   /** Every bone's pose transform T_i (16 per bone, row-major, rest space -> posed world). */
   poses(angles: Numbers): Float64Array {
-    return this.live().poses(angles);
+    const a = this.angles(angles);
+    return this.checked(this.live().poses(a), 'poses');
   }
 
   /** Analytic Jacobian d tips / d angles, row-major (3n rows x 3m columns), rig units per degree. */
   jacobian(angles: Numbers): Float64Array {
-    return this.live().jacobian(angles);
+    const a = this.angles(angles);
+    return this.checked(this.live().jacobian(a), 'jacobian');
   }
 
   /** Central-difference Jacobian with step hDeg degrees, clamped to the limits as the original did. */
   finiteDifferenceJacobian(angles: Numbers, hDeg = 1e-7, clampToLimits = true): Float64Array {
-    return this.live().finiteDifferenceJacobian(angles, hDeg, clampToLimits);
+    const a = this.angles(angles);
+    if (typeof hDeg !== 'number' || !(hDeg > 0) || !Number.isFinite(hDeg))
+      throw new Error(`finite difference step is ${String(hDeg)}, not a number of degrees > 0`);
+    return this.checked(this.live().finiteDifferenceJacobian(a, hDeg, clampToLimits === true), 'finiteDifferenceJacobian');
   }
 
   /** E = 1/2 |tips(angles) - target|^2. */
   objective(angles: Numbers, target: Numbers): number {
-    return this.live().objective(angles, target);
+    const a = this.angles(angles), t = this.target(target);
+    const E = this.live().objective(a, t);
+    if (Number.isNaN(E)) throw coreError(this.module, 'objective');
+    return E;
   }
 
   /** grad E = J^T (tips - target), 3 per bone, per degree. */
   gradient(angles: Numbers, target: Numbers): Float64Array {
-    return this.live().gradient(angles, target);
+    const a = this.angles(angles), t = this.target(target);
+    return this.checked(this.live().gradient(a, t), 'gradient');
   }
 
   /** `angles` (degrees) clamped into the limits (a new array). Throws for a non-finite angle. */
   project(angles: Numbers): Float64Array {
-    for (let k = 0; k < angles.length; k++)
-      if (!Number.isFinite(angles[k])) throw new Error(`angles[${k}] is ${String(angles[k])}, not a finite number of degrees`);
-    return this.live().project(angles);
+    const a = this.angles(angles);
+    return this.checked(this.live().project(a), 'project');
   }
 
   /** True after dispose(). */
@@ -104,6 +137,22 @@ export class IkRig {
     if (this.disposed) return;
     this.disposed = true;
     this.handle.delete();
+  }
+
+  /** `angles` checked (3 finite numbers per bone, degrees) and copied. */
+  private angles(angles: Numbers): Float64Array {
+    return toFloat64(angles, 'angles', this.numAngles);
+  }
+
+  /** `target` checked (3 finite numbers per current end effector) and copied. */
+  private target(target: Numbers): Float64Array {
+    return toFloat64(target, 'target', 3 * this.live().numEffectors);
+  }
+
+  /** A core result, or the core's error thrown. */
+  private checked(result: Float64Array | null, what: string): Float64Array {
+    if (result === null) throw coreError(this.module, what);
+    return result;
   }
 
   private live(): EmbindRig {

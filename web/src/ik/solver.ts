@@ -3,6 +3,7 @@
 // units; E = 1/2 |tips - target|^2. The object owns WebAssembly memory: call dispose() when done,
 // and dispose it before its rig.
 import type { EmbindSolver, EmbindSolverOptions, EmbindSolverResult, IkCoreModule } from './generated/ik_core.mjs';
+import { coreError, copyNumbers, plainOptions, toFloat64 } from './inputs.js';
 import type { IkRig, Numbers } from './rig.js';
 
 /** The registered methods, lm first (the default). `IkSolver.methods(module)` lists the build's. */
@@ -17,7 +18,7 @@ export type StopReason =
   | 'zero_step' // no step lowered E (and restarts, if any, were used up)
   | 'max_iterations' // iterations reached maxIterations
   | 'timeout' // the time budget ran out
-  | 'invalid_input' // never returned: bad input throws an Error instead
+  | 'invalid_input' // the last start() or solve() was refused (it threw an Error); only result() shows it
   | 'numerical_failure'; // E or a derivative became non-finite
 
 /**
@@ -117,13 +118,26 @@ function toResult(r: EmbindSolverResult): SolverResult {
 
 /** Result numbers after the angles and target in the solve buffer (solver_bindings.cpp IoStat). */
 const IO_STATS = 12;
-const stopReasonCache = new WeakMap<IkCoreModule, readonly string[]>();
 
-/** The stop reasons by the index solveIo() returns, read once per module. */
-function stopReasonNames(module: IkCoreModule): readonly string[] {
-  let names = stopReasonCache.get(module);
-  if (!names) stopReasonCache.set(module, (names = module.Solver.stopReasons()));
-  return names;
+/** What the API reads once per module: the stop reasons by solveIo()'s index, the option names. */
+interface ModuleFacts {
+  stopReasons: readonly string[];
+  optionNames: readonly string[];
+}
+const factsCache = new WeakMap<IkCoreModule, ModuleFacts>();
+
+function moduleFacts(module: IkCoreModule): ModuleFacts {
+  let facts = factsCache.get(module);
+  if (!facts) {
+    facts = { stopReasons: module.Solver.stopReasons(), optionNames: Object.keys(module.Solver.defaultOptions()) };
+    factsCache.set(module, facts);
+  }
+  return facts;
+}
+
+/** `options` as a fresh plain object the core can read, or an Error naming the problem. */
+function coreOptions(module: IkCoreModule, options: unknown): EmbindSolverOptions {
+  return plainOptions(options, moduleFacts(module).optionNames, 'solver option') as EmbindSolverOptions;
 }
 
 export class IkSolver {
@@ -140,7 +154,10 @@ export class IkSolver {
 
   /** One line describing a method. Throws for an unknown name. */
   static describe(module: IkCoreModule, method: string): string {
-    return module.Solver.describe(method);
+    if (typeof method !== 'string') throw new Error(`a solver method is a name such as "lm", not ${typeof method}`);
+    const line = module.Solver.describe(method);
+    if (!line) throw coreError(module, 'describe');
+    return line;
   }
 
   /**
@@ -152,13 +169,19 @@ export class IkSolver {
     method: SolverMethod | string = 'lm',
     options: SolverOptions = {},
   ) {
-    this.handle = new rig.module.Solver(rig.handle, method, options as EmbindSolverOptions);
-    this.method = this.handle.method;
+    if (typeof method !== 'string') throw new Error(`a solver method is a name such as "lm", not ${typeof method}`);
+    const plain = coreOptions(rig.module, options);
+    if (rig.isDisposed) throw new Error('this rig was disposed');
+    const handle = rig.module.Solver.create(rig.handle, method, plain);
+    if (!handle) throw coreError(rig.module, 'creating the solver');
+    this.handle = handle;
+    this.method = handle.method;
   }
 
   /** Options for the next start() or solve(); the solve in progress keeps its own. */
   setOptions(options: SolverOptions): void {
-    this.live().setOptions(options as EmbindSolverOptions);
+    const plain = coreOptions(this.rig.module, options);
+    if (!this.live().setOptions(plain)) throw coreError(this.rig.module, 'setOptions');
   }
 
   /** The options of the current solve, every field filled in. */
@@ -172,7 +195,11 @@ export class IkSolver {
    * Throws an Error for wrong lengths, non-finite numbers or out-of-range options.
    */
   start(angles: Numbers, target: Numbers): StopReason {
-    return this.live().start(angles, target) as StopReason;
+    const a = toFloat64(angles, 'angles', this.rig.numAngles);
+    const t = toFloat64(target, 'target', 3 * this.rig.numEffectors);
+    const reason = this.live().start(a, t);
+    if (!reason) throw coreError(this.rig.module, 'start');
+    return reason as StopReason;
   }
 
   /** One iteration; true while the solve is still running. */
@@ -191,16 +218,17 @@ export class IkSolver {
    * `angles` (no new array per call; it may be `angles` itself). Otherwise `angles` is a new array.
    */
   solve(angles: Numbers, target: Numbers, out?: Float64Array): SolverResult {
+    const n = this.rig.numAngles, m = 3 * this.rig.numEffectors;
+    let io = this.buffer(n, m);
+    copyNumbers(angles, 'angles', n, io, 0);
+    copyNumbers(target, 'target', m, io, n);
+    if (io.length === 0) throw new Error('reading angles or target grew the WebAssembly memory; solve again');
     const handle = this.live();
-    const n = angles.length, m = target.length;
-    let io = this.io;
-    if (io.length !== n + m + IO_STATS) io = this.io = handle.ioView(n, m);
-    io.set(angles, 0);
-    io.set(target, n);
     const code = handle.solveIo();
-    if (io.length === 0) io = this.io = handle.ioView(n, m); // the memory grew during the solve
+    if (code < 0) throw coreError(this.rig.module, 'solve');
+    if (io.length === 0) io = this.buffer(n, m); // the memory grew during the solve
     const stats = n + m;
-    const stopReason = stopReasonNames(this.rig.module)[code] as StopReason;
+    const stopReason = moduleFacts(this.rig.module).stopReasons[code] as StopReason;
     return {
       angles: out && out.length === n ? (out.set(io.subarray(0, n)), out) : io.slice(0, n),
       E: io[stats],
@@ -240,6 +268,14 @@ export class IkSolver {
     if (this.disposed) return;
     this.disposed = true;
     this.handle.delete();
+  }
+
+  /** The solve buffer for n angles and m target numbers (asked anew when stale or resized). */
+  private buffer(n: number, m: number): Float64Array<ArrayBufferLike> {
+    if (this.io.length === n + m + IO_STATS) return this.io;
+    const view = this.live().ioView();
+    if (!view) throw coreError(this.rig.module, 'solve');
+    return (this.io = view);
   }
 
   private live(): EmbindSolver {
