@@ -128,7 +128,8 @@ class SolverBinding {
   val io_view() {
     return guarded([&] {
       const Kinematics& kin = rig_.kinematics();
-      io_.assign(static_cast<size_t>(kin.num_angles() + kin.num_residuals()) + kIoStats, 0.0);
+      const size_t size = static_cast<size_t>(kin.num_angles() + kin.num_residuals()) + kIoStats;
+      if (io_.size() != size) io_.assign(size, 0.0);  // kept otherwise: a view asked anew after growth reads the result
       io_n_ = kin.num_angles();
       io_m_ = kin.num_residuals();
       return val(emscripten::typed_memory_view(io_.size(), io_.data()));

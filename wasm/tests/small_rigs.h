@@ -3,6 +3,9 @@
 
 #include <Eigen/Core>
 
+#include <utility>
+#include <vector>
+
 #include "rig.h"
 
 namespace ik::test {
@@ -26,6 +29,23 @@ inline Rig two_bones() {
   rig.bones[1].rest = translation(1, 0, 0);
   rig.bones[1].length = 1;
   rig.effectors = {1};
+  return rig;
+}
+
+// A straight chain of `bones` bones of length 1 along +x, each limited to +-90 degrees per
+// angle, with the given end effectors (bone indices).
+inline Rig straight_chain(int bones, std::vector<int> effectors) {
+  Rig rig;
+  rig.bones.resize(bones);
+  for (int i = 0; i < bones; ++i) {
+    Bone& b = rig.bones[i];
+    b.parent = i - 1;
+    b.rest = translation(i, 0, 0);  // rest transforms are in rig space
+    b.length = 1;
+    b.min_deg = Eigen::Vector3d::Constant(-90);
+    b.max_deg = Eigen::Vector3d::Constant(90);
+  }
+  rig.effectors = std::move(effectors);
   return rig;
 }
 
