@@ -1,0 +1,133 @@
+// What crosses into WebAssembly (issue 14, items 1 to 3 and 10): inputs are checked and copied
+// before C++ sees them, so user code cannot free a rig under C++ and no JavaScript error is raised
+// inside a binding; the core's own refusals come back as Errors without leaking its stack; a
+// solve whose workspace grows the memory still reports its result.
+import { beforeAll, describe, expect, it } from 'vitest';
+
+import type { IkCoreModule } from '../../web/src/ik/module.js';
+import { loadIkNode } from '../../web/src/ik/node.js';
+import { IkRig } from '../../web/src/ik/rig.js';
+import type { RigSpec } from '../../web/src/ik/rig_spec.js';
+import { IkSolver, type SolverOptions } from '../../web/src/ik/solver.js';
+import { disposeAfterAll } from '../helpers/owned.js';
+
+let ik: IkCoreModule;
+const keep = disposeAfterAll();
+
+beforeAll(async () => {
+  ik = await loadIkNode();
+});
+
+/** A straight chain of `n` unit bones along +x, +-90 degrees per angle, with `effectors`. */
+function chain(n: number, effectors: number[]): RigSpec {
+  const rest = new Float64Array(16 * n);
+  for (let i = 0; i < n; i++) rest.set([1, 0, 0, i, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1], 16 * i);
+  return {
+    names: [],
+    parents: Int32Array.from({ length: n }, (_, i) => i - 1),
+    rest,
+    lengths: new Float64Array(n).fill(1),
+    lower: new Float64Array(3 * n).fill(-90),
+    upper: new Float64Array(3 * n).fill(90),
+    effectors: Int32Array.from(effectors),
+  };
+}
+
+describe('inputs are plain numbers before they reach C++', () => {
+  it('a valueOf or getter that disposes the rig never runs inside a call', () => {
+    const rig = new IkRig(ik, chain(3, [2]));
+    let ran = false;
+    const hostile = { valueOf: () => ((ran = true), rig.dispose(), 0) };
+    const angles: unknown[] = Array.from({ length: rig.numAngles }, () => 0);
+    angles[4] = hostile;
+    for (const call of [() => rig.boneTips(angles as number[]), () => rig.poses(angles as number[]), () => rig.project(angles as number[])])
+      expect(call).toThrow('angles[4] is an object, not a number');
+    expect(ran).toBe(false);
+    const withGetter = Array.from({ length: rig.numAngles }, () => 0);
+    Object.defineProperty(withGetter, 5, { get: () => (rig.dispose(), 0) });
+    expect(() => rig.tips(withGetter)).toThrow('this rig was disposed');
+    expect(rig.isDisposed).toBe(true);
+  });
+
+  it('a huge or missing array is refused by its length before any copy', () => {
+    const rig = keep(new IkRig(ik, chain(3, [2])));
+    const solver = keep(new IkSolver(rig, 'lm'));
+    expect(() => solver.solve({ length: 1e10 } as unknown as number[], [1, 1, 0])).toThrow(/angles must be an array/);
+    expect(() => solver.solve(new Float64Array(9), null as unknown as number[])).toThrow('target must be an array or a typed array of numbers, not null');
+    expect(() => rig.tips(undefined as unknown as number[])).toThrow('angles must be an array or a typed array of numbers, not undefined');
+    expect(() => new IkRig(ik, { ...chain(3, [2]), rest: null } as unknown as RigSpec)).toThrow(/^rest .* not null$/);
+    expect(solver.solve(new Float64Array(9), [1, 1, 0]).reached).toBe(true);
+  });
+
+  it('options must be a plain object of known names with number or boolean values', () => {
+    const rig = keep(new IkRig(ik, chain(3, [2])));
+    const bad: [unknown, RegExp][] = [
+      [[1, 2], /solver option must be a plain object .* not an array/],
+      [new Map([['maxIterations', 3]]), /solver option must be a plain object .* not an object/],
+      [{ maxIterations: '3' }, /solver option maxIterations must be a number or a boolean/],
+      [{ nope: 1 }, /unknown solver option "nope" \(known: gradientTolerance, /],
+    ];
+    for (const [options, message] of bad) {
+      expect(() => new IkSolver(rig, 'lm', options as SolverOptions)).toThrow(message);
+      const solver = keep(new IkSolver(rig, 'lm', { maxIterations: 7 }));
+      expect(() => solver.setOptions(options as SolverOptions)).toThrow(message);
+      expect(solver.options().maxIterations).toBe(7);
+    }
+    let reads = 0;
+    const getter = Object.defineProperty({}, 'maxIterations', { enumerable: true, get: () => (++reads, 5) });
+    expect(keep(new IkSolver(rig, 'lm', getter)).options().maxIterations).toBe(5);
+    expect(reads).toBe(1);
+  });
+});
+
+describe("the core's refusals", () => {
+  it('come back as Errors with the message, and many of them leave the module working', () => {
+    const rig = keep(new IkRig(ik, chain(3, [2])));
+    const solver = keep(new IkSolver(rig, 'lm', { errorTolerance: -1 }));
+    const angles = new Float64Array(9);
+    let thrown = 0;
+    for (let i = 0; i < 50_000; i++) {
+      try {
+        solver.solve(angles, [1, 1, 0]); // refused in C++ (an option out of range)
+      } catch (e) {
+        if ((e as Error).message === 'solver option errorTolerance must be a number >= 0') thrown++;
+      }
+    }
+    expect(thrown).toBe(50_000);
+    expect(() => IkSolver.describe(ik, 'nope')).toThrow('unknown solver method "nope"');
+    expect(() => new IkSolver(rig, 'nope')).toThrow(/unknown solver method "nope"/);
+    expect(() => rig.setEffectors([-1])).toThrow('end effector 0 is bone -1, which is not a bone of the rig (0..2)');
+    expect(ik.takeError()).toBe('');
+    solver.setOptions({ tipTolerance: 1e-6 });
+    const r = solver.solve(angles, [1, 1, 0]);
+    expect(r.reached).toBe(true);
+    expect(Math.hypot(...Array.from(rig.tips(r.angles)).map((x, k) => x - [1, 1, 0][k]))).toBeLessThan(1e-6);
+  });
+
+  it('a rig past the size limits is refused with the limit named', () => {
+    const effectors = Array.from({ length: 60 }, (_, i) => 9999 - i);
+    expect(() => new IkRig(ik, chain(10_000, effectors))).toThrow(
+      '60 end effectors on 10000 bones make a Jacobian of 5400000 numbers; the core takes at most 4194304',
+    );
+    const rig = keep(new IkRig(ik, chain(300, [299])));
+    expect(() => keep(new IkSolver(rig, 'newton')).solve(new Float64Array(900), [100, 100, 0])).toThrow(
+      'newton takes rigs of at most 768 angles (256 bones); this one has 900: use lm or gd',
+    );
+    expect(() => keep(new IkSolver(rig, 'lm', { historyCapacity: 1e8 })).solve(new Float64Array(900), [100, 100, 0])).toThrow(
+      'solver option historyCapacity must be in 1..1000000',
+    );
+  });
+});
+
+describe('a big rig', () => {
+  it('a solve that grows the WebAssembly memory still returns its result', () => {
+    const rig = keep(new IkRig(ik, chain(10_000, [9999])));
+    const solver = keep(new IkSolver(rig, 'lm', { restarts: 0, maxIterations: 3, timeBudgetSeconds: 0 }));
+    const r = solver.solve(new Float64Array(rig.numAngles), [5000, 5000, 0]);
+    expect(r.iterations).toBe(3);
+    expect(r.stopReason).toBe('max_iterations');
+    expect(r.E).toBeLessThan(r.initialE);
+    const tip = rig.tips(r.angles);
+    expect(0.5 * ((tip[0] - 5000) ** 2 + (tip[1] - 5000) ** 2 + tip[2] ** 2)).toBeCloseTo(r.E, 6);
+  });
+});
