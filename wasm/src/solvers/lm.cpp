@@ -86,7 +86,11 @@ class LevenbergMarquardt final : public Solver {
     for (int attempt = 0; attempt < opt_.lm_max_rejections; ++attempt) {
       if (attempt > 0 && time_is_up()) return Progress::stuck;
       const double lambda = (mu_ * relative_error2 + opt_.lm_damping_floor) * s;
-      if (!damped_step(lambda, nf)) return fail("the damped normal matrix could not be factorised");
+      switch (damped_step(lambda, nf)) {
+        case Step::failed: return fail("the damped normal matrix could not be factorised");
+        case Step::out_of_time: return Progress::stuck;
+        case Step::ok: break;
+      }
       if (trial_ == a_) return Progress::stuck;  // the step is 0
       const double E_trial = evaluate(trial_, r_trial_);
       // Gain ratio: actual decrease over the decrease the linear model predicts for the
@@ -118,20 +122,24 @@ class LevenbergMarquardt final : public Solver {
   // The 3x1 block of J: effector e's tip against angle j.
   Eigen::Block<Eigen::MatrixXd, 3, 1> block(int e, int j) { return J_.block<3, 1>(3 * e, j); }
 
+  enum class Step { ok, failed, out_of_time };
+
   // Writes trial_ = P(a_ + d) for the damped step d with `lambda`, bounds handled by the active
-  // set. Returns false if the factorisation failed.
-  bool damped_step(double lambda, int nf) {
+  // set. Fails if the factorisation failed; stops when the time budget ran out (on a rig of
+  // thousands of angles, taking clipped columns out costs as much as building the matrix).
+  Step damped_step(double lambda, int nf) {
     reduced_ = normal_;
     rhs_ = r_;
     std::fill(clipped_.begin(), clipped_.begin() + nf, 0);
     for (int pass = 0; pass < kActiveSetPasses; ++pass) {
       shifted_ = reduced_;
       shifted_.diagonal().array() += lambda;
-      if (!small_cholesky(shifted_, m_)) return false;
+      if (!small_cholesky(shifted_, m_)) return Step::failed;
       y_ = rhs_;
       small_cholesky_solve(shifted_, m_, y_);
       bool clipped_more = false;
       for (int c = 0; c < nf; ++c) {
+        if (c % 64 == 63 && time_is_up()) return Step::out_of_time;
         if (clipped_[c]) continue;
         const int i = free_[c];
         double d = 0;  // -(Jf^T y)_c
@@ -159,7 +167,7 @@ class LevenbergMarquardt final : public Solver {
     trial_ = a_;
     for (int c = 0; c < nf; ++c) trial_[free_[c]] += delta_[c];
     kin_.project(trial_);
-    return true;
+    return Step::ok;
   }
 
   static constexpr int kActiveSetPasses = 4;
