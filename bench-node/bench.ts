@@ -4,7 +4,7 @@ import type { IkCoreModule } from '../web/src/ik/module.js';
 import { IkRig } from '../web/src/ik/rig.js';
 import { defaultTolerances, dragTolerances, rigSize } from '../web/src/rig/tolerances.js';
 import { draggableEffectors } from './effectors.js';
-import { BenchError } from './errors.js';
+import { BenchError, errorLine } from './errors.js';
 import { summarize, type Row } from './metrics.js';
 import { isPeer, type BenchOptions, type Method } from './options.js';
 import type { Progress } from './progress.js';
@@ -28,41 +28,71 @@ export interface PreparedRig extends BenchRig {
   reachSteps: number;
 }
 
+/** Most numbers (float64) the target sets of one rig may hold: 512 MiB. */
+const MAX_TARGET_NUMBERS = 2 ** 26;
+
 /**
  * Loads every rig and checks it in the WebAssembly core; fills in tolerances. Drag and reach use
  * the page's drag tolerances (dragTolerances); --gtol replaces their gradient tolerance, and
- * --ftol their tip test by E < ftol.
+ * --ftol their tip test by E < ftol. Any error is a BenchError naming the --rig entry.
  */
 export async function prepareRigs(opts: BenchOptions, ik: IkCoreModule): Promise<PreparedRig[]> {
   const out: PreparedRig[] = [];
-  for (const entry of opts.rigs) {
-    const rig = await loadBenchRig(entry);
-    let core: IkRig;
-    try {
-      core = new IkRig(ik, rig.spec);
-    } catch (e) {
-      throw new BenchError(`rig ${entry}: ${(e as Error).message.split('\n')[0]}`);
-    }
-    const size = rigSize(core.boneTips(new Float64Array(core.numAngles)));
-    const reachSteps = reachPaths(rig.spec, core.tips(project(rig.spec, new Float64Array(core.numAngles)))).length * REACH_PATH_STEPS;
-    core.dispose();
-    if (rig.spec.effectors.length === 0) throw new BenchError(`rig ${entry}: no end effectors`);
-    if (opts.experiments.includes('drag') && draggableEffectors(rig.spec).length === 0)
-      throw new BenchError(`rig ${entry}: the drag experiment needs an end effector that can move while the others stay pinned`);
-    if (opts.experiments.includes('reach') && reachSteps === 0)
-      throw new BenchError(`rig ${entry}: the reach experiment needs an end effector that can move while the others stay pinned, its tip off its chain root`);
-    const defaults = defaultTolerances(rig.name, rig.format === 'a7', size);
-    const drag = dragTolerances(size);
-    out.push({
-      ...rig,
-      size,
-      gtol: opts.gtol ?? defaults.gtol,
-      ftol: opts.ftol ?? defaults.ftol,
-      drag: { gtol: opts.gtol ?? drag.gradientTolerance, tipTolerance: opts.ftol === undefined ? drag.tipTolerance : 0 },
-      reachSteps,
-    });
-  }
+  for (const entry of opts.rigs) out.push(await namingRig(entry, () => prepareRig(entry, opts, ik)));
   return out;
+}
+
+/** `work()`, with any error but a BenchError turned into one line naming the --rig entry. */
+async function namingRig<T>(entry: string, work: () => T | Promise<T>): Promise<T> {
+  try {
+    return await work();
+  } catch (e) {
+    if (e instanceof BenchError) throw e;
+    throw new BenchError(`${entry}: ${errorLine(e)}`);
+  }
+}
+
+/** One rig of prepareRigs. */
+async function prepareRig(entry: string, opts: BenchOptions, ik: IkCoreModule): Promise<PreparedRig> {
+  const rig = await loadBenchRig(entry);
+  const core = new IkRig(ik, rig.spec);
+  let size: number, reachSteps: number;
+  try {
+    size = rigSize(core.boneTips(new Float64Array(core.numAngles)));
+    reachSteps = reachPaths(rig.spec, core.tips(project(rig.spec, new Float64Array(core.numAngles)))).length * REACH_PATH_STEPS;
+  } finally {
+    core.dispose();
+  }
+  if (rig.spec.effectors.length === 0) throw new BenchError(`${entry}: no end effectors`);
+  if (opts.experiments.includes('drag') && draggableEffectors(rig.spec).length === 0)
+    throw new BenchError(`${entry}: the drag experiment needs an end effector that can move while the others stay pinned`);
+  if (opts.experiments.includes('reach') && reachSteps === 0)
+    throw new BenchError(`${entry}: the reach experiment needs an end effector that can move while the others stay pinned, its tip off its chain root`);
+  const defaults = defaultTolerances(rig.name, rig.format === 'a7', size);
+  const drag = dragTolerances(size);
+  const prepared: PreparedRig = {
+    ...rig,
+    size,
+    gtol: opts.gtol ?? defaults.gtol,
+    ftol: opts.ftol ?? defaults.ftol,
+    drag: { gtol: opts.gtol ?? drag.gradientTolerance, tipTolerance: opts.ftol === undefined ? drag.tipTolerance : 0 },
+    reachSteps,
+  };
+  checkTargetSetSize(entry, prepared, opts);
+  return prepared;
+}
+
+/** Refuses (usage error) a --samples that would make the rig's target sets exceed MAX_TARGET_NUMBERS. */
+function checkTargetSetSize(entry: string, rig: PreparedRig, opts: BenchOptions): void {
+  const perSample = 2 * rig.spec.lower.length + 3 * rig.spec.effectors.length; // start, target angles, targets
+  const samples = opts.experiments.reduce((n, e) => n + largestSet(rig, e, opts), 0);
+  if (samples * perSample <= MAX_TARGET_NUMBERS) return;
+  const mib = (numbers: number): string => `${Math.ceil((8 * numbers) / 2 ** 20)} MiB`;
+  throw new BenchError(
+    `${entry}: ${samples} samples of ${perSample} numbers would take ${mib(samples * perSample)} of target sets, ` +
+      `more than ${mib(MAX_TARGET_NUMBERS)}: lower --samples`,
+    2,
+  );
 }
 
 /** The engines a method runs on: ours on each requested engine, the peers in JavaScript. */
@@ -75,14 +105,18 @@ function samplesOf(rig: PreparedRig, experiment: Experiment, method: Method, opt
   return experiment === 'reach' ? Math.min(opts.samples[method], rig.reachSteps) : opts.samples[method];
 }
 
+/** Samples of the longest set one method solves in `experiment` on `rig`. */
+function largestSet(rig: PreparedRig, experiment: Experiment, opts: BenchOptions): number {
+  return Math.max(...opts.methods.map((m) => samplesOf(rig, experiment, m, opts)));
+}
+
 /** Number of solves a run will do (reach's reference solves included), for the progress bar. */
 export function totalSolves(opts: BenchOptions, rigs: readonly PreparedRig[]): number {
   let n = 0;
   for (const rig of rigs)
     for (const experiment of opts.experiments) {
-      const counts = opts.methods.map((m) => samplesOf(rig, experiment, m, opts));
-      opts.methods.forEach((m, i) => (n += counts[i] * enginesFor(m, opts).length));
-      if (experiment === 'reach') n += Math.max(...counts);
+      for (const m of opts.methods) n += samplesOf(rig, experiment, m, opts) * enginesFor(m, opts).length;
+      if (experiment === 'reach') n += largestSet(rig, experiment, opts);
     }
   return n;
 }
@@ -121,11 +155,13 @@ export async function runBench(rigs: readonly PreparedRig[], ctx: RunContext): P
   const { opts, ik, progress } = ctx;
   const needsPool = opts.experiments.includes('reach') || opts.methods.some((m) => isPeer(m) || opts.engines.includes('wasm'));
   if (opts.methods.some((m) => !isPeer(m)) && opts.engines.includes('native')) checkNativeTool();
-  const pool = needsPool ? await WorkerPool.create(opts.workers) : undefined;
+  // No more workers than the longest set has solves: the others would only take memory.
+  const longest = Math.max(...rigs.flatMap((rig) => opts.experiments.map((e) => largestSet(rig, e, opts))));
+  const pool = needsPool ? await WorkerPool.create(Math.min(opts.workers, longest)) : undefined;
   const rows: Row[] = [];
   try {
     for (const rig of rigs) {
-      const sets = targetSetsFor(rig, opts, ik);
+      const sets = await namingRig(rig.path, () => targetSetsFor(rig, opts, ik));
       const reach = sets.get('reach');
       if (reach) {
         progress.label(`${rig.name} reach: reachability (${REFERENCE_METHOD} with restarts, untimed)`);

@@ -3,9 +3,9 @@
 // experiment, method, samples, ...) and sets our rows beside it, with the speed ratio
 // their t_avg / our t_avg (above 1: we are faster). Rows match on rig, experiment and method
 // (case-insensitive: the CSVs say GD, BFGS, GN).
-import { existsSync, readFileSync } from 'node:fs';
+import { readFileSync, statSync } from 'node:fs';
 
-import { BenchError } from './errors.js';
+import { BenchError, errorLine, quote } from './errors.js';
 import type { Row } from './metrics.js';
 import { formatNumber, formatPercent, type Table } from './table.js';
 
@@ -27,20 +27,20 @@ const optional = ['samples', 'iter_avg', 'E_avg', 'E_iqm', 'E_max'] as const;
 /** Parses the CSV text; `file` names it in errors. Throws BenchError. */
 export function parseReferenceCsv(text: string, file: string): ReferenceRow[] {
   const lines = text.split(/\r?\n/).filter((l) => l.trim().length > 0);
-  if (lines.length === 0) throw new BenchError(`compare ${file}: empty file`);
+  if (lines.length === 0) throw new BenchError(`--compare ${file}: empty file`);
   const header = lines[0].split(',').map((h) => h.trim());
   for (const col of required)
-    if (!header.includes(col)) throw new BenchError(`compare ${file}: no "${col}" column (expected ${required.join(', ')})`);
+    if (!header.includes(col)) throw new BenchError(`--compare ${file}: no "${col}" column (expected ${required.join(', ')})`);
   const index = (col: string): number => header.indexOf(col);
   return lines.slice(1).map((line, i) => {
     const cells = line.split(',').map((c) => c.trim());
     if (cells.length !== header.length)
-      throw new BenchError(`compare ${file}: line ${i + 2} has ${cells.length} cells, the header ${header.length}`);
+      throw new BenchError(`--compare ${file}: line ${i + 2} has ${cells.length} cells, the header ${header.length}`);
     const num = (col: string): number | undefined => {
       const k = index(col);
       if (k < 0) return undefined;
       const x = Number(cells[k]);
-      if (cells[k] === '' || !Number.isFinite(x)) throw new BenchError(`compare ${file}: line ${i + 2}: ${col} "${cells[k]}" is not a number`);
+      if (cells[k] === '' || !Number.isFinite(x)) throw new BenchError(`--compare ${file}: line ${i + 2}: ${col} ${quote(cells[k])} is not a number`);
       return x;
     };
     const row: ReferenceRow = {
@@ -57,9 +57,27 @@ export function parseReferenceCsv(text: string, file: string): ReferenceRow[] {
   });
 }
 
+/** Largest --compare file: the report's CSVs take a few KiB. */
+const MAX_COMPARE_BYTES = 16 * 2 ** 20;
+
+/**
+ * Reads and parses a reference CSV. Throws BenchError `--compare FILE: problem` for a missing
+ * file, a directory or device, a file over MAX_COMPARE_BYTES, an unreadable or malformed one.
+ */
 export function readReferenceCsv(file: string): ReferenceRow[] {
-  if (!existsSync(file)) throw new BenchError(`compare ${file}: no such file`);
-  return parseReferenceCsv(readFileSync(file, 'utf8'), file);
+  const fail = (problem: string): BenchError => new BenchError(`--compare ${file}: ${problem}`);
+  let text: string;
+  try {
+    const stat = statSync(file);
+    if (stat.isDirectory()) throw fail('is a directory, not a CSV file');
+    if (!stat.isFile()) throw fail('is not a regular file');
+    if (stat.size > MAX_COMPARE_BYTES) throw fail(`is ${stat.size} bytes; a reference CSV has at most ${MAX_COMPARE_BYTES}`);
+    text = readFileSync(file, 'utf8');
+  } catch (e) {
+    if (e instanceof BenchError) throw e;
+    throw fail((e as NodeJS.ErrnoException).code === 'ENOENT' ? 'no such file' : errorLine(e));
+  }
+  return parseReferenceCsv(text, file);
 }
 
 export function findReference(reference: readonly ReferenceRow[], row: Pick<Row, 'rig' | 'experiment' | 'method'>): ReferenceRow | undefined {

@@ -2,25 +2,38 @@
 // that carry them. Bones are indices into the spec; effectors are indices into spec.effectors.
 import type { RigSpec } from '../web/src/ik/rig_spec.js';
 
-/** Bones from `bone` up to its root, inclusive. */
-function chainOf(spec: RigSpec, bone: number): number[] {
-  const chain: number[] = [];
-  for (let b = bone; b !== -1; b = spec.parents[b]) chain.push(b);
-  return chain;
+/** Per bone, the end effectors on it or below it (an effector listed twice counts twice). */
+function effectorsBelow(spec: RigSpec): Int32Array {
+  const n = spec.parents.length;
+  const below = new Int32Array(n);
+  for (const b of spec.effectors) below[b]++;
+  for (const b of childrenFirst(spec.parents)) if (spec.parents[b] !== -1) below[spec.parents[b]] += below[b];
+  return below;
+}
+
+/** Every bone reachable from a root, each after all of its children (a reversed breadth-first walk). */
+function childrenFirst(parents: Int32Array): number[] {
+  const children: number[][] = Array.from(parents, () => []);
+  const order: number[] = [];
+  parents.forEach((p, b) => (p === -1 ? order.push(b) : children[p].push(b)));
+  for (let k = 0; k < order.length; k++) for (const c of children[order[k]]) order.push(c);
+  return order.reverse();
 }
 
 /**
  * Per end effector (index into spec.effectors), the movable angles that move it and no other
  * effector: angles of bones on its chain that are on no other effector's chain, and not fixed.
+ * Those bones are the ones from the effector's bone up while a single effector lies below, so
+ * the whole takes time linear in the bones and effectors.
  */
 export function exclusiveAngles(spec: RigSpec): number[][] {
-  const chains = Array.from(spec.effectors, (b) => new Set(chainOf(spec, b)));
-  return chains.map((chain, e) => {
+  const below = effectorsBelow(spec);
+  return Array.from(spec.effectors, (effectorBone) => {
+    const bones: number[] = [];
+    for (let b = effectorBone; b !== -1 && below[b] === 1; b = spec.parents[b]) bones.push(b);
     const angles: number[] = [];
-    for (const bone of [...chain].sort((x, y) => x - y)) {
-      if (chains.some((other, f) => f !== e && other.has(bone))) continue;
+    for (const bone of bones.sort((x, y) => x - y))
       for (let k = 3 * bone; k < 3 * bone + 3; k++) if (spec.lower[k] < spec.upper[k]) angles.push(k);
-    }
     return angles;
   });
 }

@@ -4,7 +4,7 @@ import { availableParallelism } from 'node:os';
 
 import { Command, CommanderError, Option } from 'commander';
 
-import { BenchError } from './errors.js';
+import { BenchError, quote } from './errors.js';
 import { experiments, type Experiment } from './targets.js';
 
 export const ownMethods = ['gd', 'bfgs', 'gn', 'newton', 'lm'] as const;
@@ -39,51 +39,84 @@ export interface BenchOptions {
   progress: boolean;
 }
 
+/** Solves of one method per experiment: the default, and the largest --samples value. */
+const DEFAULT_SAMPLES = 1000;
+const MAX_SAMPLES = 1_000_000;
+/**
+ * Worker threads or native processes --workers takes per core, and in all. Each worker holds its
+ * own WebAssembly instance (about 45 MB), and more workers than cores only share the cores.
+ */
+const WORKERS_PER_CORE = 4;
+const WORKERS_CAP = 64;
+const MAX_WORKERS = Math.min(WORKERS_CAP, WORKERS_PER_CORE * availableParallelism());
+/** Longest --timeout, seconds per solve. */
+const MAX_TIMEOUT_SECONDS = 3600;
+
 const usage = (message: string): BenchError => new BenchError(message, 2);
 
-function list(value: string): string[] {
-  return value
+/** `value` itself; a usage error naming `flag` when it is empty or blank. */
+function present(flag: string, value: string): string {
+  if (value.trim() === '') throw usage(`${flag}: empty value`);
+  return value;
+}
+
+/** The comma-separated items of `value`, trimmed; a usage error when there are none. */
+function list(flag: string, value: string): string[] {
+  const items = present(flag, value)
     .split(',')
     .map((s) => s.trim())
     .filter((s) => s.length > 0);
+  if (items.length === 0) throw usage(`${flag}: empty list ${quote(value)}`);
+  return items;
 }
 
-function positiveNumber(flag: string, value: string): number {
-  const x = Number(value);
-  if (value.trim() === '' || !Number.isFinite(x) || x <= 0) throw usage(`${flag}: "${value}" is not a positive number`);
+/** A finite number above 0 and at most `max`. */
+function positiveNumber(flag: string, value: string, max = Infinity): number {
+  const x = Number(present(flag, value));
+  if (!Number.isFinite(x) || x <= 0 || x > max)
+    throw usage(`${flag}: ${quote(value)} is not a positive number${Number.isFinite(max) ? ` of at most ${max}` : ''}`);
   return x;
 }
 
-function positiveInteger(flag: string, value: string): number {
-  const x = Number(value);
-  if (!Number.isInteger(x) || x <= 0) throw usage(`${flag}: "${value}" is not a positive integer`);
+/** An integer in min..max; `why` follows the range in the message. */
+function integerIn(flag: string, value: string, min: number, max: number, why = ''): number {
+  const x = Number(present(flag, value));
+  if (!Number.isInteger(x) || x < min || x > max) throw usage(`${flag}: ${quote(value)} is not an integer in ${min}..${max}${why}`);
   return x;
 }
 
-function pick<T extends string>(flag: string, values: string[], known: readonly T[], what: string): T[] {
-  if (values.length === 0) throw usage(`${flag}: empty list`);
+/** The items of `value`, each one of `known`, without repeats. */
+function pick<T extends string>(flag: string, value: string, known: readonly T[], what: string): T[] {
+  const values = list(flag, value);
   for (const v of values)
-    if (!(known as readonly string[]).includes(v)) throw usage(`unknown ${what} "${v}" (known: ${known.join(', ')})`);
+    if (!(known as readonly string[]).includes(v)) throw usage(`${flag}: unknown ${what} ${quote(v)} (known: ${known.join(', ')})`);
   return [...new Set(values)] as T[];
 }
 
-/** `1000` or `1000,gd=100`: a default plus per-method overrides. */
+/** `1000` or `1000,gd=100`: a default plus per-method overrides, each in 1..MAX_SAMPLES. */
 function parseSamples(value: string): Record<Method, number> {
-  let fallback = 1000;
+  let fallback: number | undefined;
   const overrides: Partial<Record<Method, number>> = {};
-  for (const entry of list(value)) {
+  for (const entry of list('--samples', value)) {
     const eq = entry.indexOf('=');
     if (eq < 0) {
-      fallback = positiveInteger('--samples', entry);
+      if (fallback !== undefined) throw usage(`--samples: two defaults in ${quote(value)}`);
+      fallback = integerIn('--samples', entry, 1, MAX_SAMPLES);
       continue;
     }
-    const method = entry.slice(0, eq);
-    if (!allMethods.includes(method)) throw usage(`unknown method "${method}" in --samples (known: ${allMethods.join(', ')})`);
-    overrides[method as Method] = positiveInteger(`--samples ${method}`, entry.slice(eq + 1));
+    const method = entry.slice(0, eq).trim();
+    if (!allMethods.includes(method)) throw usage(`--samples: unknown method ${quote(method)} in ${quote(value)} (known: ${allMethods.join(', ')})`);
+    if (overrides[method as Method] !== undefined) throw usage(`--samples: ${method} given twice in ${quote(value)}`);
+    overrides[method as Method] = integerIn(`--samples ${method}`, entry.slice(eq + 1), 1, MAX_SAMPLES);
   }
   const out = {} as Record<Method, number>;
-  for (const m of allMethods as Method[]) out[m] = overrides[m] ?? fallback;
+  for (const m of allMethods as Method[]) out[m] = overrides[m] ?? fallback ?? DEFAULT_SAMPLES;
   return out;
+}
+
+/** An output or --compare file name; undefined when the option is absent. */
+function fileName(flag: string, value: string | undefined): string | undefined {
+  return value === undefined ? undefined : present(flag, value);
 }
 
 function program(): Command {
@@ -92,14 +125,14 @@ function program(): Command {
     .addOption(new Option('--rig <paths>', 'rig files (.glb, .gltf, A7 .json) or project rig names, comma-separated').makeOptionMandatory())
     .option('--experiment <list>', `experiments: ${experiments.join(', ')}`, 'random,incremental')
     .option('--methods <list>', `methods: ${allMethods.join(', ')}`, allMethods.join(','))
-    .option('--samples <n>', 'samples per experiment; per-method overrides like 1000,gd=100', '1000')
+    .option('--samples <n>', `samples per experiment (at most ${MAX_SAMPLES}); per-method overrides like 1000,gd=100`, String(DEFAULT_SAMPLES))
     .option('--seed <s>', 'seed of the target sets', '1')
     .option('--gtol <x>', 'gradient tolerance (default: per rig, see README)')
     .option('--ftol <y>', 'E tolerance, also the success threshold (default: per rig; drag and reach: a tip distance, see README)')
-    .option('--timeout <seconds>', 'time budget per solve', '1')
+    .option('--timeout <seconds>', `time budget per solve (at most ${MAX_TIMEOUT_SECONDS})`, '1')
     .option('--paper', "the report's original algorithms (solver paper mode)", false)
     .option('--engine <list>', 'wasm, native, or both (prints the ratio)', 'wasm')
-    .option('--workers <n>', 'worker threads (native: processes)', String(availableParallelism()))
+    .option('--workers <n>', `worker threads (native: processes), at most ${MAX_WORKERS}`, String(Math.min(availableParallelism(), MAX_WORKERS)))
     .option('--json <file>', 'write the rows as JSON')
     .option('--csv <file>', 'write the rows as CSV')
     .option('--markdown <file>', 'write the tables as Markdown')
@@ -151,27 +184,22 @@ export function parseOptions(argv: string[], isTTY: boolean): BenchOptions | und
     throw e;
   }
   const raw = cmd.opts<RawOptions>();
-  const methods = pick('--methods', list(raw.methods), allMethods, 'method') as Method[];
-  const seed = Number(raw.seed);
-  if (!Number.isInteger(seed) || seed < 0 || seed > 0xffffffff) throw usage(`--seed: "${raw.seed}" is not an integer in 0..4294967295`);
-  const rigs = list(raw.rig);
-  if (rigs.length === 0) throw usage('--rig: empty list');
   return {
-    rigs,
-    experiments: pick('--experiment', list(raw.experiment), experiments, 'experiment'),
-    methods,
+    rigs: list('--rig', raw.rig),
+    experiments: pick('--experiment', raw.experiment, experiments, 'experiment'),
+    methods: pick('--methods', raw.methods, allMethods, 'method') as Method[],
     samples: parseSamples(raw.samples),
-    seed,
+    seed: integerIn('--seed', raw.seed, 0, 0xffffffff),
     gtol: raw.gtol === undefined ? undefined : positiveNumber('--gtol', raw.gtol),
     ftol: raw.ftol === undefined ? undefined : positiveNumber('--ftol', raw.ftol),
-    timeoutSeconds: positiveNumber('--timeout', raw.timeout),
+    timeoutSeconds: positiveNumber('--timeout', raw.timeout, MAX_TIMEOUT_SECONDS),
     paper: raw.paper,
-    engines: pick('--engine', list(raw.engine), engines, 'engine'),
-    workers: positiveInteger('--workers', raw.workers),
-    json: raw.json,
-    csv: raw.csv,
-    markdown: raw.markdown,
-    compare: raw.compare,
+    engines: pick('--engine', raw.engine, engines, 'engine'),
+    workers: integerIn('--workers', raw.workers, 1, MAX_WORKERS, ` (${WORKERS_PER_CORE} per core, ${WORKERS_CAP} at most)`),
+    json: fileName('--json', raw.json),
+    csv: fileName('--csv', raw.csv),
+    markdown: fileName('--markdown', raw.markdown),
+    compare: fileName('--compare', raw.compare),
     progress: raw.progress && isTTY,
   };
 }

@@ -1,7 +1,9 @@
-// The files a run can write: --json, --csv and --markdown.
-import { writeFileSync } from 'node:fs';
+// The files a run can write: --json, --csv and --markdown, and the check before a run that they
+// can be written.
+import { accessSync, constants, statSync, writeFileSync, type Stats } from 'node:fs';
+import { dirname, resolve } from 'node:path';
 
-import { BenchError } from './errors.js';
+import { BenchError, errorLine } from './errors.js';
 import type { Row } from './metrics.js';
 import { formatStopReasons, renderTable, type Table } from './table.js';
 
@@ -30,6 +32,82 @@ export interface RunInfo {
     dragGtol: number;
     tipTolerance: number;
   }>;
+}
+
+/** The stat of `path`, or undefined when nothing is there. */
+function statOf(path: string): Stats | undefined {
+  try {
+    return statSync(path);
+  } catch (e) {
+    const code = (e as NodeJS.ErrnoException).code;
+    if (code === 'ENOENT' || code === 'ENOTDIR') return undefined;
+    throw e;
+  }
+}
+
+function writable(path: string): boolean {
+  try {
+    accessSync(path, constants.W_OK);
+    return true;
+  } catch {
+    return false;
+  }
+}
+
+/** Why `file` cannot be written, or undefined when it can. */
+function outputProblem(file: string): string | undefined {
+  if (/[\\/]$/.test(file)) return 'names a folder, not a file';
+  const stat = statOf(file);
+  if (stat?.isDirectory()) return 'is a directory';
+  if (stat && !stat.isFile() && !stat.isCharacterDevice()) return 'is not a regular file';
+  if (stat) return writable(file) ? undefined : 'is not writable';
+  const folder = dirname(resolve(file));
+  const folderStat = statOf(folder);
+  if (!folderStat) return `folder ${folder} does not exist`;
+  if (!folderStat.isDirectory()) return `${folder} is not a folder`;
+  return writable(folder) ? undefined : `folder ${folder} is not writable`;
+}
+
+/** What makes two paths the same file: device and inode when it exists, else the absolute path. */
+function fileKey(path: string): string {
+  try {
+    const stat = statSync(path);
+    return `${stat.dev}:${stat.ino}`;
+  } catch {
+    return resolve(path);
+  }
+}
+
+/**
+ * Who already has `file` in `taken` (an input, an earlier output), or undefined; then records it
+ * as `flag`'s. Character devices (/dev/null) may be shared.
+ */
+function clash(file: string, flag: string, taken: Map<string, string>): string | undefined {
+  if (statOf(file)?.isCharacterDevice()) return undefined;
+  const key = fileKey(file);
+  const owner = taken.get(key);
+  taken.set(key, `the file of ${flag}`);
+  return owner === undefined ? undefined : `is ${owner}`;
+}
+
+/**
+ * Checks before a run that every output file can be written: its folder exists and is writable,
+ * and it is no directory, FIFO or other special file (character devices such as /dev/null pass).
+ * No two outputs may share a file, and none may overwrite an input (`inputs`: the rig and
+ * --compare files). Throws BenchError (exit code 2) `FLAG FILE: problem`.
+ */
+export function checkOutputs(outputs: ReadonlyArray<readonly [flag: string, file: string | undefined]>, inputs: readonly string[]): void {
+  const taken = new Map(inputs.map((path) => [fileKey(path), 'an input of this run']));
+  for (const [flag, file] of outputs) {
+    if (file === undefined) continue;
+    let problem: string | undefined;
+    try {
+      problem = outputProblem(file) ?? clash(file, flag, taken);
+    } catch (e) {
+      problem = errorLine(e);
+    }
+    if (problem) throw new BenchError(`${flag} ${file}: ${problem}`, 2);
+  }
 }
 
 function write(file: string, text: string): void {

@@ -10,14 +10,14 @@
 // where size is the diagonal of the bounding box of every bone's tip at the rest pose. The four
 // smaller A7 rigs measure 0.74 (robot-arm) to 1.73 (chimpanzee-hand) by that rule, hence the
 // reference of 1; beast measures 345 and keeps the report's own values.
-import { existsSync } from 'node:fs';
+import { existsSync, realpathSync } from 'node:fs';
 import { extname, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
 
 import type { RigSpec } from '../web/src/ik/rig_spec.js';
 import type { RigFormat } from '../web/src/rig/load_rig.js';
 import { loadRigFromPath } from '../web/src/rig/load_rig_node.js';
-import { BenchError } from './errors.js';
+import { BenchError, errorLine, quote } from './errors.js';
 
 export const projectModelsDir = fileURLToPath(new URL('../web/public/models/', import.meta.url));
 
@@ -31,31 +31,39 @@ export interface BenchRig {
   spec: RigSpec;
 }
 
-/** Resolves a --rig entry to a file path; throws BenchError when it does not exist. */
+/** Resolves a --rig entry to a file path; throws BenchError naming the entry when it does not exist. */
 export function resolveRigPath(entry: string): string {
   const bare = !entry.includes('/') && !entry.includes('\\') && extname(entry) === '';
   const path = bare ? resolve(projectModelsDir, `${entry}.glb`) : resolve(entry);
-  if (!existsSync(path))
-    throw new BenchError(bare ? `rig "${entry}": no project rig ${path}` : `rig ${entry}: no such file`);
+  if (!existsSync(path)) throw new BenchError(bare ? `${entry}: no project rig ${path}` : `${entry}: no such file`);
   return path;
 }
 
-/** Reads a rig file (A7 .json, .glb or .gltf). Throws BenchError with one line on failure. */
+/** Resolves every --rig entry (resolveRigPath); one file named twice is a usage error. */
+export function resolveRigPaths(entries: readonly string[]): string[] {
+  const seen = new Map<string, string>();
+  return entries.map((entry) => {
+    const path = resolveRigPath(entry);
+    const file = realpathSync(path);
+    const other = seen.get(file);
+    if (other === entry) throw new BenchError(`--rig: ${quote(entry)} given twice`, 2);
+    if (other !== undefined) throw new BenchError(`--rig: ${quote(other)} and ${quote(entry)} are the same file`, 2);
+    seen.set(file, entry);
+    return path;
+  });
+}
+
+/** Reads a rig file (A7 .json, .glb or .gltf). Throws BenchError with one line naming the entry on failure. */
 export async function loadBenchRig(entry: string): Promise<BenchRig> {
   const path = resolveRigPath(entry);
   const ext = extname(path).toLowerCase();
   if (!['.json', '.glb', '.gltf'].includes(ext))
-    throw new BenchError(`rig ${entry}: unknown rig format "${ext}" (expected .glb, .gltf or A7 .json)`);
+    throw new BenchError(`${entry}: unknown rig format "${ext}" (expected .glb, .gltf or A7 .json)`);
   try {
     const loaded = await loadRigFromPath(path);
     return { name: loaded.name, path, format: loaded.format, spec: loaded.spec };
   } catch (e) {
-    const message = oneLine(e);
-    throw new BenchError(`rig ${entry}: ${message.startsWith(`${path}: `) ? message.slice(path.length + 2) : message}`);
+    const message = errorLine(e);
+    throw new BenchError(`${entry}: ${message.startsWith(`${path}: `) ? message.slice(path.length + 2) : message}`);
   }
-}
-
-function oneLine(e: unknown): string {
-  const text = e instanceof Error ? e.message : String(e);
-  return text.split('\n')[0];
 }

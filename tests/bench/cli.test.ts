@@ -1,35 +1,58 @@
-// The command line as a user runs it: each error gives one clear line and a non-zero exit, and a
-// small run writes the JSON schema. (The benchmark itself is `npm run bench`, not a test.)
+// The command line as a user runs it: each error gives one clear line and a non-zero exit before
+// any solve, and a small run writes the JSON schema. (The benchmark itself is `npm run bench`, not
+// a test.) Error cases run in this process through runCommand, what cli.ts calls, to keep the
+// file fast; a few run the real command to check the exit code and stderr of the process.
 import { spawnSync } from 'node:child_process';
-import { mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
+import { existsSync, mkdirSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join, resolve } from 'node:path';
 
 import { afterAll, describe, expect, it } from 'vitest';
 
 import { writeA7Rig } from '../../bench-node/a7_writer.js';
+import { prepareRigs } from '../../bench-node/bench.js';
+import { runCommand } from '../../bench-node/command.js';
+import { parseOptions } from '../../bench-node/options.js';
+import { checkOutputs } from '../../bench-node/outputs.js';
+import type { IkCoreModule } from '../../web/src/ik/module.js';
 import { a7Path } from '../helpers/a7.js';
-import { straightLimb } from '../helpers/rig_builder.js';
+import { sketchRig, straightLimb } from '../helpers/rig_builder.js';
 
 const root = resolve(import.meta.dirname, '../..');
 const knight = a7Path('knight');
 const dir = mkdtempSync(join(tmpdir(), 'bench-cli-test-'));
 afterAll(() => rmSync(dir, { recursive: true, force: true }));
 
-function bench(...args: string[]): { code: number; stdout: string; stderr: string } {
+interface Outcome {
+  code: number;
+  stdout: string;
+  stderr: string;
+}
+
+function bench(...args: string[]): Outcome {
   const r = spawnSync(process.execPath, ['--import', 'tsx', 'bench-node/cli.ts', ...args], { cwd: root, encoding: 'utf8' });
   return { code: r.status ?? -1, stdout: r.stdout, stderr: r.stderr };
 }
 
-function expectOneLineError(args: string[], pattern: RegExp): void {
-  const r = bench(...args);
-  expect(r.code).not.toBe(0);
+/** The command run in this process, its output captured. */
+async function benchHere(...args: string[]): Promise<Outcome> {
+  const out = { stdout: '', stderr: '' };
+  const code = await runCommand(args, { out: (t) => (out.stdout += t), err: (t) => (out.stderr += t), isTTY: false });
+  return { code, ...out };
+}
+
+/** Exit code `code`, nothing on stdout, one line `bench: ...` matching `pattern` on stderr, no stack. */
+function expectOneLineError(r: Outcome, code: number, pattern: RegExp): void {
+  expect(r.stderr).not.toContain('    at ');
   expect(r.stdout).toBe('');
   const lines = r.stderr.trim().split('\n');
   expect(lines).toHaveLength(1);
   expect(lines[0]).toMatch(/^bench: /);
   expect(lines[0]).toMatch(pattern);
+  expect(r.code).toBe(code);
 }
+
+type Case = [args: string[], code: number, pattern: RegExp];
 
 describe('errors: one line on stderr, non-zero exit', () => {
   const bad = join(dir, 'bad.json');
@@ -40,25 +63,25 @@ describe('errors: one line on stderr, non-zero exit', () => {
   writeFileSync(badCsv, 'rig,method\nknight,GN\n');
 
   it.each([
-    [['--rig', knight, '--frobnicate'], /unknown option '--frobnicate'/],
-    [['--rig', join(dir, 'missing.json')], /missing\.json: no such file/],
-    [['--rig', 'no-such-project-rig'], /no project rig .*no-such-project-rig\.glb/],
-    [['--rig', bad], /parent_id 3 is not -1 or a bone index/],
-    [['--rig', notJson], /bad JSON/],
-    [['--rig', join(dir, 'rig.txt')], /no such file/],
-    [['--rig', knight, '--methods', 'gn,simplex'], /unknown method "simplex"/],
-    [['--rig', knight, '--experiment', 'sideways'], /unknown experiment "sideways"/],
-    [['--rig', knight, '--engine', 'gpu'], /unknown engine "gpu"/],
-    [['--rig', knight, '--samples', 'many'], /--samples: "many" is not a positive integer/],
-    [['--rig', knight, '--samples', '10,foo=3'], /unknown method "foo" in --samples/],
-    [['--rig', knight, '--timeout', '-1'], /--timeout: "-1" is not a positive number/],
-    [['--rig', knight, '--workers', '0'], /--workers: "0" is not a positive integer/],
-    [['--rig', knight, '--compare', join(dir, 'none.csv')], /none\.csv: no such file/],
-    [['--rig', knight, '--compare', badCsv], /no "experiment" column/],
-    [[], /required option '--rig/],
-    [['--rig', knight, 'stray'], /too many arguments/],
-  ] as Array<[string[], RegExp]>)('%j', (args, pattern) => {
-    expectOneLineError(args, pattern);
+    [['--rig', knight, '--frobnicate'], 2, /unknown option '--frobnicate'/],
+    [['--rig', join(dir, 'missing.json')], 1, /missing\.json: no such file/],
+    [['--rig', 'no-such-project-rig'], 1, /^bench: no-such-project-rig: no project rig .*no-such-project-rig\.glb/],
+    [['--rig', bad], 1, /bad\.json: .*parent_id 3/],
+    [['--rig', notJson], 1, /broken\.json: bad JSON/],
+    [['--rig', join(dir, 'rig.txt')], 1, /rig\.txt: no such file/],
+    [['--rig', knight, '--methods', 'gn,simplex'], 2, /--methods: unknown method "simplex"/],
+    [['--rig', knight, '--experiment', 'sideways'], 2, /--experiment: unknown experiment "sideways"/],
+    [['--rig', knight, '--engine', 'gpu'], 2, /--engine: unknown engine "gpu"/],
+    [['--rig', knight, '--samples', 'many'], 2, /--samples: "many" is not an integer in 1\.\.1000000/],
+    [['--rig', knight, '--samples', '10,foo=3'], 2, /--samples: unknown method "foo"/],
+    [['--rig', knight, '--timeout', '-1'], 2, /--timeout: "-1" is not a positive number/],
+    [['--rig', knight, '--workers', '0'], 2, /--workers: "0" is not an integer in 1\.\./],
+    [['--rig', knight, '--compare', join(dir, 'none.csv')], 1, /--compare .*none\.csv: no such file/],
+    [['--rig', knight, '--compare', badCsv], 1, /--compare .*bad\.csv: no "experiment" column/],
+    [[], 2, /required option '--rig/],
+    [['--rig', knight, 'stray'], 2, /too many arguments/],
+  ] as Case[])('%j', async (args, code, pattern) => {
+    expectOneLineError(await benchHere(...args), code, pattern);
   });
 
   it('--help prints the options and exits 0', () => {
@@ -66,6 +89,124 @@ describe('errors: one line on stderr, non-zero exit', () => {
     expect(r.code).toBe(0);
     expect(r.stdout).toMatch(/--rig <paths>/);
     expect(r.stdout).toMatch(/--engine <list>/);
+  });
+});
+
+describe('careless values: a usage error naming the option and the value', () => {
+  const options = ['--rig', '--experiment', '--methods', '--samples', '--seed', '--gtol', '--ftol', '--timeout', '--engine',
+    '--workers', '--json', '--csv', '--markdown', '--compare'];
+  it.each(options.flatMap((flag) => ['', '  '].map((value) => [flag, value])))('%s %j: empty value', async (flag, value) => {
+    const rig = flag === '--rig' ? [] : ['--rig', knight];
+    expectOneLineError(await benchHere(...rig, flag, value), 2, new RegExp(`^bench: ${flag}: empty value$`));
+  });
+
+  it.each([
+    [['--samples', ','], /--samples: empty list ","/],
+    [['--methods', ' , '], /--methods: empty list " , "/],
+    [['--samples', '1e9'], /--samples: "1e9" is not an integer in 1\.\.1000000$/],
+    [['--samples', '1000001'], /--samples: "1000001" is not an integer in 1\.\.1000000$/],
+    [['--samples', '10,gd=1e9'], /--samples gd: "1e9" is not an integer in 1\.\.1000000$/],
+    [['--samples', '10,20'], /--samples: two defaults in "10,20"/],
+    [['--samples', 'gd=1,gd=2'], /--samples: gd given twice/],
+    [['--samples', '3\n4'], /--samples: "3\\n4" is not an integer/],
+    [['--seed', '-1'], /--seed: "-1" is not an integer in 0\.\.4294967295/],
+    [['--seed', '4294967296'], /--seed: "4294967296" is not an integer/],
+    [['--seed', '1.5'], /--seed: "1.5" is not an integer/],
+    [['--seed', 'NaN'], /--seed: "NaN" is not an integer/],
+    [['--workers', '1000'], /--workers: "1000" is not an integer in 1\.\.\d+ \(4 per core, 64 at most\)/],
+    [['--workers', '65'], /--workers: "65" is not an integer in 1\.\.\d+/],
+    [['--timeout', 'NaN'], /--timeout: "NaN" is not a positive number of at most 3600/],
+    [['--timeout', '0'], /--timeout: "0" is not a positive number/],
+    [['--timeout', '3601'], /--timeout: "3601" is not a positive number of at most 3600/],
+    [['--timeout', '1e308'], /--timeout: "1e308" is not a positive number/],
+    [['--gtol', 'NaN'], /--gtol: "NaN" is not a positive number/],
+    [['--gtol', '-1e-4'], /--gtol: "-1e-4" is not a positive number/],
+    [['--ftol', 'Infinity'], /--ftol: "Infinity" is not a positive number/],
+    [['--ftol', '0'], /--ftol: "0" is not a positive number/],
+    [['--experiment', 'random,Drag'], /--experiment: unknown experiment "Drag" \(known: random, incremental, drag, reach\)/],
+    [['--methods', `lm,${'y'.repeat(500)}`], /--methods: unknown method "y{57}\.\.\." \(known:/],
+  ] as Array<[string[], RegExp]>)('%j', async (args, pattern) => {
+    expectOneLineError(await benchHere('--rig', knight, ...args), 2, pattern);
+  });
+
+  it('refuses a rig given twice, by any name', async () => {
+    expectOneLineError(await benchHere('--rig', `${knight},lamp,${knight}`), 2, /^bench: --rig: ".*knight\.json" given twice$/);
+    expectOneLineError(await benchHere('--rig', 'lamp,web/public/models/lamp.glb'), 2,
+      /^bench: --rig: "lamp" and "web\/public\/models\/lamp\.glb" are the same file$/);
+  });
+
+  it('refuses samples whose target sets would pass 512 MiB for the rig, before making them', async () => {
+    expectOneLineError(
+      await benchHere('--rig', knight, '--samples', '1000000'),
+      2,
+      /knight\.json: 2000000 samples of 129 numbers would take 1969 MiB of target sets, more than 512 MiB: lower --samples$/,
+    );
+  });
+});
+
+describe('--compare: a file that cannot be used is named before the run', () => {
+  const empty = join(dir, 'empty.csv');
+  writeFileSync(empty, '\n\n');
+  it.each([
+    [dir, /is a directory, not a CSV file$/],
+    ['/dev/zero', /is not a regular file$/],
+    [empty, /empty file$/],
+  ] as Array<[string, RegExp]>)('%s', async (file, pattern) => {
+    const r = await benchHere('--rig', knight, '--compare', file);
+    expectOneLineError(r, 1, new RegExp(`^bench: --compare ${file}: ${pattern.source}`));
+  });
+});
+
+describe('output files: checked before the run', () => {
+  const notAFolder = join(dir, 'plain.txt');
+  writeFileSync(notAFolder, '');
+  const fifo = join(dir, 'fifo.json');
+  spawnSync('mkfifo', [fifo]);
+  const csv = join(dir, 'compare.csv');
+  writeFileSync(csv, 'rig,experiment,method,t_avg_s\nknight,random,gn,0.03\n');
+  mkdirSync(join(dir, 'out'));
+
+  // Every case would run 1000 samples of every method first if the check came after the run.
+  it.each([
+    [['--json', join(dir, 'no-folder', 'x.json')], /--json .*x\.json: folder .*no-folder does not exist$/],
+    [['--csv', join(dir, 'out')], /--csv .*out: is a directory$/],
+    [['--markdown', join(dir, 'out') + '/'], /--markdown .*out\/: names a folder, not a file$/],
+    [['--markdown', join(notAFolder, 'x.md')], /--markdown .*x\.md: .*plain\.txt is not a folder$/],
+    [['--json', join(dir, 'out', 'a'), '--csv', join(dir, 'out', 'a')], /--csv .*a: is the file of --json$/],
+    [['--csv', csv, '--compare', csv], /--csv .*compare\.csv: is an input of this run$/],
+    [['--json', knight], /--json .*knight\.json: is an input of this run$/],
+  ] as Array<[string[], RegExp]>)('%j', async (args, pattern) => {
+    expectOneLineError(await benchHere('--rig', knight, ...args), 2, pattern);
+  });
+
+  it.skipIf(!existsSync(fifo))('refuses a FIFO (writing it would wait for a reader)', async () => {
+    expectOneLineError(await benchHere('--rig', knight, '--json', fifo), 2, /--json .*fifo\.json: is not a regular file$/);
+  });
+
+  it('lets outputs share a character device such as /dev/null', () => {
+    expect(() => checkOutputs([['--json', '/dev/null'], ['--csv', '/dev/null']], [knight])).not.toThrow();
+  });
+});
+
+describe('rigs past the limits', () => {
+  it('a rig of 10,000 end effectors: one line naming the file', () => {
+    // A root with 10,000 leaf bones, each an end effector.
+    const leaves = Array.from({ length: 10_000 }, (_, i) => ({ parent: 0, at: [1, 0, 0.001 * i] as [number, number, number], length: 1 }));
+    const file = join(dir, 'leaves.json');
+    writeFileSync(file, writeA7Rig(sketchRig([{ parent: -1, at: [0, 0, 0], length: 1 }, ...leaves], leaves.map((_, i) => i + 1))));
+    expectOneLineError(bench('--rig', file, '--samples', '2'), 1, /^bench: .*leaves\.json: .*10000 end effectors/);
+  });
+
+  it('any error of the core while preparing a rig becomes one line naming the rig', async () => {
+    const failing = (thrown: unknown): IkCoreModule =>
+      new Proxy({}, { get: () => { throw thrown; } }) as IkCoreModule;
+    const opts = parseOptions(['--rig', knight], false)!;
+    await expect(prepareRigs(opts, failing(new Error('too large\n  details')))).rejects.toMatchObject({
+      name: 'BenchError', exitCode: 1, message: `${knight}: too large`,
+    });
+    await expect(prepareRigs(opts, failing(7))).rejects.toMatchObject({
+      name: 'BenchError', message: `${knight}: an exception without a message ([object Number]; out of memory?)`,
+    });
   });
 });
 

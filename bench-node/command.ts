@@ -1,0 +1,127 @@
+// The command line as a function: options -> checks -> run -> tables and files, and every error
+// as one line `bench: ...` (cli.ts is the entry point that calls it on process.argv).
+import { spawnSync } from 'node:child_process';
+import { availableParallelism, cpus } from 'node:os';
+import { fileURLToPath } from 'node:url';
+
+import { loadIkNode } from '../web/src/ik/node.js';
+import { prepareRigs, runBench, totalSolves } from './bench.js';
+import { compareTable, readReferenceCsv } from './compare.js';
+import { BenchError } from './errors.js';
+import type { Row } from './metrics.js';
+import { parseOptions } from './options.js';
+import { checkOutputs, writeCsv, writeJson, writeMarkdown, type RunInfo } from './outputs.js';
+import { makeProgress } from './progress.js';
+import { resolveRigPaths } from './rigs.js';
+import { engineRatioTable, groupRows, renderTable, resultsTable, type Table } from './table.js';
+
+/** Where the command writes: the tables (stdout), errors and notes (stderr). */
+export interface CommandIo {
+  out: (text: string) => void;
+  err: (text: string) => void;
+  /** Whether stderr is a terminal (the progress bar is drawn only there). */
+  isTTY: boolean;
+}
+
+const processIo: CommandIo = {
+  out: (text) => process.stdout.write(text),
+  err: (text) => process.stderr.write(text),
+  isTTY: process.stderr.isTTY === true,
+};
+
+const notes = [
+  'Columns as in the report: t_avg (s), iter_avg, E_avg, E_IQM (mean of the middle half of the sorted final E), ' +
+    'max E; plus success (final E < ftol), median, 95th percentile and max time per solve, and the stop reasons. ' +
+    'Drag and reach: success means every tip within the tip tolerance of its target, over the reachable steps; ' +
+    'unreachable steps (reach) are counted apart; jump_max_deg is the largest change of one angle in one step. ' +
+    'Definitions, the drag and reach experiments and the peers\' settings: bench-node/README.md.',
+  'Times are per solve in seconds, measured on a machine that may be shared: a solve that is descheduled for ' +
+    'milliseconds moves t_avg and t_max far more than t_median, so compare speeds by the medians. Wobble is in rig units.',
+];
+
+/** The checked-out commit, for the record; empty outside a git checkout. */
+function gitCommit(): string {
+  const r = spawnSync('git', ['rev-parse', '--short', 'HEAD'], { cwd: fileURLToPath(new URL('..', import.meta.url)), encoding: 'utf8' });
+  return r.status === 0 ? r.stdout.trim() : '';
+}
+
+async function main(argv: string[], io: CommandIo): Promise<number> {
+  const opts = parseOptions(argv, io.isTTY);
+  if (!opts) return 0;
+  checkOutputs(
+    [['--json', opts.json], ['--csv', opts.csv], ['--markdown', opts.markdown]],
+    [...resolveRigPaths(opts.rigs), ...(opts.compare ? [opts.compare] : [])],
+  );
+  const reference = opts.compare ? readReferenceCsv(opts.compare) : undefined;
+  const ik = await loadIkNode();
+  const rigs = await prepareRigs(opts, ik);
+  const progress = makeProgress(opts.progress, totalSolves(opts, rigs));
+  let rows: Row[];
+  try {
+    rows = await runBench(rigs, { opts, ik, progress });
+  } finally {
+    progress.stop();
+  }
+
+  const tables: Table[] = groupRows(rows).map(resultsTable);
+  const engineEntries = [...new Set(rows.map((r) => r.engine))].filter((e) => e !== 'js');
+  const ratio = engineRatioTable(rows, engineEntries);
+  if (ratio) tables.push(ratio);
+  if (reference) {
+    const compared = compareTable(rows, reference, opts.compare!);
+    if (compared) tables.push(compared);
+    else io.err(`compare: no row of ${opts.compare} matches this run's rigs, experiments and methods\n`);
+  }
+  io.out(tables.map((t) => renderTable(t, 'text')).join('\n'));
+
+  const info: RunInfo = {
+    command: `npm run bench -- ${argv.join(' ')}`,
+    commit: gitCommit(),
+    date: new Date().toISOString().slice(0, 10),
+    node: process.versions.node,
+    cpu: cpus()[0]?.model.trim() ?? 'unknown CPU',
+    cores: availableParallelism(),
+    workers: opts.workers,
+    seed: opts.seed,
+    timeoutSeconds: opts.timeoutSeconds,
+    paper: opts.paper,
+    rigs: rigs.map((r) => ({
+      rig: r.name,
+      path: r.path,
+      bones: r.spec.parents.length,
+      effectors: r.spec.effectors.length,
+      size: r.size,
+      gtol: r.gtol,
+      ftol: r.ftol,
+      dragGtol: r.drag.gtol,
+      tipTolerance: r.drag.tipTolerance,
+    })),
+  };
+  if (opts.json) writeJson(opts.json, rows, info);
+  if (opts.csv) writeCsv(opts.csv, rows);
+  if (opts.markdown) writeMarkdown(opts.markdown, tables, info, notes);
+  return 0;
+}
+
+/** Control characters (line breaks) of a message escaped, so that it stays on one line. */
+function oneLine(message: string): string {
+  return message.replace(/[\u0000-\u001f\u007f]/g, (c) => JSON.stringify(c).slice(1, -1));
+}
+
+/**
+ * Runs the command line on `argv` (without node and the script) and returns its exit code. A
+ * BenchError prints one line `bench: message` on `io.err` (exit code 2 for usage errors, 1
+ * otherwise); anything else is a bug and prints its stack.
+ */
+export async function runCommand(argv: string[], io: CommandIo = processIo): Promise<number> {
+  try {
+    return await main(argv, io);
+  } catch (e) {
+    if (e instanceof BenchError) {
+      io.err(`bench: ${oneLine(e.message)}\n`);
+      return e.exitCode;
+    }
+    io.err(`bench: internal error: ${e instanceof Error ? (e.stack ?? e.message) : String(e)}\n`);
+    return 1;
+  }
+}
