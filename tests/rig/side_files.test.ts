@@ -2,7 +2,8 @@
 // "..", absolute, UNC and symbolic-link uris are refused before anything outside is read, and so
 // are device files such as /dev/zero (which used to hang the load and eat memory). The messages
 // name the uri as written, never the resolved path. A rig file that is not a regular file is
-// refused too.
+// refused too, a FIFO at once (opening one used to wait for a writer forever).
+import { execFileSync } from 'node:child_process';
 import { mkdirSync, mkdtempSync, symlinkSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
@@ -73,5 +74,12 @@ describe('side buffers stay inside the model folder', () => {
   it('refuses a rig path that is not a regular file', async () => {
     await expect(loadRigFromPath('/dev/zero')).rejects.toThrow(/\/dev\/zero: cannot read the file: not a regular file/);
     await expect(loadRigFromPath(model)).rejects.toThrow(/cannot read the file: (not a regular file|EISDIR)/);
+  });
+
+  it.skipIf(process.platform === 'win32')('refuses a FIFO at once instead of waiting for a writer', async () => {
+    const fifo = join(model, 'pipe.json');
+    execFileSync('mkfifo', [fifo]);
+    await expect(loadRigFromPath(fifo)).rejects.toThrow(/pipe\.json: cannot read the file: not a regular file/);
+    await expect(loadRigFromPath(gltfWithUri('fifo', 'pipe.json'))).rejects.toThrow(/buffer 0: cannot read the side file "pipe\.json" \(missing buffer\): not a regular file/);
   });
 });

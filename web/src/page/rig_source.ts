@@ -11,15 +11,32 @@ import { PoseWriter } from '../three/pose_writer.js';
 import { disposeObject3D } from './dispose_three.js';
 import type { MeshBinding } from './rig_view.js';
 
-/** The project rigs, keyed as the URL names them (?rig=knight). */
-export const PROJECT_RIGS: Record<string, { file: string; label: string }> = {
-  lamp: { file: 'models/lamp.glb', label: 'lamp' },
-  'robot-arm': { file: 'models/robot-arm.glb', label: 'robot arm' },
-  knight: { file: 'models/knight.glb', label: 'knight' },
-  hand: { file: 'models/hand.glb', label: 'hand' },
-  beast: { file: 'models/beast.glb', label: 'beast' },
-  character: { file: 'models/character.glb', label: 'character (60+ joints)' },
-};
+export interface ProjectRig {
+  /** Path relative to the page. */
+  file: string;
+  /** Name in the rig menu. */
+  label: string;
+}
+
+/**
+ * The project rigs, keyed as the URL names them (?rig=knight). The object has no prototype, so a
+ * key from a URL such as "constructor" or "__proto__" finds nothing; projectRig() looks keys up.
+ */
+export const PROJECT_RIGS: Readonly<Record<string, ProjectRig>> = Object.freeze(
+  Object.assign(Object.create(null) as Record<string, ProjectRig>, {
+    lamp: { file: 'models/lamp.glb', label: 'lamp' },
+    'robot-arm': { file: 'models/robot-arm.glb', label: 'robot arm' },
+    knight: { file: 'models/knight.glb', label: 'knight' },
+    hand: { file: 'models/hand.glb', label: 'hand' },
+    beast: { file: 'models/beast.glb', label: 'beast' },
+    character: { file: 'models/character.glb', label: 'character (60+ joints)' },
+  }),
+);
+
+/** The project rig called `key` (a URL's ?rig= value), or undefined for any other string. */
+export function projectRig(key: string): ProjectRig | undefined {
+  return Object.hasOwn(PROJECT_RIGS, key) ? PROJECT_RIGS[key] : undefined;
+}
 
 export const DEFAULT_RIG = 'lamp';
 
@@ -34,7 +51,7 @@ export interface LoadedRig {
   spec: RigSpec;
   /** Notes from the importer (defaults applied...), shown as text. */
   warnings: string[];
-  /** Builds the skinned mesh bound to the rig; null for bones-only formats (A7). */
+  /** Builds the skinned mesh bound to the rig; null for bones-only formats (A7) and too deep glTF trees. */
   makeMesh: (() => Promise<MeshBinding>) | null;
 }
 
@@ -50,13 +67,20 @@ export async function fetchBytes(url: string | URL, what: string): Promise<Uint8
   return new Uint8Array(await res.arrayBuffer());
 }
 
-/** The glTF scene of `bytes` through GLTFLoader, posed by a PoseWriter. */
+/**
+ * The glTF scene of `bytes` through GLTFLoader, posed by a PoseWriter. The rig importer has checked
+ * the file's structure; anything three.js still refuses is an Error naming the file.
+ */
 async function gltfMesh(bytes: Uint8Array, fileName: string, resourcePath: string, spec: RigSpec, info: GltfRigInfo): Promise<MeshBinding> {
   const loader = new GLTFLoader().setMeshoptDecoder(MeshoptDecoder);
   const data: ArrayBuffer | string = fileName.toLowerCase().endsWith('.gltf')
     ? new TextDecoder().decode(bytes)
     : (bytes.buffer.slice(bytes.byteOffset, bytes.byteOffset + bytes.byteLength) as ArrayBuffer);
-  const gltf = await loader.parseAsync(data, resourcePath);
+  const failed = (e: unknown): Error => new Error(`${fileName}: three.js cannot build the model: ${e instanceof Error ? e.message : String(e)}`);
+  const gltf = await loader.parseAsync(data, resourcePath).catch((e: unknown) => {
+    throw failed(e);
+  });
+  if (!gltf.scene) throw failed(new Error('the file has no scene (glTF "scenes" is empty or missing)'));
   try {
     const writer = new PoseWriter(bonesFromGltf(gltf, info), spec, info);
     gltf.scene.traverse((o) => (o.frustumCulled = false)); // skinned bounds do not follow the pose
@@ -70,9 +94,15 @@ async function gltfMesh(bytes: Uint8Array, fileName: string, resourcePath: strin
     };
   } catch (e) {
     disposeObject3D(gltf.scene);
-    throw e;
+    throw failed(e);
   }
 }
+
+/**
+ * Deepest glTF node tree whose model the page builds, levels. three.js's GLTFLoader walks the tree
+ * recursively and runs out of stack near 2,000 levels; a deeper rig is shown as bones only.
+ */
+export const MAX_MODEL_TREE_DEPTH = 1000;
 
 /**
  * Parses a rig file of any supported format. `resourcePath` is where a .gltf's relative files
@@ -81,13 +111,16 @@ async function gltfMesh(bytes: Uint8Array, fileName: string, resourcePath: strin
 export async function readRig(bytes: Uint8Array, fileName: string, readSibling?: SiblingReader, resourcePath = ''): Promise<LoadedRig> {
   const rig = await loadRig(bytes, fileName, readSibling);
   const info = rig.gltf;
+  const tooDeep = info !== undefined && info.treeDepth > MAX_MODEL_TREE_DEPTH;
   return {
     name: rig.name,
     format: rig.format === 'a7' ? 'A7 JSON' : rig.format,
     a7: rig.format === 'a7',
     spec: rig.spec,
-    warnings: rig.warnings,
-    makeMesh: info ? () => gltfMesh(bytes, fileName, resourcePath, rig.spec, info) : null,
+    warnings: tooDeep
+      ? [...rig.warnings, `the node tree is ${info.treeDepth} levels deep, more than three.js's glTF loader takes (${MAX_MODEL_TREE_DEPTH}): showing the bones without the model`]
+      : rig.warnings,
+    makeMesh: info && !tooDeep ? () => gltfMesh(bytes, fileName, resourcePath, rig.spec, info) : null,
   };
 }
 
@@ -101,7 +134,7 @@ export async function loadRigUrl(url: URL, what = url.pathname.split('/').pop() 
 
 /** Loads a project rig by key from the page's models folder, relative to `base`. */
 export async function loadProjectRig(key: string, base: string | URL = document.baseURI): Promise<LoadedRig> {
-  const entry = PROJECT_RIGS[key];
+  const entry = projectRig(key);
   if (!entry) throw new Error(`unknown project rig "${key}"`);
   return loadRigUrl(new URL(entry.file, base), entry.file);
 }

@@ -59,3 +59,23 @@ export function leafBones(parents: ArrayLike<number>): number[] {
   hasChild.forEach((c, i) => !c && leaves.push(i));
   return leaves;
 }
+
+/**
+ * The `keep` bones of `bones` (ascending) furthest from the root: greatest `depth`, then lowest
+ * index. Returned ascending; all of `bones` when they are no more than `keep`. Linear time.
+ */
+export function deepestBones(bones: readonly number[], depth: ArrayLike<number>, keep: number): number[] {
+  if (bones.length <= keep) return [...bones];
+  let deepest = 0;
+  for (const b of bones) deepest = Math.max(deepest, depth[b]);
+  const atDepth = new Int32Array(deepest + 1);
+  for (const b of bones) atDepth[depth[b]]++;
+  // The shallowest depth kept, and how many bones of that depth fit after all deeper ones.
+  let cut = deepest;
+  let room = keep;
+  while (room > atDepth[cut]) room -= atDepth[cut--];
+  const kept: number[] = [];
+  for (const b of bones)
+    if (depth[b] > cut || (depth[b] === cut && room-- > 0)) kept.push(b);
+  return kept;
+}

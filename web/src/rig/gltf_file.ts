@@ -3,6 +3,7 @@
 // caller supplies). Only what the rig importer needs is read; meshes, images and extensions are
 // never decoded, so a Draco- or meshopt-compressed character still gives its skeleton.
 import { RigFormatError } from './a7_rig.js';
+import { jsonBudgetProblem } from './json_budget.js';
 
 /** Reads a file next to the glTF (a buffer's relative `uri`, already URI-decoded). */
 export type SiblingReader = (uri: string) => Promise<Uint8Array>;
@@ -66,6 +67,8 @@ function parseJsonText(bytes: Uint8Array, file: string): Record<string, unknown>
   } catch {
     return failIn(file, 'bad JSON: the text is not UTF-8');
   }
+  const tooBig = jsonBudgetProblem(text);
+  if (tooBig) failIn(file, tooBig);
   let doc: unknown;
   try {
     doc = JSON.parse(text.charCodeAt(0) === 0xfeff ? text.slice(1) : text);

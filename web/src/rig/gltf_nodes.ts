@@ -1,8 +1,11 @@
-// The node hierarchy and skins of a glTF JSON document, checked: every index in range, every node
-// with at most one parent, no cycle, every transform finite. World matrices are the nodes' own
-// (default, as-loaded) transforms composed from the root down, as three.js computes them.
+// The node hierarchy and skins of a glTF JSON document, checked in linear time and walked without
+// recursion: every index in range, every node with at most one parent, no cycle, every transform
+// finite. World matrices are the nodes' own (default, as-loaded) transforms composed from the root
+// down, as three.js computes them.
 import { failIn } from './gltf_file.js';
+import { asIndex, clip, type JsonObject } from './gltf_json.js';
 import { fromColumnMajor, fromTRS, identity, multiply, type Mat4 } from './mat4.js';
+import { cycleText, findCycle, preorder } from './tree.js';
 
 export interface GltfNode {
   /** Index in the glTF `nodes` array. */
@@ -27,31 +30,9 @@ export interface GltfSkin {
   inverseBindMatrices: number | undefined;
 }
 
-/** "node 4 "hand.L"": how errors and messages name a node. */
+/** "node 4 "hand.L"": how errors and messages name a node (a long name cut short). */
 export function nodeLabel(node: { index: number; name: string }): string {
-  return node.name ? `node ${node.index} "${node.name}"` : `node ${node.index}`;
-}
-
-export type JsonObject = Record<string, unknown>;
-
-/** `v` as a JSON object, or a RigFormatError naming `where`. */
-export function asObject(v: unknown, where: string, file: string): JsonObject {
-  if (typeof v !== 'object' || v === null || Array.isArray(v)) failIn(file, `${where} is not a JSON object`);
-  return v as JsonObject;
-}
-
-/** `v` as an array of objects (missing means empty). */
-export function asObjectList(v: unknown, where: string, file: string): JsonObject[] {
-  if (v === undefined) return [];
-  if (!Array.isArray(v)) failIn(file, `${where} is not an array`);
-  return v.map((x, k) => asObject(x, `${where}[${k}]`, file));
-}
-
-/** `v` as an integer in [0, count), or a RigFormatError naming `where`. */
-export function asIndex(v: unknown, count: number, where: string, file: string): number {
-  if (typeof v !== 'number' || !Number.isInteger(v) || v < 0 || v >= count)
-    failIn(file, `${where} = ${JSON.stringify(v)} is not an index in 0..${count - 1}`);
-  return v;
+  return node.name ? `node ${node.index} "${clip(node.name)}"` : `node ${node.index}`;
 }
 
 function numbers(v: unknown, length: number, where: string, file: string): number[] {
@@ -75,17 +56,24 @@ function readLocal(def: JsonObject, where: string, file: string): Mat4 {
   return fromTRS(t, q, s);
 }
 
-/** Reads and checks `nodes` of a glTF JSON document. Throws RigFormatError on a cycle or bad data. */
-export function readNodes(json: JsonObject, file: string): GltfNode[] {
-  const defs = asObjectList(json.nodes, 'nodes', file);
+/** The checked node tree: the nodes, and every node index once with parents first (depth-first). */
+export interface GltfTree {
+  nodes: GltfNode[];
+  order: number[];
+}
+
+/**
+ * Reads and checks the glTF `nodes` list (`defs`, see readLists), in time linear in its size.
+ * Throws RigFormatError on a cycle, a node with two parents, a child listed twice or bad data.
+ */
+export function readNodes(defs: JsonObject[], file: string): GltfTree {
   const nodes: GltfNode[] = defs.map((def, index) => {
     const where = `nodes[${index}]`;
-    const name = typeof def.name === 'string' ? def.name : '';
     const children = def.children === undefined ? [] : def.children;
     if (!Array.isArray(children)) failIn(file, `${where}.children is not an array`);
     return {
       index,
-      name,
+      name: typeof def.name === 'string' ? def.name : '',
       parent: -1,
       children: children.map((c, k) => asIndex(c, defs.length, `${where}.children[${k}]`, file)),
       local: identity(),
@@ -96,41 +84,34 @@ export function readNodes(json: JsonObject, file: string): GltfNode[] {
     for (const c of node.children) {
       const child = nodes[c];
       if (c === node.index) failIn(file, `node hierarchy has a cycle: ${nodeLabel(node)} is its own child`);
-      if (child.parent !== -1 && child.parent !== node.index)
+      if (child.parent === node.index) failIn(file, `nodes[${node.index}].children lists ${nodeLabel(child)} twice`);
+      if (child.parent !== -1)
         failIn(file, `${nodeLabel(child)} is a child of both ${nodeLabel(nodes[child.parent])} and ${nodeLabel(node)}`);
       child.parent = node.index;
     }
-  for (const node of nodes) {
-    // With at most one parent each, a cycle shows as an ancestor chain longer than the node count.
-    const path = [node.index];
-    for (let at = node.parent; at !== -1; at = nodes[at].parent) {
-      if (at === node.index) {
-        const names = path.map((i) => nodeLabel(nodes[i])).concat(nodeLabel(node));
-        failIn(file, `node hierarchy has a cycle: ${names.reverse().join(' -> ')}`);
-      }
-      path.push(at);
-      if (path.length > nodes.length) break; // a cycle above this node: reported from one of its nodes
-    }
-  }
+  const parents = nodes.map((n) => n.parent);
+  const cycle = findCycle(parents);
+  if (cycle) failIn(file, `node hierarchy has a cycle: ${cycleText(cycle, (i) => nodeLabel(nodes[i]))}`);
   nodes.forEach((node, i) => (node.local = readLocal(defs[i], `nodes[${i}]`, file)));
-  return nodes;
+  return { nodes, order: preorder(parents, nodes.map((n) => n.children)) };
 }
 
-/** World matrices of all nodes (row-major), composing local transforms from the roots. */
-export function worldMatrices(nodes: GltfNode[]): Mat4[] {
-  const world: (Mat4 | undefined)[] = new Array(nodes.length);
-  const get = (i: number): Mat4 => {
-    const cached = world[i];
-    if (cached) return cached;
+/** World matrices of all nodes (row-major), composing local transforms from the roots down. */
+export function worldMatrices({ nodes, order }: GltfTree): Mat4[] {
+  const world = new Array<Mat4>(nodes.length);
+  for (const i of order) {
     const p = nodes[i].parent;
-    return (world[i] = p === -1 ? nodes[i].local : multiply(get(p), nodes[i].local));
-  };
-  return nodes.map((_, i) => get(i));
+    world[i] = p === -1 ? nodes[i].local : multiply(world[p], nodes[i].local);
+  }
+  return world;
 }
 
-/** Reads `skins`: joints in range and not repeated within a skin. Throws RigFormatError. */
-export function readSkins(json: JsonObject, nodeCount: number, file: string): GltfSkin[] {
-  return asObjectList(json.skins, 'skins', file).map((def, index) => {
+/**
+ * Reads the glTF `skins` list (`defs`, see readLists; run after checkReferences, which checked
+ * inverseBindMatrices): joints in range and not repeated within a skin. Throws RigFormatError.
+ */
+export function readSkins(defs: JsonObject[], nodeCount: number, file: string): GltfSkin[] {
+  return defs.map((def, index) => {
     const where = `skins[${index}]`;
     if (!Array.isArray(def.joints) || def.joints.length === 0) failIn(file, `${where}.joints is missing or empty`);
     const joints = def.joints.map((j, k) => asIndex(j, nodeCount, `${where}.joints[${k}]`, file));
@@ -139,12 +120,11 @@ export function readSkins(json: JsonObject, nodeCount: number, file: string): Gl
       if (seen.has(j)) failIn(file, `${where}.joints[${k}] repeats node ${j}`);
       seen.add(j);
     });
-    const ibm = def.inverseBindMatrices;
     return {
       index,
       name: typeof def.name === 'string' ? def.name : '',
       joints,
-      inverseBindMatrices: ibm === undefined ? undefined : asIndex(ibm, Number.MAX_SAFE_INTEGER, `${where}.inverseBindMatrices`, file),
+      inverseBindMatrices: def.inverseBindMatrices as number | undefined,
     };
   });
 }

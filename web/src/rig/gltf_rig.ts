@@ -5,12 +5,16 @@
 import type { RigSpec } from '../ik/rig_spec.js';
 import { boneRestFrame } from './bone_frame.js';
 import { chooseChainChild } from './chain_child.js';
-import { DEFAULT_LIMIT_DEG, effectorsByName, leafBones } from './effector_defaults.js';
+import { DEFAULT_LIMIT_DEG, deepestBones, effectorsByName, leafBones } from './effector_defaults.js';
 import { BufferCache, readMat4Accessor } from './gltf_accessor.js';
 import { failIn, parseGltfContainer, type SiblingReader } from './gltf_file.js';
+import { listed, shown } from './gltf_json.js';
 import { nodeLabel, readNodes, readSkins, worldMatrices, type GltfNode } from './gltf_nodes.js';
+import { checkRanges } from './gltf_ranges.js';
+import { checkReferences, readLists } from './gltf_references.js';
 import { readIkExtras, type IkExtras } from './ik_extras.js';
 import { allFinite, invertAffine, multiply, transformDirection, transformPoint } from './mat4.js';
+import { effectorCountProblem, MAX_BONES, MAX_COORDINATE, maxEffectors } from './rig_limits.js';
 
 /** What the write-back and the page need to map rig bones onto the glTF (and three.js) nodes. */
 export interface GltfRigInfo {
@@ -28,6 +32,8 @@ export interface GltfRigInfo {
   skinBones: Int32Array[];
   /** True when at least one joint carries `extras.ik`. */
   hasIkExtras: boolean;
+  /** Levels of the glTF node tree: 1 when every node is a root. */
+  treeDepth: number;
   /** Things the user may want to know (defaults used, pose differs from bind pose...). */
   warnings: string[];
 }
@@ -45,42 +51,53 @@ const norm = (a: Vec3): number => Math.hypot(a[0], a[1], a[2]);
 /**
  * Imports the skeleton of a .glb or .gltf. `file` names the source in errors; `readSibling`
  * reads side buffers of a .gltf (URI-decoded relative path). Throws RigFormatError for a malformed
- * file (truncated GLB, bad JSON, no skin, node cycle, missing buffer, non-finite matrix...).
- * Lengths and positions are in glTF scene units; limits in degrees.
+ * file (truncated GLB, bad JSON, no skin, node cycle, missing buffer, non-finite matrix, more
+ * bones or end effectors than the core takes...), in time linear in the file's size. Lengths and
+ * positions are in glTF scene units; limits in degrees.
  */
 export async function importGltfRig(bytes: Uint8Array, file: string, readSibling?: SiblingReader): Promise<GltfRig> {
   const container = parseGltfContainer(bytes, file);
   const json = container.json;
-  const nodes = readNodes(json, file);
-  const skins = readSkins(json, nodes.length, file);
+  const lists = readLists(json, file);
+  checkReferences(json, lists, file);
+  checkRanges(container, lists, file);
+  const skins = readSkins(lists.skins, lists.nodes.length, file);
   if (skins.length === 0) failIn(file, 'no skin: the file has no skinned character (glTF "skins" is empty or missing)');
-
-  // Joints, depth-first through the node tree so that parents come before children.
   const isJoint = new Set(skins.flatMap((s) => s.joints));
-  const order: GltfNode[] = [];
-  const visit = (n: GltfNode): void => {
-    if (isJoint.has(n.index)) order.push(n);
-    n.children.forEach((c) => visit(nodes[c]));
-  };
-  nodes.filter((n) => n.parent === -1).forEach(visit);
-  const boneOfNode = new Map(order.map((n, b) => [n.index, b]));
-  const count = order.length;
+  if (isJoint.size > MAX_BONES) failIn(file, `${isJoint.size} joints; at most ${MAX_BONES} bones`);
+  const tree = readNodes(lists.nodes, file);
+  const nodes = tree.nodes;
 
-  const world = worldMatrices(nodes);
-  const parents = new Int32Array(count).fill(-1);
-  const depth = new Int32Array(count);
-  order.forEach((n, b) => {
-    for (let a = n.parent; a !== -1; a = nodes[a].parent) {
-      const pb = boneOfNode.get(a);
-      if (pb !== undefined) {
-        parents[b] = pb;
-        depth[b] = depth[pb] + 1;
-        break;
-      }
+  // Joints in tree order (parents first); a bone's parent is its nearest ancestor joint.
+  const order: GltfNode[] = [];
+  const boneOfNode = new Int32Array(nodes.length).fill(-1);
+  const jointAbove = new Int32Array(nodes.length).fill(-1); // bone of the nearest joint at or above each node
+  const nodeDepth = new Int32Array(nodes.length);
+  const parentList: number[] = [];
+  for (const i of tree.order) {
+    const p = nodes[i].parent;
+    const above = p === -1 ? -1 : jointAbove[p];
+    nodeDepth[i] = p === -1 ? 1 : nodeDepth[p] + 1;
+    if (isJoint.has(i)) {
+      boneOfNode[i] = order.length;
+      order.push(nodes[i]);
+      parentList.push(above);
     }
-    if (!allFinite(world[n.index])) failIn(file, `${nodeLabel(n)}: world matrix has a non-finite entry`);
-    if (invertAffine(world[n.index]) === null) failIn(file, `${nodeLabel(n)}: world matrix is singular (a zero scale?)`);
-  });
+    jointAbove[i] = boneOfNode[i] >= 0 ? boneOfNode[i] : above;
+  }
+  const count = order.length;
+  const parents = Int32Array.from(parentList);
+  const depth = new Int32Array(count);
+  for (let b = 0; b < count; b++) if (parents[b] >= 0) depth[b] = depth[parents[b]] + 1;
+
+  const world = worldMatrices(tree);
+  for (const n of order) {
+    const W = world[n.index];
+    if (!allFinite(W)) failIn(file, `${nodeLabel(n)}: world matrix has a non-finite entry`);
+    if (invertAffine(W) === null) failIn(file, `${nodeLabel(n)}: world matrix is singular (a zero scale?)`);
+    if (Math.max(Math.abs(W[3]), Math.abs(W[7]), Math.abs(W[11])) > MAX_COORDINATE)
+      failIn(file, `${nodeLabel(n)}: world position (${W[3]}, ${W[7]}, ${W[11]}) lies beyond +-${MAX_COORDINATE} scene units`);
+  }
   const extras: (IkExtras | undefined)[] = order.map((n) => readIkExtras(n.extras, nodeLabel(n), file));
   const children: number[][] = order.map(() => []);
   parents.forEach((p, b) => p >= 0 && children[p].push(b));
@@ -114,8 +131,9 @@ export async function importGltfRig(bytes: Uint8Array, file: string, readSibling
     restWorld: new Float64Array(16 * count),
     restLocal: new Float64Array(16 * count),
     tailLocal: new Float64Array(3 * count),
-    skinBones: skins.map((s) => Int32Array.from(s.joints, (j) => boneOfNode.get(j) ?? -1)),
+    skinBones: skins.map((s) => Int32Array.from(s.joints, (j) => boneOfNode[j])),
     hasIkExtras: extras.some((e) => e !== undefined),
+    treeDepth: nodeDepth.reduce((a, b) => Math.max(a, b), 0),
     warnings: [],
   };
 
@@ -141,6 +159,7 @@ export async function importGltfRig(bytes: Uint8Array, file: string, readSibling
       } else if (ex?.length !== undefined) length = worldLength(ex.length, [0, 1, 0]);
       else length = parents[b] >= 0 ? 0.5 * spec.lengths[parents[b]] : 0;
     }
+    if (length > MAX_COORDINATE) failIn(file, `${nodeLabel(node)}: bone length ${length} is beyond ${MAX_COORDINATE} scene units`);
     const dn = norm(dir);
     const unit: Vec3 = [dir[0] / dn, dir[1] / dn, dir[2] / dn];
     spec.lengths[b] = length;
@@ -162,7 +181,7 @@ export async function importGltfRig(bytes: Uint8Array, file: string, readSibling
     if (ex?.child !== undefined) {
       const want = ex.child;
       const found = kids.find((c) => (typeof want === 'number' ? order[c].index === want : order[c].name === want));
-      if (found === undefined) failIn(file, `${nodeLabel(order[b])}: extras.ik.child ${JSON.stringify(want)} is not one of its child joints`);
+      if (found === undefined) failIn(file, `${nodeLabel(order[b])}: extras.ik.child ${shown(want)} is not one of its child joints`);
       return norm(sub(origin(found), origin(b))) > eps ? found : undefined;
     }
     const candidates = kids
@@ -171,27 +190,32 @@ export async function importGltfRig(bytes: Uint8Array, file: string, readSibling
     return candidates.length ? chooseChainChild(candidates).bone : undefined;
   }
 
-  // End effectors: flagged in extras, else hands/feet/head by name, else every leaf.
+  // End effectors: flagged in extras, else hands/feet/head by name, else the deepest leaf joints.
   const flagged = extras.flatMap((e, b) => (e?.effector === true ? [b] : []));
   const unflagged = new Set(extras.flatMap((e, b) => (e?.effector === false ? [b] : [])));
   let effectors = flagged;
   if (effectors.length === 0) {
     const byName = effectorsByName(order.map((n, b) => ({ name: n.name, depth: depth[b] }))).filter((b) => !unflagged.has(b));
-    effectors = byName.length ? byName : leafBones(parents).filter((b) => !unflagged.has(b));
-    info.warnings.push(
-      `no joint is flagged extras.ik.effector: end effectors are ${byName.length ? 'the hands, feet and head found by name' : 'all leaf joints'} (${effectors.map((b) => spec.names[b]).join(', ')})`,
-    );
+    const leaves = leafBones(parents).filter((b) => !unflagged.has(b));
+    effectors = byName.length ? byName : deepestBones(leaves, depth, maxEffectors(count));
+    let which = 'all leaf joints';
+    if (byName.length) which = 'the hands, feet and head found by name';
+    else if (effectors.length < leaves.length)
+      which = `the ${effectors.length} leaf joints furthest from the root, of ${leaves.length} (the most this rig may have)`;
+    info.warnings.push(`no joint is flagged extras.ik.effector: end effectors are ${which} (${listed(effectors.map((b) => spec.names[b]))})`);
   }
   if (effectors.length === 0) failIn(file, 'no end effector: every joint is marked extras.ik.effector = false');
+  const tooMany = effectorCountProblem(effectors.length, count);
+  if (tooMany) failIn(file, `too many end effectors flagged in extras.ik: ${tooMany}`);
   spec.effectors = Int32Array.from(effectors);
   if (!info.hasIkExtras) info.warnings.push(`no IK extras: every angle is limited to +-${DEFAULT_LIMIT_DEG} degrees`);
 
   // Inverse bind matrices: read (so a missing buffer or NaN is an error) and compared with the pose.
-  const buffers = new BufferCache(container, file, readSibling);
+  const buffers = new BufferCache(container, lists, file, readSibling);
   for (const skin of skins) {
     if (skin.inverseBindMatrices === undefined) continue;
     const where = `skins[${skin.index}].inverseBindMatrices`;
-    const ibm = await readMat4Accessor(json, buffers, skin.inverseBindMatrices, skin.joints.length, where, file);
+    const ibm = await readMat4Accessor(lists, buffers, skin.inverseBindMatrices, skin.joints.length, where, file);
     // In the bind pose, world(joint) * ibm(joint) is the same matrix (the mesh's bind space) for all joints.
     const first = multiply(world[skin.joints[0]], ibm.subarray(0, 16));
     const scale = Math.max(1, ...Array.from(first, Math.abs));

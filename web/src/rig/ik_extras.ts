@@ -1,9 +1,9 @@
 // The IK metadata a glTF joint node may carry in `extras.ik` (schema: docs/gltf-ik-extras.md):
-// XZX limits in degrees, end-effector flag, bone length or tail, and which child the bone points at.
+// XZX limits in degrees (their range: limit_degrees.ts), end-effector flag, bone length or tail
+// (rig units, at most MAX_COORDINATE), and which child the bone points at.
 import { failIn } from './gltf_file.js';
-
-/** Limits at or beyond this magnitude (degrees) mean unbounded, as 1e10 does in the A7 files. */
-export const UNBOUNDED_DEG = 1e9;
+import { isUnbounded, limitProblem, type LimitSide } from './limit_degrees.js';
+import { MAX_COORDINATE } from './rig_limits.js';
 
 export interface IkExtras {
   /** 3 XZX lower limits in degrees (-Infinity = unbounded), or undefined for the default. */
@@ -33,19 +33,23 @@ export function readIkExtras(extras: unknown, where: string, file: string): IkEx
   if (typeof ik !== 'object' || ik === null || Array.isArray(ik)) failIn(file, `${at} is not a JSON object`);
   const o = ik as Record<string, unknown>;
   for (const key of Object.keys(o)) if (!KEYS.has(key)) failIn(file, `${at}.${key} is not a known key (${[...KEYS].join(', ')})`);
-  const limits = (key: 'xzx_min' | 'xzx_max', unbounded: number): [number, number, number] | undefined => {
+  const limits = (side: LimitSide): [number, number, number] | undefined => {
+    const key = `xzx_${side}`;
+    const unbounded = side === 'min' ? -Infinity : Infinity;
     const v = o[key];
     if (v === undefined) return undefined;
     if (!Array.isArray(v) || v.length !== 3) failIn(file, `${at}.${key} must be 3 numbers (degrees) or nulls`);
     return v.map((x, k) => {
       if (x === null) return unbounded;
-      if (typeof x !== 'number' || Number.isNaN(x)) failIn(file, `${at}.${key}[${k}] is not a number (degrees) or null`);
-      return Math.abs(x) >= UNBOUNDED_DEG ? Math.sign(x) * Infinity : x;
+      if (typeof x !== 'number') failIn(file, `${at}.${key}[${k}] is not a number (degrees) or null`);
+      const problem = limitProblem(x, side);
+      if (problem) failIn(file, `${at}.${key}[${k}] ${problem}`);
+      return isUnbounded(x, side) ? unbounded : x;
     }) as [number, number, number];
   };
   const result: IkExtras = {
-    min: limits('xzx_min', -Infinity),
-    max: limits('xzx_max', Infinity),
+    min: limits('min'),
+    max: limits('max'),
     effector: undefined,
     length: undefined,
     tail: undefined,
@@ -60,19 +64,19 @@ export function readIkExtras(extras: unknown, where: string, file: string): IkEx
     result.effector = o.effector;
   }
   if (o.length !== undefined) {
-    if (typeof o.length !== 'number' || !Number.isFinite(o.length) || o.length < 0)
-      failIn(file, `${at}.length must be a finite number >= 0`);
+    if (typeof o.length !== 'number' || !(o.length >= 0 && o.length <= MAX_COORDINATE))
+      failIn(file, `${at}.length must be a number in 0..${MAX_COORDINATE}`);
     result.length = o.length;
   }
   if (o.tail !== undefined) {
     const t = o.tail;
-    if (!Array.isArray(t) || t.length !== 3 || !t.every((x) => typeof x === 'number' && Number.isFinite(x)))
-      failIn(file, `${at}.tail must be 3 finite numbers (a point in the joint's local coordinates)`);
+    if (!Array.isArray(t) || t.length !== 3 || !t.every((x) => typeof x === 'number' && Math.abs(x) <= MAX_COORDINATE))
+      failIn(file, `${at}.tail must be 3 numbers within +-${MAX_COORDINATE} (a point in the joint's local coordinates)`);
     result.tail = t as [number, number, number];
   }
   if (o.child !== undefined) {
     if (typeof o.child !== 'string' && !(typeof o.child === 'number' && Number.isInteger(o.child)))
-      failIn(file, `${at}.child must be a child node's name or index`);
+      failIn(file, `${at}.child must be a child node's name or index (a whole number)`);
     result.child = o.child;
   }
   return result;

@@ -37,19 +37,15 @@ export function rigBaseName(fileName: string): string {
 export async function loadRig(bytes: Uint8Array, fileName: string, readSibling?: SiblingReader): Promise<LoadedRig> {
   const name = rigBaseName(fileName);
   const ext = fileName.toLowerCase().match(/\.([a-z0-9]+)$/)?.[1];
-  if (ext === 'json') {
-    const text = new TextDecoder().decode(bytes);
-    return { spec: parseA7Rig(text, fileName), name, format: 'a7', warnings: [] };
+  if (ext !== 'json' && ext !== 'glb' && ext !== 'gltf')
+    throw new RigFormatError(`${fileName}: unknown rig format (expected .json for A7, .glb or .gltf)`);
+  try {
+    if (ext === 'json') return { spec: parseA7Rig(new TextDecoder().decode(bytes), fileName), name, format: 'a7', warnings: [] };
+    const { spec, gltf } = await importGltfRig(bytes, fileName, readSibling);
+    return { spec, name, format: ext, gltf, warnings: gltf.warnings };
+  } catch (e) {
+    if (e instanceof RigFormatError) throw e;
+    // Anything unforeseen still names the file rather than escaping as a bare TypeError.
+    throw new RigFormatError(`${fileName}: cannot read the ${ext === 'json' ? 'A7 rig' : 'glTF'}: ${(e as Error).message}`);
   }
-  if (ext === 'glb' || ext === 'gltf') {
-    try {
-      const { spec, gltf } = await importGltfRig(bytes, fileName, readSibling);
-      return { spec, name, format: ext, gltf, warnings: gltf.warnings };
-    } catch (e) {
-      if (e instanceof RigFormatError) throw e;
-      // Anything unforeseen still names the file rather than escaping as a bare TypeError.
-      throw new RigFormatError(`${fileName}: cannot read the glTF: ${(e as Error).message}`);
-    }
-  }
-  throw new RigFormatError(`${fileName}: unknown rig format (expected .json for A7, .glb or .gltf)`);
 }

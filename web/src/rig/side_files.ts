@@ -4,6 +4,7 @@
 // a regular file (not /dev/zero, a FIFO or a folder) of at most MAX_RIG_FILE_BYTES. A refused uri
 // is reported as written in the file, without looking at the disk and without the resolved path,
 // so a rig cannot find out which files exist outside its folder.
+import { constants } from 'node:fs';
 import { open, realpath } from 'node:fs/promises';
 import { isAbsolute, relative, resolve, sep, win32 } from 'node:path';
 
@@ -25,7 +26,8 @@ function reason(e: unknown): string {
 export async function readRegularFile(path: string): Promise<Uint8Array> {
   let handle;
   try {
-    handle = await open(path, 'r');
+    // Non-blocking, so that opening a FIFO (which waits for a writer) returns at once and is refused below.
+    handle = await open(path, constants.O_RDONLY | (constants.O_NONBLOCK ?? 0));
   } catch (e) {
     throw new SideFileError(reason(e));
   }

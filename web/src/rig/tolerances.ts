@@ -66,7 +66,7 @@ export function rigSize(boneTipsAtRest: ArrayLike<number>): number {
 
 /** Default tolerances of the rig `name` (file base name); `a7` says it came from an A7 .json file. */
 export function defaultTolerances(name: string, a7: boolean, size: number): Tolerances {
-  const report = a7 ? reportTolerances[name] : undefined;
+  const report = a7 && Object.hasOwn(reportTolerances, name) ? reportTolerances[name] : undefined;
   if (report) return { ...report };
   const scale = (size / REFERENCE_SIZE) ** 2;
   return { gtol: REFERENCE_TOL.gtol * scale, ftol: REFERENCE_TOL.ftol * scale };

@@ -1,0 +1,31 @@
+// The largest rig the loaders hand to the core, and the largest coordinate they accept, so that a
+// file past them gets an error naming the file before it reaches WebAssembly. The counts mirror
+// wasm/src/size_limits.h (kMaxBones, kMaxEffectors, kMaxMatrixEntries); keep them in step.
+
+/** Bones of one rig. */
+export const MAX_BONES = 65536;
+
+/** End effectors of one rig. */
+export const MAX_EFFECTORS = 64;
+
+/** Entries of the Jacobian: (3 x effectors) rows times (3 x bones) columns. */
+export const MAX_JACOBIAN_ENTRIES = 2 ** 22;
+
+/**
+ * Largest magnitude of a bone length or joint position, rig units. Far past any real model in any
+ * unit, and far below where squared distances (the objective) overflow.
+ */
+export const MAX_COORDINATE = 1e9;
+
+/** The most end effectors a rig of `bones` bones may have (the effector and Jacobian caps). */
+export function maxEffectors(bones: number): number {
+  return Math.min(MAX_EFFECTORS, Math.floor(MAX_JACOBIAN_ENTRIES / (9 * Math.max(1, bones))));
+}
+
+/** Why `effectors` end effectors on `bones` bones are too many for the core, or undefined when they are not. */
+export function effectorCountProblem(effectors: number, bones: number): string | undefined {
+  if (effectors <= maxEffectors(bones)) return undefined;
+  if (effectors > MAX_EFFECTORS) return `${effectors} end effectors; at most ${MAX_EFFECTORS}`;
+  const entries = 9 * effectors * bones;
+  return `${effectors} end effectors on ${bones} bones make a ${3 * effectors} x ${3 * bones} Jacobian (${entries} entries; at most ${MAX_JACOBIAN_ENTRIES}): at most ${maxEffectors(bones)} end effectors on this rig`;
+}
