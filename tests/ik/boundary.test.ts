@@ -80,20 +80,58 @@ describe('inputs are plain numbers before they reach C++', () => {
   });
 });
 
+describe('the solve buffer', () => {
+  it('a solve after dispose writes nothing into freed memory', () => {
+    const rig = new IkRig(ik, chain(3, [2]));
+    const solver = new IkSolver(rig, 'lm');
+    solver.solve(new Float64Array(9), [1, 1, 0]);
+    solver.dispose();
+    expect(() => solver.solve(new Float64Array(9), [1, 1, 0])).toThrow('this solver was disposed');
+    rig.dispose(); // trapped ("memory access out of bounds") when the solve wrote its inputs first
+    const canary = keep(new IkRig(ik, chain(3, [2])));
+    expect(keep(new IkSolver(canary, 'lm')).solve(new Float64Array(9), [1, 1, 0]).reached).toBe(true);
+  });
+
+  it('a Proxy that solves while its entries are read does not mix the two solves', () => {
+    const rig = keep(new IkRig(ik, chain(2, [1])));
+    const solver = keep(new IkSolver(rig, 'lm', { restarts: 0 }));
+    const plain = [0, 90, 0, 0, 0, 0];
+    const expected = solver.solve(plain, [0, 2, 0]).initialE;
+    const proxy = new Proxy(plain, {
+      get(t, p, r) {
+        if (p === '4') solver.solve([0, 0, 0, 0, 0, 0], [2, 0, 0]);
+        return Reflect.get(t, p, r) as unknown;
+      },
+    });
+    expect(solver.solve(proxy, [0, 2, 0]).initialE).toBe(expected);
+  });
+
+  it('out must be a Float64Array of the angles: other arrays are refused, not rounded', () => {
+    const rig = keep(new IkRig(ik, chain(2, [1])));
+    const solver = keep(new IkSolver(rig, 'lm'));
+    for (const out of [new Float32Array(6), new Int8Array(6), [0, 0, 0, 0, 0, 0], new Float64Array(5)])
+      expect(() => solver.solve(new Float64Array(6), [0, 2, 0], out as Float64Array)).toThrow(
+        'out must be a Float64Array of 6 numbers (the angles)',
+      );
+    const out = new Float64Array(6);
+    expect(solver.solve(new Float64Array(6), [0, 2, 0], out).angles).toBe(out);
+  });
+});
+
 describe("the core's refusals", () => {
-  it('come back as Errors with the message, and many of them leave the module working', () => {
+  it('come back as Errors with the message, and the module keeps working', () => {
     const rig = keep(new IkRig(ik, chain(3, [2])));
     const solver = keep(new IkSolver(rig, 'lm', { errorTolerance: -1 }));
     const angles = new Float64Array(9);
     let thrown = 0;
-    for (let i = 0; i < 50_000; i++) {
+    for (let i = 0; i < 1000; i++) {
       try {
         solver.solve(angles, [1, 1, 0]); // refused in C++ (an option out of range)
       } catch (e) {
         if ((e as Error).message === 'solver option errorTolerance must be a number >= 0') thrown++;
       }
     }
-    expect(thrown).toBe(50_000);
+    expect(thrown).toBe(1000); // tests/fuzz: 200,000 of them, and `npm run fuzz` a million
     expect(() => IkSolver.describe(ik, 'nope')).toThrow('unknown solver method "nope"');
     expect(() => new IkSolver(rig, 'nope')).toThrow(/unknown solver method "nope"/);
     expect(() => rig.setEffectors([-1])).toThrow('end effector 0 is bone -1, which is not a bone of the rig (0..2)');
@@ -111,7 +149,7 @@ describe("the core's refusals", () => {
     );
     const rig = keep(new IkRig(ik, chain(300, [299])));
     expect(() => keep(new IkSolver(rig, 'newton')).solve(new Float64Array(900), [100, 100, 0])).toThrow(
-      'newton takes rigs of at most 768 angles (256 bones); this one has 900: use lm or gd',
+      'newton takes rigs of at most 384 angles (128 bones); this one has 900: use lm or gd',
     );
     expect(() => keep(new IkSolver(rig, 'lm', { historyCapacity: 1e8 })).solve(new Float64Array(900), [100, 100, 0])).toThrow(
       'solver option historyCapacity must be in 1..1000000',

@@ -15,9 +15,11 @@ constexpr int kMaxEffectors = 64;
 // every solver's workspace and the cost of one iteration (a 10,000-bone rig takes 46 effectors).
 constexpr long long kMaxMatrixEntries = 1LL << 22;
 
-// Angles of a rig that newton, bfgs and paper mode take: they keep #angles x #angles matrices
-// (or an SVD of the whole Jacobian), and one factorisation of that size costs about 0.1 s.
-constexpr int kMaxDenseAngles = 768;
+// Angles of a rig that newton, bfgs, gn past 16 effectors and paper mode take: they keep
+// #angles x #angles matrices, an SVD of the whole Jacobian or a finite-difference Jacobian (2 x
+// #angles poses), steps no time check can split; at this size one costs about 10 ms, so a
+// budget of 10 ms or more holds within about 2x (128 bones: a Mixamo character has 65).
+constexpr int kMaxDenseAngles = 384;
 
 // E values a solver keeps for its error history.
 constexpr int kMaxHistory = 1000000;

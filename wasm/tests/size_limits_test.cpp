@@ -96,7 +96,7 @@ TEST(SizeLimits, DenseMethodsRefuseRigsTheirMatricesCannotHold) {
   for (const char* method : {"newton", "bfgs"}) {
     auto solver = make_solver(method, kin, SolverOptions());
     EXPECT_EQ(solver->start(angles, target), StopReason::invalid_input) << method;
-    EXPECT_NE(solver->summary().message.find("takes rigs of at most 768 angles (256 bones); this one has 900"),
+    EXPECT_NE(solver->summary().message.find("takes rigs of at most 384 angles (128 bones); this one has 900"),
               std::string::npos)
         << solver->summary().message;
   }

@@ -103,7 +103,7 @@ bool Solver::validate(const Eigen::Ref<const Eigen::VectorXd>& angles, const Eig
   if (problem.empty() && kin_.num_angles() > limit)
     problem = std::string(name()) + (opt_.paper_mode ? " in paper mode" : "") + " takes rigs of at most " +
               std::to_string(limit) + " angles (" + std::to_string(limit / 3) + " bones); this one has " +
-              std::to_string(kin_.num_angles()) + ": use lm or gd";
+              std::to_string(kin_.num_angles()) + (opt_.paper_mode ? ": turn paper mode off" : ": use lm or gd");
   if (problem.empty()) problem = check_finite(angles, "angles");
   if (problem.empty()) problem = check_finite(target, "target");
   summary_.message = problem;

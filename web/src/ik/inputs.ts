@@ -1,6 +1,7 @@
 // Checks and copies of what callers hand the API, before anything reaches WebAssembly: the
 // bindings get only typed arrays of the right length and plain option objects, so no user code
-// (a valueOf, a getter) runs while C++ holds pointers into a rig, and every problem is named.
+// (a valueOf, a getter, a Proxy trap) runs while C++ holds pointers into a rig or while a shared
+// buffer is being filled, and every problem is named.
 import type { IkCoreModule } from './generated/ik_core.mjs';
 
 /** Largest array the API copies: past WebAssembly's memory anyway (a `{length: 1e10}` fails fast). */
@@ -34,25 +35,30 @@ function arrayLength(value: unknown, what: string): number {
  */
 export function toFloat64(values: unknown, what: string, expected?: number, finite = true): Float64Array {
   const n = arrayLength(values, what);
-  const out = new Float64Array(n);
-  copyNumbers(values, what, expected ?? n, out, 0, finite);
-  return out;
-}
-
-/**
- * Copies `values` (an array or typed array of `expected` numbers) into `out` from `offset`, with
- * the checks of toFloat64 and no allocation (the solve's hot path).
- */
-export function copyNumbers(values: unknown, what: string, expected: number, out: Float64Array, offset: number, finite = true): void {
-  const n = arrayLength(values, what);
-  if (n !== expected) throw new Error(`${what} has ${n} values, expected ${expected}`);
+  if (expected !== undefined && n !== expected) throw new Error(`${what} has ${n} values, expected ${expected}`);
   const from = values as ArrayLike<unknown>;
+  const out = new Float64Array(n);
   for (let i = 0; i < n; i++) {
     const x = from[i];
     if (typeof x !== 'number') throw new Error(`${what}[${i}] is ${describe(x)}, not a number`);
     if (finite && !Number.isFinite(x)) throw new Error(`${what}[${i}] is ${x}, not a finite number`);
-    out[offset + i] = x;
+    out[i] = x;
   }
+  return out;
+}
+
+/**
+ * `values` checked like toFloat64 without a copy when it is a typed array (reading one runs no
+ * user code; the solve's hot path), else a Float64Array copy: a Proxy's or getter's code then
+ * runs here, before anything is written to WebAssembly memory.
+ */
+export function checkedNumbers(values: unknown, what: string, expected: number): ArrayLike<number> {
+  if (!ArrayBuffer.isView(values) || values instanceof DataView) return toFloat64(values, what, expected);
+  const typed = values as unknown as ArrayLike<number>;
+  if (typed.length !== expected) throw new Error(`${what} has ${typed.length} values, expected ${expected}`);
+  for (let i = 0; i < expected; i++)
+    if (!Number.isFinite(typed[i])) throw new Error(`${what}[${i}] is ${typed[i]}, not a finite number`);
+  return typed;
 }
 
 /**

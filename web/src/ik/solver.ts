@@ -3,7 +3,7 @@
 // units; E = 1/2 |tips - target|^2. The object owns WebAssembly memory: call dispose() when done,
 // and dispose it before its rig.
 import type { EmbindSolver, EmbindSolverOptions, EmbindSolverResult, IkCoreModule } from './generated/ik_core.mjs';
-import { coreError, copyNumbers, plainOptions, toFloat64 } from './inputs.js';
+import { checkedNumbers, coreError, plainOptions, toFloat64 } from './inputs.js';
 import type { IkRig, Numbers } from './rig.js';
 
 /** The registered methods, lm first (the default). `IkSolver.methods(module)` lists the build's. */
@@ -214,23 +214,29 @@ export class IkSolver {
   /**
    * start() then step() to the end. Throws like start(). The numbers cross in one shared buffer
    * (ioView / solveIo), so a call costs well under a microsecond more than the solve itself.
-   * `out` (optional, #angles long): the result's angles are written there and it is returned as
-   * `angles` (no new array per call; it may be `angles` itself). Otherwise `angles` is a new array.
+   * `out` (optional, a Float64Array of #angles): the result's angles are written there and it is
+   * returned as `angles` (no new array per call; it may be `angles` itself). Otherwise `angles` is
+   * a new array.
    */
   solve(angles: Numbers, target: Numbers, out?: Float64Array): SolverResult {
+    this.live();
     const n = this.rig.numAngles, m = 3 * this.rig.numEffectors;
+    if (out !== undefined && !(out instanceof Float64Array && out.length === n))
+      throw new Error(`out must be a Float64Array of ${n} numbers (the angles)`);
+    const a = checkedNumbers(angles, 'angles', n);
+    const t = checkedNumbers(target, 'target', m);
+    const handle = this.live(); // reading a Proxy may have disposed it
+    if (3 * this.rig.numEffectors !== m) throw new Error('the end effectors changed while the target was being read');
     let io = this.buffer(n, m);
-    copyNumbers(angles, 'angles', n, io, 0);
-    copyNumbers(target, 'target', m, io, n);
-    if (io.length === 0) throw new Error('reading angles or target grew the WebAssembly memory; solve again');
-    const handle = this.live();
+    io.set(a, 0);
+    io.set(t, n);
     const code = handle.solveIo();
     if (code < 0) throw coreError(this.rig.module, 'solve');
     if (io.length === 0) io = this.buffer(n, m); // the memory grew during the solve
     const stats = n + m;
     const stopReason = moduleFacts(this.rig.module).stopReasons[code] as StopReason;
     return {
-      angles: out && out.length === n ? (out.set(io.subarray(0, n)), out) : io.slice(0, n),
+      angles: out ? (out.set(io.subarray(0, n)), out) : io.slice(0, n),
       E: io[stats],
       initialE: io[stats + 1],
       gradNorm: io[stats + 2],

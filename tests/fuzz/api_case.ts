@@ -1,0 +1,44 @@
+// An API case: a random rig and solver, then one to six calls with careless or hostile arguments.
+import type { IkCoreModule } from '../../web/src/ik/module.js';
+import { IkRig } from '../../web/src/ik/rig.js';
+import { IkSolver, type SolverOptions } from '../../web/src/ik/solver.js';
+import { API_OPS } from './api_ops.js';
+import type { ApiState } from './api_state.js';
+import type { BudgetSample } from './case_id.js';
+import { classifyThrown } from './classify_error.js';
+import { saneOptions } from './hostile_options.js';
+import { OK, worse, type Outcome } from './outcome.js';
+import type { Rand } from './random.js';
+import { randomRig } from './random_rig.js';
+
+/**
+ * Runs one API case drawn from `r` on module `ik`. `note` gets each part of the description as
+ * it is drawn (so a hang still says how far the case got); `budgets` gets the budgeted solves.
+ */
+export function runApiCase(r: Rand, ik: IkCoreModule, note: (text: string) => void, budgets: BudgetSample[]): Outcome {
+  const bones = r.weighted<() => number>([[6, () => r.intIn(1, 8)], [2, () => r.intIn(20, 200)], [1, () => r.intIn(500, 3000)]])();
+  const spec = randomRig(r, bones, bones > 300 ? 20 : 4);
+  const method = 3 * bones <= 1024 ? r.pick(['lm', 'gn', 'bfgs', 'newton', 'gd']) : r.pick(['lm', 'gn', 'gd']);
+  const options = saneOptions(r);
+  if (bones > 300) options.timeBudgetSeconds = r.pick([1e-6, 1e-3, 0.01, 0.03]);
+  note(`${bones}-bone rig, ${spec.effectors.length} effectors, ${method} ${JSON.stringify(options)}`);
+  const rig = new IkRig(ik, spec);
+  const s: ApiState = { ik, spec, rig, solver: new IkSolver(rig, method, options as SolverOptions), started: false, optionsOutOfRange: false, owned: [], budgets };
+  s.owned.push(rig, s.solver);
+  let outcome: Outcome = OK;
+  for (let k = r.intIn(1, 6); k > 0; k--) {
+    const step = r.weighted(API_OPS)(r, s);
+    note(step.text);
+    const o = step.run();
+    outcome = worse(outcome, { kind: o.kind, message: `${step.text}: ${o.message}` });
+  }
+  for (const o of s.owned.reverse()) {
+    try {
+      o.dispose();
+    } catch (e) {
+      const c = classifyThrown(e);
+      outcome = worse(outcome, { kind: c.kind, message: `dispose at the end: ${c.message}` });
+    }
+  }
+  return outcome;
+}
