@@ -1,12 +1,14 @@
 // `npm run fuzz -- --cases N [--seed S] [--kind a7,gltf,api] [--case K]`: feeds the rig loaders
 // and the solver API careless and hostile input (tests/fuzz/), prints the outcome counts per kind,
-// the time budget's worst ratio and every failing case with the command that replays it.
+// the time budget's worst ratio, the stack-leak check, the time to load a 10,000-bone chain, and
+// every failing case with the command that replays it.
 // Exit code 1 on any crash, hang, silent wrong result or read outside the model folder.
 import { Command, InvalidArgumentError, Option } from 'commander';
 import { SingleBar } from 'cli-progress';
 
 import { loadIkNode } from '../web/src/ik/node.js';
 import { FUZZ_KINDS, type FuzzKind } from '../tests/fuzz/case_id.js';
+import { deepChainSummary } from '../tests/fuzz/deep_chain.js';
 import { budgetSummary, countTable, failureList, severeCount } from '../tests/fuzz/report.js';
 import { runFuzz } from '../tests/fuzz/run_fuzz.js';
 import { stackLeakCheck } from '../tests/fuzz/stack_leak.js';
@@ -71,6 +73,7 @@ async function main(): Promise<number> {
         `${leak ? `FAILED: ${r.problem}` : 'then a valid solve works'}\n`,
     );
   }
+  if (o.case === undefined) process.stdout.write(`${await deepChainSummary(await loadIkNode())}\n`);
   const failures = failureList(reports);
   if (failures) process.stdout.write(`\n${failures}\n`);
   return severeCount(reports) > 0 || leak ? 1 : 0;
