@@ -90,7 +90,7 @@ describe('glTF import of a Blender-style character without IK extras', () => {
     const { spec, warnings } = character;
     expect(Array.from(spec.effectors, (b) => spec.names[b])).toEqual(['head', 'hand.L', 'hand.R', 'foot.L', 'foot.R']);
     expect(spec.lower.every((v) => v === -180) && spec.upper.every((v) => v === 180)).toBe(true);
-    expect(warnings.join('\n')).toMatch(/found by name/);
+    expect(warnings.join('\n')).toMatch(/end effectors are the hands, feet and head of the humanoid mapping/);
     expect(warnings.join('\n')).toMatch(/no IK extras/);
   });
 
@@ -211,8 +211,8 @@ describe('naming rules', () => {
     expect(nameTokens('HeadTop_End')).toEqual(['head', 'top', 'end']);
   });
 
-  const pick = (names: string[], depth?: number[]): string[] =>
-    effectorsByName(names.map((name, i) => ({ name, depth: depth?.[i] ?? i }))).map((i) => names[i]);
+  /** The effectors effectorsByName picks among `names` chained one below the other. */
+  const pick = (names: string[]): string[] => effectorsByName(names, names.map((_, i) => i - 1)).map((i) => names[i]);
 
   it('finds hands, feet and head by name in Mixamo, Blender, Unreal and Biped rigs', () => {
     expect(
@@ -224,7 +224,8 @@ describe('naming rules', () => {
     expect(pick(['Bip01', 'Bip01 Head', 'Bip01 L Hand', 'Bip01 R Hand', 'Bip01 L Foot', 'Bip01 R Foot'])).toEqual(
       ['Bip01 Head', 'Bip01 L Hand', 'Bip01 R Hand', 'Bip01 L Foot', 'Bip01 R Foot'],
     );
-    expect(pick(['base', 'arm', 'gripper'])).toEqual([]);
+    expect(pick(['base', 'arm', 'gripper'])).toEqual(['gripper']); // a gripper is a hand
+    expect(pick(['base', 'link', 'tool'])).toEqual([]);
   });
 
   it('continues a chain through the midline, then the biggest subtree, then spine/neck/middle, then the first', () => {

@@ -2,19 +2,22 @@
 // Every joint of every skin becomes one bone (a joint shared by several skins is one bone). The
 // rest pose is the nodes' own transforms (the pose three.js shows the file in), so the model does
 // not move at zero angles. Bones are ordered depth-first through the node tree (parents first).
+// A humanoid skeleton is recognised (humanoid_recognition.ts) and gives the default end effectors.
 import type { RigSpec } from '../ik/rig_spec.js';
 import { boneRestFrame } from './bone_frame.js';
 import { chooseChainChild } from './chain_child.js';
-import { DEFAULT_LIMIT_DEG, deepestBones, effectorsByName, leafBones } from './effector_defaults.js';
+import { DEFAULT_LIMIT_DEG, defaultEffectors, rootChainEffectors } from './effector_defaults.js';
 import { BufferCache, readMat4Accessor } from './gltf_accessor.js';
 import { failIn, parseGltfContainer, type SiblingReader } from './gltf_file.js';
 import { listed, shown } from './gltf_json.js';
 import { nodeLabel, readNodes, readSkins, worldMatrices, type GltfNode } from './gltf_nodes.js';
 import { checkRanges } from './gltf_ranges.js';
 import { checkReferences, readLists } from './gltf_references.js';
+import { recognizeHumanoid } from './humanoid_recognition.js';
+import type { HumanoidMap } from './humanoid_roles.js';
 import { readIkExtras, type IkExtras } from './ik_extras.js';
 import { allFinite, invertAffine, multiply, transformDirection, transformPoint } from './mat4.js';
-import { effectorCountProblem, MAX_BONES, MAX_COORDINATE, maxEffectors } from './rig_limits.js';
+import { effectorCountProblem, MAX_BONES, MAX_COORDINATE } from './rig_limits.js';
 
 /** What the write-back and the page need to map rig bones onto the glTF (and three.js) nodes. */
 export interface GltfRigInfo {
@@ -34,6 +37,8 @@ export interface GltfRigInfo {
   hasIkExtras: boolean;
   /** Levels of the glTF node tree: 1 when every node is a root. */
   treeDepth: number;
+  /** Which bone plays which humanoid role (docs/gltf-ik-extras.md), or null for a rig that is no humanoid. */
+  humanoid: HumanoidMap | null;
   /** Things the user may want to know (defaults used, pose differs from bind pose...). */
   warnings: string[];
 }
@@ -87,8 +92,6 @@ export async function importGltfRig(bytes: Uint8Array, file: string, readSibling
   }
   const count = order.length;
   const parents = Int32Array.from(parentList);
-  const depth = new Int32Array(count);
-  for (let b = 0; b < count; b++) if (parents[b] >= 0) depth[b] = depth[parents[b]] + 1;
 
   const world = worldMatrices(tree);
   for (const n of order) {
@@ -125,6 +128,7 @@ export async function importGltfRig(bytes: Uint8Array, file: string, readSibling
     upper: new Float64Array(3 * count),
     effectors: new Int32Array(0),
   };
+  const humanoid = recognizeHumanoid(json, order.map((n) => n.name), parents, boneOfNode);
   const info: GltfRigInfo = {
     boneNodes: Int32Array.from(order, (n) => n.index),
     nodeNames: order.map((n) => n.name),
@@ -134,7 +138,8 @@ export async function importGltfRig(bytes: Uint8Array, file: string, readSibling
     skinBones: skins.map((s) => Int32Array.from(s.joints, (j) => boneOfNode[j])),
     hasIkExtras: extras.some((e) => e !== undefined),
     treeDepth: nodeDepth.reduce((a, b) => Math.max(a, b), 0),
-    warnings: [],
+    humanoid: humanoid.map,
+    warnings: [...humanoid.notes],
   };
 
   order.forEach((node, b) => {
@@ -190,28 +195,26 @@ export async function importGltfRig(bytes: Uint8Array, file: string, readSibling
     return candidates.length ? chooseChainChild(candidates).bone : undefined;
   }
 
-  // End effectors: flagged in extras, else hands/feet/head by name, else the deepest leaf joints.
+  // End effectors: flagged in extras, else the humanoid's or by name, else the deepest leaf joints.
   const flagged = extras.flatMap((e, b) => (e?.effector === true ? [b] : []));
   const unflagged = new Set(extras.flatMap((e, b) => (e?.effector === false ? [b] : [])));
   let effectors = flagged;
   if (effectors.length === 0) {
-    const byName = effectorsByName(order.map((n, b) => ({ name: n.name, depth: depth[b] }))).filter((b) => !unflagged.has(b));
-    const leaves = leafBones(parents).filter((b) => !unflagged.has(b));
-    effectors = byName.length ? byName : deepestBones(leaves, depth, maxEffectors(count));
-    let which = 'all leaf joints';
-    if (byName.length) which = 'the hands, feet and head found by name';
-    else if (effectors.length < leaves.length)
-      which = `the ${effectors.length} leaf joints furthest from the root, of ${leaves.length} (the most this rig may have)`;
-    info.warnings.push(`no joint is flagged extras.ik.effector: end effectors are ${which} (${listed(effectors.map((b) => spec.names[b]))})`);
+    const chosen = defaultEffectors(info.nodeNames, parents, info.humanoid, unflagged);
+    effectors = chosen.effectors;
+    info.warnings.push(`no joint is flagged extras.ik.effector: end effectors are ${chosen.which} (${listed(effectors.map((b) => spec.names[b]))})`);
   }
   if (effectors.length === 0) failIn(file, 'no end effector: every joint is marked extras.ik.effector = false');
   const tooMany = effectorCountProblem(effectors.length, count);
   if (tooMany) failIn(file, `too many end effectors flagged in extras.ik: ${tooMany}`);
   spec.effectors = Int32Array.from(effectors);
+  const offRoot = rootChainEffectors(effectors, parents).map((b) => spec.names[b]);
+  if (offRoot.length) info.warnings.push(grouped('end effector', offRoot, 'moved by the root bone alone, so dragging swings the whole body'));
   if (!info.hasIkExtras) info.warnings.push(`no IK extras: every angle is limited to +-${DEFAULT_LIMIT_DEG} degrees`);
 
   // Inverse bind matrices: read (so a missing buffer or NaN is an error) and compared with the pose.
   const buffers = new BufferCache(container, lists, file, readSibling);
+  const unbound: string[] = [];
   for (const skin of skins) {
     if (skin.inverseBindMatrices === undefined) continue;
     const where = `skins[${skin.index}].inverseBindMatrices`;
@@ -223,8 +226,13 @@ export async function importGltfRig(bytes: Uint8Array, file: string, readSibling
       const m = multiply(world[j], ibm.subarray(16 * k, 16 * k + 16));
       return m.some((v, i) => Math.abs(v - first[i]) > 1e-4 * scale);
     });
-    if (differs)
-      info.warnings.push(`skin ${skin.index}: the nodes are not in the bind pose; the rig's rest pose is the nodes' pose`);
+    if (differs) unbound.push(String(skin.index));
   }
+  if (unbound.length) info.warnings.push(grouped('skin', unbound, "the nodes are not in the bind pose; the rig's rest pose is the nodes' pose"));
   return { spec, gltf: info };
+}
+
+/** One warning line about one or several things: "skin 2: text", or "4 skins (0, 1, 2, 3): text". */
+function grouped(noun: string, items: string[], text: string): string {
+  return items.length === 1 ? `${noun} ${items[0]}: ${text}` : `${items.length} ${noun}s (${listed(items)}): ${text}`;
 }
