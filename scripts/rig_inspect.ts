@@ -31,8 +31,9 @@ function boneLabels(names: readonly string[]): string[] {
 }
 
 /** Bone b's 3 limits of `values` (degrees), null for an unbounded one. */
+/** Bone b's three limits in degrees to 1e-6 (derived limits carry rounding noise), null when unbounded. */
 const boneLimit = (values: Float64Array, b: number): (number | null)[] =>
-  Array.from(values.subarray(3 * b, 3 * b + 3), (v) => (Number.isFinite(v) ? v : null));
+  Array.from(values.subarray(3 * b, 3 * b + 3), (v) => (Number.isFinite(v) ? Math.round(v * 1e6) / 1e6 + 0 : null));
 
 /** What the importer made of `rig`, in the shape of the `--json` output. Angles in degrees. */
 export function rigReport(rig: LoadedRig): RigReport {
@@ -74,7 +75,8 @@ const REGIONS: [string, HumanoidRole[]][] = [
   ['right leg', ['rightUpperLeg', 'rightLowerLeg', 'rightFoot', 'rightToes']],
 ];
 
-const angles = (v: (number | null)[], unbounded: string): string => `[${v.map((x) => (x === null ? unbounded : x)).join(', ')}]`;
+const angles = (v: (number | null)[], unbounded: string): string =>
+  `[${v.map((x) => (x === null ? unbounded : Number(x.toFixed(2)))).join(', ')}]`;
 const isDefault = (l: BoneLimits): boolean => l.min.every((v) => v === -180) && l.max.every((v) => v === 180);
 
 /** A short human-readable summary of `rig` loaded from `file`, lines ending in '\n'. */

@@ -128,6 +128,7 @@ function sideShapes(s: Side): Shape[] {
 
 export const character: ModelDef = {
   name: 'character',
+  plain: true, // as a downloaded Mixamo character arrives: recognised as a humanoid, limits from anatomy
   armature: { scale: [0.01, 0.01, 0.01] },
   joints,
   materials: [

@@ -50,6 +50,12 @@ export interface ModelDef {
   joints: JointDef[];
   materials: MaterialDef[];
   shapes: Shape[];
+  /**
+   * Write no extras.ik, as a character downloaded from the web arrives: the importer then finds
+   * its effectors, tails and limits from the skeleton (humanoid recognition). The joints' limits
+   * and effector flags still shape the mesh and are kept for tests to compare against.
+   */
+  plain?: boolean;
 }
 
 const round = (v: number, digits: number): number => {
@@ -121,7 +127,7 @@ export function buildDocument(model: ModelDef): Document {
       .createNode(def.name)
       .setTranslation([round(local[3], 6), round(local[7], 6), round(local[11], 6)])
       .setRotation(rot.map((v) => round(v, 9)) as [number, number, number, number]);
-    node.setExtras({ ik: ikExtras(model, def) });
+    if (!model.plain) node.setExtras({ ik: ikExtras(model, def) });
     (parent ? parent.node : armature).addChild(node);
     const world = multiply(parent ? parent.world : armatureWorld, fromTRS(node.getTranslation(), node.getRotation(), [1, 1, 1]));
     byName.set(def.name, { def, node, world, index });

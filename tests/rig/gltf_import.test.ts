@@ -86,10 +86,16 @@ describe('glTF import of a Blender-style character without IK extras', () => {
     }
   });
 
-  it('defaults to the hands, feet and head as end effectors and to +-180 degree limits', () => {
+  it('defaults to the hands, feet and head as end effectors, anatomical limits on the humanoid and +-180 elsewhere', () => {
     const { spec, warnings } = character;
     expect(Array.from(spec.effectors, (b) => spec.names[b])).toEqual(['head', 'hand.L', 'hand.R', 'foot.L', 'foot.R']);
-    expect(spec.lower.every((v) => v === -180) && spec.upper.every((v) => v === 180)).toBe(true);
+    const own = character.gltf!.fileLimits!;
+    expect(own.lower.every((v) => v === -180) && own.upper.every((v) => v === 180)).toBe(true);
+    const mapped = new Set(Object.values(character.gltf!.humanoid!.bones));
+    for (let b = 0; b < spec.parents.length; b++) {
+      const limited = [0, 1, 2].some((k) => spec.lower[3 * b + k] !== -180 || spec.upper[3 * b + k] !== 180);
+      expect(limited, spec.names[b]).toBe(mapped.has(b));
+    }
     expect(warnings.join('\n')).toMatch(/end effectors are the hands, feet and head of the humanoid mapping/);
     expect(warnings.join('\n')).toMatch(/no IK extras/);
   });
@@ -169,7 +175,8 @@ describe('glTF import with IK extras', () => {
     const b = (n: string): number => spec.names.indexOf(n);
     expect(Array.from(spec.lower.subarray(3 * b('forearm.L'), 3 * b('forearm.L') + 3))).toEqual([0, -10, -Infinity]);
     expect(Array.from(spec.upper.subarray(3 * b('forearm.L'), 3 * b('forearm.L') + 3))).toEqual([0, 150, Infinity]);
-    expect(Array.from(spec.lower.subarray(0, 3))).toEqual([-180, -180, -180]); // joints without extras keep the default
+    // Joints without extras keep the default in the file's own limits (the spec has anatomical ones for the humanoid).
+    expect(Array.from(r.gltf!.fileLimits!.lower.subarray(0, 3))).toEqual([-180, -180, -180]);
     expect(Array.from(spec.effectors, (e) => spec.names[e])).toEqual(['head', 'forearm.L']);
     expect(spec.lengths[b('hand.L')]).toBeCloseTo(10 * 0.02, 12); // joint units times the Armature scale
     expect(spec.lengths[b('head')]).toBeCloseTo(5 * 0.02, 12);

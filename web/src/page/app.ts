@@ -65,6 +65,7 @@ export class PageApp {
     const rig = url.rig && PROJECT_RIGS[url.rig] ? url.rig : DEFAULT_RIG;
     this.settings = {
       rig,
+      humanoidLimits: true,
       method: url.method ?? 'lm',
       gradientTolerance: 1e-7,
       tipTolerance: 1e-3,
@@ -104,6 +105,7 @@ export class PageApp {
     this.panel = new Panel(el.side, this.settings, rigOptions, {
       rigChanged: (key) => (key === FILE_KEY ? this.files.choose() : void this.loadProject(key)),
       openFile: () => this.files.choose(),
+      limitsChanged: () => this.limitsChanged(),
       methodChanged: () => this.methodChanged(),
       settingsChanged: () => this.invalidate(),
       displayChanged: () => this.applyDisplay(),
@@ -208,7 +210,7 @@ export class PageApp {
     let live: LiveRig | null = null;
     try {
       const loaded = await read();
-      live = await LiveRig.create(this.module, loaded, createSolver);
+      live = await LiveRig.create(this.module, loaded, createSolver, true, this.settings.humanoidLimits);
     } catch (e) {
       if (token !== this.loadToken) return;
       const msg = e instanceof Error ? e.message : String(e);
@@ -239,6 +241,7 @@ export class PageApp {
     this.rigKey = key;
     this.stage.scene.add(...live.objects);
     this.panel.showRig(key ?? FILE_KEY);
+    this.panel.showHumanoidLimits(live.hasHumanoidLimits);
     // The rig's drag tolerances, shown to 3 significant digits in the panel.
     const t = live.tolerances();
     this.settings.tipTolerance = Number(t.tipTolerance.toPrecision(3));
@@ -369,6 +372,27 @@ export class PageApp {
     this.live?.session.endSteps();
     this.invalidate();
     if (this.live) this.stats.showIdle(this.settings.method, this.live.session.objective());
+  }
+
+  /** The humanoid-limits switch: the rig takes the other limits, keeping its targets, and solves into them. */
+  private limitsChanged(): void {
+    const live = this.live;
+    if (!live?.hasHumanoidLimits) return;
+    if (this.busy) {
+      // A compare is running on the current session: keep it.
+      this.settings.humanoidLimits = !this.settings.humanoidLimits;
+      this.panel.refresh();
+      return;
+    }
+    try {
+      live.useHumanoidLimits(this.settings.humanoidLimits);
+    } catch (e) {
+      this.showMessage(`could not switch the limits: ${e instanceof Error ? e.message : String(e)}`, 'error');
+      return;
+    }
+    this.stats.showIdle(this.settings.method, live.session.objective());
+    this.invalidate();
+    this.showSelection();
   }
 
   private setGizmo(mode: PageSettings['gizmo']): void {
@@ -506,7 +530,14 @@ export class PageApp {
     const live = this.live;
     const i = live?.selectedBone ?? null;
     if (!live || i === null) showLimits(this.el.selection, null);
-    else showLimits(this.el.selection, { spec: live.session.spec, bone: i, angles: live.session.angles, isEffector: live.session.effectors().includes(i) });
+    else
+      showLimits(this.el.selection, {
+        spec: live.session.spec,
+        bone: i,
+        angles: live.session.angles,
+        isEffector: live.session.effectors().includes(i),
+        limitSource: live.hasHumanoidLimits ? (this.settings.humanoidLimits ? 'humanoid (anatomical)' : 'the file’s (humanoid limits off)') : undefined,
+      });
   }
 
   private showStepInfo(text: string): void {

@@ -45,8 +45,17 @@ export function describeLimits(spec: RigSpec, i: number, angles: Float64Array): 
   return lines;
 }
 
+/** What the selection readout shows: a bone of a spec at a pose; `limitSource` names the limits in use, if there is a choice. */
+export interface LimitsSelection {
+  spec: RigSpec;
+  bone: number;
+  angles: Float64Array;
+  isEffector: boolean;
+  limitSource?: string;
+}
+
 /** Writes the selected bone's name and limits into `box` as text (null: the how-to line). */
-export function showLimits(box: HTMLElement, sel: { spec: RigSpec; bone: number; angles: Float64Array; isEffector: boolean } | null): void {
+export function showLimits(box: HTMLElement, sel: LimitsSelection | null): void {
   box.replaceChildren();
   if (!sel) {
     box.textContent = 'Click a bone to make its tip an end effector or remove it (shift-click: show its joint limits only).';
@@ -61,6 +70,11 @@ export function showLimits(box: HTMLElement, sel: { spec: RigSpec; bone: number;
     list.append(li);
   }
   box.append(title, list);
+  if (sel.limitSource) {
+    const source = document.createElement('small');
+    source.textContent = `limits: ${sel.limitSource}`;
+    box.append(source);
+  }
 }
 
 export class LimitsView {
@@ -69,7 +83,7 @@ export class LimitsView {
   private readonly needles: Line[] = [];
   private bone: number | null = null;
 
-  constructor(private readonly spec: RigSpec, private readonly rigSize: number) {
+  constructor(private spec: RigSpec, private readonly rigSize: number) {
     this.root.renderOrder = 20;
     for (const f of this.frames) {
       f.matrixAutoUpdate = false;
@@ -120,6 +134,14 @@ export class LimitsView {
       this.frames[k].add(fanMesh, rimLine, needle);
       this.needles[k] = needle;
     }
+  }
+
+  /** Shows the limits of `spec` from now on (the rig's limits were switched); redraws the selected bone's. */
+  useSpec(spec: RigSpec): void {
+    this.spec = spec;
+    const bone = this.bone;
+    this.select(null);
+    this.select(bone);
   }
 
   /** Places the sectors on the selected bone at the current pose. */

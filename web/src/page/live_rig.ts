@@ -1,9 +1,11 @@
 // One loaded rig with everything made for it: the IK session (WebAssembly), the bone view, the
 // step-mode ghost, the joint-limit sectors and the skinned mesh. dispose() frees all of it;
-// create() frees what it made if any part fails, so a failed load leaks nothing.
+// create() frees what it made if any part fails, so a failed load leaks nothing. A rig the
+// importer recognised as a humanoid switches between its anatomical limits and the file's own.
 import type { Object3D } from 'three';
 
 import type { IkCoreModule } from '../ik/module.js';
+import type { RigSpec } from '../ik/rig_spec.js';
 import { LimitsView } from './limits_view.js';
 import type { LoadedRig } from './rig_source.js';
 import { RigView } from './rig_view.js';
@@ -11,22 +13,30 @@ import { IkSession } from './session.js';
 import type { SolverFactory } from './solver_port.js';
 import { type DragTolerances, dragTolerances, rigSize } from '../rig/tolerances.js';
 
+/** The loaded spec with its humanoid limits when `humanoid` is set and it has them, else as loaded. */
+function limitedSpec(loaded: LoadedRig, humanoid: boolean): RigSpec {
+  const limits = humanoid ? loaded.humanoidLimits : undefined;
+  return limits ? { ...loaded.spec, lower: limits.lower, upper: limits.upper } : loaded.spec;
+}
+
 export class LiveRig {
   /** Bone selected for the limits readout, or null. */
   selectedBone: number | null = null;
 
   private constructor(
     readonly loaded: LoadedRig,
-    readonly session: IkSession,
+    /** Replaced (the old one disposed) when the limits switch. */
+    public session: IkSession,
     readonly view: RigView,
     readonly ghost: RigView,
     readonly limits: LimitsView,
   ) {}
 
-  static async create(module: IkCoreModule, loaded: LoadedRig, makeSolver: SolverFactory, withMesh = true): Promise<LiveRig> {
+  /** `humanoid`: start with the humanoid limits if the rig has them (the panel's default). */
+  static async create(module: IkCoreModule, loaded: LoadedRig, makeSolver: SolverFactory, withMesh = true, humanoid = true): Promise<LiveRig> {
     const made: { dispose(): void }[] = [];
     try {
-      const session = new IkSession(module, loaded.spec, makeSolver);
+      const session = new IkSession(module, limitedSpec(loaded, humanoid), makeSolver);
       made.push(session);
       const poses = session.poses();
       const view = new RigView(loaded.spec, poses);
@@ -34,7 +44,7 @@ export class LiveRig {
       const ghost = new RigView(loaded.spec, poses, true);
       made.push(ghost);
       ghost.root.visible = false;
-      const limits = new LimitsView(loaded.spec, view.size);
+      const limits = new LimitsView(session.spec, view.size);
       made.push(limits);
       if (withMesh && loaded.makeMesh) view.attachMesh(await loaded.makeMesh());
       const live = new LiveRig(loaded, session, view, ghost, limits);
@@ -48,6 +58,24 @@ export class LiveRig {
 
   get name(): string {
     return this.loaded.name;
+  }
+
+  /** Whether the importer gave this rig humanoid limits to switch to. */
+  get hasHumanoidLimits(): boolean {
+    return this.loaded.humanoidLimits !== undefined;
+  }
+
+  /**
+   * Switches to the humanoid limits (on) or the file's own (off): a new session with the same
+   * effectors and targets, the pose clamped into the new limits. Solvers are made anew.
+   */
+  useHumanoidLimits(on: boolean): void {
+    const spec = limitedSpec(this.loaded, on);
+    const next = this.session.withLimits(spec.lower, spec.upper);
+    this.session.dispose();
+    this.session = next;
+    this.limits.useSpec(next.spec);
+    this.redraw();
   }
 
   /** The rig's drag tolerances (a tip distance and a gradient tolerance, see tolerances.ts). */

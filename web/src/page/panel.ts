@@ -11,6 +11,8 @@ export type ClickAction = 'toggle effector' | 'select only';
 
 export interface PageSettings {
   rig: string;
+  /** Anatomical limits for a rig recognised as a humanoid (else the file's own limits). */
+  humanoidLimits: boolean;
   method: Method;
   gradientTolerance: number;
   /** On target when every effector is within this distance of its target, rig units. */
@@ -34,6 +36,7 @@ export interface PageSettings {
 export interface PanelActions {
   rigChanged(key: string): void;
   openFile(): void;
+  limitsChanged(): void;
   methodChanged(): void;
   settingsChanged(): void;
   displayChanged(): void;
@@ -48,6 +51,7 @@ export interface PanelActions {
 export class Panel {
   readonly gui: GUI;
   private readonly rigController: Controller;
+  private readonly humanoidController: Controller;
 
   constructor(
     container: HTMLElement,
@@ -61,6 +65,8 @@ export class Panel {
     const rig = this.gui.addFolder('Rig');
     this.rigController = rig.add(s, 'rig', rigs).name('project rig').onChange((v: string) => actions.rigChanged(v));
     rig.add({ open: () => actions.openFile() }, 'open').name('open .glb / .gltf / .json…');
+    this.humanoidController = rig.add(s, 'humanoidLimits').name('humanoid limits').onChange(() => actions.limitsChanged());
+    this.humanoidController.hide();
     rig.add(s, 'showMesh').name('show mesh').onChange(() => actions.displayChanged());
     rig.add(s, 'showBones').name('show bones').onChange(() => actions.displayChanged());
     rig.add(s, 'clickBone', ['toggle effector', 'select only']).name('click on a bone');
@@ -97,6 +103,11 @@ export class Panel {
   showRig(key: string): void {
     this.settings.rig = key;
     this.rigController.updateDisplay();
+  }
+
+  /** Shows the humanoid-limits switch only for a rig that has humanoid limits. */
+  showHumanoidLimits(available: boolean): void {
+    this.humanoidController.show(available);
   }
 
   dispose(): void {

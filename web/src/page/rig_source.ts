@@ -5,6 +5,7 @@ import { GLTFLoader } from 'three/addons/loaders/GLTFLoader.js';
 import { MeshoptDecoder } from 'three/addons/libs/meshopt_decoder.module.js';
 
 import type { RigSpec } from '../ik/rig_spec.js';
+import type { RigLimits } from '../rig/humanoid_limits.js';
 import { loadRig, type GltfRigInfo, type SiblingReader } from '../rig/load_rig.js';
 import { bonesFromGltf } from '../three/find_bones.js';
 import { PoseWriter } from '../three/pose_writer.js';
@@ -49,6 +50,11 @@ export interface LoadedRig {
   /** True for the A7 course format (bones only). */
   a7: boolean;
   spec: RigSpec;
+  /**
+   * Anatomical limits (3 per bone, degrees) when the importer recognised a humanoid; the spec
+   * keeps the file's own (extras.ik or +-180). The panel's "humanoid limits" switches between them.
+   */
+  humanoidLimits?: RigLimits;
   /** Notes from the importer (defaults applied...), shown as text. */
   warnings: string[];
   /** Builds the skinned mesh bound to the rig; null for bones-only formats (A7) and too deep glTF trees. */
@@ -112,11 +118,13 @@ export async function readRig(bytes: Uint8Array, fileName: string, readSibling?:
   const rig = await loadRig(bytes, fileName, readSibling);
   const info = rig.gltf;
   const tooDeep = info !== undefined && info.treeDepth > MAX_MODEL_TREE_DEPTH;
+  const own = info?.fileLimits;
   return {
     name: rig.name,
     format: rig.format === 'a7' ? 'A7 JSON' : rig.format,
     a7: rig.format === 'a7',
-    spec: rig.spec,
+    spec: own ? { ...rig.spec, lower: own.lower, upper: own.upper } : rig.spec,
+    humanoidLimits: own ? { lower: rig.spec.lower, upper: rig.spec.upper } : undefined,
     warnings: tooDeep
       ? [...rig.warnings, `the node tree is ${info.treeDepth} levels deep, more than three.js's glTF loader takes (${MAX_MODEL_TREE_DEPTH}): showing the bones without the model`]
       : rig.warnings,

@@ -81,6 +81,19 @@ export class IkSession {
     this.disposeSolvers();
   }
 
+  /**
+   * A new session on the same skeleton with other limits (3 per bone, degrees): the same end
+   * effectors and targets, the pose clamped into the new limits. This session is left as it is
+   * (the caller disposes it).
+   */
+  withLimits(lower: Float64Array, upper: Float64Array): IkSession {
+    const next = new IkSession(this.rig.module, { ...this.spec, lower, upper }, this.makeSolver);
+    next.setEffectors(Array.from(this.effectors()));
+    next.angles = next.rig.project(this.angles);
+    next.targets = this.targets.slice();
+    return next;
+  }
+
   /** Back to the rest pose, targets on the rest tips. */
   reset(): void {
     this.stepping = null;

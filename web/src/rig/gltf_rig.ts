@@ -13,6 +13,7 @@ import { listed, shown } from './gltf_json.js';
 import { nodeLabel, readNodes, readSkins, worldMatrices, type GltfNode } from './gltf_nodes.js';
 import { checkRanges } from './gltf_ranges.js';
 import { checkReferences, readLists } from './gltf_references.js';
+import { humanoidLimits, type RigLimits } from './humanoid_limits.js';
 import { recognizeHumanoid } from './humanoid_recognition.js';
 import type { HumanoidMap } from './humanoid_roles.js';
 import { readIkExtras, type IkExtras } from './ik_extras.js';
@@ -39,6 +40,11 @@ export interface GltfRigInfo {
   treeDepth: number;
   /** Which bone plays which humanoid role (docs/gltf-ik-extras.md), or null for a rig that is no humanoid. */
   humanoid: HumanoidMap | null;
+  /**
+   * The file's own limits (extras.ik, else +-180), 3 per bone in degrees, when the spec carries
+   * the humanoid's anatomical limits instead (humanoid_limits.ts); null otherwise.
+   */
+  fileLimits: RigLimits | null;
   /** Things the user may want to know (defaults used, pose differs from bind pose...). */
   warnings: string[];
 }
@@ -139,6 +145,7 @@ export async function importGltfRig(bytes: Uint8Array, file: string, readSibling
     hasIkExtras: extras.some((e) => e !== undefined),
     treeDepth: nodeDepth.reduce((a, b) => Math.max(a, b), 0),
     humanoid: humanoid.map,
+    fileLimits: null,
     warnings: [...humanoid.notes],
   };
 
@@ -210,7 +217,24 @@ export async function importGltfRig(bytes: Uint8Array, file: string, readSibling
   spec.effectors = Int32Array.from(effectors);
   const offRoot = rootChainEffectors(effectors, parents).map((b) => spec.names[b]);
   if (offRoot.length) info.warnings.push(grouped('end effector', offRoot, 'moved by the root bone alone, so dragging swings the whole body'));
-  if (!info.hasIkExtras) info.warnings.push(`no IK extras: every angle is limited to +-${DEFAULT_LIMIT_DEG} degrees`);
+  // A humanoid gets anatomical limits on its mapped bones (limits given in extras.ik win; a rig
+  // that gives them for every mapped bone is left as it is).
+  const explicit = extras.map((e) => e?.min !== undefined || e?.max !== undefined);
+  const mapped = info.humanoid ? Object.values(info.humanoid.bones) : [];
+  if (info.humanoid && mapped.some((b) => !explicit[b])) {
+    const anatomy = humanoidLimits(spec, info.humanoid, explicit);
+    info.fileLimits = { lower: spec.lower, upper: spec.upper };
+    spec.lower = anatomy.lower;
+    spec.upper = anatomy.upper;
+    info.warnings.push(...anatomy.notes);
+  }
+
+  if (!info.hasIkExtras)
+    info.warnings.push(
+      info.humanoid
+        ? `no IK extras: anatomical limits on the humanoid's bones, +-${DEFAULT_LIMIT_DEG} degrees on the others`
+        : `no IK extras: every angle is limited to +-${DEFAULT_LIMIT_DEG} degrees`,
+    );
 
   // Inverse bind matrices: read (so a missing buffer or NaN is an error) and compared with the pose.
   const buffers = new BufferCache(container, lists, file, readSibling);
