@@ -28,12 +28,9 @@ export interface RigLimits {
 
 /** The limits (the spec's own where unchanged) and what was found and done, for the user. */
 export interface HumanoidLimits extends RigLimits {
-  /** Facing, reverse joints, turned bend planes, limits kept from extras.ik. */
+  /** Facing, reverse joints, limits kept from extras.ik (for the user; a bend plane turned from the local z is routine, not noted). */
   notes: string[];
 }
-
-/** A bend plane turned by at least this from the local z (degrees) is listed in the notes. */
-const NOTED_TURN = 10;
 
 /** The angle (degrees, in (-180, 180]) about bone i's x axis from its local z to `axis` taken across x. */
 export function planeTurn(spec: RigSpec, i: number, axis: Vec3): number {
@@ -67,17 +64,15 @@ interface BoneLimits {
   upper: Vec3;
   /** The rest pose bends this knee or elbow the other way than the facing says. */
   reversed: boolean;
-  /** phi: the bend plane's turn from the local z about the bone, degrees. */
-  turn: number;
 }
 
 /** One mapped bone's limits (see BoneLimits); a fixed joint's are all 0. */
 function boneLimits(spec: RigSpec, map: HumanoidMap, role: HumanoidRole, bone: number, frame: BodyFrame): BoneLimits {
   const range = JOINT_RANGES[jointOf(role)];
-  if (range.twist === 0 && range.bend[0] === 0 && range.bend[1] === 0) return { lower: [0, 0, 0], upper: [0, 0, 0], reversed: false, turn: 0 };
+  if (range.twist === 0 && range.bend[0] === 0 && range.bend[1] === 0) return { lower: [0, 0, 0], upper: [0, 0, 0], reversed: false };
   const bend = bendAxis(spec, map, role, bone, frame);
   const limits = turnedLimits(planeTurn(spec, bone, bend.axis), range);
-  return { ...limits, reversed: bend.reversed, turn: limits.lower[0] + range.twist };
+  return { ...limits, reversed: bend.reversed };
 }
 
 /**
@@ -90,7 +85,7 @@ function boneLimits(spec: RigSpec, map: HumanoidMap, role: HumanoidRole, bone: n
 export function humanoidLimits(spec: RigSpec, map: HumanoidMap, explicit: readonly boolean[]): HumanoidLimits {
   const lower = spec.lower.slice(), upper = spec.upper.slice();
   const frame = bodyFrame(spec, map);
-  const kept: string[] = [], reversed: string[] = [], turned: string[] = [];
+  const kept: string[] = [], reversed: string[] = [];
   for (const role of HUMANOID_ROLES) {
     const bone = map.bones[role];
     if (bone === undefined) continue;
@@ -103,15 +98,9 @@ export function humanoidLimits(spec: RigSpec, map: HumanoidMap, explicit: readon
     lower.set(limits.lower, 3 * bone);
     upper.set(limits.upper, 3 * bone);
     if (limits.reversed) reversed.push(name);
-    if (Math.abs(limits.turn) >= NOTED_TURN) turned.push(`${name} ${Math.round(limits.turn)}°`);
   }
   const notes = [`humanoid limits: the character faces ${describeDirection(frame.forward)} (from the ${frame.facingFrom})`];
   if (reversed.length) notes.push(`bent the other way in the rest pose, so limited that way: ${reversed.join(', ')}`);
-  if (turned.length)
-    notes.push(
-      `${turned.length} bones bend about an axis other than their local Z: their a0 and a2 limits are offset by the angle between them ` +
-        `(a0 + phi, a2 - phi; ${turned.slice(0, 3).join(', ')}${turned.length > 3 ? ', …' : ''})`,
-    );
   if (kept.length) notes.push(`extras.ik limits kept: ${kept.join(', ')}`);
   return { lower, upper, notes };
 }
