@@ -54,7 +54,7 @@ async function namingRig<T>(entry: string, work: () => T | Promise<T>): Promise<
 
 /** One rig of prepareRigs. */
 async function prepareRig(entry: string, opts: BenchOptions, ik: IkCoreModule): Promise<PreparedRig> {
-  const rig = await loadBenchRig(entry);
+  const rig = await loadBenchRig(entry, opts.humanoidLimits);
   const core = new IkRig(ik, rig.spec);
   let size: number, reachSteps: number;
   try {

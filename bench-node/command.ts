@@ -85,6 +85,7 @@ async function main(argv: string[], io: CommandIo): Promise<number> {
     seed: opts.seed,
     timeoutSeconds: opts.timeoutSeconds,
     paper: opts.paper,
+    humanoidLimits: opts.humanoidLimits,
     rigs: rigs.map((r) => ({
       rig: r.name,
       path: r.path,

@@ -30,6 +30,8 @@ export interface BenchOptions {
   ftol?: number;
   timeoutSeconds: number;
   paper: boolean;
+  /** A recognised humanoid's anatomical limits (the importer's default); false: the file's own (extras.ik or +-180). */
+  humanoidLimits: boolean;
   engines: Engine[];
   workers: number;
   json?: string;
@@ -131,6 +133,7 @@ function program(): Command {
     .option('--ftol <y>', 'E tolerance, also the success threshold (default: per rig; drag and reach: a tip distance, see README)')
     .option('--timeout <seconds>', `time budget per solve (at most ${MAX_TIMEOUT_SECONDS})`, '1')
     .option('--paper', "the report's original algorithms (solver paper mode)", false)
+    .option('--no-humanoid-limits', "a recognised humanoid keeps the file's own limits (extras.ik or +-180) instead of anatomical ones")
     .option('--engine <list>', 'wasm, native, or both (prints the ratio)', 'wasm')
     .option('--workers <n>', `worker threads (native: processes), at most ${MAX_WORKERS}`, String(Math.min(availableParallelism(), MAX_WORKERS)))
     .option('--json <file>', 'write the rows as JSON')
@@ -153,6 +156,7 @@ interface RawOptions {
   ftol?: string;
   timeout: string;
   paper: boolean;
+  humanoidLimits: boolean;
   engine: string;
   workers: string;
   json?: string;
@@ -194,6 +198,7 @@ export function parseOptions(argv: string[], isTTY: boolean): BenchOptions | und
     ftol: raw.ftol === undefined ? undefined : positiveNumber('--ftol', raw.ftol),
     timeoutSeconds: positiveNumber('--timeout', raw.timeout, MAX_TIMEOUT_SECONDS),
     paper: raw.paper,
+    humanoidLimits: raw.humanoidLimits,
     engines: pick('--engine', raw.engine, engines, 'engine'),
     workers: integerIn('--workers', raw.workers, 1, MAX_WORKERS, ` (${WORKERS_PER_CORE} per core, ${WORKERS_CAP} at most)`),
     json: fileName('--json', raw.json),

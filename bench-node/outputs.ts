@@ -20,6 +20,8 @@ export interface RunInfo {
   seed: number;
   timeoutSeconds: number;
   paper: boolean;
+  /** Anatomical limits on recognised humanoids (false: --no-humanoid-limits). */
+  humanoidLimits: boolean;
   /** Per rig: size and the tolerances used (dragGtol, tipTolerance: drag and reach's; tipTolerance 0: E < ftol). */
   rigs: Array<{
     rig: string;

@@ -53,15 +53,20 @@ export function resolveRigPaths(entries: readonly string[]): string[] {
   });
 }
 
-/** Reads a rig file (A7 .json, .glb or .gltf). Throws BenchError with one line naming the entry on failure. */
-export async function loadBenchRig(entry: string): Promise<BenchRig> {
+/**
+ * Reads a rig file (A7 .json, .glb or .gltf). `humanoidLimits` false: a recognised humanoid keeps
+ * the file's own limits. Throws BenchError with one line naming the entry on failure.
+ */
+export async function loadBenchRig(entry: string, humanoidLimits = true): Promise<BenchRig> {
   const path = resolveRigPath(entry);
   const ext = extname(path).toLowerCase();
   if (!['.json', '.glb', '.gltf'].includes(ext))
     throw new BenchError(`${entry}: unknown rig format "${ext}" (expected .glb, .gltf or A7 .json)`);
   try {
     const loaded = await loadRigFromPath(path);
-    return { name: loaded.name, path, format: loaded.format, spec: loaded.spec };
+    const own = humanoidLimits ? null : loaded.gltf?.fileLimits;
+    const spec = own ? { ...loaded.spec, lower: own.lower, upper: own.upper } : loaded.spec;
+    return { name: loaded.name, path, format: loaded.format, spec };
   } catch (e) {
     const message = errorLine(e);
     throw new BenchError(`${entry}: ${message.startsWith(`${path}: `) ? message.slice(path.length + 2) : message}`);
