@@ -2,7 +2,8 @@
 // real mouse events on the page's gizmo: the README's knight drag ends on target; lifting the
 // character's foot straight up bends the leg and the foot follows within the tip tolerance at
 // every step while the hands and the head stay on theirs; a target dragged past a limb's reach
-// ends at the closest point and says so. Writes docs/foot-lift.png when UPDATE_SCREENSHOT=1.
+// ends at the closest point and says so. With the humanoid limits and without them (the README's
+// before and after); writes docs/foot-lift.png and docs/foot-lift-free.png when UPDATE_SCREENSHOT=1.
 import { mkdirSync } from 'node:fs';
 import { join } from 'node:path';
 
@@ -48,9 +49,15 @@ describe('dragging from the rest pose', () => {
     expect(errors).toEqual([]);
   });
 
-  it("lifting the character's foot by 30% of its height: the foot follows at every step, hands and head stay", async (ctx) => {
+  it.for([
+    ['humanoid limits', true, 'docs/foot-lift.png'],
+    ['+-180 limits (the switch off)', false, 'docs/foot-lift-free.png'],
+  ] as const)("lifting the character's foot by 0.3 of its height with %s: the foot follows at every step, hands and head stay", async ([, humanoid, docsShot], ctx) => {
     const { page, errors } = await openPage(env.browser, ctx);
     await gotoRig(page, env.url, 'character');
+    const toggle = page.locator('.lil-controller', { has: page.locator('.lil-name', { hasText: /^humanoid limits$/ }) }).locator('input');
+    expect(await toggle.isChecked()).toBe(true); // a recognised humanoid starts with anatomical limits
+    if (!humanoid) await toggle.click();
     const names = await page.evaluate(() => {
       const p = window.ikPage;
       return (p?.effectors() ?? []).map((b) => p?.boneNames()[b] ?? '');
@@ -109,10 +116,10 @@ describe('dragging from the rest pose', () => {
     // Orbit to a side view (drag on empty ground) so that the picture shows the bent leg.
     await page.mouse.move(800, 650);
     await page.mouse.down();
-    await page.mouse.move(800 - 300, 650, { steps: 10 });
+    await page.mouse.move(800 - 100, 650, { steps: 10 });
     await page.mouse.up();
     await page.waitForTimeout(200);
-    const shot = process.env.UPDATE_SCREENSHOT === '1' ? 'docs/foot-lift.png' : 'test-results/foot-lift.png';
+    const shot = process.env.UPDATE_SCREENSHOT === '1' ? docsShot : `test-results/${docsShot.slice(5)}`;
     mkdirSync(join(repoRoot, shot, '..'), { recursive: true });
     await page.screenshot({ path: join(repoRoot, shot) });
     expect(errors).toEqual([]);
