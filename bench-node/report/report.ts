@@ -25,9 +25,11 @@ const argAt = process.argv.indexOf('--samples');
 const samples = argAt > 0 ? Number(process.argv[argAt + 1]) : 1000;
 const gdSamples = Math.min(100, samples);
 const a7Names = ['ikea-lamp', 'robot-arm', 'knight', 'chimpanzee-hand', 'beast'];
-const a7 = a7Names.map((n) => `../shared/rigs/a7/${n}.json`);
+// The report's rigs and, beside them, its paper folder (scripts/bench-report.sh checks they exist).
+const a7Dir = process.env.IK_A7_DIR || '../shared/rigs/a7';
+const a7 = a7Names.map((n) => join(a7Dir, `${n}.json`));
 const projectRigs = ['lamp', 'robot-arm', 'knight', 'hand', 'beast', 'character'];
-const original = '../shared/paper/original-measured.csv';
+const original = join(a7Dir, '../../paper/original-measured.csv');
 const work = join(tmpdir(), `ik-bench-report-${process.pid}`);
 mkdirSync(work, { recursive: true });
 mkdirSync('docs', { recursive: true });

@@ -5,8 +5,7 @@ import { describe, expect, it } from 'vitest';
 
 import { compareTable, findReference, parseReferenceCsv, readReferenceCsv } from '../../bench-node/compare.js';
 import type { Row } from '../../bench-node/metrics.js';
-
-const paperDir = resolve(import.meta.dirname, '../../../shared/paper');
+import { needsA7, paperDir } from '../helpers/a7.js';
 
 const ours = (over: Partial<Row>): Row => ({
   rig: 'knight', experiment: 'random', method: 'gn', engine: 'wasm', samples: 300,
@@ -17,7 +16,7 @@ const ours = (over: Partial<Row>): Row => ({
 });
 
 describe('reference CSVs', () => {
-  it('reads the report table (with a bones column) and the re-measured one (with samples)', () => {
+  it('reads the report table (with a bones column) and the re-measured one (with samples)', needsA7, () => {
     const report = readReferenceCsv(resolve(paperDir, 'results.csv'));
     const measured = readReferenceCsv(resolve(paperDir, 'original-measured.csv'));
     expect(report).toHaveLength(30);

@@ -11,7 +11,8 @@ import { generateTargets } from '../../bench-node/targets.js';
 import type { IkCoreModule } from '../../web/src/ik/module.js';
 import { loadIkNode } from '../../web/src/ik/node.js';
 import { IkRig } from '../../web/src/ik/rig.js';
-import { a7Names, loadA7, seeded } from '../helpers/a7.js';
+import { defaultTolerances, rigSize } from '../../web/src/rig/tolerances.js';
+import { loadTestRig, seeded, testRigs, type TestRig } from '../helpers/a7.js';
 
 let ik: IkCoreModule;
 const rigs: IkRig[] = [];
@@ -73,22 +74,19 @@ describe('Euler XYZ box for CCD', () => {
   });
 });
 
-const settingsFor = (name: string, method: string): RunSettings => ({
-  method,
-  gtol: 1e-4,
-  ftol: name === 'beast' ? 0.002 : 2e-4,
-  tipTolerance: 0,
-  timeoutSeconds: 1,
-  paper: false,
-  rigSize: name === 'beast' ? 345 : 1,
-});
+/** The benchmark's settings for the random and incremental experiments (bench-node/rigs.ts). */
+function settingsFor(testRig: TestRig, rig: IkRig, method: string): RunSettings {
+  const size = rigSize(rig.boneTips(new Float64Array(rig.numAngles)));
+  const { gtol, ftol } = defaultTolerances(testRig.name, testRig.a7, size);
+  return { method, gtol, ftol, tipTolerance: 0, timeoutSeconds: 1, paper: false, rigSize: size };
+}
 
-describe.each(a7Names)('peers on %s', (name) => {
+describe.each(testRigs)('peers on $label', (testRig) => {
   it.each(['three-ccd', 'closed-chain-ik'])('%s: a solve from the target pose stops at once; incremental targets converge', (method) => {
-    const spec = loadA7(name);
+    const spec = loadTestRig(testRig);
     const rig = new IkRig(ik, spec);
     rigs.push(rig);
-    const settings = settingsFor(name, method);
+    const settings = settingsFor(testRig, rig, method);
     const runner = method === 'three-ccd' ? new ThreeCcdRunner(spec, settings) : new ClosedChainIkRunner(spec, settings);
     const set = generateTargets(spec, 'incremental', 20, 3, (a) => rig.tips(a));
     const m = set.numAngles, r = set.numResiduals;
@@ -108,7 +106,7 @@ describe.each(a7Names)('peers on %s', (name) => {
     // Quality is the benchmark's business; here only that the adapters work: every solve ends no
     // worse than it started (to rounding), and most converge (CCD with its Euler box fails often on beast).
     expect(improved).toBe(set.count);
-    expect(converged).toBeGreaterThanOrEqual(name === 'beast' && method === 'three-ccd' ? 1 : 12);
+    expect(converged).toBeGreaterThanOrEqual(testRig.name === 'beast' && method === 'three-ccd' ? 1 : 12);
     runner.dispose();
   });
 });

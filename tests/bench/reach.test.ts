@@ -9,7 +9,7 @@ import type { IkCoreModule } from '../../web/src/ik/module.js';
 import { loadIkNode } from '../../web/src/ik/node.js';
 import { IkRig } from '../../web/src/ik/rig.js';
 import type { RigSpec } from '../../web/src/ik/rig_spec.js';
-import { a7Names, loadA7, maxAbsDiff, referenceTips, seeded } from '../helpers/a7.js';
+import { loadTestRig, maxAbsDiff, referenceTips, seeded, testRigs } from '../helpers/a7.js';
 import { sketchRig, straightLimb } from '../helpers/rig_builder.js';
 
 let ik: IkCoreModule;
@@ -89,9 +89,9 @@ describe('orthonormal frame', () => {
   });
 });
 
-describe.each(a7Names)('reach on %s', (name) => {
+describe.each(testRigs)('reach on $label', (testRig) => {
   it('3 straight paths of 40 equal steps per draggable effector, from the rest pose, the others pinned', () => {
-    const spec = loadA7(name);
+    const spec = loadTestRig(testRig);
     const rig = new IkRig(ik, spec);
     rigs.push(rig);
     const set = generateTargets(spec, 'reach', 100000, 1, (a) => rig.tips(a));

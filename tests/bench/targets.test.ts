@@ -16,7 +16,7 @@ import type { IkCoreModule } from '../../web/src/ik/module.js';
 import { loadIkNode } from '../../web/src/ik/node.js';
 import { IkRig } from '../../web/src/ik/rig.js';
 import type { RigSpec } from '../../web/src/ik/rig_spec.js';
-import { a7Names, loadA7, maxAbsDiff, referenceTips } from '../helpers/a7.js';
+import { loadTestRig, maxAbsDiff, referenceTips, rigsLike, testRigs, type TestRig } from '../helpers/a7.js';
 
 let ik: IkCoreModule;
 const rigs: IkRig[] = [];
@@ -26,8 +26,8 @@ beforeAll(async () => {
 });
 afterAll(() => rigs.forEach((r) => r.dispose()));
 
-function setOf(name: string, experiment: Experiment, count: number, seed = 7): { spec: RigSpec; set: TargetSet } {
-  const spec = loadA7(name);
+function setOf(testRig: TestRig, experiment: Experiment, count: number, seed = 7): { spec: RigSpec; set: TargetSet } {
+  const spec = loadTestRig(testRig);
   const rig = new IkRig(ik, spec);
   rigs.push(rig);
   return { spec, set: generateTargets(spec, experiment, count, seed, (a) => rig.tips(a)) };
@@ -36,11 +36,8 @@ function setOf(name: string, experiment: Experiment, count: number, seed = 7): {
 const row = (a: Float64Array, k: number, width: number): Float64Array => a.subarray(k * width, (k + 1) * width);
 
 function expectInsideLimits(spec: RigSpec, angles: Float64Array): void {
-  for (let i = 0; i < angles.length; i++) {
-    const j = i % spec.lower.length;
-    expect(angles[i]).toBeGreaterThanOrEqual(spec.lower[j]);
-    expect(angles[i]).toBeLessThanOrEqual(spec.upper[j]);
-  }
+  const m = spec.lower.length;
+  expect(angles.filter((a, i) => !(a >= spec.lower[i % m] && a <= spec.upper[i % m]))).toEqual(new Float64Array(0));
 }
 
 function expectReachable(spec: RigSpec, set: TargetSet): void {
@@ -52,9 +49,9 @@ function expectReachable(spec: RigSpec, set: TargetSet): void {
   }
 }
 
-describe.each(a7Names)('%s', (name) => {
+describe.each(testRigs)('$label', (testRig) => {
   it('random: A_k = P(360 U(-1,1)) inside the limits, x_b = x(A_k), starts at the rest pose', () => {
-    const { spec, set } = setOf(name, 'random', 40);
+    const { spec, set } = setOf(testRig, 'random', 40);
     expectInsideLimits(spec, set.targetAngles!);
     expectReachable(spec, set);
     const rest = Float64Array.from(spec.lower, (lo, i) => Math.min(spec.upper[i], Math.max(lo, 0)));
@@ -65,7 +62,7 @@ describe.each(a7Names)('%s', (name) => {
   });
 
   it('incremental: steps of at most 5 degrees per angle, start k = A_(k-1), A_0 = rest', () => {
-    const { spec, set } = setOf(name, 'incremental', 200);
+    const { spec, set } = setOf(testRig, 'incremental', 200);
     const m = set.numAngles;
     expectInsideLimits(spec, set.targetAngles!);
     expectReachable(spec, set);
@@ -80,7 +77,7 @@ describe.each(a7Names)('%s', (name) => {
   });
 
   it('drag: one effector moves along a path, every other target stays where it was', () => {
-    const { spec, set } = setOf(name, 'drag', 2 * DRAG_PATH_STEPS + 5);
+    const { spec, set } = setOf(testRig, 'drag', 2 * DRAG_PATH_STEPS + 5);
     const m = set.numAngles, r = set.numResiduals;
     expectInsideLimits(spec, set.targetAngles!);
     expectReachable(spec, set);
@@ -111,18 +108,18 @@ describe.each(a7Names)('%s', (name) => {
 });
 
 describe('seeds', () => {
-  it('the same seed gives the same set; another seed another set', () => {
-    const a = setOf('knight', 'random', 10, 3).set;
-    const b = setOf('knight', 'random', 10, 3).set;
-    const c = setOf('knight', 'random', 10, 4).set;
+  it.each(rigsLike('knight'))('the same seed gives the same set; another seed another set ($label)', (knight) => {
+    const a = setOf(knight, 'random', 10, 3).set;
+    const b = setOf(knight, 'random', 10, 3).set;
+    const c = setOf(knight, 'random', 10, 4).set;
     expect(Array.from(b.targets)).toEqual(Array.from(a.targets));
     expect(Array.from(c.targets)).not.toEqual(Array.from(a.targets));
   });
 
-  it('a shorter run is a prefix of a longer one (a method with fewer samples gets the first ones)', () => {
+  it.each(rigsLike('beast'))('a shorter run is a prefix of a longer one (a method with fewer samples gets the first ones) ($label)', (beast) => {
     for (const experiment of ['random', 'incremental', 'drag', 'reach'] as const) {
-      const long = setOf('beast', experiment, 90).set;
-      const short = setOf('beast', experiment, 50).set;
+      const long = setOf(beast, experiment, 90).set;
+      const short = setOf(beast, experiment, 50).set;
       const head = prefix(long, 50);
       expect(Array.from(short.targets)).toEqual(Array.from(head.targets));
       expect(Array.from(short.starts)).toEqual(Array.from(head.starts));
@@ -130,13 +127,13 @@ describe('seeds', () => {
     }
   });
 
-  it('each experiment has its own stream: random targets do not depend on which experiments run', () => {
+  it.each(rigsLike('knight'))('each experiment has its own stream: random targets do not depend on which experiments run ($label)', (knight) => {
     // generateTargets takes no state but (spec, experiment, count, seed): generating another
     // experiment in between changes nothing.
-    const first = setOf('knight', 'random', 10).set;
-    setOf('knight', 'incremental', 10);
-    const again = setOf('knight', 'random', 10).set;
+    const first = setOf(knight, 'random', 10).set;
+    setOf(knight, 'incremental', 10);
+    const again = setOf(knight, 'random', 10).set;
     expect(Array.from(again.targets)).toEqual(Array.from(first.targets));
-    expect(Array.from(setOf('knight', 'incremental', 10).set.targetAngles!)).not.toEqual(Array.from(first.targetAngles!));
+    expect(Array.from(setOf(knight, 'incremental', 10).set.targetAngles!)).not.toEqual(Array.from(first.targetAngles!));
   });
 });

@@ -1,13 +1,24 @@
-// Test helpers: the report's rigs read from the read-only ../shared folder, seeded random
-// numbers, and the reference composition of PROTOCOL.md in plain 4x4 matrices.
+// Test helpers: the rigs the tests run on, seeded random numbers, and the reference composition
+// of PROTOCOL.md in plain 4x4 matrices.
+//
+// Two sets of rigs in A7 format: the project's own (wasm/tests/rigs, written from the models by
+// scripts/write-test-rigs.ts), always there, and the report's five A7 rigs from a7Dir
+// (a7_folder.ts), when that folder exists. Tests of a general property run on testRigs; tests
+// whose expectations belong to the report's rigs take the options needsA7, which skip them
+// without the folder (and fail them under CI).
 import { readFileSync } from 'node:fs';
 import { resolve } from 'node:path';
 
+import { testRigNames, testRigsDir } from '../../scripts/write-test-rigs.js';
 import type { RigSpec } from '../../web/src/ik/rig_spec.js';
 import { parseA7Rig } from '../../web/src/rig/a7_rig.js';
+import { A7_TAG, a7Dir, a7Present } from './a7_folder.js';
 
-export const a7Dir = process.env.IK_A7_DIR ?? resolve(import.meta.dirname, '../../../shared/rigs/a7');
+export { a7Dir };
 export const a7Names = ['ikea-lamp', 'robot-arm', 'knight', 'chimpanzee-hand', 'beast'] as const;
+
+/** Test options of a suite or test that reads the A7 rigs: describe(name, needsA7, fn). */
+export const needsA7 = { tags: [A7_TAG] };
 
 export function a7Path(name: string): string {
   return resolve(a7Dir, `${name}.json`);
@@ -16,6 +27,40 @@ export function a7Path(name: string): string {
 export function loadA7(name: string): RigSpec {
   const path = a7Path(name);
   return parseA7Rig(readFileSync(path, 'utf8'), path);
+}
+
+/** The report's paper folder (original-measured.csv, results.csv), beside the A7 rigs. */
+export const paperDir = resolve(a7Dir, '../../paper');
+
+export interface TestRig {
+  /** The file's base name: "knight". */
+  name: string;
+  /** One of the report's rigs, else the project's own. */
+  a7: boolean;
+  /** "A7 knight" or "project knight". */
+  label: string;
+  path: string;
+}
+
+/** The project's rigs, then the report's when a7Dir exists. */
+export const testRigs: readonly TestRig[] = [
+  ...testRigNames.map((name) => ({ name, a7: false, label: `project ${name}`, path: resolve(testRigsDir, `${name}.json`) })),
+  ...(a7Present ? a7Names.map((name) => ({ name, a7: true, label: `A7 ${name}`, path: a7Path(name) })) : []),
+];
+
+const projectCounterparts: Record<string, string> = { 'ikea-lamp': 'lamp', 'chimpanzee-hand': 'hand' };
+
+/**
+ * The project's counterpart of the report's rig `a7Name` ("ikea-lamp" -> lamp), and that rig too
+ * when a7Dir exists: for tests of a general property written for one rig.
+ */
+export function rigsLike(a7Name: (typeof a7Names)[number]): TestRig[] {
+  const project = projectCounterparts[a7Name] ?? a7Name;
+  return testRigs.filter((r) => r.name === (r.a7 ? a7Name : project));
+}
+
+export function loadTestRig(rig: TestRig): RigSpec {
+  return parseA7Rig(readFileSync(rig.path, 'utf8'), rig.path);
 }
 
 /** A small seeded generator (mulberry32) returning numbers in [0, 1). */

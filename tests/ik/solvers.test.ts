@@ -1,12 +1,14 @@
 // The solvers through WebAssembly in Node: every method on the report's incremental targets
-// (PROTOCOL.md) on the five A7 rigs, and the contract of the binding (options, errors, stepping).
+// (PROTOCOL.md) on the project's rigs and the five A7 rigs, and the contract of the binding
+// (options, errors, stepping).
 import { beforeAll, describe, expect, it } from 'vitest';
 
 import type { IkCoreModule } from '../../web/src/ik/module.js';
 import { loadIkNode } from '../../web/src/ik/node.js';
 import { IkRig } from '../../web/src/ik/rig.js';
 import { IkSolver, SOLVER_METHODS, type SolverOptions } from '../../web/src/ik/solver.js';
-import { a7Names, loadA7, randomAngles, seeded } from '../helpers/a7.js';
+import { defaultTolerances, rigSize } from '../../web/src/rig/tolerances.js';
+import { loadTestRig, randomAngles, rigsLike, seeded, testRigs, type TestRig } from '../helpers/a7.js';
 import { disposeAfterAll } from '../helpers/owned.js';
 
 let ik: IkCoreModule;
@@ -17,10 +19,11 @@ beforeAll(async () => {
 });
 
 
-/** The report's tolerances: beast (0.01, 0.002), every other rig (1e-4, 2e-4); no time budget. */
-function reportOptions(rig: string): SolverOptions & { errorTolerance: number } {
-  const beast = rig === 'beast';
-  return { gradientTolerance: beast ? 0.01 : 1e-4, errorTolerance: beast ? 0.002 : 2e-4, timeBudgetSeconds: 0 };
+/** The report's tolerances of `testRig` (web/src/rig/tolerances.ts); no time budget. */
+function reportOptions(testRig: TestRig, rig: IkRig): SolverOptions & { errorTolerance: number } {
+  const size = rigSize(rig.boneTips(new Float64Array(rig.numAngles)));
+  const { gtol, ftol } = defaultTolerances(testRig.name, testRig.a7, size);
+  return { gradientTolerance: gtol, errorTolerance: ftol, timeBudgetSeconds: 0 };
 }
 
 interface TargetCase {
@@ -63,11 +66,11 @@ describe('the methods', () => {
   });
 });
 
-describe.each(a7Names)('%s: incremental targets through WebAssembly', (name) => {
+describe.each(testRigs)('$label: incremental targets through WebAssembly', (testRig) => {
   it.each([...SOLVER_METHODS])('%s solves them to the report tolerances, inside the limits', (method) => {
-    const rig = keep(new IkRig(ik, loadA7(name)));
+    const rig = keep(new IkRig(ik, loadTestRig(testRig)));
     const expectation = expectations[method];
-    const options = { ...reportOptions(name), maxIterations: expectation.maxIterations };
+    const options = { ...reportOptions(testRig, rig), maxIterations: expectation.maxIterations };
     const solver = keep(new IkSolver(rig, method, options));
     const cases = incrementalTargets(rig, expectation.samples, 41);
     let successes = 0;
@@ -84,8 +87,8 @@ describe.each(a7Names)('%s: incremental targets through WebAssembly', (name) => 
 });
 
 describe('the Solver binding', () => {
-  it('fills in defaults and reports the options of the current solve', () => {
-    const rig = keep(new IkRig(ik, loadA7('knight')));
+  it.each(rigsLike('knight'))('fills in defaults and reports the options of the current solve ($label)', (testRig) => {
+    const rig = keep(new IkRig(ik, loadTestRig(testRig)));
     const solver = keep(new IkSolver(rig));
     expect(solver.method).toBe('lm');
     const o = solver.options();
@@ -96,11 +99,11 @@ describe('the Solver binding', () => {
     expect(solver.options()).toMatchObject({ maxIterations: 3, restarts: 2, gradientTolerance: 1e-4 });
   });
 
-  it('stepping gives the same solve as solve(), with E per iteration', () => {
-    const rig = keep(new IkRig(ik, loadA7('beast')));
-    // Without restarts (of the whole pose or of a chain): one iteration per step, and the last
-    // iterate is the best point.
-    const options = { ...reportOptions('beast'), restarts: 0, chainRestarts: 0 };
+  it.each(rigsLike('beast'))('stepping gives the same solve as solve(), with E per iteration ($label)', (testRig) => {
+    const rig = keep(new IkRig(ik, loadTestRig(testRig)));
+    // Without restarts (of the whole pose or of a chain) or saddle escapes (each one more
+    // iteration within a step): one iteration per step, and the last iterate is the best point.
+    const options = { ...reportOptions(testRig, rig), restarts: 0, chainRestarts: 0, escapeSaddles: false };
     const stepped = keep(new IkSolver(rig, 'gn', options));
     const solved = keep(new IkSolver(rig, 'gn', options));
     const rand = seeded(5);
@@ -123,16 +126,17 @@ describe('the Solver binding', () => {
     }
   });
 
-  it('turns bad input into Errors with the message', () => {
-    const rig = keep(new IkRig(ik, loadA7('ikea-lamp')));
+  it.each(rigsLike('ikea-lamp'))('turns bad input into Errors with the message ($label)', (testRig) => {
+    const rig = keep(new IkRig(ik, loadTestRig(testRig)));
     const a = new Float64Array(rig.numAngles), t = rig.tips(a);
+    const m = a.length, r = t.length;
     expect(() => new IkSolver(rig, 'simplex')).toThrow(/unknown solver method "simplex" \(known: lm, gn, bfgs, newton, gd\)/);
     expect(() => new IkSolver(rig, 'lm', { maxIteration: 3 } as SolverOptions)).toThrow(/unknown solver option "maxIteration"/);
     expect(() => new IkSolver(rig, 'lm', { maxIterations: 2.5 })).toThrow(/maxIterations must be an integer/);
     expect(() => new IkSolver(rig, 'lm', { paperMode: 1 } as unknown as SolverOptions)).toThrow(/paperMode must be true or false/);
     const solver = keep(new IkSolver(rig, 'bfgs'));
-    expect(() => solver.solve(a, t.slice(1))).toThrow(/target has 2 values, expected 3/);
-    expect(() => solver.solve(new Float64Array(rig.numAngles + 3), t)).toThrow(/angles has 18 values, expected 15/);
+    expect(() => solver.solve(a, t.slice(1))).toThrow(`target has ${r - 1} values, expected ${r}`);
+    expect(() => solver.solve(new Float64Array(m + 3), t)).toThrow(`angles has ${m + 3} values, expected ${m}`);
     expect(() => solver.solve(a, t.map((x, i) => (i === 1 ? NaN : x)))).toThrow(/target\[1\] is NaN, not a finite number/);
     expect(() => solver.start(a.map((x, i) => (i === 2 ? Infinity : x)), t)).toThrow(/angles\[2\] is Infinity, not a finite number/);
     solver.setOptions({ errorTolerance: -1 });
@@ -141,40 +145,42 @@ describe('the Solver binding', () => {
     expect(solver.solve(a, t).stopReason).toBe('converged_E');
   });
 
-  it('follows the rig when its end effectors change', () => {
-    const rig = keep(new IkRig(ik, loadA7('knight')));
-    const solver = keep(new IkSolver(rig, 'lm', reportOptions('knight')));
+  it.each(rigsLike('knight'))('follows the rig when its end effectors change ($label)', (testRig) => {
+    const rig = keep(new IkRig(ik, loadTestRig(testRig)));
+    const solver = keep(new IkSolver(rig, 'lm', reportOptions(testRig, rig)));
     const [c] = incrementalTargets(rig, 1, 7);
     expect(solver.solve(c.start, c.target).stopReason).toBe('converged_E');
-    rig.setEffectors([18, 14]);
-    expect(() => solver.solve(c.start, c.target)).toThrow(/target has 15 values, expected 6/);
+    const all = Array.from(rig.effectors());
+    rig.setEffectors(all.slice(0, 2));
+    expect(() => solver.solve(c.start, c.target)).toThrow(`target has ${c.target.length} values, expected 6`);
     const goal = rig.project(c.start.map((x) => x + 3));
     const r = solver.solve(c.start, rig.tips(goal));
     expect(r.stopReason).toBe('converged_E');
-    rig.setEffectors([18, 14, 8, 3, 5]);
+    rig.setEffectors(all);
     expect(solver.solve(c.start, c.target).stopReason).toBe('converged_E');
   });
 
-  it('lm with restarts solves random targets the plain run gets stuck on', () => {
-    const rig = keep(new IkRig(ik, loadA7('knight')));
+  it.each(rigsLike('knight'))('lm with restarts solves random targets the plain run gets stuck on ($label)', (testRig) => {
+    const rig = keep(new IkRig(ik, loadTestRig(testRig)));
+    const options = reportOptions(testRig, rig);
     // One run, nothing to leave a stop off target (no restart of any kind, no escape).
-    const plain = keep(new IkSolver(rig, 'lm', { ...reportOptions('knight'), restarts: 0, chainRestarts: 0, escapeSaddles: false }));
-    const restarting = keep(new IkSolver(rig, 'lm', { ...reportOptions('knight'), restarts: 200 }));
+    const plain = keep(new IkSolver(rig, 'lm', { ...options, restarts: 0, chainRestarts: 0, escapeSaddles: false }));
+    const restarting = keep(new IkSolver(rig, 'lm', { ...options, restarts: 200 }));
     const rand = seeded(9);
     let plainSolved = 0;
     for (let s = 0; s < 20; s++) {
       const start = new Float64Array(rig.numAngles);
       const target = rig.tips(randomAngles(rig.spec, rand));
-      if (plain.solve(start, target).E < 2e-4) plainSolved++;
+      if (plain.solve(start, target).E < options.errorTolerance) plainSolved++;
       const r = restarting.solve(start, target);
-      expect(r.E, `target ${s}: ${r.stopReason} after ${r.restarts} restarts`).toBeLessThan(2e-4);
+      expect(r.E, `target ${s}: ${r.stopReason} after ${r.restarts} restarts`).toBeLessThan(options.errorTolerance);
       expect(insideLimits(rig, r.angles)).toBe(true);
     }
     expect(plainSolved).toBeLessThan(20);
   });
 
-  it('refuses use after dispose, and after its rig was disposed', () => {
-    const rig = new IkRig(ik, loadA7('ikea-lamp'));
+  it.each(rigsLike('ikea-lamp'))('refuses use after dispose, and after its rig was disposed ($label)', (testRig) => {
+    const rig = new IkRig(ik, loadTestRig(testRig));
     const solver = new IkSolver(rig, 'gd');
     solver.dispose();
     solver.dispose();

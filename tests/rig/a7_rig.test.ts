@@ -1,12 +1,12 @@
 import { describe, expect, it } from 'vitest';
 
 import { parseA7Rig } from '../../web/src/rig/a7_rig.js';
-import { a7Names, loadA7 } from '../helpers/a7.js';
+import { a7Names, loadA7, needsA7 } from '../helpers/a7.js';
 
 const rest3x4 = '[[1,0,0,0],[0,1,0,0],[0,0,1,0]]';
 
 describe('A7 JSON import', () => {
-  it('reads the five rigs with their bones and end effectors', () => {
+  it("reads the report's five rigs with their bones and end effectors", needsA7, () => {
     const counts = a7Names.map((n) => [loadA7(n).parents.length, loadA7(n).effectors.length]);
     expect(counts).toEqual([
       [5, 1],
@@ -15,10 +15,12 @@ describe('A7 JSON import', () => {
       [21, 5],
       [22, 5],
     ]);
+    expect(Array.from(loadA7('robot-arm').effectors)).toEqual([6]); // no ik_constraints
   });
 
   it('takes the last bone as end effector when ik_constraints is missing', () => {
-    expect(Array.from(loadA7('robot-arm').effectors)).toEqual([6]);
+    const spec = parseA7Rig(`{"bones":[{"parent_id":-1,"rest_T":${rest3x4}},{"parent_id":0,"rest_T":${rest3x4}}]}`, 'x.json');
+    expect(Array.from(spec.effectors)).toEqual([1]);
   });
 
   it('reads 3x4 rest matrices, and missing limits as unbounded', () => {

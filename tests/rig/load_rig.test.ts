@@ -1,4 +1,5 @@
-// loadRig / loadRigFromPath on the report's A7 rigs: same tips as PROTOCOL.md's composition.
+// loadRig / loadRigFromPath on A7 files (the project's rigs and the report's): same tips as
+// PROTOCOL.md's composition.
 import { readFileSync } from 'node:fs';
 
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
@@ -8,7 +9,7 @@ import { loadIkNode } from '../../web/src/ik/node.js';
 import { IkRig } from '../../web/src/ik/rig.js';
 import { loadRig, rigBaseName } from '../../web/src/rig/load_rig.js';
 import { loadRigFromPath } from '../../web/src/rig/load_rig_node.js';
-import { a7Names, a7Path, loadA7, maxAbs, maxAbsDiff, randomAngles, referenceTips, seeded } from '../helpers/a7.js';
+import { loadTestRig, maxAbs, maxAbsDiff, randomAngles, referenceTips, seeded, testRigs } from '../helpers/a7.js';
 
 let ik: IkCoreModule;
 const rigs: IkRig[] = [];
@@ -17,13 +18,14 @@ beforeAll(async () => {
 });
 afterAll(() => rigs.forEach((r) => r.dispose()));
 
-describe.each(a7Names)('loadRig on A7 %s.json', (name) => {
+describe.each(testRigs)('loadRig on the A7 file of $label', (testRig) => {
   it('gives the parseA7Rig spec and the reference tips', async () => {
-    const loaded = await loadRig(new Uint8Array(readFileSync(a7Path(name))), `some/dir/${name}.JSON`);
+    const { name, path } = testRig;
+    const loaded = await loadRig(new Uint8Array(readFileSync(path)), `some/dir/${name}.JSON`);
     expect(loaded.format).toBe('a7');
     expect(loaded.name).toBe(name);
     expect(loaded.gltf).toBeUndefined();
-    expect(loaded.spec).toEqual({ ...loadA7(name), names: loaded.spec.names });
+    expect(loaded.spec).toEqual({ ...loadTestRig(testRig), names: loaded.spec.names });
     const rig = new IkRig(ik, loaded.spec);
     rigs.push(rig);
     const rand = seeded(21);
@@ -32,7 +34,7 @@ describe.each(a7Names)('loadRig on A7 %s.json', (name) => {
       const ref = referenceTips(loaded.spec, a);
       expect(maxAbsDiff(rig.tips(a), ref)).toBeLessThanOrEqual(1e-12 * Math.max(1, maxAbs(ref)));
     }
-    expect((await loadRigFromPath(a7Path(name))).spec).toEqual(loaded.spec);
+    expect((await loadRigFromPath(path)).spec).toEqual(loaded.spec);
   });
 });
 

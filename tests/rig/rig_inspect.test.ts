@@ -13,7 +13,7 @@ import { afterAll, describe, expect, it } from 'vitest';
 
 import { reportJson, rigReport, runRigInspect } from '../../scripts/rig_inspect.js';
 import { loadRig } from '../../web/src/rig/load_rig.js';
-import { a7Path } from '../helpers/a7.js';
+import { a7Path, needsA7 } from '../helpers/a7.js';
 import { packGlb } from '../helpers/glb.js';
 import { treeGltf } from './synthetic_rigs.js';
 
@@ -76,7 +76,7 @@ describe('rig inspector on the project models', () => {
     expect(r.stdout.endsWith('warnings:\n  - humanoid (rigify): 14 of 14 core roles\n')).toBe(true);
   });
 
-  it('reads an A7 rig too', async () => {
+  it('reads an A7 rig too', needsA7, async () => {
     const r = await inspect(a7Path('knight'), '--json');
     expect(r.code).toBe(0);
     const report = JSON.parse(r.stdout);

@@ -1,9 +1,19 @@
-// Shared test fixtures: the report's five rigs (read from ../shared/rigs/a7), random angles,
-// and the reference composition of PROTOCOL.md written the plain way with 4x4 matrices.
+// Shared test fixtures: the rigs the tests run on, random angles, and the reference composition
+// of PROTOCOL.md written the plain way with 4x4 matrices.
+//
+// Two sets of rigs in A7 format: the project's own (wasm/tests/rigs, written from
+// web/public/models by scripts/write-test-rigs.ts), always there, and the report's five A7 rigs
+// from $IK_A7_DIR (default ../shared/rigs/a7; a relative path starts at the repository root),
+// when that folder exists. Tests of a general property loop over test_rigs(); tests whose
+// expectations belong to the report's rigs use the fixture NeedsA7, which skips them without the
+// folder (and fails them under CI).
 #pragma once
+
+#include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
 #include <cstdlib>
+#include <filesystem>
 #include <random>
 #include <string>
 #include <vector>
@@ -18,12 +28,63 @@ inline const std::vector<std::string>& a7_rig_names() {
   return names;
 }
 
-inline std::string a7_path(const std::string& name) {
-  const char* dir = std::getenv("IK_A7_DIR");
-  return std::string(dir ? dir : IK_A7_DIR) + "/" + name + ".json";
+inline const std::vector<std::string>& project_rig_names() {
+  static const std::vector<std::string> names = {"knight", "lamp", "robot-arm", "hand", "beast", "character"};
+  return names;
 }
 
-inline Rig load_a7(const std::string& name) { return load_a7_rig(a7_path(name)); }
+inline std::string a7_dir() {
+  const char* env = std::getenv("IK_A7_DIR");
+  const std::filesystem::path dir = env && *env ? env : "../shared/rigs/a7";
+  return (dir.is_absolute() ? dir : std::filesystem::path(IK_REPO_ROOT) / dir).lexically_normal().string();
+}
+
+inline bool a7_present() { return std::filesystem::is_directory(a7_dir()); }
+
+inline Rig load_a7(const std::string& name) { return load_a7_rig(a7_dir() + "/" + name + ".json"); }
+
+// A rig the tests run on.
+struct TestRig {
+  std::string name;  // the file's base name: "knight"
+  bool a7;           // one of the report's rigs, else the project's own
+  Rig rig;
+  std::string label() const { return (a7 ? "A7 " : "project ") + name; }
+};
+
+// The project's rigs, then the report's when $IK_A7_DIR exists.
+inline const std::vector<TestRig>& test_rigs() {
+  static const std::vector<TestRig> rigs = [] {
+    std::vector<TestRig> all;
+    for (const std::string& name : project_rig_names())
+      all.push_back({name, false, load_a7_rig(std::string(IK_REPO_ROOT) + "/wasm/tests/rigs/" + name + ".json")});
+    if (a7_present())
+      for (const std::string& name : a7_rig_names()) all.push_back({name, true, load_a7(name)});
+    return all;
+  }();
+  return rigs;
+}
+
+// The project's counterpart of the report's rig `a7_name` ("ikea-lamp" -> lamp), and that rig too
+// when $IK_A7_DIR exists: for tests of a general property written for one rig.
+inline std::vector<TestRig> rigs_like(const std::string& a7_name) {
+  const std::string project = a7_name == "ikea-lamp" ? "lamp" : a7_name == "chimpanzee-hand" ? "hand" : a7_name;
+  std::vector<TestRig> like;
+  for (const TestRig& r : test_rigs())
+    if (r.name == (r.a7 ? a7_name : project)) like.push_back(r);
+  return like;
+}
+
+// Fixture of the tests that need the report's rigs: skipped without $IK_A7_DIR, failed when the
+// CI environment variable is set (CI has the folder, so nothing may be skipped there).
+class NeedsA7 : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    if (a7_present()) return;
+    if (const char* ci = std::getenv("CI"); ci && *ci)
+      FAIL() << "A7 rigs folder missing: " << a7_dir() << " (CI is set; point IK_A7_DIR at the report's A7 rigs)";
+    GTEST_SKIP() << "A7 rigs not found at " << a7_dir();
+  }
+};
 
 // Angles uniform in [-360, 360] degrees per angle, clamped to the limits (the random target set).
 inline Eigen::VectorXd random_angles(const Kinematics& kin, std::mt19937_64& rng) {

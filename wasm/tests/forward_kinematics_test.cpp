@@ -1,14 +1,16 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "a7_fixtures.h"
 
 namespace ik {
 namespace {
 
-TEST(ForwardKinematics, MatchesReferenceCompositionOnA7Rigs) {
+TEST(ForwardKinematics, MatchesReferenceComposition) {
   std::mt19937_64 rng(1);
-  for (const std::string& name : test::a7_rig_names()) {
-    const Rig rig = test::load_a7(name);
+  for (const test::TestRig& r : test::test_rigs()) {
+    const Rig& rig = r.rig;
     Kinematics kin(rig);
     Eigen::VectorXd tips(kin.num_residuals());
     for (int s = 0; s < 200; ++s) {
@@ -16,27 +18,42 @@ TEST(ForwardKinematics, MatchesReferenceCompositionOnA7Rigs) {
       kin.tips(a, tips);
       const Eigen::VectorXd ref = test::reference_tips(rig, a);
       const double scale = std::max(1.0, ref.cwiseAbs().maxCoeff());
-      EXPECT_LE((tips - ref).cwiseAbs().maxCoeff(), 1e-12 * scale) << name << " sample " << s;
+      EXPECT_LE((tips - ref).cwiseAbs().maxCoeff(), 1e-12 * scale) << r.label() << " sample " << s;
     }
   }
 }
 
 TEST(ForwardKinematics, ZeroAnglesPutTipsAtRest) {
-  for (const std::string& name : test::a7_rig_names()) {
-    const Rig rig = test::load_a7(name);
+  for (const test::TestRig& r : test::test_rigs()) {
+    const Rig& rig = r.rig;
     Kinematics kin(rig);
     kin.forward(Eigen::VectorXd::Zero(kin.num_angles()));
     for (int i = 0; i < kin.num_bones(); ++i) {
       const Eigen::Vector3d rest_tip = (rig.bones[i].rest * Eigen::Vector4d(rig.bones[i].length, 0, 0, 1)).head<3>();
-      EXPECT_LT((kin.tip(i) - rest_tip).norm(), 1e-12) << name << " bone " << i;
-      EXPECT_TRUE(kin.pose(i).matrix().isApprox(Eigen::Matrix4d::Identity(), 1e-12)) << name << " bone " << i;
+      EXPECT_LT((kin.tip(i) - rest_tip).norm(), 1e-12) << r.label() << " bone " << i;
+      EXPECT_TRUE(kin.pose(i).matrix().isApprox(Eigen::Matrix4d::Identity(), 1e-12)) << r.label() << " bone " << i;
     }
   }
 }
 
 TEST(ForwardKinematics, ProjectClampsIntoLimits) {
-  const Rig rig = test::load_a7("ikea-lamp");
-  Kinematics kin(rig);
+  for (const test::TestRig& r : test::test_rigs()) {
+    Kinematics kin(r.rig);
+    for (double value : {500.0, -500.0}) {
+      Eigen::VectorXd a = Eigen::VectorXd::Constant(kin.num_angles(), value);
+      kin.project(a);
+      for (int i = 0; i < a.size(); ++i) {
+        const Bone& bone = r.rig.bones[i / 3];
+        EXPECT_EQ(a[i], std::clamp(value, bone.min_deg[i % 3], bone.max_deg[i % 3])) << r.label() << " angle " << i;
+      }
+    }
+  }
+}
+
+using ForwardKinematicsA7 = test::NeedsA7;
+
+TEST_F(ForwardKinematicsA7, ProjectClampsTheLampIntoItsLimits) {
+  Kinematics kin(test::load_a7("ikea-lamp"));
   Eigen::VectorXd a = Eigen::VectorXd::Constant(kin.num_angles(), 500.0);
   kin.project(a);
   EXPECT_DOUBLE_EQ(a[3], 90.0);   // bone 1 x in [-90, 90]

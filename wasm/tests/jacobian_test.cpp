@@ -26,8 +26,9 @@ void expect_jacobian_matches(Kinematics& kin, const Eigen::VectorXd& a, const st
 
 TEST(Jacobian, MatchesCentralDifferencesAtRandomPoses) {
   std::mt19937_64 rng(3);
-  for (const std::string& name : test::a7_rig_names()) {
-    Kinematics kin(test::load_a7(name));
+  for (const test::TestRig& r : test::test_rigs()) {
+    const std::string name = r.label();
+    Kinematics kin(r.rig);
     for (int s = 0; s < 50; ++s) expect_jacobian_matches(kin, test::random_angles(kin, rng), name + " random");
   }
 }
@@ -35,8 +36,9 @@ TEST(Jacobian, MatchesCentralDifferencesAtRandomPoses) {
 TEST(Jacobian, MatchesCentralDifferencesOnTheLimits) {
   std::mt19937_64 rng(4);
   std::bernoulli_distribution coin(0.5);
-  for (const std::string& name : test::a7_rig_names()) {
-    Kinematics kin(test::load_a7(name));
+  for (const test::TestRig& r : test::test_rigs()) {
+    const std::string name = r.label();
+    Kinematics kin(r.rig);
     for (int s = 0; s < 20; ++s) {
       Eigen::VectorXd a(kin.num_angles());
       for (int i = 0; i < a.size(); ++i) {
@@ -51,8 +53,9 @@ TEST(Jacobian, MatchesCentralDifferencesOnTheLimits) {
 TEST(Jacobian, MatchesCentralDifferencesAtTheXzxSingularity) {
   // Middle angle 0: the two x rotations share an axis (gimbal lock).
   std::mt19937_64 rng(5);
-  for (const std::string& name : test::a7_rig_names()) {
-    Kinematics kin(test::load_a7(name));
+  for (const test::TestRig& r : test::test_rigs()) {
+    const std::string name = r.label();
+    Kinematics kin(r.rig);
     for (int s = 0; s < 20; ++s) {
       Eigen::VectorXd a = test::random_angles(kin, rng);
       for (int b = 0; b < kin.num_bones(); ++b) a[3 * b + 1] = 0;
@@ -67,11 +70,11 @@ TEST(Jacobian, MatchesCentralDifferencesAtTheXzxSingularity) {
   }
 }
 
-TEST(Jacobian, ClampedDifferencesStayInsideTheLimits) {
-  // The paper's difference: clamped at the limits, so a bone on its bound gets a one-sided
-  // difference that still approximates the analytic derivative.
-  Kinematics kin(test::load_a7("ikea-lamp"));
-  Eigen::VectorXd a = kin.upper();
+// The paper's difference: clamped at the limits, so a bone on its bound gets a one-sided
+// difference that still approximates the analytic derivative.
+void expect_clamped_differences_inside_the_limits(const Rig& rig) {
+  Kinematics kin(rig);
+  Eigen::VectorXd a = kin.upper().cwiseMin(720.0);
   kin.project(a);
   Eigen::VectorXd scratch(kin.num_angles()), plus(kin.num_residuals()), minus(kin.num_residuals());
   Eigen::MatrixXd fd(kin.num_residuals(), kin.num_angles()), jac(kin.num_residuals(), kin.num_angles());
@@ -86,10 +89,18 @@ TEST(Jacobian, ClampedDifferencesStayInsideTheLimits) {
   }
 }
 
+TEST(Jacobian, ClampedDifferencesStayInsideTheLimits) {
+  for (const test::TestRig& r : test::rigs_like("ikea-lamp")) {
+    SCOPED_TRACE(r.label());
+    expect_clamped_differences_inside_the_limits(r.rig);
+  }
+}
+
 TEST(Objective, GradientIsJacobianTransposeResidualAndMatchesDifferences) {
   std::mt19937_64 rng(6);
-  for (const std::string& name : test::a7_rig_names()) {
-    Kinematics kin(test::load_a7(name));
+  for (const test::TestRig& rig : test::test_rigs()) {
+    const std::string name = rig.label();
+    Kinematics kin(rig.rig);
     const Eigen::VectorXd target_angles = test::random_angles(kin, rng);
     Eigen::VectorXd target(kin.num_residuals());
     kin.tips(target_angles, target);

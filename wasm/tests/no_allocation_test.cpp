@@ -9,8 +9,8 @@
 namespace ik {
 namespace {
 
-TEST(NoAllocation, KinematicsJacobianAndGradient) {
-  Kinematics kin(test::load_a7("beast"));
+void expect_no_allocation(const Rig& rig) {
+  Kinematics kin(rig);
   std::mt19937_64 rng(7);
   const Eigen::VectorXd a = test::random_angles(kin, rng);
   Eigen::VectorXd target(kin.num_residuals()), r(kin.num_residuals()), g(kin.num_angles());
@@ -33,6 +33,13 @@ TEST(NoAllocation, KinematicsJacobianAndGradient) {
   Eigen::VectorXd fresh = a * 2.0;
   EXPECT_GT(test::heap_allocations() - probe, 0);
   EXPECT_EQ(fresh.size(), a.size());
+}
+
+TEST(NoAllocation, KinematicsJacobianAndGradient) {
+  for (const test::TestRig& r : test::rigs_like("beast")) {
+    SCOPED_TRACE(r.label());
+    expect_no_allocation(r.rig);
+  }
 }
 
 }  // namespace

@@ -78,7 +78,9 @@ TEST(RigValidation, SetEffectorsKeepsTheOldListOnError) {
   EXPECT_EQ(kin.num_effectors(), 2);
 }
 
-TEST(A7Reader, ReadsTheFiveRigs) {
+using A7ReportRigs = test::NeedsA7;
+
+TEST_F(A7ReportRigs, ReadsTheFiveRigs) {
   const int bones[] = {5, 7, 19, 21, 22};
   const int effectors[] = {1, 1, 5, 5, 5};
   for (size_t i = 0; i < test::a7_rig_names().size(); ++i) {
@@ -87,6 +89,14 @@ TEST(A7Reader, ReadsTheFiveRigs) {
     EXPECT_EQ(static_cast<int>(rig.effectors.size()), effectors[i]);
   }
   EXPECT_EQ(test::load_a7("robot-arm").effectors, std::vector<int>{6});  // no ik_constraints: last bone
+}
+
+TEST(A7Reader, TakesTheLastBoneAsEffectorWithoutIkConstraints) {
+  const Rig rig = parse_a7_rig(
+      R"({"bones":[{"parent_id":-1,"rest_T":[[1,0,0,0],[0,1,0,0],[0,0,1,0]]},)"
+      R"({"parent_id":0,"rest_T":[[1,0,0,0],[0,1,0,0],[0,0,1,0]]}]})",
+      "rig.json");
+  EXPECT_EQ(rig.effectors, std::vector<int>{1});
 }
 
 TEST(A7Reader, ErrorsNameTheFileAndField) {

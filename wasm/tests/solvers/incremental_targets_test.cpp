@@ -1,5 +1,6 @@
-// Every method solves the report's incremental targets on the five A7 rigs to the report's
-// tolerances (analytic derivatives; paper mode is compared with the original in paper_mode_test).
+// Every method solves the report's incremental targets on the project's rigs and the five A7 rigs
+// to the report's tolerances (analytic derivatives; paper mode is compared with the original in
+// paper_mode_test).
 #include <gtest/gtest.h>
 
 #include "solver_fixtures.h"
@@ -26,9 +27,10 @@ class IncrementalTargets : public ::testing::TestWithParam<std::string> {};
 TEST_P(IncrementalTargets, SolvedToTheReportsTolerances) {
   const std::string method = GetParam();
   const Expectation expect = expectation(method);
-  for (const std::string& name : test::a7_rig_names()) {
-    Kinematics kin(test::load_a7(name));
-    SolverOptions options = test::report_options(name);
+  for (const test::TestRig& r : test::test_rigs()) {
+    const std::string name = r.label();
+    Kinematics kin(r.rig);
+    SolverOptions options = test::report_options(r);
     options.max_iterations = expect.max_iterations;
     auto solver = make_solver(method, kin, options);
     int successes = 0;

@@ -11,9 +11,10 @@ namespace ik {
 namespace {
 
 TEST(Newton, ReachesTinyErrorsQuadraticallyOnIncrementalTargets) {
-  for (const std::string& name : test::a7_rig_names()) {
-    Kinematics kin(test::load_a7(name));
-    SolverOptions options = test::report_options(name);
+  for (const test::TestRig& r : test::test_rigs()) {
+    const std::string name = r.label();
+    Kinematics kin(r.rig);
+    SolverOptions options = test::report_options(r);
     options.error_tolerance = 0;  // run until no step helps (the rounding floor)
     options.gradient_tolerance = 0;
     options.max_iterations = 100;

@@ -20,9 +20,10 @@ bool inside_limits(const Kinematics& kin, const Eigen::VectorXd& a) {
 
 TEST_P(EveryMethod, IteratesStayInsideTheLimits) {
   for (bool paper : {false, true})
-    for (const std::string& name : test::a7_rig_names()) {
-      Kinematics kin(test::load_a7(name));
-      SolverOptions options = test::report_options(name);
+    for (const test::TestRig& r : test::test_rigs()) {
+      const std::string name = r.label();
+      Kinematics kin(r.rig);
+      SolverOptions options = test::report_options(r);
       options.paper_mode = paper;
       options.max_iterations = 60;
       auto solver = make_solver(GetParam(), kin, options);
@@ -39,16 +40,16 @@ TEST_P(EveryMethod, IteratesStayInsideTheLimits) {
     }
 }
 
-TEST_P(EveryMethod, SteppingEqualsSolving) {
-  // Between steps the rig is posed elsewhere (as the page does to draw): no effect on the solve.
-  Kinematics kin(test::load_a7("knight"));
+// Between steps the rig is posed elsewhere (as the page does to draw): no effect on the solve.
+void expect_stepping_equals_solving(const std::string& method, const test::TestRig& r) {
+  Kinematics kin(r.rig);
   const Eigen::VectorXd elsewhere = Eigen::VectorXd::Constant(kin.num_angles(), 33.0);
-  SolverOptions options = test::report_options("knight");
+  SolverOptions options = test::report_options(r);
   options.max_iterations = 300;
   options.restarts = 0;  // E falls at every iteration within one run; a restart jumps (tested below)
   options.chain_restarts = 0;
-  auto stepped = make_solver(GetParam(), kin, options);
-  auto solved = make_solver(GetParam(), kin, options);
+  auto stepped = make_solver(method, kin, options);
+  auto solved = make_solver(method, kin, options);
   for (const test::TargetCase& c : test::random_targets(kin, 4, 62)) {
     std::vector<double> seen;
     stepped->start(c.start, c.target);
@@ -74,12 +75,19 @@ TEST_P(EveryMethod, SteppingEqualsSolving) {
   }
 }
 
-TEST_P(EveryMethod, RejectsBadInputWithAMessage) {
-  Kinematics kin(test::load_a7("ikea-lamp"));
-  auto solver = make_solver(GetParam(), kin, SolverOptions{});
+TEST_P(EveryMethod, SteppingEqualsSolving) {
+  for (const test::TestRig& r : test::rigs_like("knight")) {
+    SCOPED_TRACE(r.label());
+    expect_stepping_equals_solving(GetParam(), r);
+  }
+}
+
+void expect_bad_input_rejected(const std::string& method, const Rig& rig) {
+  Kinematics kin(rig);
+  auto solver = make_solver(method, kin, SolverOptions{});
   const Eigen::VectorXd a = Eigen::VectorXd::Zero(kin.num_angles());
   const Eigen::VectorXd t = Eigen::VectorXd::Zero(kin.num_residuals());
-  auto expect_invalid = [&](const Eigen::VectorXd& angles, const Eigen::VectorXd& target, const char* mentions) {
+  auto expect_invalid = [&](const Eigen::VectorXd& angles, const Eigen::VectorXd& target, const std::string& mentions) {
     EXPECT_EQ(solver->start(angles, target), StopReason::invalid_input) << mentions;
     EXPECT_NE(solver->summary().message.find(mentions), std::string::npos) << solver->summary().message;
     EXPECT_FALSE(solver->step());
@@ -95,12 +103,16 @@ TEST_P(EveryMethod, RejectsBadInputWithAMessage) {
   expect_invalid(a, bad_target, "target[1]");
   bad_target[1] = std::numeric_limits<double>::quiet_NaN();
   expect_invalid(a, bad_target, "target[1]");
-  expect_invalid(Eigen::VectorXd::Zero(kin.num_angles() + 1), t, "angles has 16 values, expected 15");
-  expect_invalid(a, Eigen::VectorXd::Zero(kin.num_residuals() - 1), "target has 2 values, expected 3");
+  const auto wrong_size = [](const char* what, int got, int expected) {
+    return std::string(what) + " has " + std::to_string(got) + " values, expected " + std::to_string(expected);
+  };
+  const int m = kin.num_angles(), r = kin.num_residuals();
+  expect_invalid(Eigen::VectorXd::Zero(m + 1), t, wrong_size("angles", m + 1, m));
+  expect_invalid(a, Eigen::VectorXd::Zero(r - 1), wrong_size("target", r - 1, r));
 
   SolverOptions options;
   options.error_tolerance = -1;
-  auto with_bad_option = make_solver(GetParam(), kin, options);
+  auto with_bad_option = make_solver(method, kin, options);
   EXPECT_EQ(with_bad_option->start(a, t), StopReason::invalid_input);
   EXPECT_NE(with_bad_option->summary().message.find("error_tolerance"), std::string::npos);
 
@@ -110,15 +122,22 @@ TEST_P(EveryMethod, RejectsBadInputWithAMessage) {
   EXPECT_NE(solver->solve(a, target).stop_reason, StopReason::invalid_input);
 }
 
-TEST_P(EveryMethod, AllocatesNothingWhileStepping) {
+TEST_P(EveryMethod, RejectsBadInputWithAMessage) {
+  for (const test::TestRig& r : test::rigs_like("ikea-lamp")) {
+    SCOPED_TRACE(r.label());
+    expect_bad_input_rejected(GetParam(), r.rig);
+  }
+}
+
+void expect_no_allocation_while_stepping(const std::string& method, const test::TestRig& r) {
   for (bool paper : {false, true}) {
-    Kinematics kin(test::load_a7("beast"));
-    SolverOptions options = test::report_options("beast");
+    Kinematics kin(r.rig);
+    SolverOptions options = test::report_options(r);
     options.paper_mode = paper;
     options.max_iterations = 40;
     options.restarts = 3;  // lm's restarts run inside step() too
     options.stall_iterations = 5;
-    auto solver = make_solver(GetParam(), kin, options);
+    auto solver = make_solver(method, kin, options);
     for (const test::TargetCase& c : test::random_targets(kin, 2, 63)) {
       solver->start(c.start, c.target);
       const long before = test::heap_allocations();
@@ -135,13 +154,23 @@ TEST_P(EveryMethod, AllocatesNothingWhileStepping) {
   }
 }
 
-TEST_P(EveryMethod, NoticesWhenTheRigsEffectorsChange) {
-  Kinematics kin(test::load_a7("knight"));
-  auto solver = make_solver(GetParam(), kin, test::report_options("knight"));
+TEST_P(EveryMethod, AllocatesNothingWhileStepping) {
+  for (const test::TestRig& r : test::rigs_like("beast")) {
+    SCOPED_TRACE(r.label());
+    expect_no_allocation_while_stepping(GetParam(), r);
+  }
+}
+
+void expect_effector_changes_noticed(const std::string& method, const test::TestRig& r) {
+  Kinematics kin(r.rig);
+  const std::vector<int> all = r.rig.effectors;
+  ASSERT_GE(all.size(), 4u);
+  const SolverOptions options = test::report_options(r);
+  auto solver = make_solver(method, kin, options);
   const auto cases = test::incremental_targets(kin, 1, 64);
   solver->start(cases[0].start, cases[0].target);
   ASSERT_TRUE(solver->running());
-  kin.set_effectors({18, 14});  // 5 effectors -> 2 while the solve runs
+  kin.set_effectors({all[0], all[1]});  // 4 or more effectors -> 2 while the solve runs
   EXPECT_FALSE(solver->step());
   EXPECT_EQ(solver->summary().stop_reason, StopReason::invalid_input);
   EXPECT_NE(solver->summary().message.find("start()"), std::string::npos);
@@ -153,12 +182,19 @@ TEST_P(EveryMethod, NoticesWhenTheRigsEffectorsChange) {
   EXPECT_TRUE(s.stop_reason == StopReason::converged_E || s.stop_reason == StopReason::converged_grad)
       << stop_reason_name(s.stop_reason);
   // Other effectors, same count: the workspace's structure follows them too.
-  kin.set_effectors({3, 5});
+  kin.set_effectors({all[all.size() - 2], all.back()});
   kin.tips(cases[0].goal, target);
   const SolverSummary& t = solver->solve(cases[0].start, target);
   EXPECT_TRUE(t.stop_reason == StopReason::converged_E || t.stop_reason == StopReason::converged_grad)
       << stop_reason_name(t.stop_reason);
-  EXPECT_LT(t.E, 2e-4);
+  EXPECT_LT(t.E, options.error_tolerance);
+}
+
+TEST_P(EveryMethod, NoticesWhenTheRigsEffectorsChange) {
+  for (const test::TestRig& r : test::rigs_like("knight")) {
+    SCOPED_TRACE(r.label());
+    expect_effector_changes_noticed(GetParam(), r);
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(Methods, EveryMethod, ::testing::ValuesIn(solver_names()),
@@ -166,7 +202,7 @@ INSTANTIATE_TEST_SUITE_P(Methods, EveryMethod, ::testing::ValuesIn(solver_names(
 
 TEST(SolverRegistry, ListsTheFiveMethodsAndRejectsUnknownNames) {
   EXPECT_EQ(solver_names(), (std::vector<std::string>{"lm", "gn", "bfgs", "newton", "gd"}));
-  Kinematics kin(test::load_a7("ikea-lamp"));
+  Kinematics kin(test::rigs_like("ikea-lamp").front().rig);  // any rig
   for (const std::string& name : solver_names()) EXPECT_EQ(make_solver(name, kin)->name(), name);
   try {
     make_solver("simplex", kin);
@@ -190,31 +226,37 @@ TEST(StopReasons, HaveTheirEnumeratorNames) {
 }
 
 TEST(SolverOptions, SetOptionsTakesEffectAtTheNextStart) {
-  Kinematics kin(test::load_a7("beast"));
-  auto solver = make_solver("gd", kin, test::report_options("beast"));
-  const auto c = test::random_targets(kin, 1, 66)[0];
-  solver->start(c.start, c.target);
-  SolverOptions options = test::report_options("beast");
-  options.max_iterations = 3;
-  solver->set_options(options);
-  EXPECT_NE(solver->options().max_iterations, 3);  // the running solve keeps its options
-  EXPECT_EQ(solver->solve(c.start, c.target).iterations, 3);
-  EXPECT_EQ(solver->options().max_iterations, 3);
+  for (const test::TestRig& r : test::rigs_like("beast")) {
+    SCOPED_TRACE(r.label());
+    Kinematics kin(r.rig);
+    auto solver = make_solver("gd", kin, test::report_options(r));
+    const auto c = test::random_targets(kin, 1, 66)[0];
+    solver->start(c.start, c.target);
+    SolverOptions options = test::report_options(r);
+    options.max_iterations = 3;
+    solver->set_options(options);
+    EXPECT_NE(solver->options().max_iterations, 3);  // the running solve keeps its options
+    EXPECT_EQ(solver->solve(c.start, c.target).iterations, 3);
+    EXPECT_EQ(solver->options().max_iterations, 3);
+  }
 }
 
 TEST(SolverLimits, MaxIterationsAndHistoryCapacity) {
-  Kinematics kin(test::load_a7("beast"));
-  SolverOptions options = test::report_options("beast");
-  options.max_iterations = 7;
-  options.history_capacity = 4;
-  auto solver = make_solver("gd", kin, options);
-  const auto c = test::random_targets(kin, 1, 65)[0];
-  const SolverSummary& s = solver->solve(c.start, c.target);
-  EXPECT_EQ(s.stop_reason, StopReason::max_iterations);
-  EXPECT_EQ(s.iterations, 7);
-  EXPECT_EQ(solver->error_history().size(), 4);  // the first four values are kept
-  options.max_iterations = 0;
-  EXPECT_EQ(make_solver("lm", kin, options)->solve(c.start, c.target).stop_reason, StopReason::max_iterations);
+  for (const test::TestRig& r : test::rigs_like("beast")) {
+    SCOPED_TRACE(r.label());
+    Kinematics kin(r.rig);
+    SolverOptions options = test::report_options(r);
+    options.max_iterations = 7;
+    options.history_capacity = 4;
+    auto solver = make_solver("gd", kin, options);
+    const auto c = test::random_targets(kin, 1, 65)[0];
+    const SolverSummary& s = solver->solve(c.start, c.target);
+    EXPECT_EQ(s.stop_reason, StopReason::max_iterations);
+    EXPECT_EQ(s.iterations, 7);
+    EXPECT_EQ(solver->error_history().size(), 4);  // the first four values are kept
+    options.max_iterations = 0;
+    EXPECT_EQ(make_solver("lm", kin, options)->solve(c.start, c.target).stop_reason, StopReason::max_iterations);
+  }
 }
 
 }  // namespace

@@ -20,8 +20,9 @@ Eigen::MatrixXd jacobian_difference(Kinematics& kin, const Eigen::VectorXd& a, i
 
 TEST(TipHessian, MatchesDifferencesOfTheAnalyticJacobian) {
   std::mt19937_64 rng(21);
-  for (const std::string& name : test::a7_rig_names()) {
-    Kinematics kin(test::load_a7(name));
+  for (const test::TestRig& r : test::test_rigs()) {
+    const std::string name = r.label();
+    Kinematics kin(r.rig);
     const int n = kin.num_angles();
     for (int sample = 0; sample < 4; ++sample) {
       const Eigen::VectorXd a = test::random_angles(kin, rng);
@@ -53,8 +54,8 @@ TEST(TipHessian, MatchesDifferencesOfTheAnalyticJacobian) {
   }
 }
 
-TEST(TipHessian, AnglesOffTheChainHaveNoCurvature) {
-  Kinematics kin(test::load_a7("knight"));
+void expect_no_curvature_off_the_chain(const Rig& rig) {
+  Kinematics kin(rig);
   std::mt19937_64 rng(22);
   kin.forward(test::random_angles(kin, rng));
   const int n = kin.num_angles();
@@ -66,6 +67,13 @@ TEST(TipHessian, AnglesOffTheChainHaveNoCurvature) {
     if (!on_chain[j / 3]) {
       EXPECT_EQ(hx.row(j).norm() + hy.row(j).norm() + hz.row(j).norm(), 0.0) << "angle " << j;
     }
+}
+
+TEST(TipHessian, AnglesOffTheChainHaveNoCurvature) {
+  for (const test::TestRig& r : test::rigs_like("knight")) {
+    SCOPED_TRACE(r.label());
+    expect_no_curvature_off_the_chain(r.rig);
+  }
 }
 
 }  // namespace
