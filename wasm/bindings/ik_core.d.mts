@@ -88,7 +88,7 @@ export interface EmbindSolver {
   result(): EmbindSolverResult;
   errorHistory(): Float64Array;
   angles(): Float64Array;
-  /** #angles | #residuals target | 12 result numbers (E, initialE, gradNorm, iterations, functionEvaluations, jacobianEvaluations, restarts, elapsedSeconds, tipDistance, reached (0/1), escapes, chainRestarts); stale (length 0) after memory growth. */
+  /** #angles | #residuals target | the result numbers Solver.ioStats() names (reached as 0/1); stale (length 0) after memory growth. */
   ioView(): Float64Array | null;
   /** Solves from the angles and target in ioView(); returns the stop reason's index in stopReasons(), -1 on failure. */
   solveIo(): number;
@@ -101,6 +101,8 @@ export interface EmbindSolverClass {
   defaultOptions(): Required<EmbindSolverOptions>;
   describe(method: string): string;
   stopReasons(): string[];
+  /** The names of the result numbers solveIo() writes after the target, in order. */
+  ioStats(): string[];
 }
 
 export interface IkCoreModule {

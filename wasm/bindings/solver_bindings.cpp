@@ -168,11 +168,22 @@ class SolverBinding {
     return names;
   }
 
-  // Where solve_io() writes each result number, after the target.
+  // Where solve_io() writes each result number, after the target; io_stats() names them in this
+  // order, so JavaScript reads the offsets from here instead of repeating them.
   enum IoStat {
     kE, kInitialE, kGradNorm, kIterations, kFunctionEvaluations, kJacobianEvaluations, kRestarts, kElapsed,
     kTipDistance, kReached, kEscapes, kChainRestarts, kIoStats
   };
+
+  // The result numbers' names (as in the result object), indexed by IoStat.
+  static val io_stats() {
+    static const char* const kNames[kIoStats] = {
+        "E", "initialE", "gradNorm", "iterations", "functionEvaluations", "jacobianEvaluations", "restarts",
+        "elapsedSeconds", "tipDistance", "reached", "escapes", "chainRestarts"};
+    val names = val::array();
+    for (const char* name : kNames) names.call<void>("push", std::string(name));
+    return names;
+  }
 
  private:
   SolverBinding(RigBinding& rig, std::unique_ptr<Solver> solver) : rig_(rig), solver_(std::move(solver)) {}
@@ -257,5 +268,6 @@ EMSCRIPTEN_BINDINGS(ik_solvers) {
       .function("angles", &SolverBinding::angles)
       .function("ioView", &SolverBinding::io_view)
       .function("solveIo", &SolverBinding::solve_io)
-      .class_function("stopReasons", &SolverBinding::stop_reasons);
+      .class_function("stopReasons", &SolverBinding::stop_reasons)
+      .class_function("ioStats", &SolverBinding::io_stats);
 }

@@ -116,20 +116,29 @@ function toResult(r: EmbindSolverResult): SolverResult {
   return { ...r, stopReason: r.stopReason as StopReason };
 }
 
-/** Result numbers after the angles and target in the solve buffer (solver_bindings.cpp IoStat). */
-const IO_STATS = 12;
+/** The numbers solveIo() writes after the angles and target (solver_bindings.cpp IoStat). */
+type IoStat = Exclude<keyof SolverResult, 'angles' | 'stopReason' | 'message'>;
 
-/** What the API reads once per module: the stop reasons by solveIo()'s index, the option names. */
+/** What the API reads once per module: stop reasons by solveIo()'s index, option names, result offsets. */
 interface ModuleFacts {
   stopReasons: readonly string[];
   optionNames: readonly string[];
+  /** Offset of each result number after the target, and how many there are. */
+  io: Record<IoStat, number>;
+  ioCount: number;
 }
 const factsCache = new WeakMap<IkCoreModule, ModuleFacts>();
 
 function moduleFacts(module: IkCoreModule): ModuleFacts {
   let facts = factsCache.get(module);
   if (!facts) {
-    facts = { stopReasons: module.Solver.stopReasons(), optionNames: Object.keys(module.Solver.defaultOptions()) };
+    const stats = module.Solver.ioStats();
+    facts = {
+      stopReasons: module.Solver.stopReasons(),
+      optionNames: Object.keys(module.Solver.defaultOptions()),
+      io: Object.fromEntries(stats.map((name, k) => [name, k])) as Record<IoStat, number>,
+      ioCount: stats.length,
+    };
     factsCache.set(module, facts);
   }
   return facts;
@@ -144,7 +153,7 @@ export class IkSolver {
   readonly handle: EmbindSolver;
   readonly method: string;
   private disposed = false;
-  /** solve()'s buffer in WebAssembly memory: angles | target | IO_STATS result numbers. */
+  /** solve()'s buffer in WebAssembly memory: angles | target | the result numbers (ModuleFacts.io). */
   private io: Float64Array<ArrayBufferLike> = new Float64Array(0);
 
   /** The methods this build registers, in display order. */
@@ -227,30 +236,31 @@ export class IkSolver {
     const t = checkedNumbers(target, 'target', m);
     const handle = this.live(); // reading a Proxy may have disposed it
     if (3 * this.rig.numEffectors !== m) throw new Error('the end effectors changed while the target was being read');
-    let io = this.buffer(n, m);
+    const facts = moduleFacts(this.rig.module);
+    let io = this.buffer(n, m, facts.ioCount);
     io.set(a, 0);
     io.set(t, n);
     const code = handle.solveIo();
     if (code < 0) throw coreError(this.rig.module, 'solve');
-    if (io.length === 0) io = this.buffer(n, m); // the memory grew during the solve
-    const stats = n + m;
-    const stopReason = moduleFacts(this.rig.module).stopReasons[code] as StopReason;
+    if (io.length === 0) io = this.buffer(n, m, facts.ioCount); // the memory grew during the solve
+    const at = facts.io, s = n + m;
+    const stopReason = facts.stopReasons[code] as StopReason;
     return {
       angles: out ? (out.set(io.subarray(0, n)), out) : io.slice(0, n),
-      E: io[stats],
-      initialE: io[stats + 1],
-      gradNorm: io[stats + 2],
-      iterations: io[stats + 3],
-      functionEvaluations: io[stats + 4],
-      jacobianEvaluations: io[stats + 5],
-      restarts: io[stats + 6],
-      escapes: io[stats + 10],
-      chainRestarts: io[stats + 11],
-      tipDistance: io[stats + 8],
-      reached: io[stats + 9] === 1,
+      E: io[s + at.E],
+      initialE: io[s + at.initialE],
+      gradNorm: io[s + at.gradNorm],
+      iterations: io[s + at.iterations],
+      functionEvaluations: io[s + at.functionEvaluations],
+      jacobianEvaluations: io[s + at.jacobianEvaluations],
+      restarts: io[s + at.restarts],
+      escapes: io[s + at.escapes],
+      chainRestarts: io[s + at.chainRestarts],
+      tipDistance: io[s + at.tipDistance],
+      reached: io[s + at.reached] === 1,
       stopReason,
       message: stopReason === 'numerical_failure' ? handle.result().message : '',
-      elapsedSeconds: io[stats + 7],
+      elapsedSeconds: io[s + at.elapsedSeconds],
     };
   }
 
@@ -276,9 +286,9 @@ export class IkSolver {
     this.handle.delete();
   }
 
-  /** The solve buffer for n angles and m target numbers (asked anew when stale or resized). */
-  private buffer(n: number, m: number): Float64Array<ArrayBufferLike> {
-    if (this.io.length === n + m + IO_STATS) return this.io;
+  /** The solve buffer for n angles, m target numbers and `stats` result numbers (asked anew when stale or resized). */
+  private buffer(n: number, m: number, stats: number): Float64Array<ArrayBufferLike> {
+    if (this.io.length === n + m + stats) return this.io;
     const view = this.live().ioView();
     if (!view) throw coreError(this.rig.module, 'solve');
     return (this.io = view);
