@@ -10,6 +10,7 @@ export default defineConfig({
     hookTimeout: 60_000,
     // Tests tagged a7 read the report's A7 rigs: skipped without them, failed under CI.
     tags: [{ name: A7_TAG, description: "reads the report's A7 rigs ($IK_A7_DIR)", skip: !a7Present && !a7Required }],
+    globalSetup: ['tests/helpers/test_rigs_setup.ts'],
     setupFiles: ['tests/helpers/a7_setup.ts'],
     reporters: ['default', './tests/helpers/a7_reporter.ts'],
   },

@@ -2,11 +2,12 @@
 # Times the analytic Jacobian against the paper's central differences, natively and in
 # WebAssembly (Node), with the same C++ program (wasm/tools/jacobian_cost.cpp).
 # Usage: npm run bench:jacobian -- [RIG.json]   (default: the report's beast, $IK_A7_DIR/beast.json,
-# IK_A7_DIR defaulting to ../shared/rigs/a7; the project's own is wasm/tests/rigs/beast.json)
+# IK_A7_DIR defaulting to ../shared/rigs/a7; the project's own is build/test-rigs/beast.json,
+# written by npx tsx scripts/write-test-rigs.ts)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 source scripts/a7_dir.sh
-[ $# -gt 0 ] || require_a7 bench:jacobian ", or name a rig: npm run bench:jacobian -- wasm/tests/rigs/beast.json"
+[ $# -gt 0 ] || require_a7 bench:jacobian ", or write the project's rigs and name one: npx tsx scripts/write-test-rigs.ts && npm run bench:jacobian -- build/test-rigs/beast.json"
 rig="${1:-$a7_dir/beast.json}"
 bash scripts/setup.sh --native >/dev/null
 cmake --build build/native --target jacobian_cost >/dev/null

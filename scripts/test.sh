@@ -8,6 +8,7 @@ cd "$(dirname "$0")/.."
 bash scripts/setup.sh --native --browser
 
 echo "== native tests (GoogleTest)"
+npx tsx scripts/write-test-rigs.ts >/dev/null  # the project's rigs in A7 format, for the native tests
 ctest --test-dir build/native --output-on-failure -j 2 | tee build/native/ctest.log
 # The tests that need the report's A7 rigs skip without them (and fail under CI): say so.
 source scripts/a7_dir.sh

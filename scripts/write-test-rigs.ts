@@ -1,10 +1,10 @@
-// Writes the project's own rigs in A7 format to wasm/tests/rigs/NAME.json, for the native tests
+// Writes the project's own rigs in A7 format to build/test-rigs/NAME.json, for the native tests
 // (which cannot read .glb) and the TypeScript tests that run on both rig sets: each
-// web/public/models/NAME.glb read by loadRigFromPath and written by bench-node/a7_writer.ts.
-// tests/rig/test_rigs.test.ts checks the committed files against what this writes now.
-// Re-run after the models (npm run models) or the glTF importer change:
+// web/public/models/NAME.glb read by loadRigFromPath and written by bench-node/a7_writer.ts. A
+// build product, never committed: `npm test` writes them before the native tests, and vitest's
+// global setup before its suites, so they always follow the current models and importer.
 //   npx tsx scripts/write-test-rigs.ts
-import { writeFileSync } from 'node:fs';
+import { mkdirSync, writeFileSync } from 'node:fs';
 import { resolve } from 'node:path';
 import { fileURLToPath, pathToFileURL } from 'node:url';
 
@@ -17,18 +17,21 @@ export const testRigNames = ['knight', 'lamp', 'robot-arm', 'hand', 'beast', 'ch
 const root = resolve(fileURLToPath(new URL('.', import.meta.url)), '..');
 
 /** Where the A7 files go. */
-export const testRigsDir = resolve(root, 'wasm/tests/rigs');
+export const testRigsDir = resolve(root, 'build/test-rigs');
 
-/** The A7 text of the project model `name` as it loads today. */
-export async function testRigText(name: string): Promise<string> {
-  const { spec } = await loadRigFromPath(resolve(root, `web/public/models/${name}.glb`));
-  return `${writeA7Rig(spec)}\n`;
+/** Writes every project model as A7 JSON into testRigsDir; returns the files' paths. */
+export async function writeTestRigs(): Promise<string[]> {
+  mkdirSync(testRigsDir, { recursive: true });
+  const paths: string[] = [];
+  for (const name of testRigNames) {
+    const { spec } = await loadRigFromPath(resolve(root, `web/public/models/${name}.glb`));
+    const path = resolve(testRigsDir, `${name}.json`);
+    writeFileSync(path, `${writeA7Rig(spec)}\n`);
+    paths.push(path);
+  }
+  return paths;
 }
 
 if (process.argv[1] && import.meta.url === pathToFileURL(resolve(process.argv[1])).href) {
-  for (const name of testRigNames) {
-    const text = await testRigText(name);
-    writeFileSync(resolve(testRigsDir, `${name}.json`), text);
-    console.log(`wasm/tests/rigs/${name}.json: ${text.length} bytes`);
-  }
+  for (const path of await writeTestRigs()) console.log(path);
 }

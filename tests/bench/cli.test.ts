@@ -20,7 +20,7 @@ import { rigsLike } from '../helpers/a7.js';
 import { sketchRig, straightLimb } from '../helpers/rig_builder.js';
 
 const root = resolve(import.meta.dirname, '../..');
-const knight = rigsLike('knight')[0].path; // an A7 file: the project's knight (wasm/tests/rigs)
+const knight = rigsLike('knight')[0].path; // an A7 file: the project's knight (build/test-rigs)
 const dir = mkdtempSync(join(tmpdir(), 'bench-cli-test-'));
 afterAll(() => rmSync(dir, { recursive: true, force: true }));
 

@@ -1,8 +1,8 @@
 // Test helpers: the rigs the tests run on, seeded random numbers, and the reference composition
 // of PROTOCOL.md in plain 4x4 matrices.
 //
-// Two sets of rigs in A7 format: the project's own (wasm/tests/rigs, written from the models by
-// scripts/write-test-rigs.ts), always there, and the report's five A7 rigs from a7Dir
+// Two sets of rigs in A7 format: the project's own (build/test-rigs, written from the models by
+// scripts/write-test-rigs.ts in vitest's global setup), always there, and the report's five A7 rigs from a7Dir
 // (a7_folder.ts), when that folder exists. Tests of a general property run on testRigs; tests
 // whose expectations belong to the report's rigs take the options needsA7, which skip them
 // without the folder (and fail them under CI).

@@ -1,8 +1,8 @@
 // Shared test fixtures: the rigs the tests run on, random angles, and the reference composition
 // of PROTOCOL.md written the plain way with 4x4 matrices.
 //
-// Two sets of rigs in A7 format: the project's own (wasm/tests/rigs, written from
-// web/public/models by scripts/write-test-rigs.ts), always there, and the report's five A7 rigs
+// Two sets of rigs in A7 format: the project's own (build/test-rigs, written from
+// web/public/models by scripts/write-test-rigs.ts, which npm test runs first), always there, and the report's five A7 rigs
 // from $IK_A7_DIR (default ../shared/rigs/a7; a relative path starts at the repository root),
 // when that folder exists. Tests of a general property loop over test_rigs(); tests whose
 // expectations belong to the report's rigs use the fixture NeedsA7, which skips them without the
@@ -56,7 +56,7 @@ inline const std::vector<TestRig>& test_rigs() {
   static const std::vector<TestRig> rigs = [] {
     std::vector<TestRig> all;
     for (const std::string& name : project_rig_names())
-      all.push_back({name, false, load_a7_rig(std::string(IK_REPO_ROOT) + "/wasm/tests/rigs/" + name + ".json")});
+      all.push_back({name, false, load_a7_rig(std::string(IK_REPO_ROOT) + "/build/test-rigs/" + name + ".json")});
     if (a7_present())
       for (const std::string& name : a7_rig_names()) all.push_back({name, true, load_a7(name)});
     return all;
