@@ -1,11 +1,11 @@
 // glTF file cases: a base model as .glb, as .gltf with a side .bin, or with its buffer embedded
 // as a data: uri; then glTF-specific and generic JSON mutations, byte damage, a buffer uri
 // leading outside the folder or to a hostile side file, or a hostile path instead of the file.
+import { packGlbText } from '../helpers/glb.js';
 import { mutateBytes } from './byte_mutators.js';
 import type { FileCase } from './file_case.js';
 import type { Entry } from './folder.js';
 import type { Fixture } from './fixture.js';
-import { packGlbText } from './glb_pack.js';
 import { CHARACTER, type GltfBase } from './gltf_bases.js';
 import { mutateGltf } from './gltf_mutators.js';
 import { hostileMain } from './hostile_main.js';

@@ -11,8 +11,16 @@ export function unpackGlb(bytes: Uint8Array): { json: Json; bin: Uint8Array } {
 
 /** A .glb from JSON and an optional BIN chunk. */
 export function packGlb(json: unknown, bin?: Uint8Array): Uint8Array {
+  return packGlbText(JSON.stringify(json), bin);
+}
+
+/**
+ * A .glb from JSON text (which may hold what JSON.stringify cannot write: the fuzzer's mutants) and
+ * an optional BIN chunk, both chunks padded to 4 bytes as the format wants.
+ */
+export function packGlbText(jsonText: string, bin?: Uint8Array): Uint8Array {
   const pad = (n: number): number => (n + 3) & ~3;
-  const text = new TextEncoder().encode(JSON.stringify(json));
+  const text = new TextEncoder().encode(jsonText);
   const jsonLen = pad(text.length), binLen = bin ? pad(bin.length) : 0;
   const total = 12 + 8 + jsonLen + (bin ? 8 + binLen : 0);
   const out = new Uint8Array(total);
