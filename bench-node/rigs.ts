@@ -15,7 +15,7 @@ import { extname, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
 
 import type { RigSpec } from '../web/src/ik/rig_spec.js';
-import type { RigFormat } from '../web/src/rig/load_rig.js';
+import { specWithFileLimits, type RigFormat } from '../web/src/rig/load_rig.js';
 import { loadRigFromPath } from '../web/src/rig/load_rig_node.js';
 import { BenchError, errorLine, quote } from './errors.js';
 
@@ -64,8 +64,7 @@ export async function loadBenchRig(entry: string, humanoidLimits = true): Promis
     throw new BenchError(`${entry}: unknown rig format "${ext}" (expected .glb, .gltf or A7 .json)`);
   try {
     const loaded = await loadRigFromPath(path);
-    const own = humanoidLimits ? null : loaded.gltf?.fileLimits;
-    const spec = own ? { ...loaded.spec, lower: own.lower, upper: own.upper } : loaded.spec;
+    const spec = humanoidLimits ? loaded.spec : specWithFileLimits(loaded);
     return { name: loaded.name, path, format: loaded.format, spec };
   } catch (e) {
     const message = errorLine(e);

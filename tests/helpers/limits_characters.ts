@@ -9,7 +9,7 @@ import { buildDocument, type JointDef } from '../../scripts/models/model.js';
 import { cross, normalize, sub, type Vec3 } from '../../scripts/models/vec.js';
 import type { RigSpec } from '../../web/src/ik/rig_spec.js';
 import type { HumanoidMap, HumanoidRole, HumanoidSource } from '../../web/src/rig/humanoid_roles.js';
-import { loadRig, type LoadedRig } from '../../web/src/rig/load_rig.js';
+import { loadRig, specWithFileLimits } from '../../web/src/rig/load_rig.js';
 import { testCharacterGlb } from './gltf_character.js';
 
 export interface MixamoOptions {
@@ -75,12 +75,6 @@ export const BLENDER_NAMES: Partial<Record<HumanoidRole, string>> = {
   }),
 };
 
-/** The rig's spec with the file's own limits (the importer's humanoid limits taken out), for the tests to apply theirs. */
-function ownLimits(rig: LoadedRig): RigSpec {
-  const own = rig.gltf?.fileLimits;
-  return own ? { ...rig.spec, lower: own.lower, upper: own.upper } : rig.spec;
-}
-
 /** The humanoid map of `spec` from role -> bone name (every name must be a bone). */
 export function mapByNames(spec: RigSpec, source: HumanoidSource, names: Partial<Record<HumanoidRole, string>>): HumanoidMap {
   const bones: HumanoidMap['bones'] = {};
@@ -103,7 +97,7 @@ export interface TestHumanoid {
 
 /** The Mixamo character loaded through the importer, with its map and its built facing. */
 export async function mixamoHumanoid(options: MixamoOptions = {}): Promise<TestHumanoid> {
-  const spec = ownLimits(await loadRig(await mixamoCharacterGlb(options), 'mixamo-character.glb'));
+  const spec = specWithFileLimits(await loadRig(await mixamoCharacterGlb(options), 'mixamo-character.glb'));
   const yaw = ((options.yawDeg ?? 0) * Math.PI) / 180;
   return { spec, map: mapByNames(spec, 'mixamo', MIXAMO_NAMES), forward: [Math.sin(yaw), 0, Math.cos(yaw)], up: [0, 1, 0] };
 }
@@ -113,7 +107,7 @@ export async function mixamoHumanoid(options: MixamoOptions = {}): Promise<TestH
  * Armature tilted 10 degrees about +Z (gltf_character.ts).
  */
 export async function blenderHumanoid(): Promise<TestHumanoid> {
-  const spec = ownLimits(await loadRig(await testCharacterGlb(), 'blender-character.glb'));
+  const spec = specWithFileLimits(await loadRig(await testCharacterGlb(), 'blender-character.glb'));
   const s = Math.sin(Math.PI / 6), c = Math.cos(Math.PI / 6), t = (10 * Math.PI) / 180;
   // Armature: +Z stays +Z under the tilt about Z; up is +Y tilted; both then turned 30 degrees about Y.
   const up: [number, number, number] = [-Math.sin(t), Math.cos(t), 0];

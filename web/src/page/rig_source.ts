@@ -6,7 +6,7 @@ import { MeshoptDecoder } from 'three/addons/libs/meshopt_decoder.module.js';
 
 import type { RigSpec } from '../ik/rig_spec.js';
 import type { RigLimits } from '../rig/humanoid_limits.js';
-import { loadRig, type GltfRigInfo, type SiblingReader } from '../rig/load_rig.js';
+import { loadRig, specWithFileLimits, type GltfRigInfo, type SiblingReader } from '../rig/load_rig.js';
 import { bonesFromGltf } from '../three/find_bones.js';
 import { PoseWriter } from '../three/pose_writer.js';
 import { disposeObject3D } from './dispose_three.js';
@@ -118,13 +118,12 @@ export async function readRig(bytes: Uint8Array, fileName: string, readSibling?:
   const rig = await loadRig(bytes, fileName, readSibling);
   const info = rig.gltf;
   const tooDeep = info !== undefined && info.treeDepth > MAX_MODEL_TREE_DEPTH;
-  const own = info?.fileLimits;
   return {
     name: rig.name,
     format: rig.format === 'a7' ? 'A7 JSON' : rig.format,
     a7: rig.format === 'a7',
-    spec: own ? { ...rig.spec, lower: own.lower, upper: own.upper } : rig.spec,
-    humanoidLimits: own ? { lower: rig.spec.lower, upper: rig.spec.upper } : undefined,
+    spec: specWithFileLimits(rig),
+    humanoidLimits: info?.fileLimits ? { lower: rig.spec.lower, upper: rig.spec.upper } : undefined,
     warnings: tooDeep
       ? [...rig.warnings, `the node tree is ${info.treeDepth} levels deep, more than three.js's glTF loader takes (${MAX_MODEL_TREE_DEPTH}): showing the bones without the model`]
       : rig.warnings,

@@ -22,6 +22,15 @@ export interface LoadedRig {
   warnings: string[];
 }
 
+/**
+ * The rig's spec with the file's own limits (extras.ik, else +-180 degrees) where the importer gave
+ * a recognised humanoid anatomical ones (GltfRigInfo.fileLimits); otherwise the spec itself.
+ */
+export function specWithFileLimits(rig: LoadedRig): RigSpec {
+  const own = rig.gltf?.fileLimits;
+  return own ? { ...rig.spec, lower: own.lower, upper: own.upper } : rig.spec;
+}
+
 /** The file name without directory and extension. */
 export function rigBaseName(fileName: string): string {
   const base = fileName.split(/[\\/]/).pop() ?? fileName;
