@@ -147,8 +147,7 @@ val RigBinding::gradient(const val& angles, const val& target) {
 
 val RigBinding::project(const val& angles) {
   return guarded([&] {
-    copy_in(angles, kin_.num_angles(), angles_, "angles");
-    check_finite(angles_.data(), angles_.size(), "angles");
+    read_angles(angles);  // checked, into angles_
     Eigen::Map<Eigen::VectorXd> a(angles_.data(), angles_.size());
     kin_.project(a);
     return copy_out(angles_.data(), angles_.size());

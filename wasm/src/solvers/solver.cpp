@@ -447,9 +447,7 @@ Solver::Progress Solver::fail(const char* message) {
 
 bool Solver::has_budget() const { return opt_.time_budget_s > 0 && !std::isinf(opt_.time_budget_s); }
 
-bool Solver::out_of_time() const {
-  return has_budget() && elapsed_before_call_ + seconds_since(call_start_) >= opt_.time_budget_s;
-}
+bool Solver::out_of_time() const { return deadline().passed(); }
 
 bool Solver::time_is_up() {
   cut_short_ = cut_short_ || out_of_time();
