@@ -6,7 +6,7 @@ import { beforeAll, describe, expect, it } from 'vitest';
 import type { IkCoreModule } from '../../web/src/ik/module.js';
 import { loadIkNode } from '../../web/src/ik/node.js';
 import { IkRig } from '../../web/src/ik/rig.js';
-import { IkSolver, SOLVER_METHODS, type SolverOptions } from '../../web/src/ik/solver.js';
+import { IkSolver, type SolverOptions } from '../../web/src/ik/solver.js';
 import { defaultTolerances, rigSize } from '../../web/src/rig/tolerances.js';
 import { loadTestRig, randomAngles, rigsLike, seeded, testRigs, type TestRig } from '../helpers/a7.js';
 import { disposeAfterAll } from '../helpers/owned.js';
@@ -17,6 +17,8 @@ const keep = disposeAfterAll();
 beforeAll(async () => {
   ik = await loadIkNode();
 });
+/** The core's methods (its registry), for the tables of cases below. */
+const methods = IkSolver.methods(await loadIkNode());
 
 
 /** The report's tolerances of `testRig` (web/src/rig/tolerances.ts); no time budget. */
@@ -59,15 +61,20 @@ const expectations: Record<string, { samples: number; maxIterations: number; min
 };
 
 describe('the methods', () => {
-  it('are the registered ones, lm first', () => {
-    expect(IkSolver.methods(ik)).toEqual([...SOLVER_METHODS]);
-    for (const m of SOLVER_METHODS) expect(IkSolver.describe(ik, m).length).toBeGreaterThan(10);
+  it('are the registered ones, lm first, each with a label and a description', () => {
+    expect(IkSolver.methods(ik)).toEqual(['lm', 'gn', 'bfgs', 'newton', 'gd']);
+    for (const m of methods) {
+      expect(IkSolver.describe(ik, m).length).toBeGreaterThan(10);
+      expect(IkSolver.label(ik, m).length).toBeGreaterThan(3);
+    }
+    expect(IkSolver.label(ik, 'lm')).toBe('Levenberg–Marquardt');
     expect(() => IkSolver.describe(ik, 'simplex')).toThrow(/unknown solver method "simplex"/);
+    expect(() => IkSolver.label(ik, 'simplex')).toThrow(/unknown solver method "simplex"/);
   });
 });
 
 describe.each(testRigs)('$label: incremental targets through WebAssembly', (testRig) => {
-  it.each([...SOLVER_METHODS])('%s solves them to the report tolerances, inside the limits', (method) => {
+  it.each(methods)('%s solves them to the report tolerances, inside the limits', (method) => {
     const rig = keep(new IkRig(ik, loadTestRig(testRig)));
     const expectation = expectations[method];
     const options = { ...reportOptions(testRig, rig), maxIterations: expectation.maxIterations };

@@ -100,6 +100,7 @@ export interface EmbindSolverClass {
   methods(): string[];
   defaultOptions(): Required<EmbindSolverOptions>;
   describe(method: string): string;
+  label(method: string): string;
   stopReasons(): string[];
   /** The names of the result numbers solveIo() writes after the target, in order. */
   ioStats(): string[];

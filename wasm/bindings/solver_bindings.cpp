@@ -48,11 +48,12 @@ class SolverBinding {
 
   // One line describing `method`; "" for an unknown name.
   static std::string describe(const std::string& method) {
-    return guarded([&] {
-      for (const SolverEntry& e : solver_registry())
-        if (method == e.name) return std::string(e.description);
-      throw RigError("unknown solver method \"" + method + "\"");
-    }, std::string());
+    return guarded([&] { return std::string(entry(method).description); }, std::string());
+  }
+
+  // The short human name of `method` ("Levenberg–Marquardt"); "" for an unknown name.
+  static std::string label(const std::string& method) {
+    return guarded([&] { return std::string(entry(method).label); }, std::string());
   }
 
   std::string method() const { return solver_->name(); }
@@ -188,6 +189,13 @@ class SolverBinding {
  private:
   SolverBinding(RigBinding& rig, std::unique_ptr<Solver> solver) : rig_(rig), solver_(std::move(solver)) {}
 
+  // The registry's entry for `method`; throws RigError for an unknown name.
+  static const SolverEntry& entry(const std::string& method) {
+    for (const SolverEntry& e : solver_registry())
+      if (method == e.name) return e;
+    throw RigError("unknown solver method \"" + method + "\"");
+  }
+
   // Copies the arrays in and starts; throws for wrong lengths and for invalid_input.
   void begin(const val& angles, const val& target) {
     take(angles, target);
@@ -256,6 +264,7 @@ EMSCRIPTEN_BINDINGS(ik_solvers) {
       .class_function("create", &SolverBinding::create, emscripten::allow_raw_pointers())
       .class_function("methods", &SolverBinding::methods)
       .class_function("describe", &SolverBinding::describe)
+      .class_function("label", &SolverBinding::label)
       .class_function("defaultOptions", &SolverBinding::default_options)
       .property("method", &SolverBinding::method)
       .property("running", &SolverBinding::running)

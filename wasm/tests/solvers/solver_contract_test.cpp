@@ -201,14 +201,18 @@ INSTANTIATE_TEST_SUITE_P(Methods, EveryMethod, ::testing::ValuesIn(solver_names(
                          [](const auto& info) { return info.param; });
 
 TEST(SolverRegistry, ListsTheFiveMethodsAndRejectsUnknownNames) {
-  EXPECT_EQ(solver_names(), (std::vector<std::string>{"lm", "gn", "bfgs", "newton", "gd"}));
+  // The built-in methods, first (toy_method_test.cpp may have registered one after them).
+  const std::vector<std::string> names = solver_names();
+  ASSERT_GE(names.size(), 5u);
+  EXPECT_EQ(std::vector<std::string>(names.begin(), names.begin() + 5),
+            (std::vector<std::string>{"lm", "gn", "bfgs", "newton", "gd"}));
   Kinematics kin(test::rigs_like("ikea-lamp").front().rig);  // any rig
   for (const std::string& name : solver_names()) EXPECT_EQ(make_solver(name, kin)->name(), name);
   try {
     make_solver("simplex", kin);
     FAIL() << "no error for an unknown method";
   } catch (const RigError& e) {
-    EXPECT_NE(std::string(e.what()).find("unknown solver method \"simplex\" (known: lm, gn, bfgs, newton, gd)"),
+    EXPECT_NE(std::string(e.what()).find("unknown solver method \"simplex\" (known: lm, gn, bfgs, newton, gd"),
               std::string::npos)
         << e.what();
   }

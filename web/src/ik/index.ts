@@ -5,5 +5,5 @@ export { IkRig } from './rig.js';
 export type { Numbers } from './rig.js';
 export type { RigSpec } from './rig_spec.js';
 export { boneCount, restMatrix } from './rig_spec.js';
-export { IkSolver, SOLVER_METHODS } from './solver.js';
+export { IkSolver } from './solver.js';
 export type { SolverMethod, SolverOptions, SolverResult, StopReason } from './solver.js';

@@ -6,9 +6,12 @@ import type { EmbindSolver, EmbindSolverOptions, EmbindSolverResult, IkCoreModul
 import { checkedNumbers, coreError, plainOptions, toFloat64 } from './inputs.js';
 import type { IkRig, Numbers } from './rig.js';
 
-/** The registered methods, lm first (the default). `IkSolver.methods(module)` lists the build's. */
-export const SOLVER_METHODS = ['lm', 'gn', 'bfgs', 'newton', 'gd'] as const;
-export type SolverMethod = (typeof SOLVER_METHODS)[number];
+/**
+ * A method's name, as the core's registry (wasm/src/solvers/solver_registry.cpp) spells it: "lm"
+ * (the default), "gn", "bfgs", "newton", "gd" in this build. `IkSolver.methods(module)` lists them;
+ * no TypeScript list repeats them, so a method registered in C++ appears everywhere.
+ */
+export type SolverMethod = string;
 
 /** Why a solve stopped (wasm/src/solvers/solver.h gives each one's exact test). */
 export type StopReason =
@@ -156,9 +159,17 @@ export class IkSolver {
   /** solve()'s buffer in WebAssembly memory: angles | target | the result numbers (ModuleFacts.io). */
   private io: Float64Array<ArrayBufferLike> = new Float64Array(0);
 
-  /** The methods this build registers, in display order. */
-  static methods(module: IkCoreModule): string[] {
+  /** The methods this build registers, in display order (lm, the default, first). */
+  static methods(module: IkCoreModule): SolverMethod[] {
     return module.Solver.methods();
+  }
+
+  /** A method's short human name ("Levenberg–Marquardt"). Throws for an unknown name. */
+  static label(module: IkCoreModule, method: string): string {
+    if (typeof method !== 'string') throw new Error(`a solver method is a name such as "lm", not ${typeof method}`);
+    const text = module.Solver.label(method);
+    if (!text) throw coreError(module, 'label');
+    return text;
   }
 
   /** One line describing a method. Throws for an unknown name. */
@@ -175,7 +186,7 @@ export class IkSolver {
    */
   constructor(
     readonly rig: IkRig,
-    method: SolverMethod | string = 'lm',
+    method: SolverMethod = 'lm',
     options: SolverOptions = {},
   ) {
     if (typeof method !== 'string') throw new Error(`a solver method is a name such as "lm", not ${typeof method}`);
