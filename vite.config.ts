@@ -10,6 +10,9 @@ export default defineConfig({
   root: resolve(import.meta.dirname, 'web'),
   publicDir: resolve(import.meta.dirname, 'web/public'),
   plugins: [widgetDevServer()],
+  // Pre-bundle what the page imports. embed-example.html loads the widget script from a path
+  // widgetDevServer() serves (no file there), which the dependency scan would report as missing.
+  optimizeDeps: { entries: ['index.html'] },
   // Cross-origin isolation gives performance.now() microsecond resolution (100 us without it),
   // so the page's per-solve times are measured, not rounded.
   server: { port: 5173, strictPort: false, headers: isolation },
