@@ -1,13 +1,19 @@
 // The names the TypeScript API shares with the bindings, written once on each side and checked
-// here: SolverOptions (web/src/ik/solver.ts) has exactly the core's options (solver_options.h),
-// and the result numbers solveIo() writes (IoStat) are exactly SolverResult's numeric fields, at
-// the offsets the core names: solve() (the shared buffer) agrees with result() (embind's object).
+// here: SolverOptions (web/src/ik/solver.ts) documents exactly the core's options, each with the
+// core's default (read from the interface's source with the TypeScript compiler, so no list of
+// names is repeated here), and the result numbers solveIo() writes (IoStat) are exactly
+// SolverResult's numeric fields, at the offsets the core names: solve() (the shared buffer)
+// agrees with result() (embind's object).
+import { readFileSync } from 'node:fs';
+import { resolve } from 'node:path';
+
+import ts from 'typescript';
 import { beforeAll, describe, expect, it } from 'vitest';
 
 import type { IkCoreModule } from '../../web/src/ik/module.js';
 import { loadIkNode } from '../../web/src/ik/node.js';
 import { IkRig } from '../../web/src/ik/rig.js';
-import { IkSolver, type SolverOptions, type SolverResult } from '../../web/src/ik/solver.js';
+import { IkSolver, type SolverResult } from '../../web/src/ik/solver.js';
 import { disposeAfterAll } from '../helpers/owned.js';
 import { straightLimb } from '../helpers/rig_builder.js';
 
@@ -18,14 +24,30 @@ beforeAll(async () => {
   ik = await loadIkNode();
 });
 
-// The type checker holds these to the interfaces: a missing or an extra name fails `npx tsc`.
-const optionNames = {
-  gradientTolerance: true, errorTolerance: true, tipTolerance: true, maxIterations: true, timeBudgetSeconds: true,
-  historyCapacity: true, paperMode: true, fdStepDeg: true, gdInitialStep: true, backtrackFactor: true, armijoC1: true,
-  maxBacktracks: true, gnSingularCutoff: true, gnMaxStepDeg: true, newtonMaxStepDeg: true, lmInitialMu: true,
-  lmDampingFloor: true, lmMaxRejections: true, restarts: true, stallIterations: true, seed: true, escapeSaddles: true,
-  chainRestarts: true,
-} satisfies Record<keyof SolverOptions, true>;
+/** Each SolverOptions field of web/src/ik/solver.ts with the text of its doc comment. */
+function documentedOptions(): Map<string, string> {
+  const file = resolve(import.meta.dirname, '../../web/src/ik/solver.ts');
+  const source = ts.createSourceFile(file, readFileSync(file, 'utf8'), ts.ScriptTarget.ES2022, true);
+  const fields = new Map<string, string>();
+  source.forEachChild((node) => {
+    if (!ts.isInterfaceDeclaration(node) || node.name.text !== 'SolverOptions') return;
+    for (const member of node.members) {
+      const docs = ts.getJSDocCommentsAndTags(member).map((d) => ts.getTextOfJSDocComment(d.comment) ?? '');
+      fields.set(member.name!.getText(source), docs.join(' '));
+    }
+  });
+  return fields;
+}
+
+/** The value a doc comment gives after "Default" (a number, true/false, or 180/pi), or undefined. */
+function statedDefault(doc: string): number | boolean | undefined {
+  const m = /Default:? ([^\s,;()]+?)\.?(?:\s|$|,|;|\()/.exec(doc);
+  if (!m) return undefined;
+  const text = m[1];
+  if (text === 'true' || text === 'false') return text === 'true';
+  if (text === '180/pi') return 180 / Math.PI;
+  return Number(text);
+}
 
 type ResultNumber = Exclude<keyof SolverResult, 'angles' | 'stopReason' | 'message'>;
 const resultNumbers = {
@@ -34,8 +56,25 @@ const resultNumbers = {
 } satisfies Record<ResultNumber, true>;
 
 describe('tables shared with the bindings', () => {
-  it("SolverOptions names exactly the core's options", () => {
-    expect(Object.keys(ik.Solver.defaultOptions()).sort()).toEqual(Object.keys(optionNames).sort());
+  it("SolverOptions names exactly the core's options, each documented with the core's default", () => {
+    const core = ik.Solver.defaultOptions() as Record<string, number | boolean>;
+    const documented = documentedOptions();
+    expect([...documented.keys()].sort()).toEqual(Object.keys(core).sort());
+    for (const [name, doc] of documented) {
+      const stated = statedDefault(doc);
+      expect(stated, `${name}: its doc comment states no default ("Default X.")`).not.toBeUndefined();
+      if (typeof stated === 'number') expect(stated, name).toBeCloseTo(core[name] as number, 12);
+      else expect(stated, name).toBe(core[name]);
+    }
+  });
+
+  it("reads a doc comment's default", () => {
+    expect(statedDefault('Stop when E < this. Default 2e-4. Unused when')).toBe(2e-4);
+    expect(statedDefault('first trial step. Default 180/pi.')).toBe(180 / Math.PI);
+    expect(statedDefault('Default true.')).toBe(true);
+    expect(statedDefault('Default 64 per solve.')).toBe(64);
+    expect(statedDefault('(replaces the E test). Default 0 (the E test).')).toBe(0);
+    expect(statedDefault('no default here')).toBeUndefined();
   });
 
   it("the result numbers are SolverResult's, and solve() reads each at the core's offset", () => {
