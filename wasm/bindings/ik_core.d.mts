@@ -50,7 +50,7 @@ export interface EmbindSolverResult {
   elapsedSeconds: number;
 }
 
-/** Solver options in camelCase (wasm/bindings/solver_options.h); every field optional. */
+/** Solver options in camelCase (the list wasm/src/solvers/solver_options.def; read by wasm/bindings/solver_options.h); every field optional. */
 export interface EmbindSolverOptions {
   gradientTolerance?: number;
   errorTolerance?: number;

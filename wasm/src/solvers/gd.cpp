@@ -1,11 +1,12 @@
 // Projected gradient descent: p = -grad E, then projected backtracking.
-// Paper mode, as the report ran it: every line search starts at alpha = 180/pi and halves until
-// E decreases (no sufficient-decrease constant).
+// Paper mode, as the report ran it: every line search starts at alpha = gd_initial_step (180/pi)
+// and halves until E decreases (no sufficient-decrease constant, c1 = 0).
 // Outside paper mode: the angles that cannot move (fixed, or pushed against a bound) stay put,
 // and each line search starts at the Barzilai-Borwein step alpha = s's / s'y (s, y: the last
-// change of the angles and of the gradient), the spectral projected gradient of Birgin, Martinez
-// and Raydan with a monotone Armijo test: the direction is still -grad E, but its length follows
-// the curvature met along the way instead of starting from 180/pi at every iteration.
+// change of the angles and of the gradient; gd_initial_step at a run's first iteration or when
+// s'y <= 0), the spectral projected gradient of Birgin, Martinez and Raydan with a monotone
+// Armijo test (c1 = kArmijoC1, not the option armijo_c1): the direction is still -grad E, but its
+// length follows the curvature met along the way instead of starting from 180/pi every time.
 #include <algorithm>
 #include <memory>
 

@@ -4,9 +4,10 @@
 // residual size (3 x #effectors), and drops singular values below gn_singular_cutoff times the
 // largest (a nearly singular J otherwise sends the step far along its weakest direction). The
 // step uses the free angles only (not fixed, not pushed against a bound by grad E); angles on a
-// limit that the step would push further out are held and the rest re-solved; and if that projected path finds no lower point, every angle the step would take
-// past a limit is fixed on it and the rest re-solved, so the step stays inside the box. Either
-// step is scaled down to move no angle more than gn_max_step_deg.
+// limit that the step would push further out are held and the rest re-solved; and if that
+// projected path finds no lower point, every angle the step would take past a limit is fixed on
+// it and the rest re-solved, so the step stays inside the box (active_set.h). Either step is
+// scaled down to move no angle more than gn_max_step_deg.
 #include <Eigen/Eigenvalues>
 #include <Eigen/SVD>
 #include <algorithm>
@@ -14,6 +15,7 @@
 #include <memory>
 #include <vector>
 
+#include "active_set.h"
 #include "line_search.h"
 #include "size_limits.h"
 #include "solver.h"
@@ -37,8 +39,8 @@ class GaussNewton final : public Solver {
     svd_ = Eigen::JacobiSVD<Eigen::MatrixXd>(residuals, angles, Eigen::ComputeThinU | Eigen::ComputeThinV);
     projected_.resize(std::min(residuals, angles));
     direction_.resize(angles);
-    mask_.resize(angles);
-    step_.resize(angles);
+    all_angles_ = Eigen::VectorXd::Ones(angles);
+    active_set_.resize(angles);
     rhs_.resize(residuals);
     columns_.resize(angles);
     step_k_.resize(angles);
@@ -52,54 +54,36 @@ class GaussNewton final : public Solver {
 
   Progress iterate() override {
     if (opt_.paper_mode) {  // the original: the full J, the step projected by the line search
-      mask_.setOnes();
-      if (!gauss_newton_direction(r_)) return fail("the SVD of the Jacobian is not finite");
-      step_ = direction_;
-      return backtrack(step_, 1, opt_.armijo_c1) ? Progress::moved : Progress::stuck;
+      if (!gauss_newton_direction(all_angles_, r_)) return fail("the SVD of the Jacobian is not finite");
+      return backtrack(direction_, 1, opt_.armijo_c1) ? Progress::moved : Progress::stuck;
     }
     // The free angles only, first along the projected path of the Gauss-Newton step with the
     // angles it would push out of a limit they sit on held there; if no point of that path is
     // lower, with every angle the full step would take past a limit fixed on the limit and the
     // others re-solved for the residual that remains (the step then stays inside the box).
-    if (!free_direction(/*clip=*/false)) return fail("the SVD of the Jacobian is not finite");
-    cap_largest_change(step_, opt_.gn_max_step_deg);
-    if (backtrack(step_, 1, opt_.armijo_c1)) return Progress::moved;
-    if (!free_direction(/*clip=*/true)) return fail("the SVD of the Jacobian is not finite");
-    cap_largest_change(step_, opt_.gn_max_step_deg);
-    return backtrack(step_, 1, opt_.armijo_c1) ? Progress::moved : Progress::stuck;
+    if (!free_direction(ActiveSet::Fix::on_limit_only)) return fail("the SVD of the Jacobian is not finite");
+    Eigen::VectorXd& step = active_set_.step();
+    cap_largest_change(step, opt_.gn_max_step_deg);
+    if (backtrack(step, 1, opt_.armijo_c1)) return Progress::moved;
+    if (!free_direction(ActiveSet::Fix::past_limit)) return fail("the SVD of the Jacobian is not finite");
+    cap_largest_change(step, opt_.gn_max_step_deg);
+    return backtrack(step, 1, opt_.armijo_c1) ? Progress::moved : Progress::stuck;
   }
 
-  // step_ on the free angles with the active-set passes described in iterate().
-  bool free_direction(bool clip) {
-    mask_ = free_mask_;
+  // active_set_.step() on the free angles, fixing the angles `fix` says on their limits.
+  bool free_direction(ActiveSet::Fix fix) {
     rhs_ = r_;
-    step_.setZero();
-    for (int pass = 0; pass < kActiveSetPasses; ++pass) {
-      if (!gauss_newton_direction(rhs_)) return false;
-      bool changed = false;
-      for (int i = 0; i < n_; ++i) {
-        if (mask_[i] == 0) continue;
-        const double to = a_[i] + direction_[i];
-        const bool past_lower = to < kin_.lower()[i], past_upper = to > kin_.upper()[i];
-        const bool on_limit = a_[i] <= kin_.lower()[i] || a_[i] >= kin_.upper()[i];
-        if (!(past_lower || past_upper) || (!clip && !on_limit)) {
-          step_[i] = direction_[i];
-          continue;
-        }
-        step_[i] = (past_lower ? kin_.lower()[i] : kin_.upper()[i]) - a_[i];  // 0 if held on the limit
-        mask_[i] = 0;
-        changed = true;
-        rhs_.noalias() += step_[i] * J_.col(i);  // this angle now moves by a known amount
-      }
-      if (!changed) break;
-    }
-    return true;
+    const auto solve_system = [&] { return gauss_newton_direction(active_set_.mask(), rhs_); };
+    const auto proposed = [&](int i) { return direction_[i]; };
+    const auto take_out = [&](int i, double step) { rhs_.noalias() += step * J_.col(i); };
+    return active_set_.run(a_, kin_.lower(), kin_.upper(), free_, num_free_, fix, Deadline(), solve_system, proposed,
+                           take_out) == ActiveSet::Status::done;
   }
 
-  // direction_ = -pinv(J) rhs with J's columns masked by mask_.
-  bool gauss_newton_direction(const Eigen::VectorXd& rhs) {
-    if (!opt_.paper_mode && m_ <= kMaxResiduals) return residual_size_direction(rhs);
-    jac_.noalias() = J_ * mask_.asDiagonal();
+  // direction_ = -pinv(J) rhs with the columns of the angles with `mask` 0 zeroed.
+  bool gauss_newton_direction(const Eigen::VectorXd& mask, const Eigen::VectorXd& rhs) {
+    if (!opt_.paper_mode && m_ <= kMaxResiduals) return residual_size_direction(mask, rhs);
+    jac_.noalias() = J_ * mask.asDiagonal();
     svd_.compute(jac_);
     // pinv(J) r = V S^+ U^T r; singular values below max(rows, cols) * eps * s_max count as 0
     // (the original's igl::pinv tolerance).
@@ -121,11 +105,11 @@ class GaussNewton final : public Solver {
   // eigen-decomposition instead of an m x n SVD. The m x m matrices have a fixed maximum size
   // (kMaxResiduals), so the decomposition's temporaries live on the stack: no allocation. Rigs
   // with more residuals take the SVD of J.
-  bool residual_size_direction(const Eigen::VectorXd& rhs) {
-    // The columns of the angles in mask_, side by side (the others would only add zeros).
+  bool residual_size_direction(const Eigen::VectorXd& mask, const Eigen::VectorXd& rhs) {
+    // The columns of the angles in `mask`, side by side (the others would only add zeros).
     int k = 0;
     for (int i = 0; i < n_; ++i)
-      if (mask_[i] != 0) {
+      if (mask[i] != 0) {
         jac_.col(k) = J_.col(i);
         columns_[k++] = i;
       }
@@ -147,7 +131,6 @@ class GaussNewton final : public Solver {
     return true;
   }
 
-  static constexpr int kActiveSetPasses = 4;
   static constexpr int kMaxResiduals = 48;  // 16 end effectors
   using SmallMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxResiduals, kMaxResiduals>;
   using SmallVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxResiduals, 1>;
@@ -156,7 +139,8 @@ class GaussNewton final : public Solver {
   SmallVector projected_m_, y_;
   Eigen::MatrixXd jac_;
   Eigen::JacobiSVD<Eigen::MatrixXd> svd_;
-  Eigen::VectorXd projected_, direction_, step_, mask_, rhs_;
+  Eigen::VectorXd projected_, direction_, all_angles_, rhs_;
+  ActiveSet active_set_;
   std::vector<int> columns_;  // residual-size path: the angle of each column of jac_
   Eigen::VectorXd step_k_;    // residual-size path: the step over those columns
 };

@@ -3,16 +3,17 @@
 // with error-dependent damping lambda = (mu |r|^2 / reach^2 + lm_damping_floor) * s, s the mean
 // diagonal of Jf Jf^T (so lambda shrinks like |r|^2 and the local convergence is quadratic even
 // where J is rank-deficient), and mu adapted from the gain ratio rho = actual / predicted
-// decrease (Nielsen's rule). Bounds are handled inside the step: an angle whose step would
-// leave its limits is fixed on the limit and the rest re-solved (a few active-set passes);
-// angles that are fixed or pushed outward by grad E are not in Jf at all.
+// decrease (Nielsen's rule, damping.h). Bounds are handled inside the step: an angle whose step
+// would leave its limits is fixed on the limit and the rest re-solved (active_set.h); angles that
+// are fixed or pushed outward by grad E are not in Jf at all.
 //
 // Restarts after a stall (option `restarts`) are the base Solver's, as for every method.
-#include <algorithm>
 #include <cmath>
-#include <limits>
 #include <memory>
+#include <vector>
 
+#include "active_set.h"
+#include "damping.h"
 #include "small_cholesky.h"
 #include "solver.h"
 
@@ -50,14 +51,10 @@ class LevenbergMarquardt final : public Solver {
     y_.resize(m);
     rhs_.resize(m);
     jd_.resize(m);
-    delta_.resize(n);
-    clipped_.assign(n, 0);
+    active_set_.resize(n);
   }
 
-  void reset() override {
-    mu_ = opt_.lm_initial_mu;
-    nu_ = 2;
-  }
+  void reset() override { damping_.reset(opt_.lm_initial_mu); }
 
   Progress iterate() override {
     const int nf = num_free_;
@@ -85,8 +82,8 @@ class LevenbergMarquardt final : public Solver {
 
     for (int attempt = 0; attempt < opt_.lm_max_rejections; ++attempt) {
       if (attempt > 0 && time_is_up()) return Progress::stuck;
-      const double lambda = (mu_ * relative_error2 + opt_.lm_damping_floor) * s;
-      switch (damped_step(lambda, nf)) {
+      const double lambda = damping_.shift(relative_error2, opt_.lm_damping_floor, s);
+      switch (damped_step(lambda)) {
         case Step::failed: return fail("the damped normal matrix could not be factorised");
         case Step::out_of_time: return Progress::stuck;
         case Step::ok: break;
@@ -103,18 +100,12 @@ class LevenbergMarquardt final : public Solver {
           jd_.segment<3>(3 * column_effectors_[p]) += d * block(column_effectors_[p], j);
       }
       const double predicted = -r_.dot(jd_) - 0.5 * jd_.squaredNorm();
-      const double rho = (E_ - E_trial) / predicted;
-      if (std::isfinite(E_trial) && E_trial < E_ && predicted > 0 && rho > kMinGain) {
-        mu_ *= std::max(1.0 / 3, 1 - std::pow(2 * rho - 1, 3));
-        mu_ = std::max(mu_, kMinMu);
-        nu_ = 2;
+      if (damping_.accept(E_, E_trial, predicted)) {
         a_.swap(trial_);
         r_.swap(r_trial_);
         E_ = E_trial;
         return Progress::moved;
       }
-      mu_ = std::min(mu_ * nu_, kMaxMu);
-      nu_ = std::min(2 * nu_, kMaxNu);
     }
     return Progress::stuck;
   }
@@ -126,61 +117,54 @@ class LevenbergMarquardt final : public Solver {
 
   // Writes trial_ = P(a_ + d) for the damped step d with `lambda`, bounds handled by the active
   // set. Fails if the factorisation failed; stops when the time budget ran out (on a rig of
-  // thousands of angles, taking clipped columns out costs as much as building the matrix).
-  Step damped_step(double lambda, int nf) {
+  // thousands of angles, taking fixed columns out costs as much as building the matrix).
+  Step damped_step(double lambda) {
     reduced_ = normal_;
     rhs_ = r_;
-    std::fill(clipped_.begin(), clipped_.begin() + nf, 0);
-    for (int pass = 0; pass < kActiveSetPasses; ++pass) {
+    // (Jf Jf^T + lambda I) y = rhs over the angles still in the set.
+    const auto solve_system = [&] {
       shifted_ = reduced_;
       shifted_.diagonal().array() += lambda;
-      if (!small_cholesky(shifted_, m_)) return Step::failed;
+      if (!small_cholesky(shifted_, m_)) return false;
       y_ = rhs_;
       small_cholesky_solve(shifted_, m_, y_);
-      bool clipped_more = false;
-      for (int c = 0; c < nf; ++c) {
-        if (c % 64 == 63 && time_is_up()) return Step::out_of_time;
-        if (clipped_[c]) continue;
-        const int i = free_[c];
-        double d = 0;  // -(Jf^T y)_c
-        for (int p = column_start_[i]; p < column_start_[i + 1]; ++p)
-          d -= block(column_effectors_[p], i).dot(y_.segment<3>(3 * column_effectors_[p]));
-        const double to = a_[i] + d;
-        if (to < kin_.lower()[i] || to > kin_.upper()[i]) {
-          d = (to < kin_.lower()[i] ? kin_.lower()[i] : kin_.upper()[i]) - a_[i];
-          clipped_[c] = 1;
-          clipped_more = true;
-          // This angle now moves by a known d: take its column out of the system.
-          for (int p = column_start_[i]; p < column_start_[i + 1]; ++p) {
-            const int e = column_effectors_[p];
-            rhs_.segment<3>(3 * e) += d * block(e, i);
-            for (int q = column_start_[i]; q < column_start_[i + 1]; ++q) {
-              const int f = column_effectors_[q];
-              reduced_.block<3, 3>(3 * e, 3 * f).noalias() -= block(e, i) * block(f, i).transpose();
-            }
-          }
+      return true;
+    };
+    // Angle i's step -(Jf^T y)_i.
+    const auto proposed = [&](int i) {
+      double d = 0;
+      for (int p = column_start_[i]; p < column_start_[i + 1]; ++p)
+        d -= block(column_effectors_[p], i).dot(y_.segment<3>(3 * column_effectors_[p]));
+      return d;
+    };
+    // Angle i moves by a known d: its column leaves the system.
+    const auto take_out = [&](int i, double d) {
+      for (int p = column_start_[i]; p < column_start_[i + 1]; ++p) {
+        const int e = column_effectors_[p];
+        rhs_.segment<3>(3 * e) += d * block(e, i);
+        for (int q = column_start_[i]; q < column_start_[i + 1]; ++q) {
+          const int f = column_effectors_[q];
+          reduced_.block<3, 3>(3 * e, 3 * f).noalias() -= block(e, i) * block(f, i).transpose();
         }
-        delta_[c] = d;
       }
-      if (!clipped_more) break;
+    };
+    switch (active_set_.run(a_, kin_.lower(), kin_.upper(), free_, num_free_, ActiveSet::Fix::past_limit, deadline(),
+                            solve_system, proposed, take_out)) {
+      case ActiveSet::Status::solve_failed: return Step::failed;
+      case ActiveSet::Status::out_of_time: gave_up_for_time(); return Step::out_of_time;
+      case ActiveSet::Status::done: break;
     }
     trial_ = a_;
-    for (int c = 0; c < nf; ++c) trial_[free_[c]] += delta_[c];
+    for (int c = 0; c < num_free_; ++c) trial_[free_[c]] += active_set_.step()[free_[c]];
     kin_.project(trial_);
     return Step::ok;
   }
 
-  static constexpr int kActiveSetPasses = 4;
-  static constexpr double kMinGain = 1e-4;
-  static constexpr double kMinMu = 1e-12;
-  static constexpr double kMaxMu = 1e16;
-  static constexpr double kMaxNu = 64;
-
   std::vector<int> column_start_, column_effectors_;  // per angle j: column_effectors_[start[j]..start[j+1])
   Eigen::MatrixXd normal_, reduced_, shifted_;
-  Eigen::VectorXd y_, rhs_, jd_, delta_;
-  std::vector<char> clipped_;
-  double mu_ = 1, nu_ = 2;
+  Eigen::VectorXd y_, rhs_, jd_;
+  ActiveSet active_set_;
+  NielsenDamping damping_;
 };
 
 }  // namespace

@@ -12,15 +12,16 @@
 // gets curvature of C's size and cannot send the step far. The shift
 //   mu = (m |r|^2 / reach^2 + floor) * s
 // damps the step, m adapted to the gain ratio rho = actual / predicted decrease of the quadratic
-// model (Nielsen's rule, as in lm.cpp), and grows 4x while the Cholesky factorisation fails (the
-// matrix indefinite). An angle whose step would leave its limits is fixed on the limit and the
-// rest re-solved; the step is capped at newton_max_step_deg per angle.
+// model (Nielsen's rule, damping.h, as lm's), and grows 4x while the Cholesky factorisation fails
+// (the matrix indefinite). An angle whose step would leave its limits is fixed on the limit and
+// the rest re-solved (active_set.h); the step is capped at newton_max_step_deg per angle.
 #include <Eigen/Cholesky>
-#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <memory>
 
+#include "active_set.h"
+#include "damping.h"
 #include "line_search.h"
 #include "size_limits.h"
 #include "solver.h"
@@ -49,13 +50,10 @@ class ProjectedNewton final : public Solver {
     rhs_.resize(n);
     step_.resize(n);
     work_.resize(n);
-    mask_.resize(n);
+    active_set_.resize(n);
   }
 
-  void reset() override {
-    m_factor_ = opt_.lm_initial_mu;
-    nu_ = 2;
-  }
+  void reset() override { damping_.reset(opt_.lm_initial_mu); }
 
   Progress iterate() override {
     if (num_free_ == 0) return Progress::stuck;
@@ -72,10 +70,10 @@ class ProjectedNewton final : public Solver {
 
     for (int attempt = 0; attempt < opt_.lm_max_rejections; ++attempt) {
       if (attempt > 0 && time_is_up()) return Progress::stuck;
-      const double mu = (m_factor_ * relative_error2 + opt_.lm_damping_floor) * s;
+      const double mu = damping_.shift(relative_error2, opt_.lm_damping_floor, s);
       switch (newton_step(mu)) {
         case Step::indefinite:
-          m_factor_ = std::min(4 * std::max(m_factor_, 1e-6), kMaxFactor);
+          damping_.grow_for_indefinite();
           continue;
         case Step::not_finite:
           return fail("the Newton step is not finite");
@@ -88,25 +86,20 @@ class ProjectedNewton final : public Solver {
       step_ = trial_ - a_;
       work_.noalias() = H_ * step_;
       const double predicted = -(g_.dot(step_) + 0.5 * step_.dot(work_));
-      const double rho = (E_ - E_trial) / predicted;
-      if (std::isfinite(E_trial) && E_trial < E_ && predicted > 0 && rho > kMinGain) {
-        m_factor_ = std::max(m_factor_ * std::max(1.0 / 3, 1 - std::pow(2 * rho - 1, 3)), kMinFactor);
-        nu_ = 2;
+      if (damping_.accept(E_, E_trial, predicted)) {
         a_.swap(trial_);
         r_.swap(r_trial_);
         E_ = E_trial;
         return Progress::moved;
       }
-      m_factor_ = std::min(m_factor_ * nu_, kMaxFactor);
-      nu_ = std::min(2 * nu_, 64.0);
     }
     return Progress::stuck;
   }
 
-  // modified_ = H + f (I - P) on the angles with mask_ 1; the other rows and columns become those
+  // modified_ = H + f (I - P) on the angles with `mask` 1; the other rows and columns become those
   // of the identity. Returns false if J's row space could not be factorised.
-  bool modify_hessian() {
-    Jm_.noalias() = J_ * mask_.asDiagonal();
+  bool modify_hessian(const Eigen::VectorXd& mask) {
+    Jm_.noalias() = J_ * mask.asDiagonal();
     normal_.noalias() = Jm_ * Jm_.transpose();
     const double trace = normal_.trace();
     normal_.diagonal().array() += 1e-12 * trace + std::numeric_limits<double>::min();
@@ -117,7 +110,7 @@ class ProjectedNewton final : public Solver {
     modified_.noalias() = (-null_curvature_) * (Jm_.transpose() * Y_);  // -f P
     modified_ += H_;
     for (int i = 0; i < n_; ++i) {
-      if (mask_[i] != 0) {
+      if (mask[i] != 0) {
         modified_(i, i) += null_curvature_;
         continue;
       }
@@ -133,47 +126,43 @@ class ProjectedNewton final : public Solver {
   // trial_ = P(a_ + p) with (modified H + mu I) p = -g on the free angles; angles that would leave
   // their limits are fixed there and the rest re-solved.
   Step newton_step(double mu) {
-    mask_ = free_mask_;
-    rhs_ = -g_.cwiseProduct(mask_);
-    step_.setZero();
-    for (int pass = 0; pass < kActiveSetPasses; ++pass) {
-      if (!modify_hessian()) return Step::not_finite;
-      shifted_ = modified_;
-      shifted_.diagonal() += mu * mask_;
-      llt_.compute(shifted_);
-      if (llt_.info() != Eigen::Success) return Step::indefinite;
-      work_ = rhs_.cwiseProduct(mask_);
-      llt_.solveInPlace(work_);
-      bool clipped_more = false;
-      for (int c = 0; c < num_free_; ++c) {
-        const int i = free_[c];
-        if (mask_[i] == 0) continue;
-        const double to = a_[i] + work_[i];
-        if (to < kin_.lower()[i] || to > kin_.upper()[i]) {
-          step_[i] = (to < kin_.lower()[i] ? kin_.lower()[i] : kin_.upper()[i]) - a_[i];
-          mask_[i] = 0;
-          clipped_more = true;
-          rhs_.noalias() -= step_[i] * H_.col(i);  // this angle now moves by a known amount
-        } else {
-          step_[i] = work_[i];
-        }
+    rhs_ = -g_.cwiseProduct(free_mask_);
+    Step failure = Step::ok;
+    const Eigen::VectorXd& mask = active_set_.mask();
+    const auto solve_system = [&] {
+      if (!modify_hessian(mask)) {
+        failure = Step::not_finite;
+        return false;
       }
-      if (!clipped_more) break;
-    }
-    if (!std::isfinite(cap_largest_change(step_, opt_.newton_max_step_deg))) return Step::not_finite;
-    trial_ = a_ + step_;
+      shifted_ = modified_;
+      shifted_.diagonal() += mu * mask;
+      llt_.compute(shifted_);
+      if (llt_.info() != Eigen::Success) {
+        failure = Step::indefinite;
+        return false;
+      }
+      work_ = rhs_.cwiseProduct(mask);
+      llt_.solveInPlace(work_);
+      return true;
+    };
+    const auto proposed = [&](int i) { return work_[i]; };
+    const auto take_out = [&](int i, double step) { rhs_.noalias() -= step * H_.col(i); };
+    if (active_set_.run(a_, kin_.lower(), kin_.upper(), free_, num_free_, ActiveSet::Fix::past_limit, Deadline(),
+                        solve_system, proposed, take_out) != ActiveSet::Status::done)
+      return failure;  // no deadline: only the solve can stop the active set
+    Eigen::VectorXd& step = active_set_.step();
+    if (!std::isfinite(cap_largest_change(step, opt_.newton_max_step_deg))) return Step::not_finite;
+    trial_ = a_ + step;
     kin_.project(trial_);
     return Step::ok;
   }
 
-  static constexpr int kActiveSetPasses = 4;
-  static constexpr double kMinGain = 1e-4;
-  static constexpr double kMinFactor = 1e-12;
-  static constexpr double kMaxFactor = 1e16;
   Eigen::MatrixXd H_, modified_, shifted_, Jm_, Y_, normal_;
   Eigen::LLT<Eigen::MatrixXd> llt_, normal_llt_;
-  Eigen::VectorXd rhs_, step_, work_, mask_;
-  double m_factor_ = 1, nu_ = 2, null_curvature_ = 0;
+  Eigen::VectorXd rhs_, step_, work_;
+  ActiveSet active_set_;
+  NielsenDamping damping_;
+  double null_curvature_ = 0;
 };
 
 }  // namespace

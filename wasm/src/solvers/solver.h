@@ -1,5 +1,5 @@
-// The interface every IK method implements: options with defaults, a summary, the stop reasons,
-// and a start / step / solve cycle over one Kinematics.
+// The interface every IK method implements: options with defaults (solver_options.h), a summary,
+// the stop reasons, and a start / step / solve cycle over one Kinematics.
 //
 // Units everywhere: angles in DEGREES (3 per bone, XZX), tips and targets in rig units,
 // E = 1/2 |x(A) - x_b|^2 in rig units^2, gradients in rig units^2 per degree, time in seconds.
@@ -10,16 +10,16 @@
 #pragma once
 
 #include <Eigen/Core>
-#include <chrono>
-#include <cstdint>
 #include <string>
 #include <vector>
 
 #include "chain_restart.h"
 #include "deadline.h"
 #include "kinematics.h"
-#include "quasi_random.h"
+#include "restarts.h"
 #include "saddle_escape.h"
+#include "solver_options.h"
+#include "time_budget.h"
 
 namespace ik {
 
@@ -28,9 +28,11 @@ enum class StopReason {
   converged_E,        // on target: E < error_tolerance, or with tip_tolerance > 0 every effector's tip
                       // within tip_tolerance of its target
   converged_grad,     // |g| < gradient_tolerance, not on target; g = grad E without the components of fixed
-                      // angles and of angles on a bound that the gradient pushes outward (paper mode: the
-                      // full grad E). Outside paper mode no direction of negative curvature was found there
-                      // (a local minimum: the closest point the solver can reach from here)
+                      // angles and of angles on a bound that the gradient pushes outward (free_set.h; paper
+                      // mode: the full grad E). While restarts are left a run stops there only once |g| <
+                      // gradient_tolerance / 10 (descends_further()), and then restarts. Outside paper mode
+                      // with escape_saddles no direction of negative curvature was found there (a local
+                      // minimum: the closest point the solver can reach from here)
   zero_step,          // the line search (or damping loop) found no point with lower E: the trial point
                       // equalled A, or max_backtracks tries failed; restarts exhausted if enabled
   max_iterations,     // iterations >= max_iterations
@@ -42,76 +44,6 @@ enum class StopReason {
 
 // "running", "converged_E", ... exactly the enumerator names.
 const char* stop_reason_name(StopReason reason);
-
-struct SolverOptions {
-  // Stopping tests. Defaults are PROTOCOL.md's for every rig but beast (which uses 0.01, 0.002).
-  double gradient_tolerance = 1e-4;  // rig units^2 per degree
-  double error_tolerance = 2e-4;     // rig units^2
-  int max_iterations = 100000;
-  double time_budget_s = 1.0;        // seconds; 0 or infinity: no limit
-  // Rig units. > 0: "on target" means every effector's tip lies within this distance of its
-  // target, and replaces the E test (error_tolerance is then unused). 0: the E test.
-  double tip_tolerance = 0;
-  int history_capacity = 10000;      // E values kept per solve (the first ones; see error_history())
-
-  // Reproduce the original program (shiinamiyuki/CSC466_Project): its central difference with
-  // step fd_step_deg clamped to the limits, divided by h as it did (twice the derivative away
-  // from the limits), the full |grad E| in the gradient test, and its line searches (Armijo on
-  // alpha grad.p, halving until the step is 0). Counting differs by one: the original counted the
-  // final call that found a stopping test true; iterations here counts accepted steps.
-  bool paper_mode = false;
-  double fd_step_deg = 1e-7;
-
-  // Projected backtracking (gd, bfgs, gn, newton). GD starts at gd_initial_step, the others at 1.
-  double gd_initial_step = 57.29577951308232;  // 180 / pi
-  double backtrack_factor = 0.5;
-  double armijo_c1 = 1e-3;                     // gd uses simple decrease (c1 = 0), as the report
-  int max_backtracks = 60;                     // outside paper mode; paper mode runs until the step is 0
-
-  // Gauss-Newton: singular values of J below this times the largest count as 0 in the
-  // pseudo-inverse (outside paper mode; paper mode uses the original's max(rows, cols) * eps, with
-  // which a nearly singular J sends the step thousands of degrees along its weakest direction).
-  double gn_singular_cutoff = 3e-3;
-  // Gauss-Newton, outside paper mode: the step is scaled down so that no angle moves more than
-  // this many degrees. A full step from a straight chain can swing a joint by hundreds of degrees
-  // into another basin (random targets, native: lamp 10.6 -> 7.0 us mean, knight 825 -> 428 us).
-  double gn_max_step_deg = 60.0;
-
-  // Newton: largest step per angle, degrees.
-  double newton_max_step_deg = 45.0;
-
-  // Levenberg-Marquardt (and Newton's shift): damping lambda = mu * (|r| / reach)^2 * s +
-  // lm_damping_floor * s, where s is the mean diagonal of J J^T (Newton: of Hess E) over the free
-  // angles, reach the rig's longest effector chain, and mu starts at lm_initial_mu.
-  double lm_initial_mu = 1.0;
-  double lm_damping_floor = 1e-12;
-  int lm_max_rejections = 30;   // damping increases per iteration before zero_step
-
-  // Restarts (every method, outside paper mode): when a run stalls above error_tolerance (zero
-  // step, a stationary point, or best E down < 10% in stall_iterations) it restarts from a
-  // quasi-random point inside the limits, keeping the best, until this many restarts or the time
-  // budget are spent. On by default (every target of the benchmarks is reachable); set 0 while a
-  // user drags, where a restart would make the pose jump.
-  int restarts = 1000;
-  int stall_iterations = 30;     // a run whose best E fell by < 10% over this many iterations stalls
-  std::uint32_t seed = 1;        // quasi-random sequence offset; same seed, same restarts
-
-  // Outside paper mode: a run that stops at a stationary point off target (a straight limb whose
-  // target moved along it, a tip pointing away from its target) first looks for a direction of
-  // negative curvature of E there and, if E falls along it, goes on from the lower point
-  // (saddle_escape.h). The pose moves only as far as E keeps falling: no jump. While restarts
-  // are left they come first (restarts = 0 while a user drags). false: stop at once, as before.
-  bool escape_saddles = true;
-  // Outside paper mode, with no restart left: a run that ends at a local minimum off target that
-  // no escape leaves starts again from the best point with only the off-target chains moved
-  // (chain_restart.h), at most this many times per solve. The other chains keep their pose;
-  // an effector whose target is beyond its chain's reach gets none. A solve that starts where
-  // the previous one ended, towards the same target, goes on with the restarts that one left
-  // (a held drag whose frame budget ran out); otherwise the same start, target and options give
-  // the same chain restarts. 64: the drag and reach experiments on every project and A7 rig
-  // (8 left 0.9-2.5% of reachable reach steps off target on five rigs, 32 on the hand).
-  int chain_restarts = 64;
-};
 
 struct SolverSummary {
   Eigen::VectorXd angles;       // best angles found (#angles, degrees, inside the limits)
@@ -203,12 +135,14 @@ class Solver {
   // Marks a numerical failure with `message` (a string literal); returns Progress::failed.
   Progress fail(const char* message);
   // Is the solve over its time budget right now?
-  bool out_of_time() const;
+  bool out_of_time() const { return deadline().passed(); }
   // For the long loops inside one iteration: out_of_time(), and if so the iteration's `stuck`
   // reports timeout, not zero_step.
   bool time_is_up();
+  // The iteration gave up because deadline() passed: its `stuck` reports timeout, not zero_step.
+  void gave_up_for_time() { cut_short_ = true; }
   // When the time budget runs out (never, without a budget).
-  Deadline deadline() const;
+  Deadline deadline() const { return clock_.deadline(); }
   // Is the current iterate (E_, r_) on target (the test of converged_E)?
   bool on_target() const;
 
@@ -222,8 +156,8 @@ class Solver {
   Eigen::MatrixXd J_;
   double E_ = 0;
   double gradient_norm_ = 0;
-  // Free angles at a_: not fixed (min == max) and not on a bound that grad E pushes outward.
-  std::vector<int> free_;         // indices of the free angles, the first num_free_ entries
+  // Free angles at a_ (free_set.h): not fixed (min == max) and not on a bound that grad E pushes outward.
+  std::vector<int> free_;         // indices of the free angles, ascending, the first num_free_ entries
   Eigen::VectorXd free_mask_;     // 1 for a free angle, 0 otherwise
   int num_free_ = 0;
   double reach_ = 1;              // longest effector chain (sum of bone lengths), rig units
@@ -234,9 +168,9 @@ class Solver {
 
  private:
   StopReason check_stop() const;
-  bool has_budget() const;  // a finite time budget is set
   void record();
   void note_best();
+  // Moving on from a run stopped off target (solver_move_on.cpp).
   // With restarts on, after each accepted step: is the run stalling (best E down < 10% over
   // stall_iterations)?
   bool stalls();
@@ -263,10 +197,12 @@ class Solver {
   // Returns false when neither applies; `reason` is then unchanged, or max_iterations / timeout
   // when the budget is spent while restarts (whole or chain) are left.
   bool move_on(StopReason& reason);
+
   // The stop reason reported for the best point when the solve ends with `reason` (describing
   // the current iterate): see SolverSummary::stop_reason.
   StopReason settle(StopReason reason) const;
-  bool validate(const Eigen::Ref<const Eigen::VectorXd>& angles, const Eigen::Ref<const Eigen::VectorXd>& target);
+  // Sizes the workspace for the rig's current effectors.
+  void resize_workspace();
 
   SolverSummary summary_;
   std::vector<double> history_;
@@ -274,13 +210,7 @@ class Solver {
   // Finite-difference workspace (paper mode).
   Eigen::VectorXd fd_scratch_, fd_plus_, fd_minus_;
   const char* failure_ = nullptr;
-  // Restarts.
-  QuasiRandom sequence_;
-  std::uint32_t sequence_seed_ = 0;
-  long restart_index_ = 0;
-  int run_iterations_ = 0, run_best_iteration_ = 0;
-  double run_best_E_ = 0;
-  Eigen::VectorXd unit_;
+  Restarts restarts_;
   SaddleEscape escape_;
   ChainRestart chain_restart_;
   long chain_index_ = 0;  // chain restarts drawn, in this solve and the ones it continues
@@ -288,9 +218,8 @@ class Solver {
   StopReason begin(const Eigen::Ref<const Eigen::VectorXd>& angles, const Eigen::Ref<const Eigen::VectorXd>& target,
                    bool close);
   // step() from `begin`, the time its call started.
-  bool advance(std::chrono::steady_clock::time_point begin);
-  std::chrono::steady_clock::time_point call_start_, last_read_;
-  double elapsed_before_call_ = 0;
+  bool advance(TimeBudget::Clock::time_point begin);
+  TimeBudget clock_;
   bool cut_short_ = false;  // this step's iteration gave up because the time budget ran out
 };
 

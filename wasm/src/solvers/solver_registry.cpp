@@ -15,11 +15,17 @@ std::vector<SolverEntry>& table() {
   static std::vector<SolverEntry> entries = {
       {"lm", "Levenberg–Marquardt", "Levenberg-Marquardt, error-dependent damping, active set on the bounds (default)",
        make_lm_solver},
-      {"gn", "Gauss–Newton", "Gauss-Newton, SVD pseudo-inverse step, projected backtracking", make_gn_solver},
+      {"gn", "Gauss–Newton",
+       "Gauss-Newton, truncated pseudo-inverse step (from J J^T; paper mode: SVD of J), active set on the bounds, "
+       "projected backtracking",
+       make_gn_solver},
       {"bfgs", "damped BFGS", "damped BFGS with gradient projection and projected Armijo backtracking", make_bfgs_solver},
       {"newton", "Newton", "projected Newton, exact Hessian from the tip second derivatives, shifted when indefinite",
        make_newton_solver},
-      {"gd", "gradient descent", "projected gradient descent, backtracking from 180/pi", make_gd_solver},
+      {"gd", "gradient descent",
+       "projected gradient descent, Barzilai-Borwein step lengths, projected Armijo backtracking (paper mode: "
+       "from 180/pi, simple decrease)",
+       make_gd_solver},
   };
   return entries;
 }

@@ -25,7 +25,8 @@ export type StopReason =
   | 'numerical_failure'; // E or a derivative became non-finite
 
 /**
- * Solver options; every field is optional and defaults to the C++ SolverOptions default.
+ * Solver options; every field is optional and defaults to the core's default (the list
+ * wasm/src/solvers/solver_options.def, which Solver.defaultOptions() reports).
  * Tolerances default to the report's for rigs of about unit size (1e-4, 2e-4).
  */
 export interface SolverOptions {
@@ -48,11 +49,18 @@ export interface SolverOptions {
   paperMode?: boolean;
   /** Finite-difference step in paper mode, degrees. Default 1e-7. */
   fdStepDeg?: number;
-  /** Gradient descent's first trial step. Default 180/pi. */
+  /**
+   * Gradient descent's first trial step length: at every iteration in paper mode; outside it only
+   * where no Barzilai-Borwein step is at hand (a run's first iteration, or no positive curvature
+   * met). Default 180/pi.
+   */
   gdInitialStep?: number;
   /** Backtracking factor, in (0, 1). Default 0.5. */
   backtrackFactor?: number;
-  /** Sufficient-decrease constant of the line searches. Default 1e-3. */
+  /**
+   * Sufficient-decrease constant of bfgs's and gn's line searches. Default 1e-3. (gd uses its own:
+   * 0 in paper mode, 1e-4 outside it.)
+   */
   armijoC1?: number;
   /** Backtracking trials before giving up (outside paper mode). Default 60. */
   maxBacktracks?: number;
@@ -62,11 +70,14 @@ export interface SolverOptions {
   gnMaxStepDeg?: number;
   /** Newton's largest step per angle, degrees. Default 45. */
   newtonMaxStepDeg?: number;
-  /** Levenberg-Marquardt (and Newton) initial damping factor. Default 1. */
+  /**
+   * Initial Levenberg-Marquardt damping factor mu, of lm's step and of newton's shift (the
+   * Levenberg-Marquardt modification of Newton's method), at the start of every run. Default 1.
+   */
   lmInitialMu?: number;
-  /** Smallest damping, relative to the mean diagonal of J J^T. Default 1e-12. */
+  /** Smallest damping (lm and newton), relative to the mean diagonal of J J^T (newton: of the Hessian). Default 1e-12. */
   lmDampingFloor?: number;
-  /** Damping increases per iteration before stopping with zero_step. Default 30. */
+  /** Rejected trials per iteration (lm and newton) before stopping with zero_step. Default 30. */
   lmMaxRejections?: number;
   /** Restarts from quasi-random points after a stall, within the time budget (every method outside paper mode; set 0 while dragging). Default 1000. */
   restarts?: number;

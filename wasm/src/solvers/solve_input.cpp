@@ -1,0 +1,38 @@
+#include "solve_input.h"
+
+#include <cmath>
+
+namespace ik {
+
+namespace {
+
+// The first non-finite entry of `v` named `what`, or an empty string.
+std::string check_finite(const Eigen::Ref<const Eigen::VectorXd>& v, const char* what) {
+  for (Eigen::Index i = 0; i < v.size(); ++i)
+    if (!std::isfinite(v[i])) return std::string(what) + "[" + std::to_string(i) + "] is not a finite number";
+  return {};
+}
+
+}  // namespace
+
+std::string check_solve_input(const Kinematics& kin, const SolverOptions& options, const char* method, int angle_limit,
+                              const Eigen::Ref<const Eigen::VectorXd>& angles,
+                              const Eigen::Ref<const Eigen::VectorXd>& target) {
+  std::string problem = check_options(options);
+  if (!problem.empty()) return problem;
+  if (angles.size() != kin.num_angles())
+    return "angles has " + std::to_string(angles.size()) + " values, expected " + std::to_string(kin.num_angles()) +
+           " (3 per bone)";
+  if (target.size() != kin.num_residuals())
+    return "target has " + std::to_string(target.size()) + " values, expected " + std::to_string(kin.num_residuals()) +
+           " (3 per end effector)";
+  if (kin.num_angles() > angle_limit)
+    return std::string(method) + (options.paper_mode ? " in paper mode" : "") + " takes rigs of at most " +
+           std::to_string(angle_limit) + " angles (" + std::to_string(angle_limit / 3) + " bones); this one has " +
+           std::to_string(kin.num_angles()) + (options.paper_mode ? ": turn paper mode off" : ": use lm or gd");
+  problem = check_finite(angles, "angles");
+  if (problem.empty()) problem = check_finite(target, "target");
+  return problem;
+}
+
+}  // namespace ik
