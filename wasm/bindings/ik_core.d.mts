@@ -50,39 +50,19 @@ export interface EmbindSolverResult {
   elapsedSeconds: number;
 }
 
-/** Solver options in camelCase (the list wasm/src/solvers/solver_options.def; read by wasm/bindings/solver_options.h); every field optional. */
-export interface EmbindSolverOptions {
-  gradientTolerance?: number;
-  errorTolerance?: number;
-  maxIterations?: number;
-  timeBudgetSeconds?: number;
-  tipTolerance?: number;
-  historyCapacity?: number;
-  paperMode?: boolean;
-  fdStepDeg?: number;
-  gdInitialStep?: number;
-  backtrackFactor?: number;
-  armijoC1?: number;
-  maxBacktracks?: number;
-  gnSingularCutoff?: number;
-  gnMaxStepDeg?: number;
-  newtonMaxStepDeg?: number;
-  lmInitialMu?: number;
-  lmDampingFloor?: number;
-  lmMaxRejections?: number;
-  restarts?: number;
-  stallIterations?: number;
-  seed?: number;
-  escapeSaddles?: boolean;
-  chainRestarts?: number;
-}
+/**
+ * Solver options by their camelCase names: the list is wasm/src/solvers/solver_options.def (read
+ * by wasm/bindings/solver_options.h); web/src/ik/solver.ts's SolverOptions types and documents it,
+ * and tests/ik/binding_tables.test.ts holds the two to the same names and defaults.
+ */
+export type EmbindSolverOptions = Record<string, number | boolean>;
 
 /** wasm/bindings/solver_bindings.cpp: one method on one Rig (which must outlive it). */
 export interface EmbindSolver {
   readonly method: string;
   readonly running: boolean;
   setOptions(options: EmbindSolverOptions): boolean;
-  options(): Required<EmbindSolverOptions>;
+  options(): EmbindSolverOptions;
   start(angles: Float64Array, target: Float64Array): string;
   step(): boolean;
   result(): EmbindSolverResult;
@@ -98,7 +78,7 @@ export interface EmbindSolver {
 export interface EmbindSolverClass {
   create(rig: EmbindRig, method: string, options: EmbindSolverOptions): EmbindSolver | null;
   methods(): string[];
-  defaultOptions(): Required<EmbindSolverOptions>;
+  defaultOptions(): EmbindSolverOptions;
   describe(method: string): string;
   label(method: string): string;
   stopReasons(): string[];

@@ -217,7 +217,7 @@ export class IkSolver {
 
   /** The options of the current solve, every field filled in. */
   options(): Required<SolverOptions> {
-    return this.live().options();
+    return this.live().options() as Required<SolverOptions>;
   }
 
   /**
