@@ -10,7 +10,7 @@ import { join } from 'node:path';
 import type { Page } from 'playwright-core';
 import { describe, expect, it } from 'vitest';
 
-import { openPage, repoRoot } from './harness.js';
+import { openPage, renderedFrames, repoRoot } from './harness.js';
 import {
   dragBy,
   effectorNamed,
@@ -114,11 +114,13 @@ describe('dragging from the rest pose', () => {
     expect(await statText(page, 'status')).toBe('on target');
 
     // Orbit to a side view (drag on empty ground) so that the picture shows the bent leg.
+    const camera = await page.evaluate(() => window.ikPage?.cameraPosition());
     await page.mouse.move(800, 650);
     await page.mouse.down();
     await page.mouse.move(800 - 100, 650, { steps: 10 });
     await page.mouse.up();
-    await page.waitForTimeout(200);
+    expect(await page.evaluate(() => window.ikPage?.cameraPosition())).not.toEqual(camera);
+    await renderedFrames(page);
     const shot = process.env.UPDATE_SCREENSHOT === '1' ? docsShot : `test-results/${docsShot.slice(5)}`;
     mkdirSync(join(repoRoot, shot, '..'), { recursive: true });
     await page.screenshot({ path: join(repoRoot, shot) });

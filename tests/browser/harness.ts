@@ -1,6 +1,6 @@
 // Browser-test harness: a vite server on a free port, headless Chromium through playwright-core
 // with the flags that work on this machine (TOOLCHAIN.md), console-error capture, and a
-// screenshot in test-results/ when a test fails.
+// screenshot in test-results/ when a test fails; waiting for the page's animation frames.
 import { mkdirSync, mkdtempSync, rmSync } from 'node:fs';
 import { createServer as createHttpServer, type Server } from 'node:http';
 import { createServer as createNetServer } from 'node:net';
@@ -129,4 +129,14 @@ export async function openPage(
     if (errors.length) console.error(`console errors in "${ctx.task.name}":\n${errors.join('\n')}`);
   });
   return { page, errors };
+}
+
+/** Resolves after the page has run its next animation frame (a per-frame solve and a render). */
+export async function nextFrame(page: Page): Promise<void> {
+  await page.evaluate(() => new Promise<void>((done) => requestAnimationFrame(() => done())));
+}
+
+/** Resolves after `n` animation frames: what the page changed before has been drawn and rendered. */
+export async function renderedFrames(page: Page, n = 2): Promise<void> {
+  for (let i = 0; i < n; i++) await nextFrame(page);
 }

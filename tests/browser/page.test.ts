@@ -8,7 +8,7 @@ import { join } from 'node:path';
 import type { Page } from 'playwright-core';
 import { describe, expect, it } from 'vitest';
 
-import { launchBrowser, openPage, repoRoot } from './harness.js';
+import { launchBrowser, openPage, renderedFrames, repoRoot } from './harness.js';
 import {
   dragBy,
   dragTowardsRoot,
@@ -64,7 +64,11 @@ describe('the page', () => {
     const { page, errors } = await openPage(env.browser, ctx);
     await gotoRig(page, 'robot-arm');
     const select = page.locator('.lil-controller', { has: page.locator('.lil-name', { hasText: /^method$/ }) }).locator('select');
-    for (const method of ['gd', 'bfgs', 'gn', 'newton', 'lm']) {
+    // The menu lists the core's registry in its order, the default (lm) first.
+    const methods = await select.locator('option').allTextContents();
+    expect(methods[0]).toBe('lm');
+    expect([...methods].sort()).toEqual(['bfgs', 'gd', 'gn', 'lm', 'newton']);
+    for (const method of [...methods.slice(1), 'lm']) {
       await select.selectOption(method);
       expect(new URL(page.url()).searchParams.get('method')).toBe(method);
       await dragTowardsRoot(page, 0, 0.08, 6);
@@ -87,7 +91,7 @@ describe('the page', () => {
     await gotoRig(page, 'lamp', '&method=gd');
     await page.locator('.lil-controller', { has: page.locator('.lil-name', { hasText: /^step mode$/ }) }).locator('input').check();
     await dragTowardsRoot(page, 0, 0.3);
-    await page.waitForTimeout(100);
+    await page.waitForFunction(() => document.getElementById('app')?.dataset.dragging === 'false');
     await page.keyboard.press('s');
     await page.waitForFunction(() => document.getElementById('step-info')?.dataset.iterations === '1');
     const E1 = Number(await stat(page, 'E'));
@@ -191,7 +195,7 @@ describe('the page', () => {
     await gotoRig(page, 'lamp');
     await dragTowardsRoot(page, 0, 0.1);
     await waitForConvergence(page);
-    await page.waitForTimeout(100);
+    await renderedFrames(page);
     const first = await page.evaluate(() => window.ikPage?.alive());
     const select = page.locator('.lil-controller', { has: page.locator('.lil-name', { hasText: /^project rig$/ }) }).locator('select');
     for (const [rig, label] of [['knight', 'knight'], ['character', 'character (60+ joints)'], ['lamp', 'lamp']]) {
@@ -205,10 +209,10 @@ describe('the page', () => {
     }
     await dragTowardsRoot(page, 0, 0.1);
     await waitForConvergence(page);
-    await page.waitForTimeout(100);
+    await renderedFrames(page);
     const last = await page.evaluate(() => window.ikPage?.alive());
     expect(last?.sessions).toBe(1);
-    expect(last?.solvers).toBe(5);
+    expect(last?.solvers).toBe(await page.$$eval('#compare .compare-table tbody tr', (rows) => rows.length)); // one per method
     // Same rig, same GPU objects as before the round trip (the compare plot made none).
     expect(last?.geometries).toBe(first?.geometries);
     expect(last?.textures).toBe(first?.textures);
@@ -237,11 +241,16 @@ describe('the page', () => {
     }
     await page.keyboard.press('c');
     await page.waitForFunction(() => document.getElementById('compare')?.dataset.state === 'done', null, { timeout: 30_000 });
-    await page.waitForTimeout(400);
+    // Both plots have drawn what they were given, and the page has rendered since.
+    await page.waitForFunction(() => [...document.querySelectorAll<HTMLElement>('.plot')].every((p) => p.dataset.state === 'drawn'));
+    await renderedFrames(page);
     const shot = process.env.UPDATE_SCREENSHOT === '1' ? 'docs/screenshot.png' : 'test-results/knight.png';
     mkdirSync(join(repoRoot, shot, '..'), { recursive: true });
     await page.screenshot({ path: join(repoRoot, shot) });
-    expect(await page.$$eval('#compare .compare-table tbody tr', (rows) => rows.length)).toBe(5);
+    // One row per method, in the menu's order.
+    expect(await page.$$eval('#compare .compare-table tbody tr', (rows) => rows.map((r) => (r as HTMLElement).dataset.method))).toEqual(
+      await page.locator('.lil-controller', { has: page.locator('.lil-name', { hasText: /^method$/ }) }).locator('option').allTextContents(),
+    );
     expect(errors).toEqual([]);
   });
 
@@ -254,11 +263,13 @@ describe('the page', () => {
     const solves = async (): Promise<number> => (await page.evaluate(() => window.ikPage?.solveMs().total)) ?? 0;
     // A first drag warms up (WebAssembly functions compile on first call), then drag until the
     // 121-solve window holds only later solves: one solve per animation frame.
-    await dragTowardsRoot(page, hand, 0.1, 10, 0);
+    await dragTowardsRoot(page, hand, 0.1, 10, false);
     const warm = await solves();
     for (let round = 0; round < 8 && (await solves()) < warm + 121; round++)
-      await dragTowardsRoot(page, hand, round % 2 ? 0.15 : -0.15, 30, 0);
-    await page.waitForTimeout(200);
+      await dragTowardsRoot(page, hand, round % 2 ? 0.15 : -0.15, 30, false);
+    // The last solve has stopped for a reason other than its budget, and the stats show it.
+    await waitForSettled(page);
+    await page.waitForFunction(() => Number(document.querySelector<HTMLElement>('[data-stat="median"]')?.dataset.value) === window.ikPage?.solveMs().median);
     const ms = await page.evaluate(() => window.ikPage?.solveMs());
     const isolated = await page.evaluate(() => crossOriginIsolated);
     const f = (x: number | undefined): string => (x ?? NaN).toFixed(3);

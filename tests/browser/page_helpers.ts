@@ -3,8 +3,8 @@
 import type { Page } from 'playwright-core';
 import { afterAll, beforeAll, expect } from 'vitest';
 
-import type { ScreenPoint } from '../../web/src/page/probe.js';
-import { launchBrowser, startVite, type BrowserSession } from './harness.js';
+import type { ScreenPoint } from '../../web/src/view/stage.js';
+import { launchBrowser, nextFrame, startVite, type BrowserSession } from './harness.js';
 
 /** The page's vite server and a browser for one test file: started before its tests, closed after. */
 export interface PageServer {
@@ -61,25 +61,28 @@ export async function targetScreen(page: Page, k: number): Promise<ScreenPoint> 
   return p;
 }
 
-/** Drags the gizmo of the selected target with the mouse by a fraction of the way towards the root joint. */
-export async function dragTowardsRoot(page: Page, k: number, fraction: number, steps = 12, pauseMs = 16): Promise<{ from: ScreenPoint; to: ScreenPoint }> {
+/**
+ * Drags the gizmo of the selected target with the mouse by a fraction of the way towards the root
+ * joint; `perFrame`: wait for an animation frame after each of the `steps` moves.
+ */
+export async function dragTowardsRoot(page: Page, k: number, fraction: number, steps = 12, perFrame = true): Promise<{ from: ScreenPoint; to: ScreenPoint }> {
   const from = await targetScreen(page, k);
   const root = await page.evaluate(() => window.ikPage?.boneScreen(0) ?? null);
   if (!root) throw new Error('no root bone');
   let dx = (root.x - from.x) * fraction, dy = (root.y - from.y) * fraction;
   const len = Math.hypot(dx, dy);
   if (len < 25) [dx, dy] = len > 0 ? [(dx / len) * 25, (dy / len) * 25] : [25, 0];
-  return dragBy(page, k, dx, dy, steps, pauseMs);
+  return dragBy(page, k, dx, dy, steps, perFrame);
 }
 
-/** Drags the gizmo of the selected target k by (dx, dy) pixels with the mouse. */
-export async function dragBy(page: Page, k: number, dx: number, dy: number, steps = 12, pauseMs = 16): Promise<{ from: ScreenPoint; to: ScreenPoint }> {
+/** Drags the gizmo of the selected target k by (dx, dy) pixels with the mouse; `perFrame` as in dragTowardsRoot. */
+export async function dragBy(page: Page, k: number, dx: number, dy: number, steps = 12, perFrame = true): Promise<{ from: ScreenPoint; to: ScreenPoint }> {
   const from = await targetScreen(page, k);
   await page.mouse.move(from.x, from.y);
   await page.mouse.down();
   for (let i = 1; i <= steps; i++) {
     await page.mouse.move(from.x + (dx * i) / steps, from.y + (dy * i) / steps);
-    if (pauseMs) await page.waitForTimeout(pauseMs);
+    if (perFrame) await nextFrame(page);
   }
   await page.mouse.up();
   return { from, to: { x: from.x + dx, y: from.y + dy } };

@@ -9,7 +9,7 @@ import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 
 import type { IkWidget } from '../../web/src/widget/ik_widget.js';
 import type { WidgetProbe } from '../../web/src/widget/probe.js';
-import { launchBrowser, openPage, repoRoot, startStatic, type BrowserSession } from './harness.js';
+import { launchBrowser, nextFrame, openPage, repoRoot, startStatic, type BrowserSession } from './harness.js';
 
 let server: { url: string; close: () => Promise<void> };
 let browser: BrowserSession;
@@ -36,7 +36,7 @@ async function gotoExample(page: Page, id: string): Promise<void> {
     timeout: 30_000,
   });
   await page.$eval(`#${id}`, (w) => w.scrollIntoView({ block: 'center' }));
-  await page.evaluate(() => new Promise((done) => requestAnimationFrame(done)));
+  await nextFrame(page);
 }
 
 /** The probe of widget `id` (its targets, tips, selection, camera). */
@@ -134,11 +134,11 @@ describe('<ik-widget>', () => {
     await page.mouse.down();
     for (let i = 1; i <= 12; i++) {
       await page.mouse.move(from.x + (dx * i) / 12, from.y + (dy * i) / 12);
-      await page.waitForTimeout(16);
+      await nextFrame(page); // one per-frame solve per move, as a user's drag gives
     }
     await page.mouse.up();
     // Settled: the last solve stopped for a reason other than its per-frame budget.
-    await page.evaluate(() => new Promise((done) => requestAnimationFrame(done)));
+    await nextFrame(page);
     await page.waitForFunction(
       () => {
         const kind = document.getElementById('knight')?.shadowRoot?.querySelector<HTMLElement>('.stats')?.dataset.status;

@@ -5,30 +5,29 @@ import { beforeAll, describe, expect, it } from 'vitest';
 
 import type { IkCoreModule } from '../../web/src/ik/module.js';
 import { loadIkNode } from '../../web/src/ik/node.js';
-import { LiveRig } from '../../web/src/page/live_rig.js';
-import type { LoadedRig } from '../../web/src/page/rig_source.js';
-import { IkSession } from '../../web/src/page/session.js';
-import { createSolver } from '../../web/src/page/solvers.js';
-import type { SolveSettings } from '../../web/src/page/solver_port.js';
+import { LiveRig } from '../../web/src/live/live_rig.js';
+import type { RigSource } from '../../web/src/live/rig_source.js';
+import { IkSession } from '../../web/src/live/session.js';
+import type { SolveSettings } from '../../web/src/live/solver.js';
 import { humanoidLimits } from '../../web/src/rig/humanoid_limits.js';
 import { mixamoHumanoid } from '../helpers/limits_characters.js';
 import { disposeAfterAll } from '../helpers/owned.js';
 
 let ik: IkCoreModule;
-let loaded: LoadedRig;
+let loaded: RigSource;
 const keep = disposeAfterAll();
 beforeAll(async () => {
   ik = await loadIkNode();
   const h = await mixamoHumanoid();
   const { lower, upper } = humanoidLimits(h.spec, h.map, new Array<boolean>(h.spec.parents.length).fill(false));
-  loaded = { name: 'character', format: 'glb', a7: false, spec: h.spec, warnings: [], makeMesh: null, humanoidLimits: { lower, upper } };
+  loaded = { name: 'character', format: 'glb', spec: h.spec, warnings: [], makeMesh: null, humanoidLimits: { lower, upper } };
 });
 
 const within = (angles: Float64Array, lower: Float64Array, upper: Float64Array): boolean =>
   angles.every((a, k) => a >= lower[k] && a <= upper[k]);
 
-async function liveRig(rig: LoadedRig, humanoid = true): Promise<LiveRig> {
-  return keep(await LiveRig.create(ik, rig, createSolver, false, humanoid));
+async function liveRig(rig: RigSource, humanoid = true): Promise<LiveRig> {
+  return keep(await LiveRig.create(ik, rig, false, humanoid));
 }
 
 describe('the humanoid limits switch', () => {
@@ -46,7 +45,7 @@ describe('the humanoid limits switch', () => {
     s0.setEffectors([s0.effectors()[0], s0.effectors()[1]]);
     s0.targets[0] += 0.05;
     // A pose outside the anatomical limits: every angle at 100 degrees.
-    s0.angles = new Float64Array(s0.angles.length).fill(100);
+    s0.angles.fill(100);
     const effectors = Array.from(s0.effectors()), targets = s0.targets.slice();
     const alive = IkSession.alive.sessions;
 

@@ -1,12 +1,14 @@
 // Keyboard shortcuts and the help overlay that lists them (toggled with ?).
 export interface Shortcut {
   keys: string[];
-  label: string;
+  /** What the keys do; a function when it depends on a setting (read each time the help opens). */
+  label: string | (() => string);
   run(): void;
 }
 
 export class Keyboard {
   readonly overlay: HTMLElement;
+  private readonly table: HTMLTableElement;
   private readonly onKey: (e: KeyboardEvent) => void;
 
   constructor(parent: HTMLElement, private readonly shortcuts: Shortcut[]) {
@@ -20,18 +22,7 @@ export class Keyboard {
     box.className = 'help-box';
     const h = document.createElement('h2');
     h.textContent = 'Keyboard shortcuts';
-    const table = document.createElement('table');
-    for (const s of shortcuts) {
-      const tr = table.insertRow();
-      const k = tr.insertCell();
-      s.keys.forEach((key, i) => {
-        if (i) k.append(' / ');
-        const kbd = document.createElement('kbd');
-        kbd.textContent = key;
-        k.append(kbd);
-      });
-      tr.insertCell().textContent = s.label;
-    }
+    this.table = document.createElement('table');
     const more = document.createElement('p');
     more.textContent =
       'Mouse or touch: drag a target’s gizmo to move it; drag elsewhere to orbit; click a bone to make its tip an effector or remove it (shift-click only selects it and shows its joint limits); click a target to put the gizmo on it. Drop a .glb, .gltf or A7 .json file anywhere to load it.';
@@ -39,7 +30,7 @@ export class Keyboard {
     close.type = 'button';
     close.textContent = 'close';
     close.addEventListener('click', () => this.toggle(false));
-    box.append(h, table, more, close);
+    box.append(h, this.table, more, close);
     this.overlay.append(box);
     this.overlay.addEventListener('click', (e) => {
       if (e.target === this.overlay) this.toggle(false);
@@ -64,11 +55,27 @@ export class Keyboard {
   }
 
   toggle(show = this.overlay.hidden): void {
+    if (show) this.listShortcuts();
     this.overlay.hidden = !show;
   }
 
   dispose(): void {
     window.removeEventListener('keydown', this.onKey);
     this.overlay.remove();
+  }
+
+  private listShortcuts(): void {
+    this.table.replaceChildren();
+    for (const s of this.shortcuts) {
+      const tr = this.table.insertRow();
+      const k = tr.insertCell();
+      s.keys.forEach((key, i) => {
+        if (i) k.append(' / ');
+        const kbd = document.createElement('kbd');
+        kbd.textContent = key;
+        k.append(kbd);
+      });
+      tr.insertCell().textContent = typeof s.label === 'function' ? s.label() : s.label;
+    }
   }
 }

@@ -1,37 +1,10 @@
-// The method panel (lil-gui): rig choice, method, tolerances, per-frame budget, display options
-// and the teaching actions. It edits a PageSettings record and calls the page back; every label
-// it shows is set as text by lil-gui.
+// The method panel (lil-gui): rig choice, method (the core's registered methods), tolerances,
+// per-frame budget, display options and the teaching actions. It edits a PageSettings record and
+// calls the page back; every label it shows is set as text by lil-gui.
 import GUI, { type Controller } from 'lil-gui';
 
-import type { CompareStart } from './compare.js';
-import type { GizmoMode } from './handles.js';
-import { METHODS, type Method } from './solver_port.js';
-
-export type ClickAction = 'toggle effector' | 'select only';
-
-export interface PageSettings {
-  rig: string;
-  /** Anatomical limits for a rig recognised as a humanoid (else the file's own limits). */
-  humanoidLimits: boolean;
-  method: Method;
-  gradientTolerance: number;
-  /** On target when every effector is within this distance of its target, rig units. */
-  tipTolerance: number;
-  maxIterations: number;
-  timeBudgetMs: number;
-  restarts: number;
-  paperMode: boolean;
-  compareTimeBudgetMs: number;
-  compareMaxIterations: number;
-  compareFrom: CompareStart;
-  showMesh: boolean;
-  showBones: boolean;
-  gizmo: GizmoMode;
-  clickBone: ClickAction;
-  stepMode: boolean;
-  autoStep: boolean;
-  stepIntervalMs: number;
-}
+import type { MethodList } from '../live/methods.js';
+import type { PageSettings } from './page_settings.js';
 
 export interface PanelActions {
   rigChanged(key: string): void;
@@ -57,6 +30,7 @@ export class Panel {
     container: HTMLElement,
     readonly settings: PageSettings,
     rigs: Record<string, string>,
+    methods: MethodList,
     actions: PanelActions,
   ) {
     this.gui = new GUI({ container, title: 'IK controls' });
@@ -74,7 +48,7 @@ export class Panel {
     rig.add({ reset: () => actions.resetPose() }, 'reset').name('reset pose (R)');
 
     const solver = this.gui.addFolder('Solver (every frame)');
-    solver.add(s, 'method', [...METHODS]).name('method').onChange(() => actions.methodChanged());
+    solver.add(s, 'method', [...methods.names]).name('method').onChange(() => actions.methodChanged());
     solver.add(s, 'tipTolerance').name('on target within (distance)').onChange(() => actions.settingsChanged());
     solver.add(s, 'gradientTolerance').name('‖∇E‖ tolerance').onChange(() => actions.settingsChanged());
     solver.add(s, 'maxIterations', 1, 1000, 1).name('iterations / frame').onChange(() => actions.settingsChanged());

@@ -1,30 +1,49 @@
-// Convergence plot: E per iteration (log scale) of the last solve of each method, overlaid.
-// Redraws at most a few times a second, so live dragging does not pay for it every frame.
+// Convergence plot: E per iteration (log scale) of the last solve of each method, overlaid, one
+// series per method the core registers, coloured by its place in that list. Redraws at most a
+// few times a second and only while on screen, so live dragging does not pay for it every frame;
+// a method's live history is copied out of WebAssembly only when the plot draws (follow()). The
+// element's data-state is 'waiting' while a change is not drawn yet, then 'drawn' (for tests).
 import uPlot from 'uplot';
 import 'uplot/dist/uPlot.min.css';
 
-import { METHOD_LABELS, METHODS, type Method } from './solver_port.js';
+import type { MethodList } from '../live/methods.js';
 
-export const METHOD_COLORS: Record<Method, string> = {
-  gd: '#e15759',
-  bfgs: '#4e9bf5',
-  gn: '#59c26b',
-  newton: '#b07aa1',
-  lm: '#f2b134',
-};
+/** Series colours, by a method's position in the registry's list (lm, gn, bfgs, newton, gd, then any added). */
+const PALETTE = ['#f2b134', '#59c26b', '#4e9bf5', '#b07aa1', '#e15759', '#76b7b2', '#ff9da7', '#9c755f', '#edc948', '#bab0ac'];
+
+/** The colour of `method` in the plots and the compare table. */
+export function methodColor(methods: MethodList, method: string): string {
+  const i = methods.indexOf(method);
+  return i < 0 ? '#aab' : PALETTE[i % PALETTE.length];
+}
+
+/** Reads a method's latest E history when the plot draws (null: keep the one shown). */
+export type HistoryReader = (method: string) => Float64Array | null;
 
 export class ConvergencePlot {
   readonly element: HTMLElement;
   private readonly plot: uPlot;
-  private readonly histories = new Map<Method, Float64Array>();
+  private readonly histories = new Map<string, Float64Array>();
+  /** Methods whose latest history is to be read from `read` at the next draw. */
+  private readonly followed = new Set<string>();
   private readonly resizeObserver: ResizeObserver;
+  private readonly visibility: IntersectionObserver;
+  private visible = false;
   private dirty = false;
   private lastDraw = 0;
   private frame = 0;
 
-  constructor(parent: HTMLElement, title = 'log E vs iteration (last solve per method)', height = 170) {
+  /** `read` gives the live histories follow() asks for; the compare plot, which only records, has none. */
+  constructor(
+    parent: HTMLElement,
+    private readonly methods: MethodList,
+    title = 'log E vs iteration (last solve per method)',
+    height = 170,
+    private readonly read: HistoryReader = () => null,
+  ) {
     this.element = document.createElement('div');
     this.element.className = 'plot';
+    this.element.dataset.state = 'drawn';
     parent.append(this.element);
     const width = Math.max(200, this.element.clientWidth || 300);
     const opts: uPlot.Options = {
@@ -46,9 +65,9 @@ export class ConvergencePlot {
       cursor: { show: false },
       series: [
         { label: 'iteration' },
-        ...METHODS.map((m) => ({
+        ...methods.names.map((m) => ({
           label: m,
-          stroke: METHOD_COLORS[m],
+          stroke: methodColor(methods, m),
           width: 1.5,
           points: { show: true, size: 4 },
           spanGaps: false,
@@ -57,44 +76,64 @@ export class ConvergencePlot {
       ],
     };
     this.plot = new uPlot(opts, this.data(), this.element);
-    this.plot.root.title = METHODS.map((m) => `${m}: ${METHOD_LABELS[m]}`).join('\n');
+    this.plot.root.title = methods.names.map((m) => `${m}: ${methods.label(m)}`).join('\n');
     this.resizeObserver = new ResizeObserver(() => {
       const w = this.element.clientWidth;
       if (w > 0 && Math.abs(w - this.plot.width) > 1) this.plot.setSize({ width: w, height });
     });
     this.resizeObserver.observe(this.element);
+    this.visibility = new IntersectionObserver((entries) => {
+      this.visible = entries[entries.length - 1].isIntersecting;
+      this.schedule();
+    });
+    this.visibility.observe(this.element);
   }
 
-  /** Records the E history of the last solve of `method` (E before iteration 1, then after each). */
-  record(method: Method, history: Float64Array): void {
+  /** Shows `history` (E before iteration 1, then after each) as `method`'s last solve. */
+  record(method: string, history: Float64Array): void {
+    this.followed.delete(method);
     this.histories.set(method, history);
-    this.dirty = true;
-    this.schedule();
+    this.changed();
+  }
+
+  /** `method` solved again: its history is read (HistoryReader) when the plot next draws. */
+  follow(method: string): void {
+    if (this.followed.has(method) && this.dirty) return;
+    this.followed.add(method);
+    this.changed();
   }
 
   clear(): void {
     this.histories.clear();
-    this.dirty = true;
-    this.schedule();
+    this.followed.clear();
+    this.changed();
   }
 
   /** Histories shown now (for the compare table and tests). */
-  history(method: Method): Float64Array | undefined {
+  history(method: string): Float64Array | undefined {
     return this.histories.get(method);
   }
 
   dispose(): void {
     cancelAnimationFrame(this.frame);
     this.resizeObserver.disconnect();
+    this.visibility.disconnect();
     this.plot.destroy();
     this.element.remove();
   }
 
+  private changed(): void {
+    if (!this.dirty) this.element.dataset.state = 'waiting';
+    this.dirty = true;
+    this.schedule();
+  }
+
+  /** Draws on a coming animation frame, at most every 250 ms, while the plot is on screen. */
   private schedule(): void {
-    if (this.frame) return;
+    if (this.frame || !this.visible || !this.dirty) return;
     const draw = (): void => {
       this.frame = 0;
-      if (!this.dirty) return;
+      if (!this.dirty || !this.visible) return;
       const now = performance.now();
       if (now - this.lastDraw < 250) {
         this.frame = requestAnimationFrame(draw);
@@ -102,7 +141,13 @@ export class ConvergencePlot {
       }
       this.lastDraw = now;
       this.dirty = false;
+      for (const m of this.followed) {
+        const h = this.read(m);
+        if (h) this.histories.set(m, h);
+      }
+      this.followed.clear();
       this.plot.setData(this.data());
+      this.element.dataset.state = 'drawn';
     };
     this.frame = requestAnimationFrame(draw);
   }
@@ -111,7 +156,7 @@ export class ConvergencePlot {
     let n = 1;
     for (const h of this.histories.values()) n = Math.max(n, h.length);
     const xs = Array.from({ length: n }, (_, i) => i);
-    const ys = METHODS.map((m) => {
+    const ys = this.methods.names.map((m) => {
       const h = this.histories.get(m);
       return xs.map((i) => (h && i < h.length && h[i] > 0 && Number.isFinite(h[i]) ? h[i] : null));
     });

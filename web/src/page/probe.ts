@@ -2,13 +2,10 @@
 // targets and bones, the camera, and what is loaded. Set as window.ikPage by main.ts.
 import { Vector3 } from 'three';
 
+import { IkSession } from '../live/session.js';
+import type { ScreenPoint } from '../view/stage.js';
 import type { PageApp } from './app.js';
-import { IkSession } from './session.js';
-
-export interface ScreenPoint {
-  x: number;
-  y: number;
-}
+import type { SlowestSolve } from './solve_report.js';
 
 export interface PageProbe {
   /** Loads finished so far, successful or not. */
@@ -18,7 +15,7 @@ export interface PageProbe {
   /** Main-thread ms per live solve over the stats window (the last 121): median, p95, max, window size, solves so far. */
   solveMs(): { median: number; p95: number; max: number; n: number; total: number };
   /** The slowest per-frame solve since the rig loaded. */
-  slowestSolve(): PageApp['slowest'];
+  slowestSolve(): SlowestSolve | null;
   /** The tip tolerance in use (the panel's): the on-target distance, rig units. */
   tipTolerance(): number;
   /** Bone names, in bone order. */
@@ -56,60 +53,62 @@ declare global {
 
 export function makeProbe(app: PageApp): PageProbe {
   const a = new Vector3(), b = new Vector3();
+  const { controller } = app;
+  const { stage } = controller;
+  const session = () => controller.live?.session;
   return {
     loads: () => app.loads,
-    rigName: () => app.current?.name ?? null,
-    effectors: () => Array.from(app.current?.session.effectors() ?? []),
+    rigName: () => controller.live?.name ?? null,
+    effectors: () => Array.from(session()?.effectors() ?? []),
     tipTolerance: () => app.settings.tipTolerance,
-    slowestSolve: () => app.slowest,
+    slowestSolve: () => app.report.slowest,
     solveMs: () => {
       const t = app.solveTimes;
       return { median: t.median(), p95: t.quantile(0.95), max: t.max(), n: t.size, total: t.total };
     },
-    boneNames: () => [...(app.current?.session.spec.names ?? [])],
-    boneLengths: () => Array.from(app.current?.session.spec.lengths ?? []),
-    worldToScreen: (p) => app.toScreen(a.set(p[0], p[1], p[2])),
+    boneNames: () => [...(session()?.spec.names ?? [])],
+    boneLengths: () => Array.from(session()?.spec.lengths ?? []),
+    worldToScreen: (p) => stage.toScreen(a.set(p[0], p[1], p[2])),
     targetScreen(k) {
-      const live = app.current;
-      if (!live || k < 0 || 3 * k >= live.session.targets.length) return null;
-      return app.toScreen(a.fromArray(live.session.targets, 3 * k));
+      const t = session()?.targets;
+      return t && k >= 0 && 3 * k < t.length ? stage.toScreen(a.fromArray(t, 3 * k)) : null;
     },
     boneScreen(i) {
-      const live = app.current;
+      const live = controller.live;
       if (!live || i < 0 || i >= live.session.rig.numBones) return null;
       live.view.boneBase(i, a);
       live.view.boneTip(i, b);
-      return app.toScreen(a.lerp(b, 0.5));
+      return stage.toScreen(a.lerp(b, 0.5));
     },
-    selectedTarget: () => app.selectedTarget,
-    cameraPosition: () => app.camera.position.toArray() as [number, number, number],
+    selectedTarget: () => controller.handles.selected,
+    cameraPosition: () => stage.camera.position.toArray() as [number, number, number],
     alive() {
-      const memory = app.renderer.info.memory;
+      const memory = stage.renderer.info.memory;
       return { ...IkSession.alive, geometries: memory.geometries, textures: memory.textures };
     },
     targetPosition(k) {
-      const t = app.current?.session.targets;
+      const t = session()?.targets;
       return t && k >= 0 && 3 * k < t.length ? [t[3 * k], t[3 * k + 1], t[3 * k + 2]] : null;
     },
     tipPosition(k) {
-      const t = app.current?.session.tips();
+      const t = session()?.tips();
       return t && k >= 0 && 3 * k < t.length ? [t[3 * k], t[3 * k + 1], t[3 * k + 2]] : null;
     },
     pixelsPerUnit() {
-      const t = app.current?.session.targets;
+      const t = session()?.targets;
       if (!t) return NaN;
-      const k = Math.min(app.selectedTarget ?? 0, t.length / 3 - 1);
-      return app.pixelsPerUnit(a.fromArray(t, 3 * k));
+      const k = Math.min(controller.handles.selected ?? 0, t.length / 3 - 1);
+      return stage.pixelsPerUnit(a.fromArray(t, 3 * k));
     },
     bounds() {
-      const box = app.current?.view.bounds();
+      const box = controller.live?.view.bounds();
       return box ? { min: box.min.toArray(), max: box.max.toArray() } : null;
     },
     effectorError(k) {
-      const live = app.current;
-      if (!live) return NaN;
-      const tips = live.session.tips();
-      const t = live.session.targets;
+      const s = session();
+      if (!s) return NaN;
+      const tips = s.tips();
+      const t = s.targets;
       return Math.hypot(tips[3 * k] - t[3 * k], tips[3 * k + 1] - t[3 * k + 1], tips[3 * k + 2] - t[3 * k + 2]);
     },
   };

@@ -2,63 +2,11 @@
 // error as a distance and in screen pixels, iterations, E, ||grad||, and the main-thread time of
 // one solve with its running median. Values are written as text; each field also carries its raw
 // number in data-value so tests and tools can read it without parsing the display (the status
-// carries the solver's stop reason code in data-reason and its tooltip).
-import { statusWords } from './status_words.js';
-
-/** Running median over the last `capacity` samples. */
-export class RunningMedian {
-  private readonly ring: Float64Array;
-  private readonly sorted: Float64Array;
-  private count = 0;
-  private next = 0;
-
-  constructor(readonly capacity = 121) {
-    this.ring = new Float64Array(capacity);
-    this.sorted = new Float64Array(capacity);
-  }
-
-  /** Samples pushed since the last clear (also those that left the window). */
-  total = 0;
-
-  push(x: number): void {
-    this.total++;
-    this.ring[this.next] = x;
-    this.next = (this.next + 1) % this.capacity;
-    this.count = Math.min(this.count + 1, this.capacity);
-  }
-
-  get size(): number {
-    return this.count;
-  }
-
-  median(): number {
-    return this.quantile(0.5);
-  }
-
-  /** Quantile q in [0, 1] of the window, interpolating between closest ranks. */
-  quantile(q: number): number {
-    if (this.count === 0) return NaN;
-    const s = this.sorted.subarray(0, this.count);
-    s.set(this.ring.subarray(0, this.count));
-    s.sort();
-    const at = q * (this.count - 1);
-    const lo = Math.floor(at);
-    return lo + 1 < this.count ? s[lo] + (s[lo + 1] - s[lo]) * (at - lo) : s[lo];
-  }
-
-  /** Largest sample in the window. */
-  max(): number {
-    let m = -Infinity;
-    for (let i = 0; i < this.count; i++) m = Math.max(m, this.ring[i]);
-    return this.count ? m : NaN;
-  }
-
-  clear(): void {
-    this.total = 0;
-    this.count = 0;
-    this.next = 0;
-  }
-}
+// carries the solver's stop reason code in data-reason and its tooltip). While dragging, the
+// numbers are written a few times a second (Throttle), the status as soon as it changes.
+import { statusWords, type StatusWords } from '../live/status_words.js';
+import { Throttle } from '../live/throttle.js';
+import { RunningMedian } from './running_median.js';
 
 export interface StatsValues {
   method: string;
@@ -103,6 +51,13 @@ export class StatsPanel {
   readonly element: HTMLElement;
   readonly median = new RunningMedian(121);
   private readonly cells = new Map<string, HTMLElement>();
+  /** The last solve's values, written out by writeNumbers(). */
+  private readonly latest: StatsValues = {
+    method: '', iterations: 0, E: 0, gradNorm: 0, reached: false, tipDistance: 0, pixelsPerUnit: NaN, stopReason: '', paperMode: false, ms: 0, pinnedDrift: 0,
+  };
+  /** The words the status cell shows, or null. */
+  private words: StatusWords | null = null;
+  private readonly numbers = new Throttle(() => this.writeNumbers());
 
   constructor(parent: HTMLElement) {
     this.element = document.createElement('dl');
@@ -121,41 +76,35 @@ export class StatsPanel {
     parent.append(this.element);
   }
 
-  /** Shows one solve; `timed` adds its time to the running median. */
-  show(v: StatsValues, timed = true): void {
-    if (timed) this.median.push(v.ms);
-    this.set('method', v.method, NaN);
-    this.set('iterations', String(v.iterations), v.iterations);
-    this.set('E', formatNumber(v.E), v.E);
-    this.set('gradNorm', formatNumber(v.gradNorm), v.gradNorm);
-    const px = v.tipDistance * v.pixelsPerUnit;
-    this.set('tipDistance', `${formatNumber(v.tipDistance)}${Number.isFinite(px) ? ` (${px.toFixed(1)} px)` : ''}`, v.tipDistance);
-    this.showStatus(v.reached, v.stopReason, v.paperMode);
-    this.set('ms', v.ms.toFixed(3), v.ms);
-    const m = this.median.median();
-    this.set('median', Number.isNaN(m) ? '–' : `${m.toFixed(3)} (n=${this.median.size})`, m);
-    this.set('pinnedDrift', formatNumber(v.pinnedDrift), v.pinnedDrift);
+  /**
+   * Shows one per-frame solve and adds its time to the running median. The status changes at once
+   * (with the numbers when it changes); the numbers alone are written a few times a second.
+   */
+  show(v: StatsValues): void {
+    this.median.push(v.ms);
+    Object.assign(this.latest, v);
+    if (this.showStatus(v)) this.numbers.now();
+    else this.numbers.request();
+  }
+
+  /** Shows one step of step mode at once (its time is not a per-frame solve's: not in the median). */
+  showStep(v: StatsValues): void {
+    Object.assign(this.latest, v);
+    this.showStatus(v);
+    this.numbers.now();
   }
 
   /** Shows E for a pose that was not solved (after reset, load, or an effector change). */
   showIdle(method: string, E: number): void {
+    this.numbers.cancel();
     this.set('method', method, NaN);
     this.set('E', formatNumber(E), E);
   }
 
-  private showStatus(reached: boolean, stopReason: string, paperMode: boolean): void {
-    const cell = this.cells.get('status');
-    if (!cell) return;
-    const words = statusWords(reached, stopReason, paperMode);
-    this.set('status', words.text, NaN);
-    cell.title = words.title;
-    cell.dataset.reason = stopReason;
-    cell.dataset.kind = words.kind;
-    cell.dataset.reached = String(reached);
-  }
-
   reset(): void {
+    this.numbers.cancel();
     this.median.clear();
+    this.words = null;
     for (const [key, cell] of this.cells) this.set(key, '–', NaN, cell);
     const status = this.cells.get('status');
     if (status) {
@@ -164,9 +113,51 @@ export class StatsPanel {
     }
   }
 
+  /** Shows the status of `v` if it differs from the one shown; true if it did. */
+  private showStatus(v: StatsValues): boolean {
+    const words = statusWords(v.reached, v.stopReason, v.paperMode);
+    const cell = this.cells.get('status');
+    if (!cell || words === this.words) return false;
+    this.words = words;
+    this.set('status', words.text, NaN);
+    cell.title = words.title;
+    cell.dataset.reason = v.stopReason;
+    cell.dataset.kind = words.kind;
+    cell.dataset.reached = v.reached ? 'true' : 'false';
+    return true;
+  }
+
+  private writeNumbers(): void {
+    const v = this.latest;
+    this.set('method', v.method, NaN);
+    this.set('iterations', String(v.iterations), v.iterations);
+    this.set('E', formatNumber(v.E), v.E);
+    this.set('gradNorm', formatNumber(v.gradNorm), v.gradNorm);
+    const px = v.tipDistance * v.pixelsPerUnit;
+    this.set('tipDistance', `${formatNumber(v.tipDistance)}${Number.isFinite(px) ? ` (${px.toFixed(1)} px)` : ''}`, v.tipDistance);
+    this.set('ms', v.ms.toFixed(3), v.ms);
+    const m = this.median.median();
+    this.set('median', Number.isNaN(m) ? '–' : `${m.toFixed(3)} (n=${this.median.size})`, m);
+    this.set('pinnedDrift', formatNumber(v.pinnedDrift), v.pinnedDrift);
+  }
+
   private set(key: string, text: string, value: number, cell = this.cells.get(key)): void {
     if (!cell) return;
     if (cell.textContent !== text) cell.textContent = text;
     cell.dataset.value = Number.isNaN(value) ? '' : String(value);
   }
+}
+
+/**
+ * Largest tip-to-target distance over the effectors other than `except` (the dragged one), rig
+ * units; `tips` and `targets` hold 3 numbers per effector.
+ */
+export function pinnedDrift(tips: Float64Array, targets: Float64Array, except: number | null): number {
+  let worst = 0;
+  for (let k = 0; k < targets.length / 3; k++) {
+    if (k === except) continue;
+    const d = Math.hypot(tips[3 * k] - targets[3 * k], tips[3 * k + 1] - targets[3 * k + 1], tips[3 * k + 2] - targets[3 * k + 2]);
+    worst = Math.max(worst, d);
+  }
+  return worst;
 }

@@ -1,15 +1,14 @@
 // The URL keeps the rig and the method, so a link reproduces the view: ?rig=knight&method=gn.
-import { isMethod, type Method } from './solver_port.js';
+// The values are read as written; the page checks them against its rigs and the core's methods.
 
 export interface UrlState {
   rig: string | null;
-  method: Method | null;
+  method: string | null;
 }
 
 export function readUrlState(location: Location = window.location): UrlState {
   const q = new URLSearchParams(location.search);
-  const method = q.get('method');
-  return { rig: q.get('rig'), method: isMethod(method) ? method : null };
+  return { rig: q.get('rig'), method: q.get('method') };
 }
 
 /** Rewrites the query in place (no new history entry). A null rig removes it (a dropped file has no link). */

@@ -2,20 +2,17 @@
 // One custom element: a rig, its targets and the solver running live, in a shadow root. A click
 // or tap on a target gives it the gizmo; the status line says what the last solve reached. Loading
 // problems (file, format, WebAssembly, WebGL) show as a message inside the widget and never
-// throw into the host page. Names from files are shown as text, never as HTML.
+// throw into the host page. Names from files are shown as text, never as HTML. The frame loop,
+// the solve and the gizmo are web/src/live/'s LiveController, as on the page.
 import type { IkCoreModule } from '../ik/module.js';
-import { Handles } from '../page/handles.js';
-import { LiveRig } from '../page/live_rig.js';
-import { solveFrame } from '../page/live_solve.js';
-import { listenForClicks, type ViewClick } from '../page/picking.js';
-import { loadRigUrl } from '../page/rig_source.js';
-import { Stage } from '../page/scene.js';
-import { createSolver } from '../page/solvers.js';
-import { isMethod, METHOD_LABELS, METHODS, type Method, type SolveSettings } from '../page/solver_port.js';
-import type { DragTolerances } from '../rig/tolerances.js';
+import { errorText } from '../live/error_text.js';
+import { LiveController, type FrameSettings } from '../live/live_controller.js';
+import { LiveRig } from '../live/live_rig.js';
+import { MethodList } from '../live/methods.js';
+import { loadRigUrl } from '../live/rig_source.js';
 import { widgetCore } from './core.js';
 import { widgetProbe, type WidgetProbe } from './probe.js';
-import { showNote, showSolve } from './status_line.js';
+import { StatusLine } from './status_line.js';
 
 const STYLE = `
 :host { display: block; position: relative; height: 320px; min-height: 160px; background: #20242b; color: #dfe4ea;
@@ -32,10 +29,6 @@ const STYLE = `
 [hidden] { display: none !important; }
 `;
 
-function errorText(e: unknown): string {
-  return e instanceof Error ? e.message : String(e);
-}
-
 export class IkWidget extends HTMLElement {
   static readonly observedAttributes = ['src', 'method', 'effectors'];
 
@@ -43,18 +36,15 @@ export class IkWidget extends HTMLElement {
   private readonly view: HTMLDivElement;
   private readonly bar: HTMLDivElement;
   private readonly nameEl: HTMLSpanElement;
-  private readonly statsEl: HTMLSpanElement;
+  private readonly status: StatusLine;
   private readonly methodSelect: HTMLSelectElement;
   private readonly message: HTMLDivElement;
-  private stage: Stage | null = null;
-  private handles: Handles | null = null;
-  private live: LiveRig | null = null;
-  /** The rig's drag tolerances (tip distance and gradient), set with the rig. */
-  private tolerances: DragTolerances | null = null;
-  private stopClicks: (() => void) | null = null;
+  /** The core's methods, once it has loaded. */
+  private methods: MethodList | null = null;
+  private controller: LiveController | null = null;
+  /** The per-frame solve: the `method` attribute, the rig's drag tolerances, 50 iterations or 3 ms. */
+  private readonly settings: FrameSettings = { method: '', gradientTolerance: 0, tipTolerance: 0, maxIterations: 50, timeBudgetMs: 3, paperMode: false };
   private token = 0;
-  private needsSolve = false;
-  private needsRedraw = false;
 
   constructor() {
     super();
@@ -69,21 +59,15 @@ export class IkWidget extends HTMLElement {
     this.nameEl.className = 'name';
     this.methodSelect = document.createElement('select');
     this.methodSelect.title = 'IK method';
-    for (const m of METHODS) {
-      const o = document.createElement('option');
-      o.value = m;
-      o.textContent = m;
-      o.title = METHOD_LABELS[m];
-      this.methodSelect.append(o);
-    }
     this.methodSelect.addEventListener('change', () => this.setAttribute('method', this.methodSelect.value));
     const reset = document.createElement('button');
     reset.type = 'button';
     reset.textContent = 'reset';
     reset.addEventListener('click', () => this.resetPose());
-    this.statsEl = document.createElement('span');
-    this.statsEl.className = 'stats';
-    this.bar.append(this.nameEl, this.methodSelect, reset, this.statsEl);
+    const stats = document.createElement('span');
+    stats.className = 'stats';
+    this.status = new StatusLine(stats);
+    this.bar.append(this.nameEl, this.methodSelect, reset, stats);
     this.bar.hidden = true;
     this.message = document.createElement('div');
     this.message.className = 'message';
@@ -91,10 +75,13 @@ export class IkWidget extends HTMLElement {
     this.shadow.append(style, this.view, this.bar, this.message);
   }
 
-  /** The method solving every frame (the `method` attribute; lm when absent or unknown). */
-  get method(): Method {
+  /**
+   * The method solving every frame: the `method` attribute when the core registers it, else the
+   * core's default (lm). Until the WebAssembly core has loaded, the attribute as written ('' if none).
+   */
+  get method(): string {
     const m = this.getAttribute('method');
-    return isMethod(m) ? m : 'lm';
+    return this.methods ? this.methods.pick(m) : (m ?? '');
   }
 
   /** 'loading', 'ready' or 'error' (also the data-state attribute). */
@@ -104,8 +91,7 @@ export class IkWidget extends HTMLElement {
 
   /** For tests and tools: the selected target, targets, tips, the tolerance, the camera; null until ready. */
   get probe(): WidgetProbe | null {
-    const { live, handles, stage, tolerances } = this;
-    return live && handles && stage && tolerances ? widgetProbe(live, handles, stage, tolerances.tipTolerance) : null;
+    return this.controller ? widgetProbe(this.controller) : null;
   }
 
   connectedCallback(): void {
@@ -120,10 +106,8 @@ export class IkWidget extends HTMLElement {
   attributeChangedCallback(name: string, before: string | null, after: string | null): void {
     if (!this.isConnected || before === after) return;
     if (name === 'src') void this.load();
-    else if (name === 'method') {
-      this.methodSelect.value = this.method;
-      this.needsSolve = true;
-    } else if (name === 'effectors' && this.live) this.applyEffectors(this.live);
+    else if (name === 'method') this.useMethod();
+    else if (name === 'effectors') this.applyEffectors();
   }
 
   private async load(): Promise<void> {
@@ -140,6 +124,7 @@ export class IkWidget extends HTMLElement {
     let live: LiveRig | null = null;
     try {
       module = await widgetCore();
+      this.listMethods(module);
     } catch (e) {
       if (token === this.token) this.fail(`ik-widget: the WebAssembly solver could not start: ${errorText(e)}`);
       return;
@@ -148,41 +133,46 @@ export class IkWidget extends HTMLElement {
       const url = new URL(src, document.baseURI);
       const loaded = await loadRigUrl(url);
       if (token !== this.token) return;
-      live = await LiveRig.create(module, loaded, createSolver);
+      live = await LiveRig.create(module, loaded);
       if (token !== this.token) {
         live.dispose();
         return;
       }
       this.install(live);
     } catch (e) {
-      if (live && live !== this.live) live.dispose();
+      if (live && live !== this.controller?.live) live.dispose();
       if (token !== this.token) return;
       this.teardown();
       this.fail(`ik-widget: could not load ${src}: ${errorText(e)}`);
     }
   }
 
+  /** Fills the method menu from the core's registry (once). */
+  private listMethods(module: IkCoreModule): void {
+    if (this.methods) return;
+    const methods = new MethodList(module);
+    this.methods = methods;
+    for (const m of methods.names) {
+      const o = document.createElement('option');
+      o.value = m;
+      o.textContent = m;
+      o.title = methods.describe(m);
+      this.methodSelect.append(o);
+    }
+  }
+
   private install(live: LiveRig): void {
-    const stage = new Stage(this.view);
-    this.stage = stage;
-    const handles = new Handles(stage);
-    this.handles = handles;
-    stage.connectOrbit(); // after the gizmo: a drag on the gizmo must not orbit
-    this.stopClicks = listenForClicks(stage.canvas, stage.camera, () => handles.dragging || handles.hovering, (c) => this.pickTarget(c));
-    this.live = live;
-    this.tolerances = live.tolerances();
-    stage.scene.add(...live.objects);
-    live.ghost.root.visible = false;
-    handles.setRigSize(live.view.size);
-    handles.onTargetMoved = (k, x, y, z) => {
-      live.session.targets.set([x, y, z], 3 * k);
-      this.needsSolve = true;
-      this.needsRedraw = true;
-    };
-    this.applyEffectors(live);
-    stage.frame(live.view.bounds());
-    stage.onFrame(() => this.frame());
-    this.methodSelect.value = this.method;
+    const tolerances = live.tolerances();
+    this.settings.tipTolerance = tolerances.tipTolerance;
+    this.settings.gradientTolerance = tolerances.gradientTolerance;
+    this.settings.method = this.methodSelect.value = this.method;
+    const controller = new LiveController(this.view, this.settings, {
+      solved: (outcome, ms) => this.status.show(this.settings.method, outcome, ms),
+      failed: (message) => this.status.note(message, 'failed'),
+    });
+    this.controller = controller;
+    controller.show(live);
+    this.applyEffectors();
     this.nameEl.textContent = live.name;
     this.nameEl.title = `${live.name}: ${live.session.rig.numBones} bones`;
     this.bar.hidden = false;
@@ -191,8 +181,16 @@ export class IkWidget extends HTMLElement {
     this.dispatchEvent(new CustomEvent('ik-ready', { detail: { name: live.name } }));
   }
 
+  private useMethod(): void {
+    this.settings.method = this.methodSelect.value = this.method;
+    this.controller?.invalidate();
+  }
+
   /** The `effectors` attribute: bone names or indices, separated by commas. */
-  private applyEffectors(live: LiveRig): void {
+  private applyEffectors(): void {
+    const controller = this.controller;
+    const live = controller?.live;
+    if (!controller || !live) return;
     const attr = this.getAttribute('effectors');
     const unknown: string[] = [];
     if (attr && attr.trim()) {
@@ -207,75 +205,20 @@ export class IkWidget extends HTMLElement {
           if (!bones.includes(i)) bones.push(i);
         } else unknown.push(item);
       }
-      if (bones.length) live.session.setEffectors(bones);
+      if (bones.length) controller.setEffectors(bones);
     }
-    showNote(this.statsEl, unknown.length ? `unknown effector ${unknown.join(', ')}` : '');
-    this.handles?.setTargets(live.session.targets);
-    this.needsSolve = false;
-    this.needsRedraw = true;
+    this.status.note(unknown.length ? `unknown effector ${unknown.join(', ')}` : '');
   }
 
   private resetPose(): void {
-    const live = this.live;
-    if (!live) return;
-    live.session.reset();
-    this.handles?.setTargets(live.session.targets);
-    showNote(this.statsEl, '');
-    this.needsSolve = false;
-    this.needsRedraw = true;
-  }
-
-  /** A click or tap on the view: the target under it, if any, takes the gizmo (and shows as selected). */
-  private pickTarget(c: ViewClick): void {
-    const k = this.handles?.pick(c.raycaster) ?? null;
-    if (k !== null) this.handles?.select(k);
-  }
-
-  private frame(): void {
-    const { live, handles, tolerances } = this;
-    if (!live || !handles || !tolerances) return;
-    if (this.needsSolve || handles.dragging) {
-      const settings: SolveSettings = {
-        tipTolerance: tolerances.tipTolerance,
-        gradientTolerance: tolerances.gradientTolerance,
-        maxIterations: 50,
-        timeBudgetMs: 3,
-        restarts: 0,
-        paperMode: false,
-      };
-      try {
-        const { outcome: out, ms, again } = solveFrame(live.session, this.method, settings);
-        this.needsSolve = again;
-        showSolve(this.statsEl, this.method, out, ms);
-      } catch (e) {
-        this.needsSolve = false;
-        showNote(this.statsEl, `solver error: ${errorText(e)}`, 'failed');
-      }
-      this.needsRedraw = true;
-    }
-    if (this.needsRedraw) {
-      this.needsRedraw = false;
-      live.redraw();
-      handles.sync(live.session.targets, live.session.tips());
-    }
+    this.controller?.reset();
+    this.status.note('');
   }
 
   private teardown(): void {
-    this.stopClicks?.();
-    this.stopClicks = null;
-    this.tolerances = null;
-    if (this.live) {
-      for (const o of this.live.objects) o.removeFromParent();
-      this.live.dispose();
-      this.live = null;
-    }
-    this.handles?.dispose();
-    this.handles = null;
-    if (this.stage) {
-      this.stage.renderer.forceContextLoss();
-      this.stage.dispose();
-      this.stage = null;
-    }
+    this.status.note('');
+    this.controller?.dispose();
+    this.controller = null;
     this.bar.hidden = true;
   }
 

@@ -3,10 +3,8 @@
 // the camera. Plain data, so it crosses from the page to a test runner as JSON.
 import { Vector3 } from 'three';
 
-import type { Handles } from '../page/handles.js';
-import type { LiveRig } from '../page/live_rig.js';
-import type { ScreenPoint } from '../page/probe.js';
-import type { Stage } from '../page/scene.js';
+import type { LiveController } from '../live/live_controller.js';
+import type { ScreenPoint } from '../view/stage.js';
 
 export interface WidgetProbe {
   /** Index (in effector order) of the target holding the gizmo, or null. */
@@ -23,8 +21,11 @@ export interface WidgetProbe {
   camera: [number, number, number];
 }
 
-/** The snapshot of one installed rig; `tipTolerance` is the one the widget solves with (rig units). */
-export function widgetProbe(live: LiveRig, handles: Handles, stage: Stage, tipTolerance: number): WidgetProbe {
+/** The snapshot of the rig `controller` shows (null when none); the tip tolerance is the one it solves with. */
+export function widgetProbe(controller: LiveController): WidgetProbe | null {
+  const live = controller.live;
+  if (!live) return null;
+  const { stage, handles } = controller;
   const targets = live.session.targets;
   const p = new Vector3();
   const targetsOnScreen: ScreenPoint[] = [];
@@ -34,7 +35,7 @@ export function widgetProbe(live: LiveRig, handles: Handles, stage: Stage, tipTo
     targets: Array.from(targets),
     tips: Array.from(live.session.tips()),
     targetsOnScreen,
-    tipTolerance,
+    tipTolerance: controller.settings.tipTolerance,
     camera: stage.camera.position.toArray() as [number, number, number],
   };
 }

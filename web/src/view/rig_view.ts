@@ -76,7 +76,8 @@ export class RigView {
   private readonly joints: InstancedMesh;
   private readonly boneWorld: Float64Array; // 16 per bone, column-major (three.js), bone frame
   private mesh: MeshBinding | null = null;
-  private colorsKey = '';
+  /** What the bone colours show now (recolor() skips the work when neither changed). */
+  private colored: { effectors: Int32Array | null; selected: number | null } = { effectors: null, selected: null };
 
   /** `ghost`: a faint copy used to show the previous iterate in step mode. */
   constructor(readonly spec: RigSpec, restPoses: Float64Array, private readonly ghost = false) {
@@ -202,10 +203,11 @@ export class RigView {
     return out.multiplyMatrices(mPose, mRest);
   }
 
+  /** `effectors` is compared by identity: the session hands out the same array until the effectors change. */
   private recolor(effectors: Int32Array, selected: number | null): void {
-    const key = `${Array.from(effectors).join(',')}|${selected}`;
-    if (key === this.colorsKey) return;
-    this.colorsKey = key;
+    if (effectors === this.colored.effectors && selected === this.colored.selected) return;
+    this.colored.effectors = effectors;
+    this.colored.selected = selected;
     const n = this.spec.parents.length;
     for (let i = 0; i < n; i++) this.bones.setColorAt(i, this.ghost ? GHOST : BONE);
     if (this.ghost) {

@@ -6,17 +6,16 @@ import type { Object3D } from 'three';
 
 import type { IkCoreModule } from '../ik/module.js';
 import type { RigSpec } from '../ik/rig_spec.js';
-import { LimitsView } from './limits_view.js';
-import type { LoadedRig } from './rig_source.js';
-import { RigView } from './rig_view.js';
-import { IkSession } from './session.js';
-import type { SolverFactory } from './solver_port.js';
 import { type DragTolerances, dragTolerances, rigSize } from '../rig/tolerances.js';
+import { LimitsView } from '../view/limits_view.js';
+import { RigView } from '../view/rig_view.js';
+import type { RigSource } from './rig_source.js';
+import { IkSession } from './session.js';
 
-/** The loaded spec with its humanoid limits when `humanoid` is set and it has them, else as loaded. */
-function limitedSpec(loaded: LoadedRig, humanoid: boolean): RigSpec {
-  const limits = humanoid ? loaded.humanoidLimits : undefined;
-  return limits ? { ...loaded.spec, lower: limits.lower, upper: limits.upper } : loaded.spec;
+/** The rig's spec with its humanoid limits when `humanoid` is set and it has them, else the file's. */
+function limitedSpec(source: RigSource, humanoid: boolean): RigSpec {
+  const limits = humanoid ? source.humanoidLimits : undefined;
+  return limits ? { ...source.spec, lower: limits.lower, upper: limits.upper } : source.spec;
 }
 
 export class LiveRig {
@@ -24,7 +23,7 @@ export class LiveRig {
   selectedBone: number | null = null;
 
   private constructor(
-    readonly loaded: LoadedRig,
+    readonly source: RigSource,
     /** Replaced (the old one disposed) when the limits switch. */
     public session: IkSession,
     readonly view: RigView,
@@ -32,22 +31,25 @@ export class LiveRig {
     readonly limits: LimitsView,
   ) {}
 
-  /** `humanoid`: start with the humanoid limits if the rig has them (the panel's default). */
-  static async create(module: IkCoreModule, loaded: LoadedRig, makeSolver: SolverFactory, withMesh = true, humanoid = true): Promise<LiveRig> {
+  /**
+   * Everything for `source`. `withMesh`: build the skinned mesh (when the file has one);
+   * `humanoid`: start with the humanoid limits if the rig has them (the panel's default).
+   */
+  static async create(module: IkCoreModule, source: RigSource, withMesh = true, humanoid = true): Promise<LiveRig> {
     const made: { dispose(): void }[] = [];
     try {
-      const session = new IkSession(module, limitedSpec(loaded, humanoid), makeSolver);
+      const session = new IkSession(module, limitedSpec(source, humanoid));
       made.push(session);
       const poses = session.poses();
-      const view = new RigView(loaded.spec, poses);
+      const view = new RigView(source.spec, poses);
       made.push(view);
-      const ghost = new RigView(loaded.spec, poses, true);
+      const ghost = new RigView(source.spec, poses, true);
       made.push(ghost);
       ghost.root.visible = false;
       const limits = new LimitsView(session.spec, view.size);
       made.push(limits);
-      if (withMesh && loaded.makeMesh) view.attachMesh(await loaded.makeMesh());
-      const live = new LiveRig(loaded, session, view, ghost, limits);
+      if (withMesh && source.makeMesh) view.attachMesh(await source.makeMesh());
+      const live = new LiveRig(source, session, view, ghost, limits);
       live.redraw();
       return live;
     } catch (e) {
@@ -57,12 +59,12 @@ export class LiveRig {
   }
 
   get name(): string {
-    return this.loaded.name;
+    return this.source.name;
   }
 
   /** Whether the importer gave this rig humanoid limits to switch to. */
   get hasHumanoidLimits(): boolean {
-    return this.loaded.humanoidLimits !== undefined;
+    return this.source.humanoidLimits !== undefined;
   }
 
   /**
@@ -70,7 +72,7 @@ export class LiveRig {
    * effectors and targets, the pose clamped into the new limits. Solvers are made anew.
    */
   useHumanoidLimits(on: boolean): void {
-    const spec = limitedSpec(this.loaded, on);
+    const spec = limitedSpec(this.source, on);
     const next = this.session.withLimits(spec.lower, spec.upper);
     this.session.dispose();
     this.session = next;

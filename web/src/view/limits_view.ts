@@ -17,14 +17,13 @@ import type { RigSpec } from '../ik/rig_spec.js';
 import type { RigView } from './rig_view.js';
 
 const COLORS = [0xff6b6b, 0x5ee07a, 0x5aa8ff];
-const AXES = ['X (twist)', 'Z (swing)', 'X (twist)'];
 const deg = Math.PI / 180;
 
 const mFrame = new Matrix4();
 const mRot = new Matrix4();
 
-/** Whether a limit pair leaves the angle free (missing, huge, or spanning a full turn). */
-function unbounded(lo: number, hi: number): boolean {
+/** Whether a limit pair (degrees) leaves the angle free (missing, huge, or spanning a full turn). */
+export function unbounded(lo: number, hi: number): boolean {
   return !Number.isFinite(lo) || !Number.isFinite(hi) || hi - lo >= 360 || Math.abs(lo) > 1e6 || Math.abs(hi) > 1e6;
 }
 
@@ -32,49 +31,6 @@ function unbounded(lo: number, hi: number): boolean {
 function arcPoint(k: number, r: number, x: number, t: number, out: number[]): void {
   if (k === 1) out.push(r * Math.cos(t), r * Math.sin(t), 0);
   else out.push(x, r * Math.cos(t), r * Math.sin(t));
-}
-
-/** Text lines describing bone i's limits and current angles; never HTML. */
-export function describeLimits(spec: RigSpec, i: number, angles: Float64Array): string[] {
-  const lines: string[] = [];
-  for (let k = 0; k < 3; k++) {
-    const lo = spec.lower[3 * i + k], hi = spec.upper[3 * i + k], a = angles[3 * i + k];
-    const range = unbounded(lo, hi) ? 'free' : lo === hi ? `fixed at ${lo.toFixed(1)}°` : `[${lo.toFixed(1)}°, ${hi.toFixed(1)}°]`;
-    lines.push(`a${k} ${AXES[k]}: ${a.toFixed(1)}° in ${range}`);
-  }
-  return lines;
-}
-
-/** What the selection readout shows: a bone of a spec at a pose; `limitSource` names the limits in use, if there is a choice. */
-export interface LimitsSelection {
-  spec: RigSpec;
-  bone: number;
-  angles: Float64Array;
-  isEffector: boolean;
-  limitSource?: string;
-}
-
-/** Writes the selected bone's name and limits into `box` as text (null: the how-to line). */
-export function showLimits(box: HTMLElement, sel: LimitsSelection | null): void {
-  box.replaceChildren();
-  if (!sel) {
-    box.textContent = 'Click a bone to make its tip an end effector or remove it (shift-click: show its joint limits only).';
-    return;
-  }
-  const title = document.createElement('strong');
-  title.textContent = `${sel.spec.names[sel.bone] || `bone ${sel.bone}`}${sel.isEffector ? ' (end effector)' : ''}`;
-  const list = document.createElement('ul');
-  for (const line of describeLimits(sel.spec, sel.bone, sel.angles)) {
-    const li = document.createElement('li');
-    li.textContent = line;
-    list.append(li);
-  }
-  box.append(title, list);
-  if (sel.limitSource) {
-    const source = document.createElement('small');
-    source.textContent = `limits: ${sel.limitSource}`;
-    box.append(source);
-  }
 }
 
 export class LimitsView {

@@ -1,5 +1,5 @@
 // Frees the GPU-side resources of a three.js subtree: geometries, materials, their textures and
-// skinned meshes' skeletons. For objects the page made from a file (a glTF scene).
+// skinned meshes' skeletons. For objects made from a file (a glTF scene).
 import { type Material, type Object3D, SkinnedMesh, Texture } from 'three';
 
 function disposeMaterial(m: Material, seen: Set<object>): void {

@@ -19,7 +19,7 @@ import {
 } from 'three';
 import { TransformControls } from 'three/addons/controls/TransformControls.js';
 
-import type { Stage } from './scene.js';
+import type { Stage } from './stage.js';
 
 export type GizmoMode = 'translate' | 'rotate';
 

@@ -1,5 +1,5 @@
 // The three.js stage: renderer, camera, OrbitControls, lights and a ground grid, sized to its
-// container (ResizeObserver), with a render loop that calls the page's per-frame work first.
+// container (ResizeObserver), with a render loop that calls the per-frame work (onFrame) first.
 import {
   AmbientLight,
   Box3,
@@ -16,6 +16,12 @@ import {
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 
 const viewPoint = new Vector3();
+
+/** A point on screen, client (CSS) pixels. */
+export interface ScreenPoint {
+  x: number;
+  y: number;
+}
 
 export type FrameCallback = (seconds: number) => void;
 
@@ -60,7 +66,7 @@ export class Stage {
   }
 
   /** Where world point `p` is on screen now: client (CSS) pixels. */
-  toScreen(p: Vector3): { x: number; y: number } {
+  toScreen(p: Vector3): ScreenPoint {
     const rect = this.canvas.getBoundingClientRect();
     viewPoint.copy(p).project(this.camera);
     return { x: rect.left + ((viewPoint.x + 1) / 2) * rect.width, y: rect.top + ((1 - viewPoint.y) / 2) * rect.height };
@@ -117,6 +123,7 @@ export class Stage {
     this.camera.updateProjectionMatrix();
   }
 
+  /** Stops the render loop and frees the renderer, its WebGL context and the grid. */
   dispose(): void {
     this.renderer.setAnimationLoop(null);
     this.resizeObserver.disconnect();
@@ -124,6 +131,7 @@ export class Stage {
     this.grid.geometry.dispose();
     const m = this.grid.material;
     (Array.isArray(m) ? m : [m]).forEach((x) => x.dispose());
+    this.renderer.forceContextLoss(); // frees the WebGL context now: a page allows only about 16
     this.renderer.dispose();
     this.canvas.remove();
   }

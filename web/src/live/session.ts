@@ -4,31 +4,29 @@
 import type { IkCoreModule } from '../ik/module.js';
 import { IkRig } from '../ik/rig.js';
 import type { RigSpec } from '../ik/rig_spec.js';
-import type { Method, MethodSolver, SolveOutcome, SolveSettings, SolverFactory } from './solver_port.js';
+import { MethodSolver, type SolveOutcome, type SolveSettings } from './solver.js';
 
 export class IkSession {
   /** Sessions and solvers not yet disposed, over the whole page (a leak check for tests). */
   static readonly alive = { sessions: 0, solvers: 0 };
 
   readonly rig: IkRig;
-  /** The current pose, 3 angles per bone, degrees. Replaced (not mutated) by solves. */
-  angles: Float64Array;
-  /** 3 target coordinates per end effector, in effector order. */
+  /** The current pose, 3 angles per bone, degrees. Always this array: solves and steps write into it. */
+  readonly angles: Float64Array;
+  /** 3 target coordinates per end effector, in effector order (a new array when the effectors change). */
   targets: Float64Array;
-  private readonly solvers = new Map<Method, MethodSolver>();
+  private effectorList: Int32Array;
+  private readonly solvers = new Map<string, MethodSolver>();
   private stepping: MethodSolver | null = null;
   private disposed = false;
 
   /** Builds the rig in WebAssembly; throws (and holds nothing) if the spec is bad. */
-  constructor(
-    module: IkCoreModule,
-    spec: RigSpec,
-    private readonly makeSolver: SolverFactory,
-  ) {
+  constructor(module: IkCoreModule, spec: RigSpec) {
     this.rig = new IkRig(module, spec);
     try {
       this.angles = this.restPose();
       this.targets = this.rig.tips(this.angles);
+      this.effectorList = this.rig.effectors();
     } catch (e) {
       this.rig.dispose();
       throw e;
@@ -40,21 +38,22 @@ export class IkSession {
     return this.rig.spec;
   }
 
+  /** The end effectors' bone indices, in effector order (the same array until they change: do not modify). */
   effectors(): Int32Array {
-    return this.rig.effectors();
+    return this.effectorList;
   }
 
-  /** The rest pose (all angles 0) clamped into the limits. */
+  /** The rest pose (all angles 0) clamped into the limits (a new array). */
   restPose(): Float64Array {
     return this.rig.project(new Float64Array(this.rig.numAngles));
   }
 
-  /** Current end-effector tips, 3 per effector. */
+  /** Current end-effector tips, 3 per effector (a new array). */
   tips(): Float64Array {
     return this.rig.tips(this.angles);
   }
 
-  /** Every bone's pose transform (16 row-major numbers per bone) at the current pose. */
+  /** Every bone's pose transform (16 row-major numbers per bone) at the current pose (a new array). */
   poses(): Float64Array {
     return this.rig.poses(this.angles);
   }
@@ -69,9 +68,10 @@ export class IkSession {
    * at their current tip, so E does not jump. Solvers are remade for the new problem size.
    */
   setEffectors(bones: readonly number[]): void {
-    const before = Array.from(this.rig.effectors());
+    const before = Array.from(this.effectorList);
     const oldTargets = this.targets;
     this.rig.setEffectors(bones);
+    this.effectorList = this.rig.effectors();
     const tips = this.rig.tips(this.angles);
     bones.forEach((b, k) => {
       const j = before.indexOf(b);
@@ -87,9 +87,9 @@ export class IkSession {
    * (the caller disposes it).
    */
   withLimits(lower: Float64Array, upper: Float64Array): IkSession {
-    const next = new IkSession(this.rig.module, { ...this.spec, lower, upper }, this.makeSolver);
-    next.setEffectors(Array.from(this.effectors()));
-    next.angles = next.rig.project(this.angles);
+    const next = new IkSession(this.rig.module, { ...this.spec, lower, upper });
+    next.setEffectors(Array.from(this.effectorList));
+    next.angles.set(next.rig.project(this.angles));
     next.targets = this.targets.slice();
     return next;
   }
@@ -97,24 +97,22 @@ export class IkSession {
   /** Back to the rest pose, targets on the rest tips. */
   reset(): void {
     this.stepping = null;
-    this.angles = this.restPose();
+    this.angles.set(this.restPose());
     this.targets = this.rig.tips(this.angles);
   }
 
-  /** One solve from the current pose; the pose becomes the solver's result. */
-  solve(method: Method, settings: SolveSettings): SolveOutcome {
-    const out = this.solver(method).solve(this.angles, this.targets, settings);
-    this.angles = out.angles;
-    return out;
+  /** One solve from the current pose; the pose becomes the solver's result (outcome.angles is `angles`). */
+  solve(method: string, settings: SolveSettings): SolveOutcome {
+    return this.solver(method).solve(this.angles, this.targets, settings, this.angles);
   }
 
   /** Solves from `start` (default: the current pose) without changing the pose (for the compare table). */
-  trySolve(method: Method, settings: SolveSettings, start: Float64Array = this.angles): SolveOutcome {
+  trySolve(method: string, settings: SolveSettings, start: Float64Array = this.angles): SolveOutcome {
     return this.solver(method).solve(start, this.targets, settings);
   }
 
   /** Starts step mode with `method` from the current pose. */
-  beginSteps(method: Method, settings: SolveSettings): SolveOutcome {
+  beginSteps(method: string, settings: SolveSettings): SolveOutcome {
     this.stepping = this.solver(method);
     return this.stepping.start(this.angles, this.targets, settings);
   }
@@ -123,16 +121,26 @@ export class IkSession {
   step(): SolveOutcome {
     if (!this.stepping) throw new Error('step mode was not started');
     const out = this.stepping.step();
-    this.angles = out.angles;
+    this.angles.set(out.angles);
     return out;
   }
 
-  get steppingMethod(): Method | null {
+  get steppingMethod(): string | null {
     return this.stepping?.method ?? null;
   }
 
   endSteps(): void {
     this.stepping = null;
+  }
+
+  /** E before the first iteration and after each one of `method`'s last solve or step (a new array); null before its first. */
+  history(method: string): Float64Array | null {
+    return this.solvers.get(method)?.history() ?? null;
+  }
+
+  /** Iterations of `method`'s last solve or step-mode solve (0 before its first). */
+  lastIterations(method: string): number {
+    return this.solvers.get(method)?.lastIterations ?? 0;
   }
 
   dispose(): void {
@@ -143,10 +151,10 @@ export class IkSession {
     IkSession.alive.sessions--;
   }
 
-  private solver(method: Method): MethodSolver {
+  private solver(method: string): MethodSolver {
     let s = this.solvers.get(method);
     if (!s) {
-      s = this.makeSolver(this.rig, method);
+      s = new MethodSolver(this.rig, method);
       this.solvers.set(method, s);
       IkSession.alive.solvers++;
     }

@@ -1,0 +1,218 @@
+// One live rig on a three.js stage, as both the page and the widget show it: the stage, the
+// targets' gizmo, clicks on targets, and the frame loop. While a target is dragged, or after
+// something changed, each frame solves from the current pose within the frame's budget (restarts
+// off) and goes on next frame when the budget stopped it; the view is redrawn only when the pose,
+// the targets or the selection changed. The front ends hear of solves, errors and clicks through
+// LiveEvents; everything else (stats, panels, status lines) is theirs.
+import { Vector3 } from 'three';
+
+import { Handles } from '../view/handles.js';
+import { listenForClicks, type ViewClick } from '../view/picking.js';
+import { Stage } from '../view/stage.js';
+import { errorText } from './error_text.js';
+import type { LiveRig } from './live_rig.js';
+import { solveFrame, type FrameTiming } from './live_solve.js';
+import type { IkSession } from './session.js';
+import type { SolveOutcome, SolveSettings } from './solver.js';
+
+/** What the per-frame solve reads every frame (the page's panel edits its settings in place). */
+export interface FrameSettings {
+  /** The method solving every frame: a name from the core's registry. */
+  method: string;
+  /** ||grad E|| tolerance, rig units^2 per degree. */
+  gradientTolerance: number;
+  /** On target within this distance of every target, rig units. */
+  tipTolerance: number;
+  /** Iterations per frame. */
+  maxIterations: number;
+  /** Milliseconds per frame. */
+  timeBudgetMs: number;
+  /** The report's algorithms. */
+  paperMode: boolean;
+}
+
+/** What the controller tells its front end. Only `failed` is required. */
+export interface LiveEvents {
+  /**
+   * After each per-frame solve: its outcome (the same object's fields may be rewritten by the next
+   * solve), its main-thread milliseconds and the tips at the new pose (3 numbers per end effector).
+   */
+  solved?(outcome: SolveOutcome, ms: number, tips: Float64Array): void;
+  /** A solve threw: `message` says why. No solve follows until something changes. */
+  failed(message: string): void;
+  /** The problem or the pose changed (a target moved, invalidate(), reset(), setEffectors()). */
+  changed?(): void;
+  /** A click or tap on the view that hit no target (a target hit takes the gizmo). */
+  clicked?(click: ViewClick): void;
+  /** Dragging a target started (true) or stopped (false). */
+  dragging?(on: boolean): void;
+  /** After the view was redrawn from the session. */
+  redrawn?(): void;
+  /** First thing in every frame while a rig is shown and the controller is not paused. */
+  tick?(): void;
+}
+
+const v = new Vector3();
+
+export class LiveController {
+  readonly stage: Stage;
+  readonly handles: Handles;
+  /** False: no per-frame solve (the page's step mode); edits are still drawn. */
+  solving = true;
+  /** True: no solve and no redraw (the page's compare is using the session). */
+  paused = false;
+  private current: LiveRig | null = null;
+  private needsSolve = false;
+  private needsRedraw = false;
+  private readonly timing: FrameTiming = { ms: 0, again: false };
+  private readonly solveSettings: SolveSettings = { gradientTolerance: 0, tipTolerance: 0, maxIterations: 0, timeBudgetMs: 0, restarts: 0, paperMode: false };
+  private readonly stopClicks: () => void;
+
+  /** Makes a stage in `container`; `settings` are read every frame (and may be edited in place). */
+  constructor(container: HTMLElement, readonly settings: FrameSettings, private readonly events: LiveEvents) {
+    this.stage = new Stage(container);
+    const handles = new Handles(this.stage); // before the orbit connects: a drag on the gizmo must not orbit
+    this.handles = handles;
+    this.stage.connectOrbit();
+    handles.onTargetMoved = (k, x, y, z) => this.moveTarget(k, x, y, z);
+    handles.onDragging = (on) => this.events.dragging?.(on);
+    this.stopClicks = listenForClicks(this.stage.canvas, this.stage.camera, () => handles.dragging || handles.hovering, (c) => this.click(c));
+    this.stage.onFrame(() => this.frame());
+  }
+
+  /** The rig shown, or null. */
+  get live(): LiveRig | null {
+    return this.current;
+  }
+
+  /** The target being dragged (effector index), or null. */
+  get draggedEffector(): number | null {
+    return this.handles.dragging ? this.handles.selected : null;
+  }
+
+  /** Shows `live` instead of the rig shown (which is disposed); the controller owns it from now on. */
+  show(live: LiveRig): void {
+    this.removeRig();
+    this.current = live;
+    this.stage.scene.add(...live.objects);
+    this.handles.setRigSize(live.view.size);
+    this.handles.select(null);
+    this.handles.setTargets(live.session.targets);
+    this.handles.setPivot(live.view.boneBase(0, v));
+    this.stage.frame(live.view.bounds());
+    this.needsSolve = false;
+    this.needsRedraw = true;
+  }
+
+  /** Something the solve depends on changed (settings, method, limits): solve again and redraw. */
+  invalidate(): void {
+    this.needsSolve = true;
+    this.needsRedraw = true;
+    this.events.changed?.();
+  }
+
+  /** Redraw next frame (the pose or the selection changed outside the per-frame solve). */
+  redraw(): void {
+    this.needsRedraw = true;
+  }
+
+  /** Back to the rest pose with the targets on the rest tips; no solve follows. */
+  reset(): void {
+    const live = this.current;
+    if (!live) return;
+    live.session.reset();
+    live.showGhost(null);
+    this.handles.setTargets(live.session.targets);
+    this.needsSolve = false;
+    this.needsRedraw = true;
+    this.events.changed?.();
+  }
+
+  /**
+   * Makes `bones` (bone indices) the end effectors: kept ones keep their targets, new ones get a
+   * target on their tip. `select`: the target (effector index) to put the gizmo on. No solve follows.
+   */
+  setEffectors(bones: readonly number[], select?: number): void {
+    const live = this.current;
+    if (!live) return;
+    live.session.setEffectors(bones);
+    this.handles.setTargets(live.session.targets);
+    if (select !== undefined) this.handles.select(select);
+    this.needsSolve = false;
+    this.needsRedraw = true;
+    this.events.changed?.();
+  }
+
+  dispose(): void {
+    this.removeRig();
+    this.stopClicks();
+    this.handles.dispose();
+    this.stage.dispose();
+  }
+
+  private removeRig(): void {
+    const old = this.current;
+    if (!old) return;
+    for (const o of old.objects) o.removeFromParent();
+    old.dispose();
+    this.current = null;
+  }
+
+  /** Target k (effector index) moved to (x, y, z), rig units. */
+  private moveTarget(k: number, x: number, y: number, z: number): void {
+    const t = this.current?.session.targets;
+    if (!t) return;
+    t[3 * k] = x;
+    t[3 * k + 1] = y;
+    t[3 * k + 2] = z;
+    this.invalidate();
+  }
+
+  private click(c: ViewClick): void {
+    if (!this.current) return;
+    const target = this.handles.pick(c.raycaster);
+    if (target !== null) this.handles.select(target);
+    else this.events.clicked?.(c);
+  }
+
+  private frame(): void {
+    const live = this.current;
+    if (!live || this.paused) return;
+    this.events.tick?.();
+    let tips: Float64Array | null = null;
+    if (this.solving && (this.needsSolve || this.handles.dragging)) tips = this.solve(live.session);
+    if (this.needsRedraw) {
+      this.needsRedraw = false;
+      live.redraw();
+      this.handles.sync(live.session.targets, tips ?? live.session.tips());
+      this.events.redrawn?.();
+    }
+  }
+
+  /** One per-frame solve; returns the tips at the new pose, or null when nothing was solved. */
+  private solve(session: IkSession): Float64Array | null {
+    if (session.effectors().length === 0) {
+      this.needsSolve = false;
+      return null;
+    }
+    const s = this.settings, f = this.solveSettings;
+    f.gradientTolerance = s.gradientTolerance;
+    f.tipTolerance = s.tipTolerance;
+    f.maxIterations = s.maxIterations;
+    f.timeBudgetMs = s.timeBudgetMs;
+    f.paperMode = s.paperMode;
+    this.needsRedraw = true;
+    let outcome: SolveOutcome;
+    try {
+      outcome = solveFrame(session, s.method, f, this.timing);
+    } catch (e) {
+      this.needsSolve = false;
+      this.events.failed(`solver error: ${errorText(e)}`);
+      return null;
+    }
+    this.needsSolve = this.timing.again;
+    const tips = session.tips();
+    this.events.solved?.(outcome, this.timing.ms, tips);
+    return tips;
+  }
+}

@@ -1,0 +1,31 @@
+// The per-frame solve the page and the widget run while targets move: from the current pose,
+// bounded by the frame's iteration cap and time budget, never restarting. Its time is main-thread
+// milliseconds around the call (JavaScript, the embind crossing and the WebAssembly solve).
+import type { IkSession } from './session.js';
+import type { SolveOutcome, SolveSettings } from './solver.js';
+
+/** Stop reasons after which the next frame goes on solving: the budget ran out, not the problem. */
+export function budgetStop(reason: string): boolean {
+  return reason === 'max_iterations' || reason === 'timeout';
+}
+
+/** How one per-frame solve went; one record is rewritten by every solve (no garbage per frame). */
+export interface FrameTiming {
+  /** Main-thread milliseconds of the solve. */
+  ms: number;
+  /** Solve again next frame (the per-frame budget stopped it). */
+  again: boolean;
+}
+
+/**
+ * One solve of `method` from the session's pose, which becomes the result (`outcome.angles` is
+ * the session's pose array); `settings.restarts` should be 0 (a restart would jump the pose while
+ * the user drags). Writes the time and whether to go on into `timing`.
+ */
+export function solveFrame(session: IkSession, method: string, settings: SolveSettings, timing: FrameTiming): SolveOutcome {
+  const t0 = performance.now();
+  const outcome = session.solve(method, settings);
+  timing.ms = performance.now() - t0;
+  timing.again = budgetStop(outcome.stopReason);
+  return outcome;
+}

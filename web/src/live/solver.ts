@@ -1,0 +1,97 @@
+// One method's WebAssembly solver (web/src/ik/solver.ts) on one rig, as the page and the widget
+// use it: settings in the panel's units (milliseconds), sent to WebAssembly only when they change,
+// the result's angles written into an array the caller keeps, and the E history copied out only
+// when asked for. A per-frame solve is then one call in and one result object out.
+import type { IkRig } from '../ik/rig.js';
+import { IkSolver, type SolverResult } from '../ik/solver.js';
+
+/** The knobs of one solve. Times are milliseconds here (the panel's unit). */
+export interface SolveSettings {
+  /** Stop when ||grad E|| falls below this (rig units^2 per degree). */
+  gradientTolerance: number;
+  /** On target when every end effector lies within this distance of its target (rig units). */
+  tipTolerance: number;
+  /** Iteration cap of one solve. */
+  maxIterations: number;
+  /** Wall-clock budget of one solve, milliseconds. */
+  timeBudgetMs: number;
+  /** Random restarts after a stall (every method); the per-frame solve uses 0. */
+  restarts: number;
+  /** The report's original algorithms (finite-difference Jacobian, its line searches). */
+  paperMode: boolean;
+}
+
+/** What a solve or a step reached (angles in degrees, distances in rig units, see SolverResult). */
+export type SolveOutcome = SolverResult;
+
+export class MethodSolver {
+  private readonly solver: IkSolver;
+  private readonly sent: SolveSettings = { gradientTolerance: NaN, tipTolerance: NaN, maxIterations: NaN, timeBudgetMs: NaN, restarts: NaN, paperMode: false };
+  /** Iterations of the last solve or step-mode solve (0: its history holds only the start). */
+  lastIterations = 0;
+
+  /** `method`: a name from the core's registry (IkSolver.methods). Owns WebAssembly memory: dispose() frees it. */
+  constructor(rig: IkRig, readonly method: string) {
+    this.solver = new IkSolver(rig, method);
+  }
+
+  /**
+   * Solves from `start` (degrees, 3 per bone) towards `target` (3 per end effector). The angles
+   * found are written into `out` when given (it may be `start` itself) and returned as
+   * `outcome.angles`; otherwise `outcome.angles` is a new array.
+   */
+  solve(start: Float64Array, target: Float64Array, settings: SolveSettings, out?: Float64Array): SolveOutcome {
+    this.configure(settings);
+    return this.keep(this.solver.solve(start, target, out));
+  }
+
+  /** Begins an iteration-by-iteration solve; returns the state before any step. */
+  start(start: Float64Array, target: Float64Array, settings: SolveSettings): SolveOutcome {
+    this.configure(settings);
+    this.solver.start(start, target);
+    return this.keep(this.solver.result());
+  }
+
+  /** One iteration of the solve begun by start() (none once it has stopped); its angles are a new array. */
+  step(): SolveOutcome {
+    if (this.solver.running) this.solver.step();
+    return this.keep(this.solver.result());
+  }
+
+  /** E before the first iteration and after each one of the last solve or step-mode solve (a new array). */
+  history(): Float64Array {
+    return this.solver.errorHistory();
+  }
+
+  dispose(): void {
+    this.solver.dispose();
+  }
+
+  private keep(outcome: SolveOutcome): SolveOutcome {
+    this.lastIterations = outcome.iterations;
+    return outcome;
+  }
+
+  private configure(s: SolveSettings): void {
+    const t = this.sent;
+    if (
+      t.gradientTolerance === s.gradientTolerance && t.tipTolerance === s.tipTolerance && t.maxIterations === s.maxIterations &&
+      t.timeBudgetMs === s.timeBudgetMs && t.restarts === s.restarts && t.paperMode === s.paperMode
+    )
+      return;
+    this.solver.setOptions({
+      gradientTolerance: s.gradientTolerance,
+      tipTolerance: s.tipTolerance,
+      maxIterations: s.maxIterations,
+      timeBudgetSeconds: s.timeBudgetMs / 1000,
+      restarts: s.restarts,
+      paperMode: s.paperMode,
+    });
+    t.gradientTolerance = s.gradientTolerance;
+    t.tipTolerance = s.tipTolerance;
+    t.maxIterations = s.maxIterations;
+    t.timeBudgetMs = s.timeBudgetMs;
+    t.restarts = s.restarts;
+    t.paperMode = s.paperMode;
+  }
+}

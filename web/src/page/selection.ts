@@ -1,0 +1,65 @@
+// The selected bone: the readout in the side column (its name, whether its tip is an end
+// effector, and for each XZX angle its value and limits in degrees, all as text, never HTML), and
+// making its tip an end effector or not.
+import type { RigSpec } from '../ik/rig_spec.js';
+import type { LiveController } from '../live/live_controller.js';
+import type { LiveRig } from '../live/live_rig.js';
+import { unbounded } from '../view/limits_view.js';
+
+const AXES = ['X (twist)', 'Z (swing)', 'X (twist)'];
+
+/** Text lines describing bone i's limits and current angles (degrees, 3 per bone). */
+export function describeLimits(spec: RigSpec, i: number, angles: Float64Array): string[] {
+  const lines: string[] = [];
+  for (let k = 0; k < 3; k++) {
+    const lo = spec.lower[3 * i + k], hi = spec.upper[3 * i + k], a = angles[3 * i + k];
+    const range = unbounded(lo, hi) ? 'free' : lo === hi ? `fixed at ${lo.toFixed(1)}°` : `[${lo.toFixed(1)}°, ${hi.toFixed(1)}°]`;
+    lines.push(`a${k} ${AXES[k]}: ${a.toFixed(1)}° in ${range}`);
+  }
+  return lines;
+}
+
+/**
+ * Writes `live`'s selected bone into `box` (no rig or no bone selected: the how-to line). For a rig
+ * with humanoid limits to switch to, `humanoidLimits` says which limits are in use.
+ */
+export function showSelection(box: HTMLElement, live: LiveRig | null, humanoidLimits: boolean): void {
+  const bone = live?.selectedBone ?? null;
+  box.replaceChildren();
+  if (!live || bone === null) {
+    box.textContent = 'Click a bone to make its tip an end effector or remove it (shift-click: show its joint limits only).';
+    return;
+  }
+  const { spec, angles } = live.session;
+  const title = document.createElement('strong');
+  const effector = live.session.effectors().includes(bone) ? ' (end effector)' : '';
+  title.textContent = `${spec.names[bone] || `bone ${bone}`}${effector}`;
+  const list = document.createElement('ul');
+  for (const line of describeLimits(spec, bone, angles)) {
+    const li = document.createElement('li');
+    li.textContent = line;
+    list.append(li);
+  }
+  box.append(title, list);
+  if (live.hasHumanoidLimits) {
+    const source = document.createElement('small');
+    source.textContent = `limits: ${humanoidLimits ? 'humanoid (anatomical)' : 'the file’s (humanoid limits off)'}`;
+    box.append(source);
+  }
+}
+
+/**
+ * Bone `bone`'s tip becomes an end effector, or stops being one, on the rig `controller` shows; a
+ * new effector's target takes the gizmo, and the solve goes on. False, and nothing changes, for
+ * the rig's last end effector.
+ */
+export function toggleEffector(controller: LiveController, bone: number): boolean {
+  const list = Array.from(controller.live?.session.effectors() ?? []);
+  const at = list.indexOf(bone);
+  if (at >= 0 && list.length === 1) return false;
+  if (at >= 0) list.splice(at, 1);
+  else list.push(bone);
+  controller.setEffectors(list, at < 0 ? list.length - 1 : undefined);
+  controller.invalidate();
+  return true;
+}

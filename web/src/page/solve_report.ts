@@ -1,0 +1,94 @@
+// What the page's side column reports of the solves: the stats of each per-frame solve and step
+// (with the tip error in screen pixels and the pinned effectors' drift), E at a pose nobody
+// solved, the live convergence plot, and the slowest per-frame solve since the rig loaded.
+import { Vector3 } from 'three';
+
+import type { LiveController } from '../live/live_controller.js';
+import type { MethodList } from '../live/methods.js';
+import type { SolveOutcome } from '../live/solver.js';
+import type { PageSettings } from './page_settings.js';
+import { ConvergencePlot } from './plots.js';
+import { pinnedDrift, StatsPanel, type StatsValues } from './stats.js';
+
+/** The slowest per-frame solve: page ms, ms inside the solver, iterations, stop reason. */
+export interface SlowestSolve {
+  ms: number;
+  solverMs: number;
+  iterations: number;
+  stopReason: string;
+}
+
+const v = new Vector3();
+
+export class SolveReport {
+  readonly stats: StatsPanel;
+  readonly plot: ConvergencePlot;
+  /** The slowest per-frame solve since the rig loaded, or null. */
+  slowest: SlowestSolve | null = null;
+  /** The stats of the last solve (one record, rewritten by each). */
+  private readonly values: StatsValues = {
+    method: '', iterations: 0, E: 0, gradNorm: 0, reached: false, tipDistance: 0, pixelsPerUnit: NaN, stopReason: '', paperMode: false, ms: 0, pinnedDrift: 0,
+  };
+
+  /** The stats and the plot go into `side`; `controller` shows the rig, `settings` name the method. */
+  constructor(side: HTMLElement, methods: MethodList, private readonly controller: LiveController, private readonly settings: PageSettings) {
+    this.stats = new StatsPanel(side);
+    this.plot = new ConvergencePlot(side, methods, undefined, undefined, (m) => {
+      const session = controller.live?.session;
+      return session && session.lastIterations(m) > 0 ? session.history(m) : null;
+    });
+  }
+
+  /** A per-frame solve: its outcome, main-thread ms and the tips at the new pose (3 per effector). */
+  solved(outcome: SolveOutcome, ms: number, tips: Float64Array): void {
+    if (ms > (this.slowest?.ms ?? -1))
+      this.slowest = { ms, solverMs: outcome.elapsedSeconds * 1000, iterations: outcome.iterations, stopReason: outcome.stopReason };
+    if (outcome.iterations > 0) this.plot.follow(this.settings.method);
+    this.stats.show(this.valuesOf(outcome, ms, tips, this.controller.draggedEffector));
+  }
+
+  /** One step of step mode: its outcome and main-thread ms. */
+  stepped(outcome: SolveOutcome, ms: number): void {
+    const tips = this.controller.live?.session.tips();
+    if (!tips) return;
+    this.plot.follow(this.settings.method);
+    this.stats.showStep(this.valuesOf(outcome, ms, tips, null));
+  }
+
+  /** Shows E at the current pose, which no solve reached (a reset, a new rig, method, limits or effectors). */
+  showIdle(): void {
+    const live = this.controller.live;
+    if (live) this.stats.showIdle(this.settings.method, live.session.objective());
+  }
+
+  /** A new rig: empty stats and plot. */
+  reset(): void {
+    this.stats.reset();
+    this.plot.clear();
+    this.slowest = null;
+    this.showIdle();
+  }
+
+  dispose(): void {
+    this.plot.dispose();
+  }
+
+  /** The stats of one solve; `except` is the dragged effector (not counted as pinned), or null. */
+  private valuesOf(outcome: SolveOutcome, ms: number, tips: Float64Array, except: number | null): StatsValues {
+    const targets = this.controller.live?.session.targets ?? tips;
+    const k = Math.min(this.controller.handles.selected ?? 0, targets.length / 3 - 1);
+    const s = this.values;
+    s.method = this.settings.method;
+    s.iterations = outcome.iterations;
+    s.E = outcome.E;
+    s.gradNorm = outcome.gradNorm;
+    s.reached = outcome.reached;
+    s.tipDistance = outcome.tipDistance;
+    s.pixelsPerUnit = k < 0 ? NaN : this.controller.stage.pixelsPerUnit(v.fromArray(targets, 3 * k));
+    s.stopReason = outcome.stopReason;
+    s.paperMode = this.settings.paperMode;
+    s.ms = ms;
+    s.pinnedDrift = pinnedDrift(tips, targets, except);
+    return s;
+  }
+}
