@@ -1,5 +1,5 @@
 // Browser-test harness: a vite server on a free port, headless Chromium through playwright-core
-// with the flags that work on this machine (TOOLCHAIN.md), console-error capture, and a
+// with flags that give WebGL without a GPU (SwiftShader: CHROMIUM_FLAGS), console-error capture, and a
 // screenshot in test-results/ when a test fails; waiting for the page's animation frames.
 import { mkdirSync, mkdtempSync, rmSync } from 'node:fs';
 import { createServer as createHttpServer, type Server } from 'node:http';
