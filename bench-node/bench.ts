@@ -6,7 +6,7 @@ import { defaultTolerances, dragTolerances, rigSize } from '../web/src/rig/toler
 import { draggableEffectors } from './effectors.js';
 import { BenchError, errorLine } from './errors.js';
 import { summarize, type Row } from './metrics.js';
-import { isPeer, type BenchOptions, type Method } from './options.js';
+import { isPeer, type BenchOptions } from './options.js';
 import type { Progress } from './progress.js';
 import { REACH_PATH_STEPS, reachPaths } from './reach.js';
 import { markReachable, REFERENCE_METHOD } from './reachability.js';
@@ -96,12 +96,12 @@ function checkTargetSetSize(entry: string, rig: PreparedRig, opts: BenchOptions)
 }
 
 /** The engines a method runs on: ours on each requested engine, the peers in JavaScript. */
-export function enginesFor(method: Method, opts: BenchOptions): string[] {
+export function enginesFor(method: string, opts: BenchOptions): string[] {
   return isPeer(method) ? ['js'] : opts.engines;
 }
 
 /** Samples of `experiment` that `method` solves on `rig` (reach: at most its whole set). */
-function samplesOf(rig: PreparedRig, experiment: Experiment, method: Method, opts: BenchOptions): number {
+function samplesOf(rig: PreparedRig, experiment: Experiment, method: string, opts: BenchOptions): number {
   return experiment === 'reach' ? Math.min(opts.samples[method], rig.reachSteps) : opts.samples[method];
 }
 
@@ -126,7 +126,7 @@ export function totalSolves(opts: BenchOptions, rigs: readonly PreparedRig[]): n
  * incremental; for drag and reach a user's drag (the rig's drag tolerances, and no restarts: a
  * restart jumps the whole pose).
  */
-export function runSettings(rig: PreparedRig, experiment: Experiment, method: Method, opts: BenchOptions): RunSettings {
+export function runSettings(rig: PreparedRig, experiment: Experiment, method: string, opts: BenchOptions): RunSettings {
   const common = { method, ftol: rig.ftol, timeoutSeconds: opts.timeoutSeconds, paper: opts.paper, rigSize: rig.size };
   return isDragging(experiment) ? { ...common, ...rig.drag, restarts: 0 } : { ...common, gtol: rig.gtol, tipTolerance: 0 };
 }
@@ -154,10 +154,11 @@ export function targetSetsFor(rig: PreparedRig, opts: BenchOptions, ik: IkCoreMo
 export async function runBench(rigs: readonly PreparedRig[], ctx: RunContext): Promise<Row[]> {
   const { opts, ik, progress } = ctx;
   const needsPool = opts.experiments.includes('reach') || opts.methods.some((m) => isPeer(m) || opts.engines.includes('wasm'));
-  if (opts.methods.some((m) => !isPeer(m)) && opts.engines.includes('native')) checkNativeTool();
+  const ours = opts.methods.filter((m) => !isPeer(m));
+  if (ours.length > 0 && opts.engines.includes('native')) checkNativeTool(ours);
   // No more workers than the longest set has solves: the others would only take memory.
   const longest = Math.max(...rigs.flatMap((rig) => opts.experiments.map((e) => largestSet(rig, e, opts))));
-  const pool = needsPool ? await WorkerPool.create(Math.min(opts.workers, longest)) : undefined;
+  const pool = needsPool ? await WorkerPool.create(Math.min(opts.workers, longest), opts.warmUpMs) : undefined;
   const rows: Row[] = [];
   try {
     for (const rig of rigs) {

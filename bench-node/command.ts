@@ -5,6 +5,7 @@ import { availableParallelism, cpus } from 'node:os';
 import { fileURLToPath } from 'node:url';
 
 import { loadIkNode } from '../web/src/ik/node.js';
+import { IkSolver } from '../web/src/ik/solver.js';
 import { prepareRigs, runBench, totalSolves } from './bench.js';
 import { compareTable, readReferenceCsv } from './compare.js';
 import { BenchError } from './errors.js';
@@ -46,14 +47,15 @@ function gitCommit(): string {
 }
 
 async function main(argv: string[], io: CommandIo): Promise<number> {
-  const opts = parseOptions(argv, io.isTTY);
+  // The core's methods are the ones --methods knows: its module comes first.
+  const ik = await loadIkNode();
+  const opts = parseOptions(argv, io.isTTY, IkSolver.methods(ik));
   if (!opts) return 0;
   checkOutputs(
     [['--json', opts.json], ['--csv', opts.csv], ['--markdown', opts.markdown]],
     [...resolveRigPaths(opts.rigs), ...(opts.compare ? [opts.compare] : [])],
   );
   const reference = opts.compare ? readReferenceCsv(opts.compare) : undefined;
-  const ik = await loadIkNode();
   const rigs = await prepareRigs(opts, ik);
   const progress = makeProgress(opts.progress, totalSolves(opts, rigs));
   let rows: Row[];

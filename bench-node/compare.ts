@@ -1,6 +1,6 @@
-// --compare: reads a results CSV of the report (../shared/paper/results.csv: rig, bones,
-// experiment, method, ...) or of the re-measured original program (original-measured.csv: rig,
-// experiment, method, samples, ...) and sets our rows beside it, with the speed ratio
+// --compare: reads a results CSV of the report (its table, results.csv in the paper folder: rig,
+// bones, experiment, method, ...) or of the re-measured original program (original-measured.csv:
+// rig, experiment, method, samples, ...) and sets our rows beside it, with the speed ratio
 // their t_avg / our t_avg (above 1: we are faster). Rows match on rig, experiment and method
 // (case-insensitive: the CSVs say GD, BFGS, GN).
 import { readFileSync, statSync } from 'node:fs';

@@ -1,16 +1,17 @@
 // The command line's options: parsing, defaults and checks. Every problem is a BenchError with
 // one line of text (exit code 2), so `npm run bench -- --bad` fails the same way as a bad value.
+// Our methods are the core's (its registry, `IkSolver.methods`), given by the caller; the peers
+// are the bench's own.
 import { availableParallelism } from 'node:os';
 
 import { Command, CommanderError, Option } from 'commander';
 
 import { BenchError, quote } from './errors.js';
 import { experiments, type Experiment } from './targets.js';
+import { WARM_UP_MS } from './warm_up.js';
 
-export const ownMethods = ['gd', 'bfgs', 'gn', 'newton', 'lm'] as const;
-export const peerMethods = ['three-ccd', 'closed-chain-ik'] as const;
-export const allMethods: readonly string[] = [...ownMethods, ...peerMethods];
-export type Method = (typeof ownMethods)[number] | (typeof peerMethods)[number];
+/** The peers: other libraries' solvers, run in JavaScript (peers/). */
+export const peerMethods: readonly string[] = ['three-ccd', 'closed-chain-ik'];
 export type Engine = 'wasm' | 'native';
 export const engines: readonly Engine[] = ['wasm', 'native'];
 
@@ -21,9 +22,9 @@ export function isPeer(method: string): boolean {
 export interface BenchOptions {
   rigs: string[];
   experiments: Experiment[];
-  methods: Method[];
-  /** Samples per method (a --samples default plus METHOD=N overrides). */
-  samples: Record<Method, number>;
+  methods: string[];
+  /** Samples per known method (a --samples default plus METHOD=N overrides). */
+  samples: Record<string, number>;
   seed: number;
   /** Overrides of the per-rig default tolerances; undefined means the rig's default. */
   gtol?: number;
@@ -39,6 +40,8 @@ export interface BenchOptions {
   markdown?: string;
   compare?: string;
   progress: boolean;
+  /** Untimed solving per worker and runner before timing, milliseconds (warm_up.ts). */
+  warmUpMs: number;
 }
 
 /** Solves of one method per experiment: the default, and the largest --samples value. */
@@ -53,6 +56,8 @@ const WORKERS_CAP = 64;
 const MAX_WORKERS = Math.min(WORKERS_CAP, WORKERS_PER_CORE * availableParallelism());
 /** Longest --timeout, seconds per solve. */
 const MAX_TIMEOUT_SECONDS = 3600;
+/** Longest --warm-up, milliseconds. */
+const MAX_WARM_UP_MS = 60_000;
 
 const usage = (message: string): BenchError => new BenchError(message, 2);
 
@@ -95,10 +100,10 @@ function pick<T extends string>(flag: string, value: string, known: readonly T[]
   return [...new Set(values)] as T[];
 }
 
-/** `1000` or `1000,gd=100`: a default plus per-method overrides, each in 1..MAX_SAMPLES. */
-function parseSamples(value: string): Record<Method, number> {
+/** `1000` or `1000,gd=100`: a default plus per-method overrides (methods of `allMethods`), each in 1..MAX_SAMPLES. */
+function parseSamples(value: string, allMethods: readonly string[]): Record<string, number> {
   let fallback: number | undefined;
-  const overrides: Partial<Record<Method, number>> = {};
+  const overrides = new Map<string, number>();
   for (const entry of list('--samples', value)) {
     const eq = entry.indexOf('=');
     if (eq < 0) {
@@ -108,12 +113,10 @@ function parseSamples(value: string): Record<Method, number> {
     }
     const method = entry.slice(0, eq).trim();
     if (!allMethods.includes(method)) throw usage(`--samples: unknown method ${quote(method)} in ${quote(value)} (known: ${allMethods.join(', ')})`);
-    if (overrides[method as Method] !== undefined) throw usage(`--samples: ${method} given twice in ${quote(value)}`);
-    overrides[method as Method] = integerIn(`--samples ${method}`, entry.slice(eq + 1), 1, MAX_SAMPLES);
+    if (overrides.has(method)) throw usage(`--samples: ${method} given twice in ${quote(value)}`);
+    overrides.set(method, integerIn(`--samples ${method}`, entry.slice(eq + 1), 1, MAX_SAMPLES));
   }
-  const out = {} as Record<Method, number>;
-  for (const m of allMethods as Method[]) out[m] = overrides[m] ?? fallback ?? DEFAULT_SAMPLES;
-  return out;
+  return Object.fromEntries(allMethods.map((m) => [m, overrides.get(m) ?? fallback ?? DEFAULT_SAMPLES]));
 }
 
 /** An output or --compare file name; undefined when the option is absent. */
@@ -121,9 +124,9 @@ function fileName(flag: string, value: string | undefined): string | undefined {
   return value === undefined ? undefined : present(flag, value);
 }
 
-function program(): Command {
+function program(allMethods: readonly string[]): Command {
   return new Command('bench')
-    .description('Benchmarks the IK solvers on target sets of ../shared/paper/PROTOCOL.md (see bench-node/README.md).')
+    .description("Benchmarks the IK solvers on the report's target sets and more (see bench-node/README.md).")
     .addOption(new Option('--rig <paths>', 'rig files (.glb, .gltf, A7 .json) or project rig names, comma-separated').makeOptionMandatory())
     .option('--experiment <list>', `experiments: ${experiments.join(', ')}`, 'random,incremental')
     .option('--methods <list>', `methods: ${allMethods.join(', ')}`, allMethods.join(','))
@@ -139,8 +142,9 @@ function program(): Command {
     .option('--json <file>', 'write the rows as JSON')
     .option('--csv <file>', 'write the rows as CSV')
     .option('--markdown <file>', 'write the tables as Markdown')
-    .option('--compare <file>', "a CSV like ../shared/paper/original-measured.csv to print beside ours")
+    .option('--compare <file>', "a results CSV of the report (results.csv, original-measured.csv) to print beside ours")
     .option('--no-progress', 'no progress bar even on a terminal')
+    .option('--warm-up <ms>', 'untimed solving per worker and method before timing (0: a single solve; times then include V8 compiling)', String(WARM_UP_MS))
     .helpOption('-h, --help')
     .allowExcessArguments(false)
     .showSuggestionAfterError(true);
@@ -164,14 +168,17 @@ interface RawOptions {
   markdown?: string;
   compare?: string;
   progress: boolean;
+  warmUp: string;
 }
 
 /**
- * Parses argv (without node and the script). Returns undefined after printing help.
- * Throws BenchError (exit code 2) with one line for any problem.
+ * Parses argv (without node and the script); `ownMethods` are the core's methods (IkSolver.methods),
+ * the default first. Returns undefined after printing help. Throws BenchError (exit code 2) with
+ * one line for any problem.
  */
-export function parseOptions(argv: string[], isTTY: boolean): BenchOptions | undefined {
-  const cmd = program();
+export function parseOptions(argv: string[], isTTY: boolean, ownMethods: readonly string[]): BenchOptions | undefined {
+  const allMethods = [...ownMethods, ...peerMethods];
+  const cmd = program(allMethods);
   let helped = false;
   cmd.exitOverride((err: CommanderError) => {
     if (err.code === 'commander.helpDisplayed' || err.code === 'commander.help') {
@@ -191,8 +198,8 @@ export function parseOptions(argv: string[], isTTY: boolean): BenchOptions | und
   return {
     rigs: list('--rig', raw.rig),
     experiments: pick('--experiment', raw.experiment, experiments, 'experiment'),
-    methods: pick('--methods', raw.methods, allMethods, 'method') as Method[],
-    samples: parseSamples(raw.samples),
+    methods: pick('--methods', raw.methods, allMethods, 'method'),
+    samples: parseSamples(raw.samples, allMethods),
     seed: integerIn('--seed', raw.seed, 0, 0xffffffff),
     gtol: raw.gtol === undefined ? undefined : positiveNumber('--gtol', raw.gtol),
     ftol: raw.ftol === undefined ? undefined : positiveNumber('--ftol', raw.ftol),
@@ -206,5 +213,6 @@ export function parseOptions(argv: string[], isTTY: boolean): BenchOptions | und
     markdown: fileName('--markdown', raw.markdown),
     compare: fileName('--compare', raw.compare),
     progress: raw.progress && isTTY,
+    warmUpMs: integerIn('--warm-up', raw.warmUp, 0, MAX_WARM_UP_MS),
   };
 }

@@ -3,13 +3,12 @@
 // A rig is a path to a .glb, .gltf or A7 .json file, or a bare name (`knight`) meaning the
 // project rig web/public/models/NAME.glb. Its display name is the file's base name.
 //
-// Default tolerances (web/src/rig/tolerances.ts, shared with the page): the report's values for
-// its five A7 rigs (beast: gtol 0.01, ftol 0.002; the others: gtol 0.0001, ftol 0.0002). For any
-// other rig both scale with the square of the rig's size relative to a reference size of 1 rig unit:
-//   ftol = 0.0002 * (size / 1)^2,   gtol = 0.0001 * (size / 1)^2
-// where size is the diagonal of the bounding box of every bone's tip at the rest pose. The four
-// smaller A7 rigs measure 0.74 (robot-arm) to 1.73 (chimpanzee-hand) by that rule, hence the
-// reference of 1; beast measures 345 and keeps the report's own values.
+// Default tolerances: web/src/rig/tolerances.ts (shared with the page) has the values and the
+// rule: the report's own for its five A7 rigs; for any other rig the usual ones scaled with the
+// square of the rig's size (the diagonal of the bounding box of every bone's tip at the rest
+// pose) relative to 1 rig unit. The four smaller A7 rigs measure 0.74 (robot-arm) to 1.73
+// (chimpanzee-hand) by that rule, hence the reference of 1; beast measures 345 and keeps the
+// report's own values.
 import { existsSync, realpathSync } from 'node:fs';
 import { extname, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';

@@ -2,7 +2,7 @@
 // wasm/tools/ik_bench_native.cpp), driven by the same target sets. The rig goes over as A7 JSON,
 // the starts and targets as float64 binary; batches of whole independent ranges (as for the
 // workers) run in up to `workers` processes at once; each writes one result line per solve.
-import { spawn } from 'node:child_process';
+import { spawn, spawnSync } from 'node:child_process';
 import { existsSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
@@ -10,7 +10,7 @@ import { fileURLToPath } from 'node:url';
 
 import type { RigSpec } from '../web/src/ik/rig_spec.js';
 import { writeA7Rig } from './a7_writer.js';
-import { BenchError } from './errors.js';
+import { BenchError, quote } from './errors.js';
 import type { SolveResult } from './metrics.js';
 import { batchesOf } from './run_wasm.js';
 import type { RunSettings } from './runner.js';
@@ -44,22 +44,34 @@ export function encodeJob(set: TargetSet, begin: number, end: number): Uint8Arra
   return bytes;
 }
 
-/** Parses RESULTS.tsv (see ik_bench_native.cpp). */
+/** One line of RESULTS.jsonl (see ik_bench_native.cpp); null stands for NaN. */
+interface NativeResult {
+  E: number | null;
+  iterations: number;
+  seconds: number;
+  stop_reason: string;
+  wobble_during: number | null;
+  wobble_after: number | null;
+  tip_distance: number | null;
+  jump_deg: number | null;
+}
+
+/** Parses RESULTS.jsonl (see ik_bench_native.cpp), `expected` lines; `file` names it in errors. */
 export function decodeResults(text: string, expected: number, file: string): SolveResult[] {
   const lines = text.split('\n').filter((l) => l.length > 0);
   if (lines.length !== expected) throw new BenchError(`native engine: ${file} has ${lines.length} results, expected ${expected}`);
   return lines.map((line) => {
-    const f = line.split('\t');
-    const num = (i: number): number => (f[i] === 'nan' || f[i] === '-nan' ? NaN : Number(f[i]));
+    const r = JSON.parse(line) as NativeResult;
+    const num = (x: number | null): number => x ?? NaN;
     return {
-      E: num(0),
-      tipDistance: num(9),
-      iterations: num(2),
-      seconds: num(5),
-      stopReason: f[6],
-      wobbleDuring: num(7),
-      wobbleAfter: num(8),
-      jumpDeg: num(10),
+      E: num(r.E),
+      tipDistance: num(r.tip_distance),
+      iterations: r.iterations,
+      seconds: r.seconds,
+      stopReason: r.stop_reason,
+      wobbleDuring: num(r.wobble_during),
+      wobbleAfter: num(r.wobble_after),
+      jumpDeg: num(r.jump_deg),
     };
   });
 }
@@ -77,9 +89,20 @@ function runProcess(args: string[]): Promise<void> {
   });
 }
 
-export function checkNativeTool(): void {
-  if (!existsSync(nativeToolPath))
-    throw new BenchError(`native engine: ${nativeToolPath} is missing; build it with "bash scripts/setup.sh --native"`);
+/**
+ * Throws BenchError when the native tool is missing, or does not know one of `methods` (a build
+ * older than the WebAssembly module): it lists its methods with --list-methods.
+ */
+export function checkNativeTool(methods: readonly string[]): void {
+  const build = 'bash scripts/setup.sh --native';
+  if (!existsSync(nativeToolPath)) throw new BenchError(`native engine: ${nativeToolPath} is missing; build it with "${build}"`);
+  const listed = spawnSync(nativeToolPath, ['--list-methods'], { encoding: 'utf8' });
+  const known = listed.status === 0 ? (JSON.parse(listed.stdout) as string[]) : [];
+  const unknown = methods.find((m) => !known.includes(m));
+  if (unknown !== undefined)
+    throw new BenchError(
+      `native engine: ${nativeToolPath} has no method ${quote(unknown)} (it knows: ${known.join(', ') || 'none'}); rebuild it with "${build}"`,
+    );
 }
 
 /** Runs every sample of `set` with the native tool; results in sample order. */
@@ -90,7 +113,7 @@ export async function runNative(
   processes: number,
   onProgress: (solved: number) => void,
 ): Promise<SolveResult[]> {
-  checkNativeTool();
+  checkNativeTool([settings.method]);
   const dir = mkdtempSync(join(tmpdir(), 'ik-bench-'));
   try {
     const rigFile = join(dir, 'rig.json');
@@ -102,7 +125,7 @@ export async function runNative(
       while (next < batches.length) {
         const b = next++;
         const [begin, end] = batches[b];
-        const input = join(dir, `job${b}.bin`), output = join(dir, `results${b}.tsv`);
+        const input = join(dir, `job${b}.bin`), output = join(dir, `results${b}.jsonl`);
         writeFileSync(input, encodeJob(set, begin, end));
         const args = ['--rig', rigFile, '--method', settings.method, '--input', input, '--output', output,
           '--gtol', String(settings.gtol), '--ftol', String(settings.ftol), '--tip-tol', String(settings.tipTolerance),

@@ -32,10 +32,13 @@ export class WorkerPool {
 
   private constructor(private readonly workers: Worker[]) {}
 
-  /** Starts `size` workers sharing one compiled module; resolves when all are ready. */
-  static async create(size: number): Promise<WorkerPool> {
+  /**
+   * Starts `size` workers sharing one compiled module, each warming every new runner up for
+   * `warmUpMs` milliseconds (warm_up.ts); resolves when all are ready.
+   */
+  static async create(size: number, warmUpMs: number): Promise<WorkerPool> {
     const wasmModule = await WebAssembly.compile(readFileSync(wasmPath));
-    const init: WorkerInit = { wasmModule };
+    const init: WorkerInit = { wasmModule, warmUpMs };
     const workers = Array.from({ length: size }, () => new Worker(new URL('./worker_boot.mjs', import.meta.url), { workerData: init }));
     const pool = new WorkerPool(workers);
     await Promise.all(

@@ -25,8 +25,9 @@ export interface RunSettings extends OnTargetTest {
   /** Rig size (rig units; see rigs.ts), for peers whose settings are lengths. */
   rigSize: number;
   /**
-   * Restarts from quasi-random points after a stall (lm): undefined keeps the solver's default;
-   * drag and reach set 0, as the page does while dragging (a restart jumps the whole pose).
+   * Restarts from quasi-random points after a stall (every method of ours outside paper mode; the
+   * peers have none): undefined keeps the solver's default; drag and reach set 0, as the page does
+   * while dragging (a restart jumps the whole pose).
    */
   restarts?: number;
 }

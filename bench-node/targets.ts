@@ -13,7 +13,9 @@
 //                theirs, from P(0), chained (reach.ts). Not seeded: the set is the same for every seed.
 // The targets of random, incremental and drag are x_b = x(A_k): reachable by construction. Reach
 // targets are points, reachable or not: `reachable` says which (reachability.ts fills it in).
-// Angles are degrees, P clamps to limits.
+// Angles are degrees, P clamps to limits. The native tools and tests make random and incremental
+// sets with the same streams in C++ (wasm/native/protocol.h); tests/bench/protocol_agreement.test.ts
+// checks both give the same sets.
 import type { RigSpec } from '../web/src/ik/rig_spec.js';
 import { draggableEffectors, exclusiveAngles } from './effectors.js';
 import { signedUnit, streamFor } from './prng.js';
@@ -32,6 +34,8 @@ export function isDragging(experiment: Experiment): boolean {
 
 /** Steps per drag path. */
 export const DRAG_PATH_STEPS = 40;
+/** Random experiment: each angle is drawn from 360 * U(-1, 1) degrees (then clamped). */
+export const RANDOM_RANGE_DEG = 360;
 /** Largest random step per angle in the incremental experiment, degrees. */
 export const INCREMENTAL_STEP_DEG = 5;
 /** Drag: half-range of the base pose around the rest pose, and the sine amplitudes, degrees. */
@@ -86,6 +90,23 @@ export function project(spec: RigSpec, a: Float64Array): Float64Array {
 }
 
 /**
+ * Angles A = P(360 * U(-1,1)^(3m)) of a random target (degrees); `rand` gives numbers in [0, 1),
+ * one per angle in order.
+ */
+export function randomAngles(spec: RigSpec, rand: () => number): Float64Array {
+  const a = new Float64Array(spec.lower.length);
+  for (let i = 0; i < a.length; i++) a[i] = RANDOM_RANGE_DEG * signedUnit(rand);
+  return project(spec, a);
+}
+
+/** Angles P(previous + 5 * U(-1,1)^(3m)) of the next incremental target (degrees); `rand` as for randomAngles. */
+export function incrementalAngles(spec: RigSpec, previous: ArrayLike<number>, rand: () => number): Float64Array {
+  const a = new Float64Array(previous.length);
+  for (let i = 0; i < a.length; i++) a[i] = previous[i] + INCREMENTAL_STEP_DEG * signedUnit(rand);
+  return project(spec, a);
+}
+
+/**
  * Generates `count` samples of `experiment` for a run seeded with `seed`; reach has at most
  * reachPaths(...).length * REACH_PATH_STEPS samples (its whole set), so it may return fewer.
  */
@@ -131,9 +152,7 @@ export function generateTargets(
 function fillRandom(spec: RigSpec, set: TargetSet, angles: Float64Array, rest: Float64Array, rand: () => number): void {
   const m = set.numAngles;
   for (let k = 0; k < set.count; k++) {
-    const a = angles.subarray(k * m, (k + 1) * m);
-    for (let i = 0; i < m; i++) a[i] = 360 * signedUnit(rand);
-    project(spec, a);
+    angles.set(randomAngles(spec, rand), k * m);
     set.starts.set(rest, k * m);
   }
 }
@@ -142,11 +161,9 @@ function fillIncremental(spec: RigSpec, set: TargetSet, angles: Float64Array, re
   const m = set.numAngles;
   let previous = rest;
   for (let k = 0; k < set.count; k++) {
-    const a = angles.subarray(k * m, (k + 1) * m);
-    for (let i = 0; i < m; i++) a[i] = previous[i] + INCREMENTAL_STEP_DEG * signedUnit(rand);
-    project(spec, a);
+    angles.set(incrementalAngles(spec, previous, rand), k * m);
     set.starts.set(previous, k * m);
-    previous = a;
+    previous = angles.subarray(k * m, (k + 1) * m);
   }
 }
 

@@ -32,7 +32,7 @@ function runnerFor(task: WorkerTask): { runner: Runner; rig: IkRig } {
   cached?.rig.dispose();
   const rig = new IkRig(ik, task.spec);
   const runner = makeRunner(ik, task.spec, task.settings);
-  warmUp(runner, task.spec, (a) => rig.tips(a));
+  warmUp(runner, task.spec, (a) => rig.tips(a), init.warmUpMs);
   cached = { key, rig, runner };
   return cached;
 }

@@ -3,9 +3,11 @@ import type { RigSpec } from '../web/src/ik/rig_spec.js';
 import type { SolveResult } from './metrics.js';
 import type { RunSettings } from './runner.js';
 
-/** What a worker gets at start: the WebAssembly module, compiled once by the main thread. */
+/** What a worker gets at start: the WebAssembly module, compiled once by the main thread, and the warm-up time. */
 export interface WorkerInit {
   wasmModule: WebAssembly.Module;
+  /** Untimed solving with each new runner, milliseconds (warm_up.ts). */
+  warmUpMs: number;
 }
 
 /** A batch of solves: samples of a target set, whole drag paths only. */

@@ -2,13 +2,14 @@
 // user drags, on the drag and reach experiments of every rig.
 import type { Row } from '../metrics.js';
 import { formatStopReasons } from '../table.js';
-import { mark, pct, table, us } from './markdown.js';
+import { pct, table, us } from './markdown.js';
+import type { Verdicts } from './verdicts.js';
 
 /** Target: on target at this share of the reachable steps, on every rig. */
 export const DRAG_SUCCESS_TARGET = 0.999;
 
-/** The section's Markdown lines from the rows of `--experiment drag,reach --methods lm`. */
-export function draggingSection(rows: readonly Row[]): string[] {
+/** The section's Markdown lines from the rows of `--experiment drag,reach --methods lm`; each row's target goes to `verdicts`. */
+export function draggingSection(rows: readonly Row[], verdicts: Verdicts): string[] {
   const length = (x: number | null): string => (x === null ? '-' : x.toPrecision(3));
   // Two decimals, so that a rate just under the target does not print as the target.
   const success = (x: number): string => (Number.isFinite(x) ? `${(100 * x).toFixed(2)}%` : '-');
@@ -37,7 +38,8 @@ export function draggingSection(rows: readonly Row[]): string[] {
         length(r.jump_max_deg),
         us(r.t_median_s),
         formatStopReasons(r.stop_reasons),
-        mark(!(r.success_rate < DRAG_SUCCESS_TARGET)), // nothing reachable: nothing missed
+        // Nothing reachable: nothing missed.
+        verdicts.mark(!(r.success_rate < DRAG_SUCCESS_TARGET), `7. ${r.rig} ${r.experiment}: on target at ${success(r.success_rate)} of the reachable steps, under ${pct(DRAG_SUCCESS_TARGET)}`),
       ]),
     ),
     '',

@@ -1,7 +1,8 @@
 // The command line as a user runs it: each error gives one clear line and a non-zero exit before
 // any solve, and a small run writes the JSON schema. (The benchmark itself is `npm run bench`, not
-// a test.) Error cases run in this process through runCommand, what cli.ts calls, to keep the
-// file fast; a few run the real command to check the exit code and stderr of the process.
+// a test.) Most cases run in this process through runCommand, what cli.ts calls, to keep the file
+// fast, and the runs without warm-up (--warm-up 0: no run here measures speed); a few run the real
+// command to check the exit code and output of the process.
 import { spawnSync } from 'node:child_process';
 import { existsSync, mkdirSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
@@ -15,11 +16,15 @@ import { runCommand } from '../../bench-node/command.js';
 import { parseOptions } from '../../bench-node/options.js';
 import { checkOutputs } from '../../bench-node/outputs.js';
 import { loadBenchRig } from '../../bench-node/rigs.js';
+import { checkNativeTool } from '../../bench-node/run_native.js';
 import type { IkCoreModule } from '../../web/src/ik/module.js';
+import { loadIkNode } from '../../web/src/ik/node.js';
+import { IkSolver } from '../../web/src/ik/solver.js';
 import { rigsLike } from '../helpers/a7.js';
 import { sketchRig, straightLimb } from '../helpers/rig_builder.js';
 
 const root = resolve(import.meta.dirname, '../..');
+const methods = IkSolver.methods(await loadIkNode());
 const knight = rigsLike('knight')[0].path; // an A7 file: the project's knight (build/test-rigs)
 const dir = mkdtempSync(join(tmpdir(), 'bench-cli-test-'));
 afterAll(() => rmSync(dir, { recursive: true, force: true }));
@@ -95,7 +100,7 @@ describe('errors: one line on stderr, non-zero exit', () => {
 
 describe('careless values: a usage error naming the option and the value', () => {
   const options = ['--rig', '--experiment', '--methods', '--samples', '--seed', '--gtol', '--ftol', '--timeout', '--engine',
-    '--workers', '--json', '--csv', '--markdown', '--compare'];
+    '--workers', '--json', '--csv', '--markdown', '--compare', '--warm-up'];
   it.each(options.flatMap((flag) => ['', '  '].map((value) => [flag, value])))('%s %j: empty value', async (flag, value) => {
     const rig = flag === '--rig' ? [] : ['--rig', knight];
     expectOneLineError(await benchHere(...rig, flag, value), 2, new RegExp(`^bench: ${flag}: empty value$`));
@@ -124,6 +129,7 @@ describe('careless values: a usage error naming the option and the value', () =>
     [['--gtol', '-1e-4'], /--gtol: "-1e-4" is not a positive number/],
     [['--ftol', 'Infinity'], /--ftol: "Infinity" is not a positive number/],
     [['--ftol', '0'], /--ftol: "0" is not a positive number/],
+    [['--warm-up', '-1'], /--warm-up: "-1" is not an integer in 0\.\.60000$/],
     [['--experiment', 'random,Drag'], /--experiment: unknown experiment "Drag" \(known: random, incremental, drag, reach\)/],
     [['--methods', `lm,${'y'.repeat(500)}`], /--methods: unknown method "y{57}\.\.\." \(known:/],
   ] as Array<[string[], RegExp]>)('%j', async (args, pattern) => {
@@ -200,17 +206,24 @@ describe('rigs past the limits', () => {
 
   it('--no-humanoid-limits benches a recognised humanoid with the file\'s own limits', async () => {
     const on = await loadBenchRig('character');
-    const off = await loadBenchRig('character', parseOptions(['--rig', 'character', '--no-humanoid-limits'], false)!.humanoidLimits);
-    expect(parseOptions(['--rig', 'character'], false)!.humanoidLimits).toBe(true);
+    const off = await loadBenchRig('character', parseOptions(['--rig', 'character', '--no-humanoid-limits'], false, methods)!.humanoidLimits);
+    expect(parseOptions(['--rig', 'character'], false, methods)!.humanoidLimits).toBe(true);
     const knee = on.spec.names.indexOf('mixamorig:LeftLeg');
     expect(Array.from(on.spec.upper.subarray(3 * knee, 3 * knee + 3)).map(Math.round)).toEqual([3, 150, 3]);
     expect(Array.from(off.spec.upper.subarray(3 * knee, 3 * knee + 3))).toEqual([180, 180, 180]);
   });
 
+  it('the native tool knows the same methods as the module, and one that lacks a method is refused', () => {
+    expect(() => checkNativeTool(methods)).not.toThrow();
+    expect(() => checkNativeTool(['lm', 'simplex'])).toThrow(
+      new RegExp(`^native engine: .*ik_bench_native has no method "simplex" \\(it knows: ${methods.join(', ')}\\); rebuild it`),
+    );
+  });
+
   it('any error of the core while preparing a rig becomes one line naming the rig', async () => {
     const failing = (thrown: unknown): IkCoreModule =>
       new Proxy({}, { get: () => { throw thrown; } }) as IkCoreModule;
-    const opts = parseOptions(['--rig', knight], false)!;
+    const opts = parseOptions(['--rig', knight], false, methods)!;
     await expect(prepareRigs(opts, failing(new Error('too large\n  details')))).rejects.toMatchObject({
       name: 'BenchError', exitCode: 1, message: `${knight}: too large`,
     });
@@ -230,9 +243,10 @@ const schema: Record<string, string> = {
   iter_avg: 'number', E_avg: 'number', E_iqm: 'number', E_max: 'number', success_rate: 'number', unreachable: 'number',
 };
 
-function runJson(args: string[]): JsonRow[] {
+/** The rows of a run in this process without warm-up, from its --json file. */
+async function runJson(args: string[]): Promise<JsonRow[]> {
   const file = join(dir, `out-${Math.random().toString(36).slice(2)}.json`);
-  const r = bench(...args, '--json', file);
+  const r = await benchHere(...args, '--warm-up', '0', '--json', file);
   expect(r.stderr).toBe('');
   expect(r.code).toBe(0);
   const doc = JSON.parse(readFileSync(file, 'utf8')) as { rows: JsonRow[] };
@@ -241,11 +255,12 @@ function runJson(args: string[]): JsonRow[] {
 
 describe('a small run', () => {
   it('prints a table per rig and experiment and writes the JSON schema', () => {
+    // The real command, with a short warm-up.
     const csv = join(dir, 'out.csv');
     const md = join(dir, 'out.md');
     const file = join(dir, 'smoke.json');
-    const r = bench('--rig', knight, '--samples', '5', '--methods', 'three-ccd,closed-chain-ik', '--timeout', '0.2', '--workers', '2',
-      '--json', file, '--csv', csv, '--markdown', md);
+    const r = bench('--rig', knight, '--samples', '5', '--methods', 'three-ccd,closed-chain-ik', '--timeout', '0.05', '--workers', '2',
+      '--warm-up', '20', '--json', file, '--csv', csv, '--markdown', md);
     expect(r.stderr).toBe('');
     expect(r.code).toBe(0);
     expect(r.stdout).toMatch(/knight, random targets/);
@@ -267,12 +282,12 @@ describe('a small run', () => {
     expect(readFileSync(md, 'utf8')).toMatch(/### knight, random targets\n\n\| method \| engine \|/);
   });
 
-  it('the same seed gives the same solves across engines and worker counts', () => {
+  it('the same seed gives the same solves across engines and worker counts', async () => {
     // The hand: the knight's first reach path is mostly out of reach, which only makes the run slower.
     const hand = rigsLike('chimpanzee-hand')[0].path;
     const args = ['--rig', hand, '--samples', '12', '--methods', 'gn,lm', '--experiment', 'incremental,drag,reach', '--seed', '5'];
-    const one = runJson([...args, '--workers', '1', '--engine', 'wasm,native']);
-    const three = runJson([...args, '--workers', '3', '--engine', 'wasm,native']);
+    const one = await runJson([...args, '--workers', '1', '--engine', 'wasm,native']);
+    const three = await runJson([...args, '--workers', '3', '--engine', 'wasm,native']);
     const key = (row: JsonRow): string => `${row.experiment} ${row.method} ${row.engine}`;
     expect(three.map(key)).toEqual(one.map(key));
     one.forEach((row, i) => {
@@ -291,10 +306,10 @@ describe('a small run', () => {
 });
 
 describe('the reach experiment', () => {
-  it('runs on a project rig, with the drag columns', () => {
+  it('runs on a project rig, with the drag columns', async () => {
     const file = join(dir, 'reach.json');
     const csv = join(dir, 'reach.csv');
-    const r = bench('--rig', 'lamp', '--experiment', 'reach', '--methods', 'lm', '--samples', '40', '--json', file, '--csv', csv);
+    const r = await benchHere('--rig', 'lamp', '--experiment', 'reach', '--methods', 'lm', '--samples', '40', '--warm-up', '0', '--json', file, '--csv', csv);
     expect(r.stderr).toBe('');
     expect(r.code).toBe(0);
     expect(r.stdout).toMatch(/lamp, reach targets/);
@@ -306,7 +321,7 @@ describe('the reach experiment', () => {
     expect(readFileSync(csv, 'utf8').split('\n')[0]).toMatch(/,success_rate,unreachable,.*,jump_max_deg,stop_reasons$/);
   });
 
-  it('counts steps out of reach as unreachable and leaves them out of success, on both engines', () => {
+  it('counts steps out of reach as unreachable and leaves them out of success, on both engines', async () => {
     // A straight limb of length 2 from the origin (size 1, tip tolerance 0.001): the path towards
     // its root can be reached by bending. Step t of either path sideways puts the target
     // hypot(2, 0.02 t) from the root, out of reach by more than the tip tolerance from t = 4 on.
@@ -314,7 +329,7 @@ describe('the reach experiment', () => {
     writeFileSync(limb, writeA7Rig(straightLimb()));
     const outOfReach = Array.from({ length: 40 }, (_, i) => Math.hypot(2, 0.02 * (i + 1)) - 2 >= 0.001).filter(Boolean).length;
     expect(outOfReach).toBe(37);
-    const rows = runJson(['--rig', limb, '--experiment', 'reach', '--methods', 'lm', '--engine', 'wasm,native', '--timeout', '0.2']);
+    const rows = await runJson(['--rig', limb, '--experiment', 'reach', '--methods', 'lm', '--engine', 'wasm,native', '--timeout', '0.2']);
     expect(rows.map((row) => row.engine)).toEqual(['wasm', 'native']);
     for (const row of rows) {
       expect(row).toMatchObject({ experiment: 'reach', samples: 120, unreachable: 2 * outOfReach });

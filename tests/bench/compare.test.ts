@@ -1,5 +1,8 @@
-// --compare reads both CSV layouts of ../shared/paper and matches our rows.
-import { resolve } from 'node:path';
+// --compare reads both CSV layouts of the report's paper folder (results.csv, the report's own
+// table; original-measured.csv, the original program re-run) and matches our rows.
+import { mkdtempSync, rmSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join, resolve } from 'node:path';
 
 import { describe, expect, it } from 'vitest';
 
@@ -42,6 +45,11 @@ describe('reference CSVs', () => {
   it('rejects files without the needed columns or with bad numbers, in one line', () => {
     expect(() => parseReferenceCsv('rig,method,t_avg_s\nknight,GN,1\n', 'x.csv')).toThrow(/no "experiment" column/);
     expect(() => parseReferenceCsv('rig,experiment,method,t_avg_s\nknight,random,GN,fast\n', 'x.csv')).toThrow(/line 2: t_avg_s "fast"/);
-    expect(() => readReferenceCsv('/nonexistent/file.csv')).toThrow(/no such file/);
+    const dir = mkdtempSync(join(tmpdir(), 'bench-compare-test-'));
+    try {
+      expect(() => readReferenceCsv(join(dir, 'missing.csv'))).toThrow(/missing\.csv: no such file/);
+    } finally {
+      rmSync(dir, { recursive: true, force: true });
+    }
   });
 });

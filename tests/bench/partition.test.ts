@@ -62,16 +62,19 @@ describe('native job file', () => {
     }
   });
 
-  it('results parse back, nan included', () => {
+  it('results parse back, null as NaN', () => {
+    const line = (fields: Record<string, unknown>): string =>
+      JSON.stringify({ gradient_norm: 1, function_evaluations: 4, jacobian_evaluations: 2, ...fields });
     const text =
-      '0.5\t1\t3\t4\t2\t0.25\tconverged_E\tnan\tnan\t0.01\t2.5\n' + '1e-05\t0\t0\t1\t1\t1e-06\ttimeout\t0.1\t0.2\tnan\tnan\n';
-    const results = decodeResults(text, 2, 'x.tsv');
+      line({ E: 0.5, iterations: 3, seconds: 0.25, stop_reason: 'converged_E', wobble_during: null, wobble_after: null, tip_distance: 0.01, jump_deg: 2.5 }) + '\n' +
+      line({ E: 1e-5, iterations: 0, seconds: 1e-6, stop_reason: 'timeout', wobble_during: 0.1, wobble_after: 0.2, tip_distance: null, jump_deg: null }) + '\n';
+    const results = decodeResults(text, 2, 'x.jsonl');
     expect(results[0]).toMatchObject({ E: 0.5, iterations: 3, seconds: 0.25, stopReason: 'converged_E', tipDistance: 0.01, jumpDeg: 2.5 });
     expect(results[0].wobbleDuring).toBeNaN();
     expect(results[1]).toMatchObject({ E: 1e-5, stopReason: 'timeout', wobbleDuring: 0.1, wobbleAfter: 0.2 });
     expect(results[1].tipDistance).toBeNaN();
     expect(results[1].jumpDeg).toBeNaN();
-    expect(() => decodeResults(text, 3, 'x.tsv')).toThrow(/2 results, expected 3/);
+    expect(() => decodeResults(text, 3, 'x.jsonl')).toThrow(/2 results, expected 3/);
   });
 });
 

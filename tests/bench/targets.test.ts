@@ -1,5 +1,7 @@
 // Target sets against PROTOCOL.md: limits, step sizes, reachability by construction, starts, and
 // the drag experiment's pinned effectors. FK is checked with the reference composition in plain JS.
+import { createHash } from 'node:crypto';
+
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 
 import { draggableEffectors, exclusiveAngles } from '../../bench-node/effectors.js';
@@ -17,6 +19,7 @@ import { loadIkNode } from '../../web/src/ik/node.js';
 import { IkRig } from '../../web/src/ik/rig.js';
 import type { RigSpec } from '../../web/src/ik/rig_spec.js';
 import { loadTestRig, maxAbsDiff, referenceTips, rigsLike, testRigs, type TestRig } from '../helpers/a7.js';
+import { sketchRig } from '../helpers/rig_builder.js';
 
 let ik: IkCoreModule;
 const rigs: IkRig[] = [];
@@ -135,5 +138,36 @@ describe('seeds', () => {
     const again = setOf(knight, 'random', 10).set;
     expect(Array.from(again.targets)).toEqual(Array.from(first.targets));
     expect(Array.from(setOf(knight, 'incremental', 10).set.targetAngles!)).not.toEqual(Array.from(first.targetAngles!));
+  });
+
+  it('seed 1 still gives the sets of the published benchmarks, bit for bit', () => {
+    // A Y of two limbs with limits; digests of the angles only (starts, target angles) and the
+    // path layout, so a change to forward kinematics does not show here but one to the draws does.
+    const limb = { lower: [-90, -45, -120], upper: [90, 45, 120] } as const;
+    const spec = sketchRig(
+      [
+        { parent: -1, at: [0, 0, 0], length: 1, lower: [0, 0, 0], upper: [0, 0, 0] },
+        { parent: 0, at: [1, 0, 0], length: 1, lower: [...limb.lower], upper: [...limb.upper] },
+        { parent: 1, at: [2, 0, 0], length: 0.5 },
+        { parent: 0, at: [1, 0, 0], length: 1, lower: [...limb.lower], upper: [...limb.upper] },
+        { parent: 3, at: [2, 0, 0], length: 0.5 },
+      ],
+      [2, 4],
+    );
+    const rig = new IkRig(ik, spec);
+    rigs.push(rig);
+    const digest = (experiment: Experiment): string => {
+      const set = generateTargets(spec, experiment, 100, 1, (a) => rig.tips(a));
+      const hash = createHash('sha256');
+      for (const a of [set.starts, set.targetAngles ?? new Float64Array(0), set.chained, set.dragged])
+        hash.update(new Uint8Array(a.buffer, a.byteOffset, a.byteLength));
+      return hash.digest('hex').slice(0, 16);
+    };
+    expect(Object.fromEntries((['random', 'incremental', 'drag', 'reach'] as const).map((e) => [e, digest(e)]))).toEqual({
+      random: 'c5dbd27d98746dd5',
+      incremental: '249a20d49fb849c7',
+      drag: '6a58f98566cb9c20',
+      reach: '35f32ed842ddf0ca',
+    });
   });
 });

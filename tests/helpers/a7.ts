@@ -1,5 +1,6 @@
-// Test helpers: the rigs the tests run on, seeded random numbers, and the reference composition
-// of PROTOCOL.md in plain 4x4 matrices.
+// Test helpers: the rigs the tests run on, seeded random numbers and random angles (the
+// benchmark's own: bench-node/prng.ts, bench-node/targets.ts), and the reference composition of
+// PROTOCOL.md in plain 4x4 matrices.
 //
 // Two sets of rigs in A7 format: the project's own (build/test-rigs, written from the models by
 // scripts/write-test-rigs.ts in vitest's global setup), always there, and the report's five A7 rigs from a7Dir
@@ -12,10 +13,16 @@ import { resolve } from 'node:path';
 import { testRigNames, testRigsDir } from '../../scripts/write-test-rigs.js';
 import type { RigSpec } from '../../web/src/ik/rig_spec.js';
 import { parseA7Rig } from '../../web/src/rig/a7_rig.js';
+import { reportTolerances } from '../../web/src/rig/tolerances.js';
 import { A7_TAG, a7Dir, a7Present } from './a7_folder.js';
 
 export { a7Dir };
-export const a7Names = ['ikea-lamp', 'robot-arm', 'knight', 'chimpanzee-hand', 'beast'] as const;
+/** seeded(seed): numbers in [0, 1) from mulberry32; randomAngles(spec, rand): the random experiment's angles. */
+export { mulberry32 as seeded } from '../../bench-node/prng.js';
+export { randomAngles } from '../../bench-node/targets.js';
+
+/** The report's five rigs, by file base name. */
+export const a7Names: readonly string[] = Object.keys(reportTolerances);
 
 /** Test options of a suite or test that reads the A7 rigs: describe(name, needsA7, fn). */
 export const needsA7 = { tags: [A7_TAG] };
@@ -54,32 +61,14 @@ const projectCounterparts: Record<string, string> = { 'ikea-lamp': 'lamp', 'chim
  * The project's counterpart of the report's rig `a7Name` ("ikea-lamp" -> lamp), and that rig too
  * when a7Dir exists: for tests of a general property written for one rig.
  */
-export function rigsLike(a7Name: (typeof a7Names)[number]): TestRig[] {
+export function rigsLike(a7Name: string): TestRig[] {
+  if (!a7Names.includes(a7Name)) throw new Error(`rigsLike: "${a7Name}" is none of the report's rigs (${a7Names.join(', ')})`);
   const project = projectCounterparts[a7Name] ?? a7Name;
   return testRigs.filter((r) => r.name === (r.a7 ? a7Name : project));
 }
 
 export function loadTestRig(rig: TestRig): RigSpec {
   return parseA7Rig(readFileSync(rig.path, 'utf8'), rig.path);
-}
-
-/** A small seeded generator (mulberry32) returning numbers in [0, 1). */
-export function seeded(seed: number): () => number {
-  let s = seed >>> 0;
-  return () => {
-    s = (s + 0x6d2b79f5) >>> 0;
-    let t = s;
-    t = Math.imul(t ^ (t >>> 15), t | 1);
-    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
-    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
-  };
-}
-
-/** Angles uniform in [-360, 360] degrees, clamped into the spec's limits. */
-export function randomAngles(spec: RigSpec, rand: () => number): Float64Array {
-  const a = new Float64Array(spec.lower.length);
-  for (let i = 0; i < a.length; i++) a[i] = Math.min(spec.upper[i], Math.max(spec.lower[i], 360 * (2 * rand() - 1)));
-  return a;
 }
 
 type M4 = number[]; // row-major 4x4

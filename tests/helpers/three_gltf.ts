@@ -3,6 +3,7 @@ import { Vector3, type Bone, type Object3D, type SkinnedMesh } from 'three';
 import { GLTFLoader, type GLTF } from 'three/examples/jsm/loaders/GLTFLoader.js';
 
 import type { RigSpec } from '../../web/src/ik/rig_spec.js';
+import { rigSize as sizeOfTips } from '../../web/src/rig/tolerances.js';
 
 /** Parses .glb bytes with three.js's GLTFLoader (works in Node for files without images). */
 export async function parseGlb(bytes: Uint8Array): Promise<GLTF> {
@@ -37,18 +38,17 @@ export function vertexInfluences(mesh: SkinnedMesh, v: number, bones: Bone[]): [
   return out;
 }
 
-/** Diagonal of the bounding box of every bone's origin and tip at rest: the rig's size. */
+/**
+ * The rig's size (rig units) as web/src/rig/tolerances.ts defines it, from the spec alone, without
+ * the core: at A = 0 bone b's tip is rest_b * (length_b, 0, 0).
+ */
 export function rigSize(spec: RigSpec): number {
-  const lo = [Infinity, Infinity, Infinity], hi = [-Infinity, -Infinity, -Infinity];
+  const tips = new Float64Array(3 * spec.parents.length);
   for (let b = 0; b < spec.parents.length; b++) {
     const r = spec.rest.subarray(16 * b, 16 * b + 16), l = spec.lengths[b];
-    for (const p of [[r[3], r[7], r[11]], [r[3] + l * r[0], r[7] + l * r[4], r[11] + l * r[8]]])
-      for (let k = 0; k < 3; k++) {
-        lo[k] = Math.min(lo[k], p[k]);
-        hi[k] = Math.max(hi[k], p[k]);
-      }
+    tips.set([r[3] + l * r[0], r[7] + l * r[4], r[11] + l * r[8]], 3 * b);
   }
-  return Math.hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]);
+  return sizeOfTips(tips);
 }
 
 /** Applies a row-major 4x4 (16 numbers at offset) to a point. */

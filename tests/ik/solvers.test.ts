@@ -3,6 +3,7 @@
 // (options, errors, stepping).
 import { beforeAll, describe, expect, it } from 'vitest';
 
+import { generateTargets } from '../../bench-node/targets.js';
 import type { IkCoreModule } from '../../web/src/ik/module.js';
 import { loadIkNode } from '../../web/src/ik/node.js';
 import { IkRig } from '../../web/src/ik/rig.js';
@@ -33,17 +34,14 @@ interface TargetCase {
   target: Float64Array;
 }
 
-/** A_0 = 0, A_k = clamp(A_{k-1} + 5 U(-1,1)^(3m)); solve k starts at A_{k-1}, target x(A_k). */
+/** The benchmark's incremental targets of `seed` (bench-node/targets.ts), as (start, target) pairs. */
 function incrementalTargets(rig: IkRig, count: number, seed: number): TargetCase[] {
-  const rand = seeded(seed);
-  const cases: TargetCase[] = [];
-  let previous: Float64Array = new Float64Array(rig.numAngles);
-  for (let k = 0; k < count; k++) {
-    const goal = rig.project(previous.map((a) => a + 5 * (2 * rand() - 1)));
-    cases.push({ start: previous, target: rig.tips(goal) });
-    previous = goal;
-  }
-  return cases;
+  const set = generateTargets(rig.spec, 'incremental', count, seed, (a) => rig.tips(a));
+  const m = set.numAngles, r = set.numResiduals;
+  return Array.from({ length: set.count }, (_, k) => ({
+    start: set.starts.subarray(k * m, (k + 1) * m),
+    target: set.targets.subarray(k * r, (k + 1) * r),
+  }));
 }
 
 function insideLimits(rig: IkRig, a: Float64Array): boolean {

@@ -13,20 +13,19 @@
 
 #include <Eigen/Geometry>
 #include <cstdlib>
+#include <limits>
 #include <filesystem>
 #include <random>
 #include <string>
 #include <vector>
 
 #include "../native/a7_rig.h"
+#include "../native/protocol.h"
 #include "kinematics.h"
 
 namespace ik::test {
 
-inline const std::vector<std::string>& a7_rig_names() {
-  static const std::vector<std::string> names = {"ikea-lamp", "robot-arm", "knight", "chimpanzee-hand", "beast"};
-  return names;
-}
+using protocol::a7_rig_names;
 
 inline const std::vector<std::string>& project_rig_names() {
   static const std::vector<std::string> names = {"knight", "lamp", "robot-arm", "hand", "beast", "character"};
@@ -86,13 +85,10 @@ class NeedsA7 : public ::testing::Test {
   }
 };
 
-// Angles uniform in [-360, 360] degrees per angle, clamped to the limits (the random target set).
+// The random target set's angles (protocol.h) drawn from `rng`, the same numbers as
+// std::uniform_real_distribution(-1, 1) would give.
 inline Eigen::VectorXd random_angles(const Kinematics& kin, std::mt19937_64& rng) {
-  std::uniform_real_distribution<double> u(-1.0, 1.0);
-  Eigen::VectorXd a(kin.num_angles());
-  for (int i = 0; i < a.size(); ++i) a[i] = 360.0 * u(rng);
-  kin.project(a);
-  return a;
+  return protocol::random_angles(kin, [&rng] { return std::generate_canonical<double, std::numeric_limits<double>::digits>(rng); });
 }
 
 // Tips by the straightforward composition: 4x4 matrices, Eigen AngleAxis about X, Z, X.

@@ -3,8 +3,10 @@
 // uses, and writes one result line per solve.
 //
 // Usage:
-//   ik_bench_native --rig RIG.json --method NAME --input JOB.bin --output RESULTS.tsv
+//   ik_bench_native --rig RIG.json --method NAME --input JOB.bin --output RESULTS.jsonl
 //                   [--gtol X] [--ftol Y] [--tip-tol Z] [--timeout SECONDS] [--paper] [--restarts N]
+//   ik_bench_native --list-methods     prints the methods it knows (the core's registry, the
+//                                      default first) as a JSON array of names
 // --tip-tol Z > 0 makes "on target" every tip within Z (rig units) of its target (SolverOptions::
 // tip_tolerance) instead of E < Y.
 //
@@ -13,16 +15,15 @@
 //   count records of float64: chained (0 or 1), dragged effector (-1: none), start (#angles,
 //   degrees), target (#residuals, rig units). A chained record starts from the previous record's
 //   solution instead of its start (drag and reach paths).
-// RESULTS.tsv: one line per record, tab-separated:
-//   E  gradient_norm  iterations  function_evaluations  jacobian_evaluations  seconds  stop_reason
-//   wobble_during  wobble_after  tip_distance  jump_deg
+// RESULTS.jsonl: one JSON object per record and line, numbers written to round-trip exactly:
+//   {"E", "gradient_norm", "iterations", "function_evaluations", "jacobian_evaluations", "seconds",
+//    "stop_reason", "wobble_during", "wobble_after", "tip_distance", "jump_deg"}
 // `seconds` is steady_clock around Solver::solve(). tip_distance: the largest distance of an
 // effector's tip from its target at the solution (rig units); jump_deg: the largest change of one
-// angle from the start to the solution (degrees); both "nan" for invalid input. Wobble (records
-// with a dragged effector and
-// other effectors to pin; "nan" otherwise): the largest distance of a pinned effector from its
-// target, over the iterates of a replay of the same solve (max_iterations = the solve's count, no
-// time budget) for "during", at the solution for "after".
+// angle from the start to the solution (degrees); both null for invalid input. Wobble (records
+// with a dragged effector and other effectors to pin; null otherwise): the largest distance of a
+// pinned effector from its target, over the iterates of a replay of the same solve
+// (max_iterations = the solve's count, no time budget) for "during", at the solution for "after".
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -32,6 +33,7 @@
 #include <fstream>
 #include <limits>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -46,12 +48,14 @@ namespace {
 struct Args {
   std::string rig, method, input, output;
   ik::SolverOptions options;
+  bool list_methods = false;
 };
 
 [[noreturn]] void usage(const std::string& problem) {
   throw std::invalid_argument(problem +
                               "\nusage: ik_bench_native --rig RIG.json --method NAME --input JOB.bin --output "
-                              "RESULTS.tsv [--gtol X] [--ftol Y] [--tip-tol Z] [--timeout S] [--paper] [--restarts N]");
+                              "RESULTS.jsonl [--gtol X] [--ftol Y] [--tip-tol Z] [--timeout S] [--paper] [--restarts N]\n"
+                              "       ik_bench_native --list-methods");
 }
 
 double number_arg(const std::string& flag, const char* text) {
@@ -69,6 +73,10 @@ Args parse_args(int argc, char** argv) {
       a.options.paper_mode = true;
       continue;
     }
+    if (flag == "--list-methods") {
+      a.list_methods = true;
+      continue;
+    }
     if (i + 1 >= argc) usage(flag + " needs a value");
     const char* value = argv[++i];
     if (flag == "--rig") a.rig = value;
@@ -82,7 +90,7 @@ Args parse_args(int argc, char** argv) {
     else if (flag == "--restarts") a.options.restarts = static_cast<int>(number_arg(flag, value));
     else usage("unknown option " + flag);
   }
-  if (a.rig.empty() || a.method.empty() || a.input.empty() || a.output.empty())
+  if (!a.list_methods && (a.rig.empty() || a.method.empty() || a.input.empty() || a.output.empty()))
     usage("--rig, --method, --input and --output are required");
   return a;
 }
@@ -123,7 +131,33 @@ double largest_distance(ik::Kinematics& kin, const Eigen::VectorXd& angles, cons
   return worst;
 }
 
+// Wobble during a solve of `iterations` iterations from `start` that ended `after` (rig units) off
+// the pinned targets: the largest distance of a pinned effector (every one but `dragged`) from its
+// target over the iterates of a replay of the same solve, stepped one iteration at a time with
+// max_iterations = `iterations` and no time budget (deterministic, so the same iterates).
+double replay_wobble(const Args& args, ik::Kinematics& kin, ik::Kinematics& observer, const Eigen::VectorXd& start,
+                     const Eigen::VectorXd& target, int dragged, int iterations, double after, Eigen::VectorXd& tips) {
+  ik::SolverOptions options = args.options;
+  options.max_iterations = iterations;
+  options.time_budget_s = 0;
+  std::unique_ptr<ik::Solver> replay = ik::make_solver(args.method, kin, options);
+  replay->start(start, target);
+  double during = 0;
+  int seen = 0;
+  while (replay->running()) {
+    replay->step();
+    if (replay->summary().iterations == seen) continue;
+    seen = replay->summary().iterations;
+    during = std::max(during, largest_distance(observer, replay->angles(), target, dragged, tips));
+  }
+  return seen == 0 ? after : during;  // no iterate: the start already met a stopping test
+}
+
+// The registry's method names, the default first, as a JSON array on stdout.
+void list_methods() { std::printf("%s\n", nlohmann::json(ik::solver_names()).dump().c_str()); }
+
 void run(const Args& args) {
+  if (args.list_methods) return list_methods();
   ik::Kinematics kin(ik::load_a7_rig(args.rig));
   ik::Kinematics observer(kin.rig());  // poses for wobble, so the solver's own rig is never disturbed
   const Job job = read_job(args.input);
@@ -158,23 +192,13 @@ void run(const Args& args) {
     double during = nan, after = nan;
     if (dragged >= 0 && kin.num_effectors() > 1 && valid) {
       after = largest_distance(observer, previous, target, dragged, tips);
-      ik::SolverOptions replay_options = args.options;
-      replay_options.max_iterations = iterations;
-      replay_options.time_budget_s = 0;
-      std::unique_ptr<ik::Solver> replay = ik::make_solver(args.method, kin, replay_options);
-      replay->start(start, target);
-      during = 0;
-      int seen = 0;
-      while (replay->running()) {
-        replay->step();
-        if (replay->summary().iterations == seen) continue;
-        seen = replay->summary().iterations;
-        during = std::max(during, largest_distance(observer, replay->angles(), target, dragged, tips));
-      }
-      if (seen == 0) during = after;  // no iterate: the start already met a stopping test
+      during = replay_wobble(args, kin, observer, start, target, dragged, iterations, after, tips);
     }
-    std::fprintf(out, "%.17g\t%.17g\t%d\t%d\t%d\t%.17g\t%s\t%.17g\t%.17g\t%.17g\t%.17g\n", E, gradient_norm, iterations,
-                 fevals, jevals, seconds, reason.c_str(), during, after, tip_distance, jump);
+    const nlohmann::json line = {{"E", E}, {"gradient_norm", gradient_norm}, {"iterations", iterations},
+                                 {"function_evaluations", fevals}, {"jacobian_evaluations", jevals},
+                                 {"seconds", seconds}, {"stop_reason", reason}, {"wobble_during", during},
+                                 {"wobble_after", after}, {"tip_distance", tip_distance}, {"jump_deg", jump}};
+    std::fprintf(out, "%s\n", line.dump().c_str());
   }
   if (std::fclose(out) != 0) throw std::runtime_error(args.output + ": write failed");
 }

@@ -1,16 +1,17 @@
 // Times the analytic Jacobian against the central finite-difference Jacobian on an A7 rig.
 // Usage: jacobian_cost RIG.json [repeats]
-// Prints the median time per evaluation (microseconds) over repeated batches, and the ratio.
+// Prints the median time per evaluation (microseconds) over repeated batches, and the ratio, at
+// 64 poses drawn as the random target set draws its angles.
 // Builds natively (wasm/tools) and with Emscripten for Node (scripts/jacobian-cost.sh), so the
 // same code measures both engines.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
-#include <random>
 #include <vector>
 
 #include "../native/a7_rig.h"
+#include "../native/protocol.h"
 #include "finite_difference_jacobian.h"
 #include "kinematics.h"
 
@@ -45,13 +46,9 @@ int main(int argc, char** argv) {
   try {
     ik::Kinematics kin(ik::load_a7_rig(argv[1]));
     const int per_batch = argc > 2 ? std::atoi(argv[2]) : 2000;
-    std::mt19937_64 rng(1);
-    std::uniform_real_distribution<double> u(-1, 1);
-    std::vector<Eigen::VectorXd> poses(64, Eigen::VectorXd(kin.num_angles()));
-    for (auto& a : poses) {
-      for (int i = 0; i < a.size(); ++i) a[i] = 360 * u(rng);
-      kin.project(a);
-    }
+    ik::Mulberry32 unit = ik::stream_for(1, "jacobian-cost");
+    std::vector<Eigen::VectorXd> poses;  // poses of the random target set (protocol.h)
+    for (int k = 0; k < 64; ++k) poses.push_back(ik::protocol::random_angles(kin, unit));
     Eigen::VectorXd tips(kin.num_residuals()), scratch(kin.num_angles()), plus(kin.num_residuals()),
         minus(kin.num_residuals());
     Eigen::MatrixXd jac(kin.num_residuals(), kin.num_angles());

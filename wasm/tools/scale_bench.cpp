@@ -4,13 +4,17 @@
 // total reach 1. Solves random reachable targets (angles uniform in the limits) with `lm` from
 // rest and prints the median time per iteration, and that time divided by
 // (#angles x #effectors), which stays flat when growth is linear in that product.
-// Usage: scale_bench [--csv] [--sizes 10,100,1000] [--solves N]
+// Usage: scale_bench [--json] [--sizes 10,100,1000] [--solves N]
+// --json prints one JSON array instead of the table, for programs to read:
+//   [{"shape", "bones", "angles", "effectors", "us_per_iteration", "ns_per_angle_effector",
+//     "iterations_median", "success_rate"}]
 // Builds natively (build/native/scale_bench) and for Node (build/wasm/scale_bench.cjs).
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <nlohmann/json.hpp>
 #include <random>
 #include <string>
 #include <vector>
@@ -69,24 +73,24 @@ double median(std::vector<double> v) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  bool csv = false;
+  bool json = false;
   std::vector<int> sizes = {10, 100, 1000};
   int solves = 40;
   for (int i = 1; i < argc; ++i) {
-    if (!std::strcmp(argv[i], "--csv")) {
-      csv = true;
+    if (!std::strcmp(argv[i], "--json")) {
+      json = true;
     } else if (!std::strcmp(argv[i], "--solves") && i + 1 < argc) {
       solves = std::atoi(argv[++i]);
     } else if (!std::strcmp(argv[i], "--sizes") && i + 1 < argc) {
       sizes.clear();
       for (char* s = std::strtok(argv[++i], ","); s; s = std::strtok(nullptr, ",")) sizes.push_back(std::atoi(s));
     } else {
-      std::fprintf(stderr, "usage: scale_bench [--csv] [--sizes 10,100,1000] [--solves N]\n");
+      std::fprintf(stderr, "usage: scale_bench [--json] [--sizes 10,100,1000] [--solves N]\n");
       return 2;
     }
   }
-  if (csv) std::printf("shape,bones,angles,effectors,us_per_iteration,ns_per_angle_effector,iterations_median,success_rate\n");
-  else std::printf("%-6s %6s %7s %9s %14s %22s %10s %8s\n", "shape", "bones", "angles", "effectors",
+  nlohmann::json rows = nlohmann::json::array();
+  if (!json) std::printf("%-6s %6s %7s %9s %14s %22s %10s %8s\n", "shape", "bones", "angles", "effectors",
                    "us/iteration", "ns/(angle x effector)", "iter med", "success");
   for (const char* shape : {"chain", "tree"}) {
     for (int n : sizes) {
@@ -114,13 +118,16 @@ int main(int argc, char** argv) {
       }
       const double us = median(per_iteration);
       const double product = static_cast<double>(kin.num_angles()) * kin.num_effectors();
-      if (csv)
-        std::printf("%s,%d,%d,%d,%.4f,%.4f,%.0f,%.3f\n", shape, kin.num_bones(), kin.num_angles(), kin.num_effectors(),
-                    us, 1000 * us / product, median(iterations), static_cast<double>(successes) / solves);
+      if (json)
+        rows.push_back({{"shape", shape}, {"bones", kin.num_bones()}, {"angles", kin.num_angles()},
+                        {"effectors", kin.num_effectors()}, {"us_per_iteration", us},
+                        {"ns_per_angle_effector", 1000 * us / product}, {"iterations_median", median(iterations)},
+                        {"success_rate", static_cast<double>(successes) / solves}});
       else
         std::printf("%-6s %6d %7d %9d %14.3f %22.3f %10.0f %7.0f%%\n", shape, kin.num_bones(), kin.num_angles(),
                     kin.num_effectors(), us, 1000 * us / product, median(iterations), 100.0 * successes / solves);
     }
   }
+  if (json) std::printf("%s\n", rows.dump().c_str());
   return 0;
 }

@@ -5,7 +5,9 @@
 // MAX_BONES bones and as many end effectors as the core takes, none listed twice.
 // Limits missing from the file are unbounded. A rig without `ik_constraints` takes its last bone
 // as the end effector, as the original program did. A bone without a name gets '' (the core and
-// the page then call it "bone 3"). Mesh and weight files are not needed.
+// the page then call it "bone 3"). Mesh and weight files are not needed. The native tools read the
+// format with wasm/native/a7_rig.cpp (tests/bench/protocol_agreement.test.ts reads every test rig
+// both ways and compares what follows from it).
 import type { RigSpec } from '../ik/rig_spec.js';
 import { jsonBudgetProblem } from './json_budget.js';
 import { limitProblem } from './limit_degrees.js';

@@ -1,4 +1,6 @@
-// Stopping tolerances of a rig, shared by the page, the widget and the benchmark.
+// Stopping tolerances of a rig, shared by the page, the widget and the benchmark. The native tools
+// and tests have the report tolerances and the rig size in C++ (wasm/native/protocol.h);
+// tests/bench/protocol_agreement.test.ts checks both agree.
 //
 // Report tolerances (the benchmark's random and incremental experiments): the report's values
 // for its five A7 rigs (beast: gradient 0.01, E 0.002; the others: 0.0001, 0.0002); for any other
