@@ -37,9 +37,10 @@ fi
 # npm packages, pinned by package-lock.json; reinstall when the lockfile changed.
 if [ ! -f node_modules/.package-lock.json ] || [ package-lock.json -nt node_modules/.package-lock.json ]; then
   echo "setup: npm ci"
-  # Some registry mirrors lack other platforms' optional packages (rollup's native builds); the
-  # lockfile then omits them and `npm ci` refuses it. `npm install` honours the same locked versions.
-  npm ci --no-audit --no-fund || npm install --no-audit --no-fund
+  # The lockfile lists every platform's optional packages (rollup's native builds), so `npm ci`
+  # installs exactly the locked versions anywhere. rollup is pinned by an override in
+  # package.json to a release whose builds for every platform are on the registry.
+  npm ci --no-audit --no-fund
 fi
 
 # The WebAssembly core (web/src/ik/generated/).
