@@ -17,6 +17,15 @@ inline Eigen::Matrix4d translation(double x, double y, double z) {
   return m;
 }
 
+// One bone of length 1 along +x from the origin, without limits; its tip (1, 0, 0) is the effector.
+inline Rig one_bone() {
+  Rig rig;
+  rig.bones.resize(1);
+  rig.bones[0].length = 1;
+  rig.effectors = {0};
+  return rig;
+}
+
 // Two bones "upper" and "lower" of length 1 along +x from the origin, without limits; the
 // effector is the second bone's tip, (2, 0, 0) at rest.
 inline Rig two_bones() {

@@ -11,19 +11,11 @@
 namespace ik {
 namespace {
 
-Rig one_bone() {
-  Rig rig;
-  rig.bones.resize(1);
-  rig.bones[0].length = 1;
-  rig.effectors = {0};
-  return rig;
-}
-
 class MoveOn : public ::testing::TestWithParam<std::string> {};
 
 // One bone along +x with its target straight behind it: a stationary start off target.
 TEST_P(MoveOn, RestartsComeBeforeEscapesWhileAnyAreLeft) {
-  Kinematics kin(one_bone());
+  Kinematics kin(test::one_bone());
   SolverOptions options;
   options.time_budget_s = 0;
   auto solver = make_solver(GetParam(), kin, options);
@@ -36,7 +28,7 @@ TEST_P(MoveOn, RestartsComeBeforeEscapesWhileAnyAreLeft) {
 }
 
 TEST_P(MoveOn, TheBudgetNotTheProblemEndsASolveWithRestartsLeft) {
-  Kinematics kin(one_bone());
+  Kinematics kin(test::one_bone());
   const Eigen::VectorXd rest = Eigen::VectorXd::Zero(3);
   const Eigen::Vector3d behind(-1, 0, 0);
   SolverOptions options;

@@ -6,23 +6,16 @@
 
 #include <string>
 
+#include "../small_rigs.h"
 #include "solvers/solver_registry.h"
 
 namespace ik {
 namespace {
 
-Rig one_bone() {
-  Rig rig;
-  rig.bones.resize(1);
-  rig.bones[0].length = 1;
-  rig.effectors = {0};
-  return rig;
-}
-
 class StationaryStart : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(StationaryStart, AnEscapeOrARestartLeavesAStationaryStartAndWithNeitherTheSolveStopsThere) {
-  Kinematics kin(one_bone());
+  Kinematics kin(test::one_bone());
   const Eigen::VectorXd rest = Eigen::VectorXd::Zero(3);
   const Eigen::Vector3d target(-1, 0, 0);
 
@@ -66,7 +59,7 @@ TEST_P(StationaryStart, AnEscapeOrARestartLeavesAStationaryStartAndWithNeitherTh
 // stationary point. With restarts left the run goes on descending from there (no restart); without
 // restarts the gradient test ends the solve at once, as the protocol has it.
 TEST_P(StationaryStart, AGradientUnderTheToleranceButNotNearZeroKeepsDescendingWhenRestartsAreOn) {
-  Kinematics kin(one_bone());
+  Kinematics kin(test::one_bone());
   const Eigen::VectorXd rest = Eigen::VectorXd::Zero(3);
   const Eigen::Vector3d target(0.9, 0.3, 0);  // reachable (|target| < 1), |g| at rest well above 0
   Eigen::VectorXd residual(3);
