@@ -1,5 +1,6 @@
 // E, tip distances, the on-target test, wobble and jumps from end-effector positions and angles,
 // the same for every method and engine.
+import { largestTipDistance } from '../web/src/ik/tip_distance.js';
 
 /** E = 1/2 |tips - target|^2 (tips and target: 3 per end effector). */
 export function errorOf(tips: ArrayLike<number>, target: ArrayLike<number>): number {
@@ -11,20 +12,9 @@ export function errorOf(tips: ArrayLike<number>, target: ArrayLike<number>): num
   return 0.5 * s;
 }
 
-/** The largest distance (rig units) of an end effector other than `skip` (-1: none) from its target. */
-function largestDistance(tips: ArrayLike<number>, target: ArrayLike<number>, skip: number): number {
-  let worst = 0;
-  for (let e = 0; e < target.length / 3; e++) {
-    if (e === skip) continue;
-    const dx = tips[3 * e] - target[3 * e], dy = tips[3 * e + 1] - target[3 * e + 1], dz = tips[3 * e + 2] - target[3 * e + 2];
-    worst = Math.max(worst, Math.hypot(dx, dy, dz));
-  }
-  return worst;
-}
-
 /** The largest distance (rig units) of any end effector's tip from its target. */
 export function tipDistance(tips: ArrayLike<number>, target: ArrayLike<number>): number {
-  return largestDistance(tips, target, -1);
+  return largestTipDistance(tips, target);
 }
 
 /**
@@ -33,7 +23,7 @@ export function tipDistance(tips: ArrayLike<number>, target: ArrayLike<number>):
  */
 export function pinnedDeviation(tips: ArrayLike<number>, target: ArrayLike<number>, dragged: number): number {
   if (dragged < 0 || target.length < 6) return NaN;
-  return largestDistance(tips, target, dragged);
+  return largestTipDistance(tips, target, dragged);
 }
 
 /** What "on target" means in a run. */

@@ -1,7 +1,8 @@
-// The WebAssembly engine (and the JavaScript peers): a pool of worker threads, each with its own
-// instance of the module the main thread compiled once (TOOLCHAIN.md). A target set is cut into
-// batches of whole independent ranges (single samples, or whole drag paths), so what each solve
-// sees never depends on the number of workers; results come back in sample order.
+// The WebAssembly engine (and the JavaScript peers): a pool of worker threads. The main thread
+// compiles the .wasm once and posts the compiled WebAssembly.Module to every worker, which only
+// instantiates it: its own memory and instance, without compiling the module again. A target set
+// is cut into batches of whole independent ranges (single samples, or whole drag paths), so what
+// each solve sees never depends on the number of workers; results come back in sample order.
 import { readFileSync } from 'node:fs';
 import { Worker } from 'node:worker_threads';
 

@@ -1,8 +1,9 @@
-// Writes the project's own rigs in A7 format to build/test-rigs/NAME.json, for the native tests
-// (which cannot read .glb) and the TypeScript tests that run on both rig sets: each
-// web/public/models/NAME.glb read by loadRigFromPath and written by bench-node/a7_writer.ts. A
-// build product, never committed: `npm test` writes them before the native tests, and vitest's
-// global setup before its suites, so they always follow the current models and importer.
+// Writes the project's own rigs in A7 format to build/test-rigs/NAME.json, and the list of their
+// names to build/test-rigs/names.txt, for the native tests (which cannot read .glb) and the
+// TypeScript tests that run on both rig sets: each web/public/models/NAME.glb read by
+// loadRigFromPath and written by bench-node/a7_writer.ts. A build product, never committed:
+// `npm test` writes them before the native tests, and vitest's global setup before its suites, so
+// they always follow the current models and importer.
 //   npx tsx scripts/write-test-rigs.ts
 import { mkdirSync, writeFileSync } from 'node:fs';
 import { resolve } from 'node:path';
@@ -19,7 +20,11 @@ const root = resolve(fileURLToPath(new URL('.', import.meta.url)), '..');
 /** Where the A7 files go. */
 export const testRigsDir = resolve(root, 'build/test-rigs');
 
-/** Writes every project model as A7 JSON into testRigsDir; returns the files' paths. */
+/**
+ * Writes every project model as A7 JSON into testRigsDir, then the list of their base names
+ * (testRigNames, one a line) to testRigsDir/names.txt, which the native tests read; returns the
+ * rig files' paths.
+ */
 export async function writeTestRigs(): Promise<string[]> {
   mkdirSync(testRigsDir, { recursive: true });
   const paths: string[] = [];
@@ -29,6 +34,7 @@ export async function writeTestRigs(): Promise<string[]> {
     writeFileSync(path, `${writeA7Rig(spec)}\n`);
     paths.push(path);
   }
+  writeFileSync(resolve(testRigsDir, 'names.txt'), testRigNames.map((name) => `${name}\n`).join(''));
   return paths;
 }
 

@@ -1,6 +1,8 @@
-// Mutations specific to glTF skeletons: IK extras with 1e9 (unbounded) and absurd limits, node
-// cycles and second parents, very deep and very wide joint hierarchies, huge counts, wrong
-// buffer offsets and strides, degenerate transforms, bad bind-matrix accessors, bad skins.
+// Mutations specific to glTF skeletons: IK extras with limits of 1e9 degrees (past +-36,000, so
+// unbounded in their own direction and refused in the other: web/src/rig/limit_degrees.ts) and
+// other absurd limits, node cycles and second parents, very deep and very wide joint hierarchies,
+// huge counts, wrong buffer offsets and strides, degenerate transforms, bad bind-matrix
+// accessors, bad skins.
 import type { Json } from '../helpers/glb.js';
 import { INFINITY_MARK } from './json_text.js';
 import type { Rand } from './random.js';

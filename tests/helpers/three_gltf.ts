@@ -1,9 +1,6 @@
-// three.js helpers for the rig tests: GLTFLoader in Node, skinned vertex positions, rig size.
+// three.js helpers for the rig tests: GLTFLoader in Node, skinned vertex positions.
 import { Vector3, type Bone, type Object3D, type SkinnedMesh } from 'three';
 import { GLTFLoader, type GLTF } from 'three/examples/jsm/loaders/GLTFLoader.js';
-
-import type { RigSpec } from '../../web/src/ik/rig_spec.js';
-import { rigSize as sizeOfTips } from '../../web/src/rig/tolerances.js';
 
 /** Parses .glb bytes with three.js's GLTFLoader (works in Node for files without images). */
 export async function parseGlb(bytes: Uint8Array): Promise<GLTF> {
@@ -36,19 +33,6 @@ export function vertexInfluences(mesh: SkinnedMesh, v: number, bones: Bone[]): [
     out.push([bone, w]);
   }
   return out;
-}
-
-/**
- * The rig's size (rig units) as web/src/rig/tolerances.ts defines it, from the spec alone, without
- * the core: at A = 0 bone b's tip is rest_b * (length_b, 0, 0).
- */
-export function rigSize(spec: RigSpec): number {
-  const tips = new Float64Array(3 * spec.parents.length);
-  for (let b = 0; b < spec.parents.length; b++) {
-    const r = spec.rest.subarray(16 * b, 16 * b + 16), l = spec.lengths[b];
-    tips.set([r[3] + l * r[0], r[7] + l * r[4], r[11] + l * r[8]], 3 * b);
-  }
-  return sizeOfTips(tips);
 }
 
 /** Applies a row-major 4x4 (16 numbers at offset) to a point. */

@@ -12,11 +12,12 @@ import type { IkCoreModule } from '../../web/src/ik/module.js';
 import { loadIkNode } from '../../web/src/ik/node.js';
 import { IkRig } from '../../web/src/ik/rig.js';
 import { loadRig, type LoadedRig } from '../../web/src/rig/load_rig.js';
+import { rigSize } from '../../web/src/rig/tolerances.js';
 import { bonesByName, bonesFromGltf } from '../../web/src/three/find_bones.js';
 import { PoseWriter } from '../../web/src/three/pose_writer.js';
 import { maxAbsDiff, randomAngles, seeded } from '../helpers/a7.js';
 import { testCharacterGlb } from '../helpers/gltf_character.js';
-import { applyRowMajor, parseGlb, rigSize, skinnedMeshes, skinnedVertexWorld, vertexInfluences } from '../helpers/three_gltf.js';
+import { applyRowMajor, parseGlb, skinnedMeshes, skinnedVertexWorld, vertexInfluences } from '../helpers/three_gltf.js';
 
 const modelsDir = resolve(import.meta.dirname, '../../web/public/models');
 const projectModels = ['lamp', 'robot-arm', 'knight', 'hand', 'beast', 'character'];
@@ -43,7 +44,8 @@ async function setUp(bytes: Uint8Array, file: string): Promise<Case> {
   gltf.scene.updateMatrixWorld(true);
   const bones = bonesFromGltf(gltf, loaded.gltf!);
   const rig = new IkRig(ik, loaded.spec);
-  const c = { loaded, gltf, rig, bones, writer: new PoseWriter(bones, loaded.spec, loaded.gltf!), size: rigSize(loaded.spec) };
+  const size = rigSize(rig.boneTips(new Float64Array(rig.numAngles)));
+  const c = { loaded, gltf, rig, bones, writer: new PoseWriter(bones, loaded.spec, loaded.gltf!), size };
   cases.push(c);
   return c;
 }

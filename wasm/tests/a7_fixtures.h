@@ -2,20 +2,22 @@
 // of PROTOCOL.md written the plain way with 4x4 matrices.
 //
 // Two sets of rigs in A7 format: the project's own (build/test-rigs, written from
-// web/public/models by scripts/write-test-rigs.ts, which npm test runs first), always there, and the report's five A7 rigs
-// from $IK_A7_DIR (default ../shared/rigs/a7; a relative path starts at the repository root),
-// when that folder exists. Tests of a general property loop over test_rigs(); tests whose
-// expectations belong to the report's rigs use the fixture NeedsA7, which skips them without the
-// folder (and fails them under CI).
+// web/public/models by scripts/write-test-rigs.ts, which npm test runs first; the tests fail
+// without them), and the report's five A7 rigs from $IK_A7_DIR (default ../shared/rigs/a7; a
+// relative path starts at the repository root), when that folder exists. Tests of a general
+// property loop over test_rigs(); tests whose expectations belong to the report's rigs use the
+// fixture NeedsA7, which skips them without the folder (and fails them under CI).
 #pragma once
 
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
 #include <cstdlib>
-#include <limits>
 #include <filesystem>
+#include <fstream>
+#include <limits>
 #include <random>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -27,8 +29,21 @@ namespace ik::test {
 
 using protocol::a7_rig_names;
 
+// The folder of the project's rigs in A7 format, written by scripts/write-test-rigs.ts.
+inline std::string project_rigs_dir() { return std::string(IK_REPO_ROOT) + "/build/test-rigs"; }
+
+// The project's rigs by base name ("knight"), in the order of the list names.txt that
+// scripts/write-test-rigs.ts writes beside them (its testRigNames, the one list of them). Throws
+// when the list is missing or empty, so the tests fail rather than test nothing.
 inline const std::vector<std::string>& project_rig_names() {
-  static const std::vector<std::string> names = {"knight", "lamp", "robot-arm", "hand", "beast", "character"};
+  static const std::vector<std::string> names = [] {
+    const std::string list = project_rigs_dir() + "/names.txt";
+    std::ifstream in(list);
+    std::vector<std::string> read;
+    for (std::string name; in >> name;) read.push_back(name);
+    if (read.empty()) throw std::runtime_error(list + " is missing or empty: run npx tsx scripts/write-test-rigs.ts");
+    return read;
+  }();
   return names;
 }
 
@@ -55,7 +70,7 @@ inline const std::vector<TestRig>& test_rigs() {
   static const std::vector<TestRig> rigs = [] {
     std::vector<TestRig> all;
     for (const std::string& name : project_rig_names())
-      all.push_back({name, false, load_a7_rig(std::string(IK_REPO_ROOT) + "/build/test-rigs/" + name + ".json")});
+      all.push_back({name, false, load_a7_rig(project_rigs_dir() + "/" + name + ".json")});
     if (a7_present())
       for (const std::string& name : a7_rig_names()) all.push_back({name, true, load_a7(name)});
     return all;
@@ -85,10 +100,15 @@ class NeedsA7 : public ::testing::Test {
   }
 };
 
-// The random target set's angles (protocol.h) drawn from `rng`, the same numbers as
-// std::uniform_real_distribution(-1, 1) would give.
+// A source of numbers in [0, 1) drawn from `rng` for protocol.h's generators: the very numbers
+// std::uniform_real_distribution(-1, 1) maps to 2u - 1, which the tests were first written with.
+inline auto unit_from(std::mt19937_64& rng) {
+  return [&rng] { return std::generate_canonical<double, std::numeric_limits<double>::digits>(rng); };
+}
+
+// The random target set's angles (protocol.h) drawn from `rng`.
 inline Eigen::VectorXd random_angles(const Kinematics& kin, std::mt19937_64& rng) {
-  return protocol::random_angles(kin, [&rng] { return std::generate_canonical<double, std::numeric_limits<double>::digits>(rng); });
+  return protocol::random_angles(kin, unit_from(rng));
 }
 
 // Tips by the straightforward composition: 4x4 matrices, Eigen AngleAxis about X, Z, X.

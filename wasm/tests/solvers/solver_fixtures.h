@@ -1,11 +1,10 @@
-// Shared by the solver tests: the report's target sets (PROTOCOL.md) and tolerances.
+// Shared by the solver tests: the report's target sets and tolerances (PROTOCOL.md), from
+// wasm/native/protocol.h, with the target sets drawn from std::mt19937_64 as the tests were written.
 #pragma once
 
 #include <Eigen/Core>
 #include <algorithm>
-#include <cmath>
 #include <random>
-#include <string>
 #include <vector>
 
 #include "../a7_fixtures.h"
@@ -13,25 +12,12 @@
 
 namespace ik::test {
 
-// The diagonal of the bounding box of every bone's tip at the rest pose (web/src/rig/tolerances.ts).
-inline double rig_size(const Rig& rig) {
-  Eigen::Vector3d lo = Eigen::Vector3d::Constant(INFINITY), hi = -lo;
-  for (const Bone& b : rig.bones) {
-    const Eigen::Vector3d tip = (b.rest * Eigen::Vector4d(b.length, 0, 0, 1)).head<3>();
-    lo = lo.cwiseMin(tip);
-    hi = hi.cwiseMax(tip);
-  }
-  return (hi - lo).norm();
-}
-
-// The report's stopping tolerances for a rig (web/src/rig/tolerances.ts): A7 beast (0.01, 0.002),
-// the other A7 rigs (1e-4, 2e-4), a project rig (1e-4, 2e-4) times its size squared.
+// The report's stopping tolerances for the rig (protocol::report_tolerances), with no time budget.
 inline SolverOptions report_options(const TestRig& r) {
-  const double scale = r.a7 ? 1 : std::pow(rig_size(r.rig), 2);
-  const bool beast = r.a7 && r.name == "beast";
+  const protocol::Tolerances t = protocol::report_tolerances(r.name, r.a7, protocol::rig_size(r.rig));
   SolverOptions o;
-  o.gradient_tolerance = beast ? 0.01 : 1e-4 * scale;
-  o.error_tolerance = beast ? 0.002 : 2e-4 * scale;
+  o.gradient_tolerance = t.gradient;
+  o.error_tolerance = t.error;
   o.time_budget_s = 0;  // tests never depend on the clock
   return o;
 }
@@ -47,32 +33,30 @@ inline double reach(const Kinematics& kin) {
   return reach;
 }
 
-// One target of a target set: start angles and the goal angles whose tips are the target.
-struct TargetCase {
-  Eigen::VectorXd start, goal, target;
-};
+// One solve of a target set: its start angles, the angles A_k of its target, the target x(A_k).
+using protocol::TargetCase;
 
-// Incremental targets: A_0 = 0, A_k = clamp(A_{k-1} + 5 U(-1,1)^(3m)); solve k starts at A_{k-1}.
+// The incremental target set (protocol.h) drawn from std::mt19937_64(seed): A_0 = 0 (not
+// projected, unlike protocol::target_set), A_k = incremental_angles(A_(k-1)); solve k starts at
+// A_(k-1). `count` solves; angles in degrees, targets in rig units.
 inline std::vector<TargetCase> incremental_targets(Kinematics& kin, int count, unsigned seed) {
   std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> u(-1.0, 1.0);
   std::vector<TargetCase> cases;
   Eigen::VectorXd previous = Eigen::VectorXd::Zero(kin.num_angles());
   for (int k = 0; k < count; ++k) {
     TargetCase c;
     c.start = previous;
-    c.goal = previous;
-    for (int i = 0; i < c.goal.size(); ++i) c.goal[i] += 5.0 * u(rng);
-    kin.project(c.goal);
+    c.goal = protocol::incremental_angles(kin, previous, unit_from(rng));
     c.target.resize(kin.num_residuals());
     kin.tips(c.goal, c.target);
     previous = c.goal;
-    cases.push_back(c);
+    cases.push_back(std::move(c));
   }
   return cases;
 }
 
-// Random targets: A_k = clamp(360 U(-1,1)^(3m)); every solve starts at A = 0.
+// The random target set (protocol.h) drawn from std::mt19937_64(seed): `count` solves, each from
+// A = 0 to the tips of random_angles.
 inline std::vector<TargetCase> random_targets(Kinematics& kin, int count, unsigned seed) {
   std::mt19937_64 rng(seed);
   std::vector<TargetCase> cases;
@@ -82,7 +66,7 @@ inline std::vector<TargetCase> random_targets(Kinematics& kin, int count, unsign
     c.goal = random_angles(kin, rng);
     c.target.resize(kin.num_residuals());
     kin.tips(c.goal, c.target);
-    cases.push_back(c);
+    cases.push_back(std::move(c));
   }
   return cases;
 }

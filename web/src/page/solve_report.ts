@@ -3,12 +3,13 @@
 // solved, the live convergence plot, and the slowest per-frame solve since the rig loaded.
 import { Vector3 } from 'three';
 
+import { largestTipDistance } from '../ik/tip_distance.js';
 import type { LiveController } from '../live/live_controller.js';
 import type { MethodList } from '../live/methods.js';
 import type { SolveOutcome } from '../live/solver.js';
 import type { PageSettings } from './page_settings.js';
 import { ConvergencePlot } from './plots.js';
-import { pinnedDrift, StatsPanel, type StatsValues } from './stats.js';
+import { StatsPanel, type StatsValues } from './stats.js';
 
 /** The slowest per-frame solve: page ms, ms inside the solver, iterations, stop reason. */
 export interface SlowestSolve {
@@ -88,7 +89,7 @@ export class SolveReport {
     s.stopReason = outcome.stopReason;
     s.paperMode = this.settings.paperMode;
     s.ms = ms;
-    s.pinnedDrift = pinnedDrift(tips, targets, except);
+    s.pinnedDrift = largestTipDistance(tips, targets, except ?? -1);
     return s;
   }
 }

@@ -147,17 +147,3 @@ export class StatsPanel {
     cell.dataset.value = Number.isNaN(value) ? '' : String(value);
   }
 }
-
-/**
- * Largest tip-to-target distance over the effectors other than `except` (the dragged one), rig
- * units; `tips` and `targets` hold 3 numbers per effector.
- */
-export function pinnedDrift(tips: Float64Array, targets: Float64Array, except: number | null): number {
-  let worst = 0;
-  for (let k = 0; k < targets.length / 3; k++) {
-    if (k === except) continue;
-    const d = Math.hypot(tips[3 * k] - targets[3 * k], tips[3 * k + 1] - targets[3 * k + 1], tips[3 * k + 2] - targets[3 * k + 2]);
-    worst = Math.max(worst, d);
-  }
-  return worst;
-}
