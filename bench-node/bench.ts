@@ -5,7 +5,7 @@ import { IkRig } from '../web/src/ik/rig.js';
 import { defaultTolerances, dragTolerances, rigSize } from '../web/src/rig/tolerances.js';
 import { draggableEffectors } from './effectors.js';
 import { BenchError, errorLine } from './errors.js';
-import { summarize, type Row } from './metrics.js';
+import { paperIterations, summarize, type Row, type SolveResult } from './metrics.js';
 import { isPeer, type BenchOptions } from './options.js';
 import type { Progress } from './progress.js';
 import { REACH_PATH_STEPS, reachPaths } from './reach.js';
@@ -150,6 +150,11 @@ export function targetSetsFor(rig: PreparedRig, opts: BenchOptions, ik: IkCoreMo
   }
 }
 
+/** A paper-mode result with its iterations counted as the report's runner counted them. */
+function countedAsThePaper(r: SolveResult): SolveResult {
+  return { ...r, iterations: paperIterations(r.iterations, r.stopReason) };
+}
+
 /** Runs everything; rows in (rig, experiment, method, engine) order. */
 export async function runBench(rigs: readonly PreparedRig[], ctx: RunContext): Promise<Row[]> {
   const { opts, ik, progress } = ctx;
@@ -178,7 +183,8 @@ export async function runBench(rigs: readonly PreparedRig[], ctx: RunContext): P
               engine === 'native'
                 ? await runNative(rig.spec, settings, set, opts.workers, (n) => progress.advance(n))
                 : await runOnPool(pool!, rig.path, rig.spec, settings, set, (n) => progress.advance(n));
-            const row = summarize({ rig: rig.name, experiment, method, engine }, results, settings, set.reachable);
+            const counted = settings.paper && !isPeer(method) ? results.map(countedAsThePaper) : results;
+            const row = summarize({ rig: rig.name, experiment, method, engine }, counted, settings, set.reachable);
             rows.push(row);
             ctx.onRow?.(row);
           }

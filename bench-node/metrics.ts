@@ -72,6 +72,17 @@ export function interquartileMean(values: ArrayLike<number>): number {
   return sum / (n / 2);
 }
 
+/**
+ * Iterations as the report counted them (`--paper`). Its runner counted calls of do_iteration()
+ * until the solver said it was done, and the call that finds a stop test true takes no step:
+ * so a solve that ended on a test (converged_E, converged_grad, zero_step) counts its steps plus
+ * one, and one cut short by the budget (timeout, max_iterations) counts its steps. `iterations`
+ * is our count of accepted steps.
+ */
+export function paperIterations(iterations: number, stopReason: string): number {
+  return stopReason === 'converged_E' || stopReason === 'converged_grad' || stopReason === 'zero_step' ? iterations + 1 : iterations;
+}
+
 /** What one solve produced. Times in seconds, E in rig units^2, distances in rig units, angles in degrees. */
 export interface SolveResult {
   E: number;

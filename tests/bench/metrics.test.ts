@@ -1,7 +1,7 @@
 // Statistics on hand-made result lists.
 import { describe, expect, it } from 'vitest';
 
-import { interquartileMean, mean, median, quantile, summarize, type SolveResult } from '../../bench-node/metrics.js';
+import { interquartileMean, mean, median, paperIterations, quantile, summarize, type SolveResult } from '../../bench-node/metrics.js';
 
 describe('interquartile mean', () => {
   it('n divisible by 4: the plain mean of the middle half', () => {
@@ -123,5 +123,16 @@ describe('summarize', () => {
     expect(summarize({ rig: 'knight', experiment: 'reach', method: 'lm', engine: 'wasm' }, rows, eTest, all(4)).jump_max_deg).toBe(40);
     expect(summarize({ rig: 'knight', experiment: 'drag', method: 'lm', engine: 'wasm' }, rows.slice(0, 1), eTest, all(1)).jump_max_deg).toBe(2.5);
     expect(summarize({ rig: 'knight', experiment: 'incremental', method: 'lm', engine: 'wasm' }, rows, eTest, all(4)).jump_max_deg).toBeNull();
+  });
+});
+
+describe('iterations as the report counted them (--paper)', () => {
+  it('a solve ended by a stop test counts the call that found it; one cut short by the budget does not', () => {
+    expect(paperIterations(2, 'converged_E')).toBe(3);
+    expect(paperIterations(0, 'converged_E')).toBe(1); // already on target: one call found it
+    expect(paperIterations(5, 'converged_grad')).toBe(6);
+    expect(paperIterations(7, 'zero_step')).toBe(8);
+    expect(paperIterations(40, 'timeout')).toBe(40);
+    expect(paperIterations(100, 'max_iterations')).toBe(100);
   });
 });
