@@ -15,6 +15,7 @@ import { checkOutputs, writeCsv, writeJson, writeMarkdown, type RunInfo } from '
 import { makeProgress } from './progress.js';
 import { resolveRigPaths } from './rigs.js';
 import { engineRatioTable, groupRows, renderTable, resultsTable, type Table } from './table.js';
+import { timeToSuccessTable } from './time_to_success.js';
 
 /** Where the command writes: the tables (stdout), errors and notes (stderr). */
 export interface CommandIo {
@@ -66,6 +67,8 @@ async function main(argv: string[], io: CommandIo): Promise<number> {
   }
 
   const tables: Table[] = groupRows(rows).map(resultsTable);
+  const timed = timeToSuccessTable(rows);
+  if (timed) tables.push(timed);
   const engineEntries = [...new Set(rows.map((r) => r.engine))].filter((e) => e !== 'js');
   const ratio = engineRatioTable(rows, engineEntries);
   if (ratio) tables.push(ratio);

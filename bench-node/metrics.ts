@@ -20,6 +20,7 @@
 //   reach)          to its solution; jump_max_deg is the largest over the row's steps.
 import { isOnTarget, type OnTargetTest } from './evaluate.js';
 import { isDragging, type Experiment } from './targets.js';
+import { timeToSuccess, type TimeToSuccess } from './time_to_success.js';
 
 export function mean(values: ArrayLike<number>): number {
   if (values.length === 0) return NaN;
@@ -98,8 +99,8 @@ export interface SolveResult {
   jumpDeg: number;
 }
 
-/** One row of the tables and of --json. */
-export interface Row {
+/** One row of the tables and of --json (with its time to success, time_to_success.ts). */
+export interface Row extends TimeToSuccess {
   rig: string;
   experiment: Experiment;
   method: string;
@@ -150,6 +151,7 @@ export function summarize(key: RowKey, results: readonly SolveResult[], test: On
   const jumps = results.map((r) => r.jumpDeg).filter((j) => Number.isFinite(j));
   const orNull = (v: number): number | null => (Number.isFinite(v) ? v : null);
   const judged = results.filter((_, k) => reachable[k] === 1);
+  const succeeded = judged.map((r) => isOnTarget(test, r.E, r.tipDistance));
   return {
     ...key,
     samples: results.length,
@@ -162,7 +164,8 @@ export function summarize(key: RowKey, results: readonly SolveResult[], test: On
     E_avg: mean(E),
     E_iqm: interquartileMean(E),
     E_max: maxOf(E),
-    success_rate: judged.length ? judged.filter((r) => isOnTarget(test, r.E, r.tipDistance)).length / judged.length : NaN,
+    success_rate: judged.length ? succeeded.filter(Boolean).length / judged.length : NaN,
+    ...timeToSuccess(judged.map((r) => r.seconds), succeeded),
     unreachable: results.length - judged.length,
     stop_reasons: stop,
     wobble_during_avg: orNull(mean(during)),
