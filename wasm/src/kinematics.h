@@ -41,6 +41,9 @@ class Kinematics {
   Eigen::Isometry3d pose(int bone) const { return frame_[bone] * rest_inv_[bone]; }
   // After forward(): bone i's tip in world coordinates.
   Eigen::Vector3d tip(int bone) const { return frame_[bone] * Eigen::Vector3d(rig_.bones[bone].length, 0, 0); }
+  // After forward(): the world rotation of bone i's frame (canonical bone -> world: its x axis runs
+  // along the bone to the tip). Orientation goals (goals.h) target this rotation.
+  Eigen::Matrix3d tip_rotation(int bone) const { return frame_[bone].linear(); }
   // After forward(): the world rotation axis (unit) of angle k in {0, 1, 2} of bone i.
   Eigen::Vector3d joint_axis(int bone, int k) const { return axes_[bone].col(k); }
   // After forward(): the world position of bone i's joint (the tail of the bone).

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <limits>
 
-#include "objective.h"
+#include "goal_residual.h"
 
 namespace ik {
 
@@ -49,24 +49,25 @@ void ChainRestart::resize(const Kinematics& kin) {
   anywhere_.resize(kin.num_angles());
 }
 
-bool ChainRestart::beyond_reach(const Kinematics& kin, int e, const Eigen::Ref<const Eigen::VectorXd>& target,
-                                double slack) const {
+bool ChainRestart::beyond_reach(const Kinematics& kin, int e, const GoalSet& goals, double slack) const {
   const int top = first_movable_[e];
   if (top < 0) return true;  // nothing on its chain moves
-  return (target.segment<3>(3 * e) - kin.joint_origin(top)).norm() >= reach_[e] + slack;
+  if (goals.plain()) return (goals.plain_target().segment<3>(3 * e) - kin.joint_origin(top)).norm() >= reach_[e] + slack;
+  const int b = goals.position_block(e);
+  return b >= 0 && (goals.block(b).position - kin.joint_origin(top)).norm() >= reach_[e] + slack;
 }
 
 bool ChainRestart::propose(const Kinematics& kin, const Eigen::Ref<const Eigen::VectorXd>& best,
-                           const Eigen::Ref<const Eigen::VectorXd>& r, const Eigen::Ref<const Eigen::VectorXd>& target,
+                           const Eigen::Ref<const Eigen::VectorXd>& r, const GoalSet& goals,
                            double slack, const QuasiRandom& sequence, long attempt, Eigen::Ref<Eigen::VectorXd> start) {
-  const double largest = largest_tip_distance(r);
+  const double largest = largest_goal_distance(goals, r);
   if (!(largest > 0)) return false;
   std::fill(moved_.begin(), moved_.end(), 0);
   std::fill(kept_.begin(), kept_.end(), 0);
   bool any = false;
   for (int e = 0; e < kin.num_effectors(); ++e) {
-    const bool off = off_target(r, e, largest);
-    if (off && beyond_reach(kin, e, target, slack)) continue;
+    const bool off = goal_off_target(goals, r, e, largest);
+    if (off && beyond_reach(kin, e, goals, slack)) continue;
     for (int b : kin.effector_chain(e)) (off ? moved_ : kept_)[b] = 1;
     any = any || off;
   }

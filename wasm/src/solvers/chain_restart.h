@@ -15,6 +15,7 @@
 #include <Eigen/Core>
 #include <vector>
 
+#include "goals.h"
 #include "kinematics.h"
 #include "quasi_random.h"
 
@@ -26,18 +27,19 @@ class ChainRestart {
   void resize(const Kinematics& kin);
 
   // From the best point `best` (#angles, degrees; `kin` posed there) with residual `r`
-  // (tips - target, #residuals): writes the start of chain restart `attempt` (1, 2, ... in a
+  // (goal_residual.h, towards `goals`): writes the start of chain restart `attempt` (1, 2, ... in a
   // solve) to `start`, with the off-target chains moved by a point of `sequence`. Returns false
   // when no effector is off target within its reach (nothing worth restarting). `slack` (rig
   // units): how far off a tip may be and count as on target; a target that much beyond the
   // chain's reach still counts as within it. No allocation.
   bool propose(const Kinematics& kin, const Eigen::Ref<const Eigen::VectorXd>& best,
-               const Eigen::Ref<const Eigen::VectorXd>& r, const Eigen::Ref<const Eigen::VectorXd>& target,
+               const Eigen::Ref<const Eigen::VectorXd>& r, const GoalSet& goals,
                double slack, const QuasiRandom& sequence, long attempt, Eigen::Ref<Eigen::VectorXd> start);
 
  private:
   // Is effector e's target farther from its chain's fixed joint than the chain can reach?
-  bool beyond_reach(const Kinematics& kin, int e, const Eigen::Ref<const Eigen::VectorXd>& target, double slack) const;
+  // An effector without a position goal never is.
+  bool beyond_reach(const Kinematics& kin, int e, const GoalSet& goals, double slack) const;
 
   std::vector<int> first_movable_;  // per effector: the first bone of its chain with a movable angle, or -1
   std::vector<double> reach_;       // per effector: the rigid segments' lengths from that bone's joint to the tip

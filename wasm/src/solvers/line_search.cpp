@@ -2,11 +2,11 @@
 
 #include <cmath>
 
-#include "objective.h"
+#include "goal_residual.h"
 
 namespace ik {
 
-BacktrackingResult projected_backtracking(Kinematics& kin, const Eigen::Ref<const Eigen::VectorXd>& target,
+BacktrackingResult projected_backtracking(Kinematics& kin, const GoalSet& goals,
                                           const Eigen::Ref<const Eigen::VectorXd>& angles, double E0,
                                           const Eigen::Ref<const Eigen::VectorXd>& gradient,
                                           const Eigen::Ref<const Eigen::VectorXd>& direction,
@@ -18,7 +18,7 @@ BacktrackingResult projected_backtracking(Kinematics& kin, const Eigen::Ref<cons
     trial = angles + alpha * direction;
     kin.project(trial);
     if (trial == angles) break;  // the step is 0
-    const double E = objective(kin, trial, target, residual);
+    const double E = goal_objective(kin, goals, trial, residual);
     ++result.evaluations;
     const double slope = options.projected_slope ? gradient.dot(trial - angles) : alpha * gradient.dot(direction);
     const double bound = E0 + options.c1 * slope;

@@ -5,6 +5,7 @@
 #include <Eigen/Core>
 
 #include "deadline.h"
+#include "goals.h"
 #include "kinematics.h"
 
 namespace ik {
@@ -29,12 +30,12 @@ struct BacktrackingResult {
 };
 
 // From `angles` (#angles, degrees) with E = `E0` and gradient `gradient` (#angles) along
-// `direction` (#angles, degrees per unit alpha) towards `target` (#residuals). Writes the
+// `direction` (#angles, degrees per unit alpha) towards `goals` (goals.h). Writes the
 // accepted trial angles to `trial` and its residual to `residual`; on success `kin` is left
 // posed at `trial`. Gives up as soon as the projected trial equals `angles` (step 0), or when the
 // deadline has passed.
 // No allocation.
-BacktrackingResult projected_backtracking(Kinematics& kin, const Eigen::Ref<const Eigen::VectorXd>& target,
+BacktrackingResult projected_backtracking(Kinematics& kin, const GoalSet& goals,
                                           const Eigen::Ref<const Eigen::VectorXd>& angles, double E0,
                                           const Eigen::Ref<const Eigen::VectorXd>& gradient,
                                           const Eigen::Ref<const Eigen::VectorXd>& direction,

@@ -7,6 +7,10 @@
 // would leave its limits is fixed on the limit and the rest re-solved (active_set.h); angles that
 // are fixed or pushed outward by grad E are not in Jf at all.
 //
+// With orientation goals (goals.h) the residual is made of 3-row blocks, each an effector's
+// position or orientation; the sparsity below is per block (a block's rows move with the angles
+// on its effector's chain). Plain goals have one position block per effector, as before.
+//
 // Restarts after a stall (option `restarts`) are the base Solver's, as for every method.
 #include <cmath>
 #include <memory>
@@ -28,15 +32,15 @@ class LevenbergMarquardt final : public Solver {
 
  private:
   void resize(int m, int n) override {
-    // Per angle, the effectors whose tips it moves (those whose chain holds its bone), ascending:
-    // counted per bone, then filled effector by effector.
+    // Per angle, the residual blocks it moves (those of the effectors whose chain holds its
+    // bone), ascending: counted per bone, then filled block by block.
     std::vector<int> per_bone(kin_.num_bones() + 1, 0);
-    for (int e = 0; e < kin_.num_effectors(); ++e)
-      for (int b : kin_.effector_chain(e)) ++per_bone[b + 1];
+    for (int k = 0; k < goals_.num_blocks(); ++k)
+      for (int b : kin_.effector_chain(goals_.block(k).effector)) ++per_bone[b + 1];
     for (int b = 0; b < kin_.num_bones(); ++b) per_bone[b + 1] += per_bone[b];
     std::vector<int> bone_effectors(per_bone.back()), fill(per_bone.begin(), per_bone.end() - 1);
-    for (int e = 0; e < kin_.num_effectors(); ++e)
-      for (int b : kin_.effector_chain(e)) bone_effectors[fill[b]++] = e;
+    for (int k = 0; k < goals_.num_blocks(); ++k)
+      for (int b : kin_.effector_chain(goals_.block(k).effector)) bone_effectors[fill[b]++] = k;
     column_start_.assign(n + 1, 0);
     column_effectors_.clear();
     for (int j = 0; j < n; ++j) {
@@ -110,7 +114,7 @@ class LevenbergMarquardt final : public Solver {
     return Progress::stuck;
   }
 
-  // The 3x1 block of J: effector e's tip against angle j.
+  // The 3x1 block of J: residual block e (an effector's tip, or its orientation) against angle j.
   Eigen::Block<Eigen::MatrixXd, 3, 1> block(int e, int j) { return J_.block<3, 1>(3 * e, j); }
 
   enum class Step { ok, failed, out_of_time };
@@ -160,7 +164,8 @@ class LevenbergMarquardt final : public Solver {
     return Step::ok;
   }
 
-  std::vector<int> column_start_, column_effectors_;  // per angle j: column_effectors_[start[j]..start[j+1])
+  // Per angle j: the residual blocks it moves, column_effectors_[start[j]..start[j+1]).
+  std::vector<int> column_start_, column_effectors_;
   Eigen::MatrixXd normal_, reduced_, shifted_;
   Eigen::VectorXd y_, rhs_, jd_;
   ActiveSet active_set_;

@@ -15,6 +15,11 @@
 // model (Nielsen's rule, damping.h, as lm's), and grows 4x while the Cholesky factorisation fails
 // (the matrix indefinite). An angle whose step would leave its limits is fixed on the limit and
 // the rest re-solved (active_set.h); the step is capped at newton_max_step_deg per angle.
+//
+// Orientation goals (goals.h): C holds the exact second derivatives of the position rows only
+// (weights w_p r, goal_residual.h); the orientation rows enter H through J^T J alone, a
+// Gauss-Newton-type Hessian for those terms (their second derivatives, which vanish on target,
+// are left out).
 #include <Eigen/Cholesky>
 #include <cmath>
 #include <limits>
@@ -22,6 +27,7 @@
 
 #include "active_set.h"
 #include "damping.h"
+#include "goal_residual.h"
 #include "line_search.h"
 #include "size_limits.h"
 #include "solver.h"
@@ -51,6 +57,7 @@ class ProjectedNewton final : public Solver {
     step_.resize(n);
     work_.resize(n);
     active_set_.resize(n);
+    weights_.resize(kin_.num_residuals());
   }
 
   void reset() override { damping_.reset(opt_.lm_initial_mu); }
@@ -59,7 +66,12 @@ class ProjectedNewton final : public Solver {
     if (num_free_ == 0) return Progress::stuck;
     kin_.forward(a_);  // the tip Hessian reads the pose; others may have posed kin_ since
     H_.noalias() = J_.transpose() * J_;
-    add_weighted_tip_hessian(kin_, r_, H_);
+    if (goals_.plain()) {
+      add_weighted_tip_hessian(kin_, r_, H_);
+    } else {
+      tip_hessian_weights(goals_, r_, weights_);
+      add_weighted_tip_hessian(kin_, weights_, H_);
+    }
     double s = 0;
     for (int c = 0; c < num_free_; ++c) s += std::abs(H_(free_[c], free_[c]));
     s /= num_free_;
@@ -159,7 +171,7 @@ class ProjectedNewton final : public Solver {
 
   Eigen::MatrixXd H_, modified_, shifted_, Jm_, Y_, normal_;
   Eigen::LLT<Eigen::MatrixXd> llt_, normal_llt_;
-  Eigen::VectorXd rhs_, step_, work_;
+  Eigen::VectorXd rhs_, step_, work_, weights_;  // weights_: the tip Hessian's (3 x #effectors)
   ActiveSet active_set_;
   NielsenDamping damping_;
   double null_curvature_ = 0;

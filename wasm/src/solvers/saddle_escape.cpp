@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "goal_residual.h"
 #include "objective.h"
 #include "tip_hessian.h"
 
@@ -20,22 +21,23 @@ constexpr int kMaxHalvings = 28;
 
 }  // namespace
 
-void SaddleEscape::resize(const Kinematics& kin) {
+void SaddleEscape::resize(const Kinematics& kin, int residuals) {
   position_.assign(kin.num_angles(), -1);
   bones_.resize(kin.num_bones());
   index_.assign(kMaxAngles, -1);
   direction_.resize(kin.num_angles());
   other_trial_.resize(kin.num_angles());
-  other_residual_.resize(kin.num_residuals());
+  other_residual_.resize(residuals);
+  weights_.resize(kin.num_residuals());
 }
 
-void SaddleEscape::choose_angles(const Kinematics& kin, const Eigen::Ref<const Eigen::VectorXd>& r) {
+void SaddleEscape::choose_angles(const Kinematics& kin, const GoalSet& goals, const Eigen::Ref<const Eigen::VectorXd>& r) {
   for (int c = 0; c < count_; ++c) position_[index_[c]] = -1;
   count_ = 0;
-  const double largest = largest_tip_distance(r);
+  const double largest = largest_goal_distance(goals, r);
   if (!(largest > 0)) return;
   for (int e = 0; e < kin.num_effectors(); ++e) {
-    if (!off_target(r, e, largest)) continue;
+    if (!goal_off_target(goals, r, e, largest)) continue;
     const std::vector<int>& chain = kin.effector_chain(e);
     for (auto bone = chain.rbegin(); bone != chain.rend(); ++bone)  // distal bones first
       for (int k = 0; k < 3; ++k) {
@@ -48,19 +50,24 @@ void SaddleEscape::choose_angles(const Kinematics& kin, const Eigen::Ref<const E
   }
 }
 
-EscapeResult SaddleEscape::find(Kinematics& kin, const Eigen::Ref<const Eigen::VectorXd>& target,
+EscapeResult SaddleEscape::find(Kinematics& kin, const GoalSet& goals,
                                 const Eigen::Ref<const Eigen::VectorXd>& angles,
                                 const Eigen::Ref<const Eigen::VectorXd>& r, double E,
                                 const Eigen::Ref<const Eigen::MatrixXd>& J, Eigen::Ref<Eigen::VectorXd> trial,
                                 Eigen::Ref<Eigen::VectorXd> residual) {
   EscapeResult result;
-  choose_angles(kin, r);
+  choose_angles(kin, goals, r);
   if (count_ == 0) return result;
 
   hessian_.resize(count_, count_);
   for (int p = 0; p < count_; ++p)
     for (int q = 0; q <= p; ++q) hessian_(p, q) = hessian_(q, p) = J.col(index_[p]).dot(J.col(index_[q]));
-  add_weighted_tip_hessian(kin, r, position_, bones_, hessian_);
+  if (goals.plain()) {
+    add_weighted_tip_hessian(kin, r, position_, bones_, hessian_);
+  } else {
+    tip_hessian_weights(goals, r, weights_);
+    add_weighted_tip_hessian(kin, weights_, position_, bones_, hessian_);
+  }
   if (!hessian_.allFinite()) return result;
   eigen_.compute(hessian_);
   if (eigen_.info() != Eigen::Success) return result;
@@ -77,8 +84,8 @@ EscapeResult SaddleEscape::find(Kinematics& kin, const Eigen::Ref<const Eigen::V
   for (int p = 0; p < count_; ++p) direction_[index_[p]] = v[p] / v[largest];
 
   double E_plus = 0, E_minus = 0;
-  const bool plus = search(kin, target, angles, E, lambda, +1, trial, residual, E_plus, result.evaluations);
-  const bool minus = search(kin, target, angles, E, lambda, -1, other_trial_, other_residual_, E_minus, result.evaluations);
+  const bool plus = search(kin, goals, angles, E, lambda, +1, trial, residual, E_plus, result.evaluations);
+  const bool minus = search(kin, goals, angles, E, lambda, -1, other_trial_, other_residual_, E_minus, result.evaluations);
   if (!plus && !minus) return result;
   result.found = true;
   if (plus && (!minus || E_plus <= E_minus)) {
@@ -91,7 +98,7 @@ EscapeResult SaddleEscape::find(Kinematics& kin, const Eigen::Ref<const Eigen::V
   return result;
 }
 
-bool SaddleEscape::search(Kinematics& kin, const Eigen::Ref<const Eigen::VectorXd>& target,
+bool SaddleEscape::search(Kinematics& kin, const GoalSet& goals,
                           const Eigen::Ref<const Eigen::VectorXd>& angles, double E, double curvature, double sign,
                           Eigen::Ref<Eigen::VectorXd> trial, Eigen::Ref<Eigen::VectorXd> residual, double& E_trial,
                           int& evaluations) {
@@ -101,7 +108,7 @@ bool SaddleEscape::search(Kinematics& kin, const Eigen::Ref<const Eigen::VectorX
     kin.project(trial);
     const double moved2 = (trial - angles).squaredNorm();
     if (moved2 == 0) return false;  // the bounds block this sign
-    E_trial = objective(kin, trial, target, residual);
+    E_trial = goal_objective(kin, goals, trial, residual);
     ++evaluations;
     if (std::isfinite(E_trial) && E_trial < E + kDecrease * 0.5 * curvature * moved2) return true;
   }

@@ -7,6 +7,8 @@
 // has a negative eigenvalue there, and its eigenvector is the bend (with whatever the other
 // joints must do to keep the pinned effectors put, which J^T J charges for).
 //
+// With orientation goals (goals.h) the orientation rows enter H through J^T J only (Gauss-Newton
+// style) and "off target" compares the residual's blocks in rig units (goal_residual.h).
 // H is formed only over the movable angles on the chains of the effectors still off target
 // (|r_k| >= a tenth of the largest), distal bones first, at most kMaxAngles of them: a negative
 // curvature direction of that block is one of the full H (the other angles held). Along the
@@ -22,6 +24,7 @@
 #include <Eigen/Eigenvalues>
 #include <vector>
 
+#include "goals.h"
 #include "kinematics.h"
 
 namespace ik {
@@ -38,23 +41,23 @@ class SaddleEscape {
   static constexpr int kMaxAngles = 48;
   static constexpr double kFirstStepDeg = 30;
 
-  // Workspace for `kin`'s sizes (allocates).
-  void resize(const Kinematics& kin);
+  // Workspace for `kin`'s sizes and `residuals` residual rows (allocates).
+  void resize(const Kinematics& kin, int residuals);
 
   // From `angles` (#angles, degrees; `kin` posed there), with its residual `r` (x - target),
-  // E = `E` and Jacobian `J` (#residuals x #angles, per degree) towards `target`. On success
+  // E = `E` and Jacobian `J` (#residuals x #angles, per degree) towards `goals`. On success
   // writes the lower point to `trial` and its residual to `residual`; `kin` is then posed at
   // an arbitrary trial point. No allocation.
-  EscapeResult find(Kinematics& kin, const Eigen::Ref<const Eigen::VectorXd>& target,
+  EscapeResult find(Kinematics& kin, const GoalSet& goals,
                     const Eigen::Ref<const Eigen::VectorXd>& angles, const Eigen::Ref<const Eigen::VectorXd>& r,
                     double E, const Eigen::Ref<const Eigen::MatrixXd>& J, Eigen::Ref<Eigen::VectorXd> trial,
                     Eigen::Ref<Eigen::VectorXd> residual);
 
  private:
   // The angles H is formed over (index_[0..count_)); position_[angle] is its place or -1.
-  void choose_angles(const Kinematics& kin, const Eigen::Ref<const Eigen::VectorXd>& r);
+  void choose_angles(const Kinematics& kin, const GoalSet& goals, const Eigen::Ref<const Eigen::VectorXd>& r);
   // Backtracking along sign * direction_; the accepted point in `trial` / `residual`.
-  bool search(Kinematics& kin, const Eigen::Ref<const Eigen::VectorXd>& target,
+  bool search(Kinematics& kin, const GoalSet& goals,
               const Eigen::Ref<const Eigen::VectorXd>& angles, double E, double curvature, double sign,
               Eigen::Ref<Eigen::VectorXd> trial, Eigen::Ref<Eigen::VectorXd> residual, double& E_trial,
               int& evaluations);
@@ -65,7 +68,7 @@ class SaddleEscape {
   std::vector<int> position_, index_;
   std::vector<int> bones_;  // scratch of the tip Hessian: one effector's chain bones with a chosen angle
   int count_ = 0;
-  Eigen::VectorXd direction_, other_trial_, other_residual_;
+  Eigen::VectorXd direction_, other_trial_, other_residual_, weights_;
 };
 
 }  // namespace ik

@@ -17,13 +17,13 @@ std::string check_finite(const Eigen::Ref<const Eigen::VectorXd>& v, const char*
 
 std::string check_solve_input(const Kinematics& kin, const SolverOptions& options, const char* method, int angle_limit,
                               const Eigen::Ref<const Eigen::VectorXd>& angles,
-                              const Eigen::Ref<const Eigen::VectorXd>& target) {
+                              const Eigen::Ref<const Eigen::VectorXd>& target, bool has_target) {
   std::string problem = check_options(options);
   if (!problem.empty()) return problem;
   if (angles.size() != kin.num_angles())
     return "angles has " + std::to_string(angles.size()) + " values, expected " + std::to_string(kin.num_angles()) +
            " (3 per bone)";
-  if (target.size() != kin.num_residuals())
+  if (has_target && target.size() != kin.num_residuals())
     return "target has " + std::to_string(target.size()) + " values, expected " + std::to_string(kin.num_residuals()) +
            " (3 per end effector)";
   if (kin.num_angles() > angle_limit)
@@ -31,7 +31,7 @@ std::string check_solve_input(const Kinematics& kin, const SolverOptions& option
            std::to_string(angle_limit) + " angles (" + std::to_string(angle_limit / 3) + " bones); this one has " +
            std::to_string(kin.num_angles()) + (options.paper_mode ? ": turn paper mode off" : ": use lm or gd");
   problem = check_finite(angles, "angles");
-  if (problem.empty()) problem = check_finite(target, "target");
+  if (problem.empty() && has_target) problem = check_finite(target, "target");
   return problem;
 }
 

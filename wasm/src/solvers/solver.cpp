@@ -9,6 +9,7 @@
 #include <string>
 
 #include "free_set.h"
+#include "goal_residual.h"
 #include "line_search.h"
 #include "objective.h"
 #include "paper_jacobian.h"
@@ -47,16 +48,22 @@ Solver::Solver(Kinematics& kin, const SolverOptions& options) : kin_(kin), opt_(
 
 StopReason Solver::start(const Eigen::Ref<const Eigen::VectorXd>& angles,
                          const Eigen::Ref<const Eigen::VectorXd>& target) {
-  return begin(angles, target, /*close=*/true);
+  incoming_.set_positions(kin_, target);
+  return begin(angles, std::string(), /*close=*/true);
 }
 
-StopReason Solver::begin(const Eigen::Ref<const Eigen::VectorXd>& angles,
-                         const Eigen::Ref<const Eigen::VectorXd>& target, bool close) {
+StopReason Solver::start(const Eigen::Ref<const Eigen::VectorXd>& angles, const Goals& goals) {
+  const std::string problem = incoming_.set(kin_, goals);
+  return begin(angles, problem, /*close=*/true);
+}
+
+StopReason Solver::begin(const Eigen::Ref<const Eigen::VectorXd>& angles, const std::string& goals_problem,
+                         bool close) {
   clock_.open(Clock::now());
-  // A solve from where the previous one ended, towards the same target (a held drag whose frame
+  // A solve from where the previous one ended, towards the same goals (a held drag whose frame
   // budget ran out), goes on along the chain restarts instead of trying the same ones again.
-  const bool continues = chain_index_ > 0 && target.size() == target_.size() && angles.size() == summary_.angles.size() &&
-                         target == target_ && angles == summary_.angles;
+  const bool continues = chain_index_ > 0 && angles.size() == summary_.angles.size() && incoming_ == goals_ &&
+                         angles == summary_.angles;
   if (!continues) chain_index_ = 0;
   opt_ = next_opt_;
   clock_.reset(opt_.time_budget_s);
@@ -65,8 +72,14 @@ StopReason Solver::begin(const Eigen::Ref<const Eigen::VectorXd>& angles,
   summary_.reached = false;
   history_size_ = 0;
   failure_ = nullptr;
-  const int limit = std::min(angle_limit(kin_.num_residuals()), opt_.paper_mode ? kMaxDenseAngles : kNoAngleLimit);
-  summary_.message = check_solve_input(kin_, opt_, name(), limit, angles, target);
+  const int rows = incoming_.plain() ? kin_.num_residuals() : incoming_.rows();
+  const int limit = std::min(angle_limit(rows), opt_.paper_mode ? kMaxDenseAngles : kNoAngleLimit);
+  summary_.message = goals_problem;
+  if (summary_.message.empty())
+    summary_.message = check_solve_input(kin_, opt_, name(), limit, angles, incoming_.plain_target(), incoming_.plain());
+  if (summary_.message.empty() && opt_.paper_mode && !incoming_.plain())
+    summary_.message = "paper mode takes position goals of weight 1 only (the original program's objective); "
+                       "turn paper mode off for orientation goals or weights";
   if (!summary_.message.empty()) {
     summary_.stop_reason = StopReason::invalid_input;
     summary_.initial_E = summary_.E = summary_.gradient_norm = summary_.tip_distance =
@@ -76,11 +89,12 @@ StopReason Solver::begin(const Eigen::Ref<const Eigen::VectorXd>& angles,
     return summary_.stop_reason;
   }
   // Workspace: sized here only, so that step() never allocates.
-  if (m_ != kin_.num_residuals() || n_ != kin_.num_angles() || effectors_ != kin_.rig().effectors) resize_workspace();
+  goals_ = incoming_;
+  if (m_ != goals_.rows() || n_ != kin_.num_angles() || effectors_ != kin_.rig().effectors || layout_ != goals_.layout())
+    resize_workspace();
   restarts_.begin_solve(n_, opt_.seed);
   if (static_cast<int>(history_.size()) != opt_.history_capacity) history_.resize(opt_.history_capacity);
 
-  target_ = target;
   a_ = angles;
   kin_.project(a_);
   reset();
@@ -96,7 +110,7 @@ StopReason Solver::begin(const Eigen::Ref<const Eigen::VectorXd>& angles,
   summary_.initial_E = E_;
   summary_.E = E_;
   summary_.gradient_norm = gradient_norm_;
-  summary_.tip_distance = largest_tip_distance(r_);
+  summary_.tip_distance = largest_tip_distance(goals_, r_);
   summary_.reached = finite(E_) && on_target();
   summary_.angles = a_;
   record();
@@ -116,9 +130,9 @@ StopReason Solver::begin(const Eigen::Ref<const Eigen::VectorXd>& angles,
 
 void Solver::resize_workspace() {
   effectors_ = kin_.rig().effectors;
-  m_ = kin_.num_residuals();
+  layout_ = goals_.layout();
+  m_ = goals_.rows();
   n_ = kin_.num_angles();
-  target_.resize(m_);
   r_.resize(m_);
   r_trial_.resize(m_);
   a_.resize(n_);
@@ -131,14 +145,8 @@ void Solver::resize_workspace() {
   fd_plus_.resize(m_);
   fd_minus_.resize(m_);
   summary_.angles.resize(n_);
-  reach_ = 0;
-  for (int e = 0; e < kin_.num_effectors(); ++e) {
-    double length = 0;
-    for (int b : kin_.effector_chain(e)) length += kin_.rig().bones[b].length;
-    reach_ = std::max(reach_, length);
-  }
-  if (!(reach_ > 0)) reach_ = 1;
-  escape_.resize(kin_);
+  reach_ = rig_reach(kin_);
+  escape_.resize(kin_, m_);
   chain_restart_.resize(kin_);
   resize(m_, n_);
 }
@@ -195,9 +203,19 @@ bool Solver::advance(Clock::time_point begin) {
 
 const SolverSummary& Solver::solve(const Eigen::Ref<const Eigen::VectorXd>& angles,
                                    const Eigen::Ref<const Eigen::VectorXd>& target) {
+  incoming_.set_positions(kin_, target);
+  return run(angles, std::string());
+}
+
+const SolverSummary& Solver::solve(const Eigen::Ref<const Eigen::VectorXd>& angles, const Goals& goals) {
+  const std::string problem = incoming_.set(kin_, goals);
+  return run(angles, problem);
+}
+
+const SolverSummary& Solver::run(const Eigen::Ref<const Eigen::VectorXd>& angles, const std::string& goals_problem) {
   // Back-to-back: the first step's time runs from the start's, each later one's from the previous
   // step's closing clock read (one read per step; two for a solve of one iteration).
-  if (begin(angles, target, /*close=*/false) == StopReason::running) {
+  if (begin(angles, goals_problem, /*close=*/false) == StopReason::running) {
     Clock::time_point from = clock_.call_start();
     while (advance(from)) from = clock_.last_read();
   }
@@ -206,7 +224,7 @@ const SolverSummary& Solver::solve(const Eigen::Ref<const Eigen::VectorXd>& angl
 
 double Solver::evaluate(const Eigen::Ref<const Eigen::VectorXd>& angles, Eigen::Ref<Eigen::VectorXd> residual) {
   ++summary_.function_evaluations;
-  return objective(kin_, angles, target_, residual);
+  return goal_objective(kin_, goals_, angles, residual);
 }
 
 bool Solver::backtrack(const Eigen::Ref<const Eigen::VectorXd>& direction, double initial_step, double c1) {
@@ -217,7 +235,7 @@ bool Solver::backtrack(const Eigen::Ref<const Eigen::VectorXd>& direction, doubl
   search.max_tries = opt_.paper_mode ? kPaperMaxBacktracks : opt_.max_backtracks;
   search.projected_slope = !opt_.paper_mode;
   search.deadline = deadline();
-  const BacktrackingResult found = projected_backtracking(kin_, target_, a_, E_, g_, direction, search, trial_, r_trial_);
+  const BacktrackingResult found = projected_backtracking(kin_, goals_, a_, E_, g_, direction, search, trial_, r_trial_);
   summary_.function_evaluations += found.evaluations;
   cut_short_ = cut_short_ || found.timed_out;
   if (!found.found) return false;
@@ -232,7 +250,7 @@ bool Solver::update_derivatives(bool posed) {
     paper_jacobian(kin_, a_, opt_.fd_step_deg, fd_scratch_, fd_plus_, fd_minus_, J_);
   } else {
     if (!posed) kin_.forward(a_);
-    kin_.current_jacobian(J_);
+    goal_jacobian(kin_, goals_, J_);
   }
   ++summary_.jacobian_evaluations;
   g_.noalias() = J_.transpose() * r_;
@@ -268,8 +286,13 @@ bool Solver::time_is_up() {
 }
 
 bool Solver::on_target() const {
-  if (opt_.tip_tolerance > 0) return largest_tip_distance(r_) < opt_.tip_tolerance;
-  return E_ < opt_.error_tolerance;
+  if (!goals_.has_orientation()) {
+    if (opt_.tip_tolerance > 0) return largest_tip_distance(goals_, r_) < opt_.tip_tolerance;
+    return E_ < opt_.error_tolerance;
+  }
+  const bool positions = opt_.tip_tolerance > 0 ? largest_tip_distance(goals_, r_) < opt_.tip_tolerance
+                                                : position_error(goals_, r_) < opt_.error_tolerance;
+  return positions && largest_orientation_error_deg(goals_, r_) < opt_.orientation_tolerance_deg;
 }
 
 StopReason Solver::check_stop() const {
@@ -288,7 +311,7 @@ void Solver::note_best() {
   if (reached != summary_.reached ? !reached : !(E_ < summary_.E)) return;
   summary_.E = E_;
   summary_.gradient_norm = gradient_norm_;
-  summary_.tip_distance = largest_tip_distance(r_);
+  summary_.tip_distance = largest_tip_distance(goals_, r_);
   summary_.reached = reached;
   summary_.angles = a_;
 }

@@ -3,10 +3,12 @@
 //
 // Units everywhere: angles in DEGREES (3 per bone, XZX), tips and targets in rig units,
 // E = 1/2 |x(A) - x_b|^2 in rig units^2, gradients in rig units^2 per degree, time in seconds.
+// With goals (goals.h) E = 1/2 |r|^2 over the goals' residual rows (weighted positions, and
+// orientations as rotation vectors times a length), still in rig units^2.
 //
 // Each method lives in its own file (gd.cpp, bfgs.cpp, ...) and is listed in
-// solver_registry.cpp. Workspace is allocated by start() (only when the rig's sizes changed);
-// step() allocates nothing.
+// solver_registry.cpp. Workspace is allocated by start() (only when the rig's sizes or the
+// goals' layout changed); step() allocates nothing.
 #pragma once
 
 #include <Eigen/Core>
@@ -15,6 +17,7 @@
 
 #include "chain_restart.h"
 #include "deadline.h"
+#include "goals.h"
 #include "kinematics.h"
 #include "restarts.h"
 #include "saddle_escape.h"
@@ -26,7 +29,8 @@ namespace ik {
 enum class StopReason {
   running,            // no test below has fired; step() may be called
   converged_E,        // on target: E < error_tolerance, or with tip_tolerance > 0 every effector's tip
-                      // within tip_tolerance of its target
+                      // within tip_tolerance of its target. With orientation goals: E over the position
+                      // rows only (or the tip test), and every orientation within orientation_tolerance_deg
   converged_grad,     // |g| < gradient_tolerance, not on target; g = grad E without the components of fixed
                       // angles and of angles on a bound that the gradient pushes outward (free_set.h; paper
                       // mode: the full grad E). While restarts are left a run stops there only once |g| <
@@ -37,7 +41,8 @@ enum class StopReason {
                       // equalled A, or max_backtracks tries failed; restarts exhausted if enabled
   max_iterations,     // iterations >= max_iterations
   timeout,            // time spent inside start() and step() since start() >= time_budget_s
-  invalid_input,      // start() got a wrong length, a non-finite angle or target, or a bad option; or the rig's
+  invalid_input,      // start() got a wrong length, a non-finite angle or target, bad goals (or goals other than
+                      // plain positions in paper mode), or a bad option; or the rig's
                       // effector list changed between start() and step() (see message)
   numerical_failure,  // E or a derivative became non-finite, or a factorisation failed at every damping
 };
@@ -51,6 +56,7 @@ struct SolverSummary {
   double E = 0;                 // E at `angles`
   double gradient_norm = 0;     // |g| at `angles` as the gradient test measures it
   double tip_distance = 0;      // largest distance of an effector's tip from its target at `angles`, rig units
+                                // (position goals only; 0 without any)
   bool reached = false;         // `angles` is on target (the test of converged_E)
   int iterations = 0;           // accepted steps (a restart counts as one)
   int function_evaluations = 0; // forward-kinematics evaluations of E (line-search trials included)
@@ -84,6 +90,11 @@ class Solver {
   // (#residuals, rig units). Sizes the workspace if the rig's effectors changed since the last
   // start(). Returns running, converged_E / converged_grad (already there), or invalid_input.
   StopReason start(const Eigen::Ref<const Eigen::VectorXd>& angles, const Eigen::Ref<const Eigen::VectorXd>& target);
+  // The same towards `goals` (goals.h): per effector a position and/or an orientation goal with
+  // weights. Position goals of weight 1 alone behave exactly as start(angles, target); paper mode
+  // takes nothing else (invalid_input). Goals of weight 0 count as none. Goals GoalSet::set()
+  // refuses give invalid_input with its message.
+  StopReason start(const Eigen::Ref<const Eigen::VectorXd>& angles, const Goals& goals);
 
   // One iteration. Returns true while the solve is still running. No allocation. Between steps
   // the Kinematics may be used by others (posed elsewhere): every method re-poses what it reads.
@@ -92,6 +103,8 @@ class Solver {
   // start() and step() until stopped. Returns the summary.
   const SolverSummary& solve(const Eigen::Ref<const Eigen::VectorXd>& angles,
                              const Eigen::Ref<const Eigen::VectorXd>& target);
+  // The same towards `goals` (see start(angles, goals)).
+  const SolverSummary& solve(const Eigen::Ref<const Eigen::VectorXd>& angles, const Goals& goals);
 
   bool running() const { return summary_.stop_reason == StopReason::running; }
   // The state so far: best angles, E, counts, stop reason (running while not stopped).
@@ -152,7 +165,9 @@ class Solver {
   int n_ = 0;  // #angles
   int m_ = 0;  // #residuals
   std::vector<int> effectors_;  // the rig's effector list the workspace was sized for
-  Eigen::VectorXd target_, a_, trial_, r_, r_trial_, g_;
+  std::vector<int> layout_;     // the goals' block layout the workspace was sized for
+  GoalSet goals_;  // the current solve's goals: the residual's rows (goals.h)
+  Eigen::VectorXd a_, trial_, r_, r_trial_, g_;
   Eigen::MatrixXd J_;
   double E_ = 0;
   double gradient_norm_ = 0;
@@ -214,9 +229,12 @@ class Solver {
   SaddleEscape escape_;
   ChainRestart chain_restart_;
   long chain_index_ = 0;  // chain restarts drawn, in this solve and the ones it continues
-  // start(); `close`: read the clock at the end (solve() leaves it to the first step).
-  StopReason begin(const Eigen::Ref<const Eigen::VectorXd>& angles, const Eigen::Ref<const Eigen::VectorXd>& target,
-                   bool close);
+  // start() towards incoming_ (set by the caller); `close`: read the clock at the end (solve()
+  // leaves it to the first step). `goals_problem`: what is wrong with incoming_, if anything.
+  StopReason begin(const Eigen::Ref<const Eigen::VectorXd>& angles, const std::string& goals_problem, bool close);
+  GoalSet incoming_;  // the goals given to start() / solve(), checked by begin()
+  // solve() towards incoming_.
+  const SolverSummary& run(const Eigen::Ref<const Eigen::VectorXd>& angles, const std::string& goals_problem);
   // step() from `begin`, the time its call started.
   bool advance(TimeBudget::Clock::time_point begin);
   TimeBudget clock_;

@@ -48,7 +48,7 @@ bool Solver::restart() {
 bool Solver::escape() {
   if (opt_.paper_mode || !opt_.escape_saddles || summary_.escapes >= kMaxEscapes) return false;
   kin_.forward(a_);  // the tip Hessian reads the pose
-  const EscapeResult found = escape_.find(kin_, target_, a_, r_, E_, J_, trial_, r_trial_);
+  const EscapeResult found = escape_.find(kin_, goals_, a_, r_, E_, J_, trial_, r_trial_);
   summary_.function_evaluations += found.evaluations;
   if (!found.found) return false;
   a_.swap(trial_);
@@ -65,7 +65,7 @@ bool Solver::chain_restart() {
   // How far off a tip may be on target: the tip tolerance, or with the E test the distance at which
   // one effector alone makes E the tolerance.
   const double slack = opt_.tip_tolerance > 0 ? opt_.tip_tolerance : std::sqrt(2 * opt_.error_tolerance);
-  if (!chain_restart_.propose(kin_, trial_, r_trial_, target_, slack, restarts_.sequence(), ++chain_index_, a_))
+  if (!chain_restart_.propose(kin_, trial_, r_trial_, goals_, slack, restarts_.sequence(), ++chain_index_, a_))
     return false;
   restarts_.begin_run();
   reset();

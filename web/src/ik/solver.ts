@@ -39,6 +39,11 @@ export interface SolverOptions {
    * target (replaces the E test). Default 0 (the E test).
    */
   tipTolerance?: number;
+  /**
+   * Degrees. With orientation goals, on target also needs every effector's orientation within
+   * this angle of its target (the E test then reads the position rows only). Default 0.5.
+   */
+  orientationToleranceDeg?: number;
   /** Iteration cap. Default 100000. */
   maxIterations?: number;
   /** Time budget of one solve, seconds (time spent inside start/step); 0 or Infinity: none. Default 1. */
