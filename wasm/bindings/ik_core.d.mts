@@ -29,6 +29,7 @@ export interface EmbindRig {
   objective(angles: Float64Array, target: Float64Array): number;
   gradient(angles: Float64Array, target: Float64Array): Float64Array | null;
   project(angles: Float64Array): Float64Array | null;
+  restartStart(k: number, seed: number): Float64Array | null;
   delete(): void;
 }
 

@@ -4,6 +4,8 @@
 #include <emscripten/bind.h>
 
 #include <Eigen/Core>
+#include <cmath>
+#include <cstdint>
 #include <limits>
 
 #include "finite_difference_jacobian.h"
@@ -11,6 +13,7 @@
 #include "kinematics.h"
 #include "objective.h"
 #include "rig_binding.h"
+#include "solvers/restarts.h"
 
 namespace ik::js {
 
@@ -154,6 +157,19 @@ val RigBinding::project(const val& angles) {
   }, val::null());
 }
 
+val RigBinding::restart_start(double k, double seed) {
+  return guarded([&] {
+    if (!(k >= 1 && k <= 1e15 && k == std::floor(k))) throw RigError("a restart index is an integer >= 1");
+    if (!(seed >= 0 && seed <= 4294967295.0 && seed == std::floor(seed)))
+      throw RigError("a seed is an integer in [0, 2^32)");
+    const int n = kin_.num_angles();
+    const QuasiRandom sequence(n, static_cast<std::uint32_t>(seed));
+    Eigen::VectorXd unit(n), start(n);
+    Restarts::start_of(sequence, static_cast<long>(k), kin_.lower(), kin_.upper(), unit, start);
+    return copy_out(start.data(), start.size());
+  }, val::null());
+}
+
 bool RigBinding::set_effectors(const val& effectors) {
   return guarded([&] {
     std::vector<int> list;
@@ -192,5 +208,6 @@ EMSCRIPTEN_BINDINGS(ik_kinematics) {
       .function("finiteDifferenceJacobian", &RigBinding::finite_difference_jacobian)
       .function("objective", &RigBinding::objective)
       .function("gradient", &RigBinding::gradient)
-      .function("project", &RigBinding::project);
+      .function("project", &RigBinding::project)
+      .function("restartStart", &RigBinding::restart_start);
 }

@@ -38,6 +38,9 @@ class RigBinding {
   double objective(const emscripten::val& angles, const emscripten::val& target);  // E, NaN on failure
   emscripten::val gradient(const emscripten::val& angles, const emscripten::val& target);  // Float64Array(3m)
   emscripten::val project(const emscripten::val& angles);    // clamped copy, Float64Array(3m)
+  // The start of the solvers' k-th restart (k >= 1) with option seed `seed`: Float64Array(3m),
+  // degrees, inside the limits (restarts.h), for harnesses that restart other solvers alike.
+  emscripten::val restart_start(double k, double seed);
 
   Kinematics& kinematics() { return kin_; }
 

@@ -32,9 +32,15 @@ bool Restarts::stalls(double E, int stall_iterations) {
 void Restarts::next_start(const Eigen::VectorXd& lower, const Eigen::VectorXd& upper,
                           Eigen::Ref<Eigen::VectorXd> start) {
   ++used_;
-  sequence_.point(used_, unit_);
-  point_in_limits(unit_, lower, upper, start);
+  start_of(sequence_, used_, lower, upper, unit_, start);
   begin_run();
+}
+
+void Restarts::start_of(const QuasiRandom& sequence, long k, const Eigen::Ref<const Eigen::VectorXd>& lower,
+                        const Eigen::Ref<const Eigen::VectorXd>& upper, Eigen::Ref<Eigen::VectorXd> unit,
+                        Eigen::Ref<Eigen::VectorXd> start) {
+  sequence.point(k, unit);
+  point_in_limits(unit, lower, upper, start);
 }
 
 }  // namespace ik

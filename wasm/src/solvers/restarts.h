@@ -25,6 +25,13 @@ class Restarts {
   // to `start` and begins a new run. No allocation.
   void next_start(const Eigen::VectorXd& lower, const Eigen::VectorXd& upper, Eigen::Ref<Eigen::VectorXd> start);
 
+  // Restart k's start (k >= 1) of `sequence` (#angles, degrees, inside `lower`..`upper`) into
+  // `start`; `unit` is scratch of #angles. What next_start() gives for its k-th restart, for
+  // harnesses that restart other solvers the same way. No allocation.
+  static void start_of(const QuasiRandom& sequence, long k, const Eigen::Ref<const Eigen::VectorXd>& lower,
+                       const Eigen::Ref<const Eigen::VectorXd>& upper, Eigen::Ref<Eigen::VectorXd> unit,
+                       Eigen::Ref<Eigen::VectorXd> start);
+
   // Restarts used in this solve.
   long used() const { return used_; }
   const QuasiRandom& sequence() const { return sequence_; }

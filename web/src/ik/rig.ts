@@ -127,6 +127,15 @@ export class IkRig {
     return this.checked(this.live().project(a), 'project');
   }
 
+  /**
+   * The start of the solvers' k-th restart (k >= 1, an integer) for the option `seed` (default
+   * 1, the solvers' default): degrees, inside the limits. The same point a solver restarts from,
+   * for harnesses that restart other solvers alike. A new array.
+   */
+  restartStart(k: number, seed = 1): Float64Array {
+    return this.checked(this.live().restartStart(k, seed), 'restartStart');
+  }
+
   /** True after dispose(). */
   get isDisposed(): boolean {
     return this.disposed;
