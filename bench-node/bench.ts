@@ -6,12 +6,13 @@ import { defaultTolerances, dragTolerances, rigSize } from '../web/src/rig/toler
 import { draggableEffectors } from './effectors.js';
 import { BenchError, errorLine } from './errors.js';
 import { paperIterations, summarize, type Row, type SolveResult } from './metrics.js';
-import { isPeer, type BenchOptions } from './options.js';
+import { isNativeOnly, isPeer, type BenchOptions } from './options.js';
 import type { Progress } from './progress.js';
 import { REACH_PATH_STEPS, reachPaths } from './reach.js';
 import { markReachable, REFERENCE_METHOD } from './reachability.js';
 import { loadBenchRig, type BenchRig } from './rigs.js';
 import { checkNativeTool, runNative } from './run_native.js';
+import { effectiveRestarts } from './runners.js';
 import { runOnPool, WorkerPool } from './run_wasm.js';
 import type { RunSettings } from './runner.js';
 import { generateTargets, isDragging, prefix, project, type Experiment, type TargetSet } from './targets.js';
@@ -95,9 +96,9 @@ function checkTargetSetSize(entry: string, rig: PreparedRig, opts: BenchOptions)
   );
 }
 
-/** The engines a method runs on: ours on each requested engine, the peers in JavaScript. */
+/** The engines a method runs on: ours on each requested engine, kdl on the native one, the peers in JavaScript. */
 export function enginesFor(method: string, opts: BenchOptions): string[] {
-  return isPeer(method) ? ['js'] : opts.engines;
+  return isPeer(method) ? ['js'] : isNativeOnly(method) ? ['native'] : opts.engines;
 }
 
 /** Samples of `experiment` that `method` solves on `rig` (reach: at most its whole set). */
@@ -128,7 +129,8 @@ export function totalSolves(opts: BenchOptions, rigs: readonly PreparedRig[]): n
  */
 export function runSettings(rig: PreparedRig, experiment: Experiment, method: string, opts: BenchOptions): RunSettings {
   const common = { method, ftol: rig.ftol, timeoutSeconds: opts.timeoutSeconds, paper: opts.paper, rigSize: rig.size };
-  return isDragging(experiment) ? { ...common, ...rig.drag, restarts: 0 } : { ...common, gtol: rig.gtol, tipTolerance: 0 };
+  if (isDragging(experiment)) return { ...common, ...rig.drag, restarts: 0 };
+  return { ...common, gtol: rig.gtol, tipTolerance: 0, ...(opts.restarts === undefined ? {} : { restarts: opts.restarts }) };
 }
 
 export interface RunContext {
@@ -184,7 +186,8 @@ export async function runBench(rigs: readonly PreparedRig[], ctx: RunContext): P
                 ? await runNative(rig.spec, settings, set, opts.workers, (n) => progress.advance(n))
                 : await runOnPool(pool!, rig.path, rig.spec, settings, set, (n) => progress.advance(n));
             const counted = settings.paper && !isPeer(method) ? results.map(countedAsThePaper) : results;
-            const row = summarize({ rig: rig.name, experiment, method, engine }, counted, settings, set.reachable);
+            const stats = summarize({ rig: rig.name, experiment, method, engine }, counted, settings, set.reachable);
+            const row: Row = { ...stats, restarts: effectiveRestarts(ik, settings) };
             rows.push(row);
             ctx.onRow?.(row);
           }

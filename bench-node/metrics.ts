@@ -99,8 +99,8 @@ export interface SolveResult {
   jumpDeg: number;
 }
 
-/** One row of the tables and of --json (with its time to success, time_to_success.ts). */
-export interface Row extends TimeToSuccess {
+/** A row's statistics over its solves (with its time to success, time_to_success.ts). */
+export interface RowStats extends TimeToSuccess {
   rig: string;
   experiment: Experiment;
   method: string;
@@ -130,6 +130,12 @@ export interface Row extends TimeToSuccess {
   jump_max_deg: number | null;
 }
 
+/** One row of the tables and of --json: its statistics and the restarts every method had. */
+export interface Row extends RowStats {
+  /** Restarts allowed per solve, the same for every method of the run (0 in paper mode, drag and reach). */
+  restarts: number;
+}
+
 export interface RowKey {
   rig: string;
   experiment: Experiment;
@@ -141,7 +147,7 @@ export interface RowKey {
  * Summarises per-solve results into a table row. `test`: what counts as on target (success);
  * `reachable`: 1 per result whose targets are reachable (the others are left out of success).
  */
-export function summarize(key: RowKey, results: readonly SolveResult[], test: OnTargetTest, reachable: ArrayLike<number>): Row {
+export function summarize(key: RowKey, results: readonly SolveResult[], test: OnTargetTest, reachable: ArrayLike<number>): RowStats {
   const E = results.map((r) => r.E);
   const t = results.map((r) => r.seconds);
   const stop: Record<string, number> = {};

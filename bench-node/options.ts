@@ -19,6 +19,13 @@ export function isPeer(method: string): boolean {
   return (peerMethods as readonly string[]).includes(method);
 }
 
+/** Methods of the native engine only (ik_bench_native, built with Orocos KDL): not in the --methods default. */
+export const nativeOnlyMethods: readonly string[] = ['kdl'];
+
+export function isNativeOnly(method: string): boolean {
+  return (nativeOnlyMethods as readonly string[]).includes(method);
+}
+
 export interface BenchOptions {
   rigs: string[];
   experiments: Experiment[];
@@ -30,6 +37,8 @@ export interface BenchOptions {
   gtol?: number;
   ftol?: number;
   timeoutSeconds: number;
+  /** Restarts per solve for every method (random, incremental); undefined: the solvers' default. */
+  restarts?: number;
   paper: boolean;
   /** A recognised humanoid's anatomical limits (the importer's default); false: the file's own (extras.ik or +-180). */
   humanoidLimits: boolean;
@@ -54,6 +63,8 @@ const MAX_SAMPLES = 1_000_000;
 const WORKERS_PER_CORE = 4;
 const WORKERS_CAP = 64;
 const MAX_WORKERS = Math.min(WORKERS_CAP, WORKERS_PER_CORE * availableParallelism());
+/** Most --restarts per solve. */
+const MAX_RESTARTS = 1_000_000;
 /** Longest --timeout, seconds per solve. */
 const MAX_TIMEOUT_SECONDS = 3600;
 /** Longest --warm-up, milliseconds. */
@@ -124,17 +135,18 @@ function fileName(flag: string, value: string | undefined): string | undefined {
   return value === undefined ? undefined : present(flag, value);
 }
 
-function program(allMethods: readonly string[]): Command {
+function program(allMethods: readonly string[], defaultMethods: readonly string[]): Command {
   return new Command('bench')
     .description("Benchmarks the IK solvers on the report's target sets and more (see bench-node/README.md).")
     .addOption(new Option('--rig <paths>', 'rig files (.glb, .gltf, A7 .json) or project rig names, comma-separated').makeOptionMandatory())
     .option('--experiment <list>', `experiments: ${experiments.join(', ')}`, 'random,incremental')
-    .option('--methods <list>', `methods: ${allMethods.join(', ')}`, allMethods.join(','))
+    .option('--methods <list>', `methods: ${allMethods.join(', ')} (kdl: --engine native only)`, defaultMethods.join(','))
     .option('--samples <n>', `samples per experiment (at most ${MAX_SAMPLES}); per-method overrides like 1000,gd=100`, String(DEFAULT_SAMPLES))
     .option('--seed <s>', 'seed of the target sets', '1')
     .option('--gtol <x>', 'gradient tolerance (default: per rig, see README)')
     .option('--ftol <y>', 'E tolerance, also the success threshold (default: per rig; drag and reach: a tip distance, see README)')
     .option('--timeout <seconds>', `time budget per solve (at most ${MAX_TIMEOUT_SECONDS})`, '1')
+    .option('--restarts <n>', `restarts per solve for every method, peers included, within the time budget (random and incremental; default: the solvers' default; at most ${MAX_RESTARTS})`)
     .option('--paper', "the report's original algorithms (solver paper mode)", false)
     .option('--no-humanoid-limits', "a recognised humanoid keeps the file's own limits (extras.ik or +-180) instead of anatomical ones")
     .option('--engine <list>', 'wasm, native, or both (prints the ratio)', 'wasm')
@@ -159,6 +171,7 @@ interface RawOptions {
   gtol?: string;
   ftol?: string;
   timeout: string;
+  restarts?: string;
   paper: boolean;
   humanoidLimits: boolean;
   engine: string;
@@ -177,8 +190,8 @@ interface RawOptions {
  * one line for any problem.
  */
 export function parseOptions(argv: string[], isTTY: boolean, ownMethods: readonly string[]): BenchOptions | undefined {
-  const allMethods = [...ownMethods, ...peerMethods];
-  const cmd = program(allMethods);
+  const allMethods = [...ownMethods, ...nativeOnlyMethods, ...peerMethods];
+  const cmd = program(allMethods, [...ownMethods, ...peerMethods]);
   let helped = false;
   cmd.exitOverride((err: CommanderError) => {
     if (err.code === 'commander.helpDisplayed' || err.code === 'commander.help') {
@@ -195,7 +208,7 @@ export function parseOptions(argv: string[], isTTY: boolean, ownMethods: readonl
     throw e;
   }
   const raw = cmd.opts<RawOptions>();
-  return {
+  const opts: BenchOptions = {
     rigs: list('--rig', raw.rig),
     experiments: pick('--experiment', raw.experiment, experiments, 'experiment'),
     methods: pick('--methods', raw.methods, allMethods, 'method'),
@@ -204,6 +217,7 @@ export function parseOptions(argv: string[], isTTY: boolean, ownMethods: readonl
     gtol: raw.gtol === undefined ? undefined : positiveNumber('--gtol', raw.gtol),
     ftol: raw.ftol === undefined ? undefined : positiveNumber('--ftol', raw.ftol),
     timeoutSeconds: positiveNumber('--timeout', raw.timeout, MAX_TIMEOUT_SECONDS),
+    restarts: raw.restarts === undefined ? undefined : integerIn('--restarts', raw.restarts, 0, MAX_RESTARTS),
     paper: raw.paper,
     humanoidLimits: raw.humanoidLimits,
     engines: pick('--engine', raw.engine, engines, 'engine'),
@@ -215,4 +229,8 @@ export function parseOptions(argv: string[], isTTY: boolean, ownMethods: readonl
     progress: raw.progress && isTTY,
     warmUpMs: integerIn('--warm-up', raw.warmUp, 0, MAX_WARM_UP_MS),
   };
+  const nativeOnly = opts.methods.find(isNativeOnly);
+  if (nativeOnly !== undefined && !opts.engines.includes('native'))
+    throw usage(`${nativeOnly} runs only on the native engine: add --engine native`);
+  return opts;
 }

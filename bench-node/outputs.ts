@@ -126,7 +126,7 @@ export function writeJson(file: string, rows: readonly Row[], info: RunInfo): vo
 
 const csvColumns = [
   'rig', 'experiment', 'method', 'engine', 'samples', 't_avg_s', 't_median_s', 't_p95_s', 't_max_s',
-  'iter_avg', 'E_avg', 'E_iqm', 'E_max', 'success_rate', 'unreachable',
+  'iter_avg', 'E_avg', 'E_iqm', 'E_max', 'success_rate', 'unreachable', 'restarts',
   't_success_median_s', 't_success_p95_s', 'success_within_1ms', 'success_within_10ms', 'success_within_100ms',
   'wobble_during_avg', 'wobble_during_max', 'wobble_after_avg', 'wobble_after_max', 'jump_max_deg', 'stop_reasons',
 ] as const;

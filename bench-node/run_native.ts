@@ -99,9 +99,11 @@ export function checkNativeTool(methods: readonly string[]): void {
   const listed = spawnSync(nativeToolPath, ['--list-methods'], { encoding: 'utf8' });
   const known = listed.status === 0 ? (JSON.parse(listed.stdout) as string[]) : [];
   const unknown = methods.find((m) => !known.includes(m));
+  // kdl is there only when CMake found Orocos KDL (liborocos-kdl-dev, which the build installs).
+  const why = unknown === 'kdl' ? ' (kdl needs Orocos KDL: the package liborocos-kdl-dev)' : '';
   if (unknown !== undefined)
     throw new BenchError(
-      `native engine: ${nativeToolPath} has no method ${quote(unknown)} (it knows: ${known.join(', ') || 'none'}); rebuild it with "${build}"`,
+      `native engine: ${nativeToolPath} has no method ${quote(unknown)}${why} (it knows: ${known.join(', ') || 'none'}); rebuild it with "${build}"`,
     );
 }
 

@@ -11,6 +11,8 @@ export interface SolveInput {
   target: Float64Array;
   /** Drag, reach: the dragged effector (index into the rig's effectors); the others are pinned. -1: none. */
   dragged: number;
+  /** Time budget of this call, seconds; default the settings' timeoutSeconds (peers/restarting.ts passes what is left). */
+  budgetSeconds?: number;
 }
 
 /**
@@ -25,9 +27,10 @@ export interface RunSettings extends OnTargetTest {
   /** Rig size (rig units; see rigs.ts), for peers whose settings are lengths. */
   rigSize: number;
   /**
-   * Restarts from quasi-random points after a stall (every method of ours outside paper mode; the
-   * peers have none): undefined keeps the solver's default; drag and reach set 0, as the page does
-   * while dragging (a restart jumps the whole pose).
+   * Restarts from quasi-random points after a stall, for every method: ours restart inside the
+   * solver (outside paper mode), the peers through the harness (peers/restarting.ts) from the same
+   * points. undefined: the solvers' default; drag and reach set 0, as the page does while dragging
+   * (a restart jumps the whole pose).
    */
   restarts?: number;
 }

@@ -47,7 +47,7 @@ export function formatStopReasons(counts: Record<string, number>): string {
 export function resultsTable(rows: readonly Row[]): Table {
   const first = rows[0];
   const drag = isDragging(first.experiment);
-  const headers = ['method', 'engine', 'samples', 't_avg', 'iter_avg', 'E_avg', 'E_IQM', 'max E', 'success', 't_median', 't_p95', 't_max'];
+  const headers = ['method', 'engine', 'samples', 'restarts', 't_avg', 'iter_avg', 'E_avg', 'E_IQM', 'max E', 'success', 't_median', 't_p95', 't_max'];
   if (drag) headers.push('unreachable', 'wobble_during avg', 'wobble_during max', 'wobble_after avg', 'wobble_after max', 'jump_max_deg');
   headers.push('stop reasons');
   const numeric = headers.map((h) => !['method', 'engine', 'stop reasons'].includes(h));
@@ -60,6 +60,7 @@ export function resultsTable(rows: readonly Row[]): Table {
         r.method,
         r.engine,
         String(r.samples),
+        String(r.restarts),
         formatNumber(r.t_avg_s),
         formatNumber(r.iter_avg),
         formatNumber(r.E_avg),

@@ -2,7 +2,7 @@
 # Installs what the project needs on a fresh Debian machine and builds the WebAssembly.
 # Idempotent: each step is skipped when its result is already there.
 #   scripts/setup.sh            apt packages for the build, npm packages, the WebAssembly
-#   scripts/setup.sh --native   also the native build (GoogleTest) tools
+#   scripts/setup.sh --native   also the native build (GoogleTest) tools and Orocos KDL (the bench's kdl)
 #   scripts/setup.sh --browser  also Chromium for the browser tests
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -18,7 +18,8 @@ for arg in "$@"; do
 done
 
 packages=(emscripten node-acorn libeigen3-dev cmake ninja-build)
-[ "$want_native" = 1 ] && packages+=(g++ googletest libgtest-dev nlohmann-json3-dev)
+# liborocos-kdl-dev: Orocos KDL, the native bench's kdl method (optional for CMake: without it, no kdl)
+[ "$want_native" = 1 ] && packages+=(g++ googletest libgtest-dev nlohmann-json3-dev liborocos-kdl-dev)
 [ "$want_browser" = 1 ] && packages+=(chromium)
 
 missing=()

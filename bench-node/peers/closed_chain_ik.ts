@@ -165,7 +165,7 @@ export class ClosedChainIkRunner implements Runner {
     this.goals.forEach((g, e) => g.setPosition(input.target[3 * e], input.target[3 * e + 1], input.target[3 * e + 2]));
     let stopReason: string;
     try {
-      stopReason = this.run(t0 + 1000 * this.settings.timeoutSeconds, Infinity);
+      stopReason = this.run(t0 + 1000 * (input.budgetSeconds ?? this.settings.timeoutSeconds), Infinity);
     } catch {
       // The library throws when every free DOF is locked at a limit (an empty matrix product).
       stopReason = 'library_error';

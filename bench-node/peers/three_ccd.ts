@@ -171,7 +171,7 @@ export class ThreeCcdRunner implements Runner {
   }
 
   solve(input: SolveInput): SolveResult {
-    const { timeoutSeconds } = this.settings;
+    const timeoutSeconds = input.budgetSeconds ?? this.settings.timeoutSeconds;
     const from = input.start ? project(this.spec, input.start.slice()) : this.angles.slice(); // for the jump, untimed
     const t0 = performance.now();
     const deadline = t0 + 1000 * timeoutSeconds;

@@ -6,7 +6,10 @@
 //   ik_bench_native --rig RIG.json --method NAME --input JOB.bin --output RESULTS.jsonl
 //                   [--gtol X] [--ftol Y] [--tip-tol Z] [--timeout SECONDS] [--paper] [--restarts N]
 //   ik_bench_native --list-methods     prints the methods it knows (the core's registry, the
-//                                      default first) as a JSON array of names
+//                                      default first, then "kdl" when built with Orocos KDL) as a
+//                                      JSON array of names
+// Method "kdl" (native builds with Orocos KDL only, native/kdl/kdl_solver.h) solves with KDL's
+// tree solvers under the same tolerances, time budget and restarts.
 // --tip-tol Z > 0 makes "on target" every tip within Z (rig units) of its target (SolverOptions::
 // tip_tolerance) instead of E < Y.
 //
@@ -42,6 +45,9 @@
 #include "kinematics.h"
 #include "solvers/solver.h"
 #include "solvers/solver_registry.h"
+#ifdef IK_HAVE_KDL
+#include "../native/kdl/kdl_solver.h"
+#endif
 
 namespace {
 
@@ -153,18 +159,97 @@ double replay_wobble(const Args& args, ik::Kinematics& kin, ik::Kinematics& obse
   return seen == 0 ? after : during;  // no iterate: the start already met a stopping test
 }
 
-// The registry's method names, the default first, as a JSON array on stdout.
-void list_methods() { std::printf("%s\n", nlohmann::json(ik::solver_names()).dump().c_str()); }
+// The registry's method names, the default first, then "kdl" when built with KDL, as a JSON
+// array on stdout.
+void list_methods() {
+  std::vector<std::string> names = ik::solver_names();
+#ifdef IK_HAVE_KDL
+  names.push_back("kdl");
+#endif
+  std::printf("%s\n", nlohmann::json(names).dump().c_str());
+}
+
+// One solve's outcome, whichever method ran it.
+struct Outcome {
+  Eigen::VectorXd angles;  // degrees
+  double E = 0, gradient_norm = 0;
+  int iterations = 0, fevals = 0, jevals = 0;
+  std::string reason;
+  bool valid = true;
+};
+
+// Runs the method named in `args` on `kin`: a core solver from the registry, or KDL's.
+class Method {
+ public:
+  Method(const Args& args, ik::Kinematics& kin) : args_(args), kin_(kin) {
+    if (args.method == "kdl") {
+#ifdef IK_HAVE_KDL
+      kdl_ = std::make_unique<ik::kdl::KdlSolver>(kin.rig(), args.options);
+      return;
+#else
+      throw std::invalid_argument("method kdl: this build has no Orocos KDL (install liborocos-kdl-dev: "
+                                  "scripts/setup.sh --native, then rebuild build/native)");
+#endif
+    }
+    solver_ = ik::make_solver(args.method, kin, args.options);
+  }
+
+  // Solves from `start` (degrees) towards `target` (rig units); `seconds` is steady_clock around
+  // the solver's call alone (copying the outcome out is not timed).
+  Outcome solve(const Eigen::VectorXd& start, const Eigen::VectorXd& target, double& seconds) {
+    const auto t0 = std::chrono::steady_clock::now();
+#ifdef IK_HAVE_KDL
+    if (kdl_) {
+      const ik::kdl::KdlSummary& s = kdl_->solve(start, target);
+      seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      return {s.angles, s.E, s.gradient_norm, s.iterations, s.function_evaluations, s.jacobian_evaluations, s.stop_reason,
+              s.stop_reason != "invalid_input"};
+    }
+#endif
+    const ik::SolverSummary& s = solver_->solve(start, target);
+    seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    return {s.angles, s.E, s.gradient_norm, s.iterations, s.function_evaluations, s.jacobian_evaluations,
+            ik::stop_reason_name(s.stop_reason), s.stop_reason != ik::StopReason::invalid_input};
+  }
+
+  // Wobble during a solve of `iterations` iterations from `start` that ended `after` (rig units)
+  // off the pinned targets (see replay_wobble).
+  double wobble(ik::Kinematics& observer, const Eigen::VectorXd& start, const Eigen::VectorXd& target, int dragged,
+                int iterations, double after, Eigen::VectorXd& tips) {
+#ifdef IK_HAVE_KDL
+    if (kdl_) {
+      ik::SolverOptions options = args_.options;
+      options.max_iterations = iterations;
+      options.time_budget_s = 0;
+      ik::kdl::KdlSolver replay(kin_.rig(), options);
+      double during = 0;
+      replay.solve(start, target, [&](const Eigen::VectorXd& angles) {
+        during = std::max(during, largest_distance(observer, angles, target, dragged, tips));
+      });
+      return iterations == 0 ? after : during;
+    }
+#endif
+    return replay_wobble(args_, kin_, observer, start, target, dragged, iterations, after, tips);
+  }
+
+ private:
+  const Args& args_;
+  ik::Kinematics& kin_;
+  std::unique_ptr<ik::Solver> solver_;
+#ifdef IK_HAVE_KDL
+  std::unique_ptr<ik::kdl::KdlSolver> kdl_;
+#endif
+};
 
 void run(const Args& args) {
   if (args.list_methods) return list_methods();
   ik::Kinematics kin(ik::load_a7_rig(args.rig));
   ik::Kinematics observer(kin.rig());  // poses for wobble, so the solver's own rig is never disturbed
+  Method method(args, kin);  // first: an unknown method is the first error
   const Job job = read_job(args.input);
   if (job.num_angles != kin.num_angles() || job.num_residuals != kin.num_residuals())
     throw std::runtime_error(args.input + ": sizes do not match the rig (" + std::to_string(kin.num_angles()) +
                              " angles, " + std::to_string(kin.num_residuals()) + " residuals)");
-  std::unique_ptr<ik::Solver> solver = ik::make_solver(args.method, kin, args.options);
   std::FILE* out = std::fopen(args.output.c_str(), "w");
   if (!out) throw std::runtime_error(args.output + ": cannot write");
 
@@ -178,21 +263,20 @@ void run(const Args& args) {
     start = chained ? previous : Eigen::Map<const Eigen::VectorXd>(rec + 2, job.num_angles);
     target = Eigen::Map<const Eigen::VectorXd>(rec + 2 + job.num_angles, job.num_residuals);
 
-    const auto t0 = std::chrono::steady_clock::now();
-    const ik::SolverSummary& s = solver->solve(start, target);
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    double seconds = 0;
+    const Outcome s = method.solve(start, target, seconds);
     previous = s.angles;
     const double E = s.E, gradient_norm = s.gradient_norm;
-    const int iterations = s.iterations, fevals = s.function_evaluations, jevals = s.jacobian_evaluations;
-    const std::string reason = ik::stop_reason_name(s.stop_reason);
+    const int iterations = s.iterations, fevals = s.fevals, jevals = s.jevals;
+    const std::string& reason = s.reason;
 
-    const bool valid = s.stop_reason != ik::StopReason::invalid_input;
+    const bool valid = s.valid;
     const double tip_distance = valid ? largest_distance(observer, previous, target, -1, tips) : nan;
     const double jump = valid ? (previous - start).cwiseAbs().maxCoeff() : nan;
     double during = nan, after = nan;
     if (dragged >= 0 && kin.num_effectors() > 1 && valid) {
       after = largest_distance(observer, previous, target, dragged, tips);
-      during = replay_wobble(args, kin, observer, start, target, dragged, iterations, after, tips);
+      during = method.wobble(observer, start, target, dragged, iterations, after, tips);
     }
     const nlohmann::json line = {{"E", E}, {"gradient_norm", gradient_norm}, {"iterations", iterations},
                                  {"function_evaluations", fevals}, {"jacobian_evaluations", jevals},

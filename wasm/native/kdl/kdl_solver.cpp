@@ -1,0 +1,238 @@
+#include "kdl_solver.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <kdl/jacobian.hpp>
+#include <kdl/treefksolverpos_recursive.hpp>
+#include <kdl/treeiksolvervel_wdls.hpp>
+#include <kdl/treejnttojacsolver.hpp>
+#include <limits>
+
+#include "../../src/kinematics.h"
+#include "../../src/solvers/restarts.h"
+#include "kdl_rig.h"
+
+namespace ik::kdl {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// Largest step of one joint per iteration, radians: a full Newton-Raphson step from a straight
+// limb can swing a joint by many turns (KDL's NR_JL takes it whole; the clamp then pins it).
+constexpr double kMaxStepRad = 0.5;
+// A step whose largest joint change (radians) is below this moves nothing: the run is stuck.
+constexpr double kZeroStepRad = 1e-12;
+// Damping of KDL's wdls velocity solver (its singular values are rig units per radian), as a
+// fraction of the rig's reach: each run starts at kInitialDamping; a step that lowers E divides it
+// by kDampingFactor (down to kMinDamping), one that does not is tried again with it multiplied,
+// up to kMaxRejections times (Levenberg-Marquardt's rule); then the run has stalled.
+constexpr double kInitialDamping = 0.1;
+constexpr double kMinDamping = 1e-3;
+constexpr double kDampingFactor = 3;
+constexpr int kMaxRejections = 10;
+
+// The longest chain from the root to an effector's tip, rig units (bone lengths plus the offsets
+// between joints).
+double reach(const Rig& rig) {
+  double longest = 0;
+  for (int e : rig.effectors) {
+    double length = 0;
+    for (int b = e; b != -1; b = rig.bones[b].parent) {
+      length += rig.bones[b].length;
+      const int p = rig.bones[b].parent;
+      if (p != -1) length += (rig.bones[b].rest.block<3, 1>(0, 3) - rig.bones[p].rest.block<3, 1>(0, 3)).norm();
+    }
+    longest = std::max(longest, length);
+  }
+  return longest > 0 ? longest : 1;
+}
+
+}  // namespace
+
+struct KdlSolver::State {
+  KdlRig rig;
+  KDL::TreeFkSolverPos_recursive fk;
+  KDL::TreeIkSolverVel_wdls vel;
+  KDL::TreeJntToJacSolver jac_solver;
+  KDL::JntArray q, q_next, qdot;
+  KDL::Twists twists;
+  KDL::Jacobian jac;
+  Eigen::VectorXd lower, upper, angles, best, r, tips;
+  Eigen::VectorXd r_q;  // the residual at q, which step() moves from
+  Restarts restarts;
+  double reach_ = 1, damping = 0, min_damping = 0;
+
+  // Sets the damping of KDL's velocity solver (rig units).
+  void set_damping(double lambda) {
+    damping = lambda;
+    vel.setLambda(lambda);
+  }
+
+  explicit State(const Rig& r_in)
+      : rig(make_kdl_rig(r_in)), fk(rig.tree), vel(rig.tree, rig.tip_segments), jac_solver(rig.tree) {
+    const int n = rig.num_angles(), m = 3 * static_cast<int>(rig.tip_segments.size());
+    lower.resize(n);
+    upper.resize(n);
+    for (size_t i = 0; i < r_in.bones.size(); ++i) {
+      lower.segment<3>(3 * i) = r_in.bones[i].min_deg;
+      upper.segment<3>(3 * i) = r_in.bones[i].max_deg;
+    }
+    angles.resize(n);
+    best.resize(n);
+    r.resize(m);
+    r_q.resize(m);
+    tips.resize(m);
+    q.resize(rig.num_joints());
+    q_next.resize(rig.num_joints());
+    qdot.resize(rig.num_joints());
+    jac.resize(rig.num_joints());
+    Eigen::MatrixXd weights = Eigen::MatrixXd::Zero(2 * m, 2 * m);  // 6 rows per effector
+    for (int e = 0; e < m / 3; ++e) weights.block<3, 3>(6 * e, 6 * e).setIdentity();  // rotation rows: 0
+    vel.setWeightTS(weights);
+    reach_ = reach(r_in);
+    min_damping = kMinDamping * reach_;
+    for (const std::string& t : rig.tip_segments) twists[t] = KDL::Twist::Zero();
+  }
+
+  // Tips at `q` into `tips`, residual r = tips - targets; returns E = 1/2 |r|^2.
+  double evaluate(const KDL::JntArray& at, const Eigen::VectorXd& targets) {
+    KDL::Frame f;
+    for (size_t e = 0; e < rig.tip_segments.size(); ++e) {
+      fk.JntToCart(at, f, rig.tip_segments[e]);
+      tips.segment<3>(3 * e) << f.p.x(), f.p.y(), f.p.z();
+    }
+    r = tips - targets;
+    return 0.5 * r.squaredNorm();
+  }
+
+  // Largest distance of a tip from its target after evaluate().
+  double tip_distance() const {
+    double worst = 0;
+    for (int e = 0; e < r.size() / 3; ++e) worst = std::max(worst, r.segment<3>(3 * e).norm());
+    return worst;
+  }
+
+  // |J^T r| in rig units^2 per degree over the free angles at `at` (after evaluate(at)).
+  double gradient_norm(const KDL::JntArray& at) {
+    Eigen::VectorXd g = Eigen::VectorXd::Zero(rig.num_joints());
+    for (size_t e = 0; e < rig.tip_segments.size(); ++e) {
+      jac_solver.JntToJac(at, jac, rig.tip_segments[e]);
+      g += jac.data.topRows<3>().transpose() * r.segment<3>(3 * e);
+    }
+    return g.norm() * kRadPerDeg;
+  }
+
+  // Newton-Raphson step from q by the residual r_q into q_next, clamped to the limits; returns
+  // the largest joint change (radians).
+  double step() {
+    for (size_t e = 0; e < rig.tip_segments.size(); ++e)
+      twists[rig.tip_segments[e]] = KDL::Twist(KDL::Vector(-r_q[3 * e], -r_q[3 * e + 1], -r_q[3 * e + 2]), KDL::Vector::Zero());
+    vel.CartToJnt(q, twists, qdot);
+    const double largest = qdot.data.size() ? qdot.data.cwiseAbs().maxCoeff() : 0.0;
+    if (!std::isfinite(largest)) return 0;  // a failed solve moves nothing
+    const double scale = largest > kMaxStepRad ? kMaxStepRad / largest : 1.0;
+    q_next.data = (q.data + scale * qdot.data).cwiseMax(rig.q_min.data).cwiseMin(rig.q_max.data);
+    return (q_next.data - q.data).cwiseAbs().maxCoeff();
+  }
+};
+
+KdlSolver::KdlSolver(const Rig& rig, const SolverOptions& options)
+    : s_(std::make_unique<State>(rig)), options_(options) {}
+
+KdlSolver::~KdlSolver() = default;
+
+const KdlSummary& KdlSolver::solve(const Eigen::VectorXd& start, const Eigen::VectorXd& targets,
+                                   const std::function<void(const Eigen::VectorXd&)>& on_iterate) {
+  State& s = *s_;
+  const SolverOptions& o = options_;
+  const auto t0 = Clock::now();
+  KdlSummary& out = summary_;
+  out = KdlSummary();
+  if (start.size() != s.rig.num_angles() || targets.size() != s.r.size() || !start.allFinite() || !targets.allFinite()) {
+    out.stop_reason = "invalid_input";
+    out.message = "start or targets: wrong length or not finite";
+    out.angles = start;
+    return out;
+  }
+  const bool timed = o.time_budget_s > 0 && std::isfinite(o.time_budget_s);
+  auto out_of_time = [&] { return timed && std::chrono::duration<double>(Clock::now() - t0).count() >= o.time_budget_s; };
+  auto on_target = [&](double E) { return o.tip_tolerance > 0 ? s.tip_distance() < o.tip_tolerance : E < o.error_tolerance; };
+
+  s.angles = start.cwiseMax(s.lower).cwiseMin(s.upper);
+  s.restarts.begin_solve(s.rig.num_angles(), o.seed);
+  double best_E = std::numeric_limits<double>::infinity();
+  auto consider = [&](double E) {  // keeps the best point
+    if (E < best_E) {
+      best_E = E;
+      joints_to_angles(s.rig, s.q, s.best);
+    }
+  };
+  std::string reason;
+  while (true) {  // one run per start point
+    angles_to_joints(s.rig, s.angles, s.q);
+    s.set_damping(kInitialDamping * s.reach_);
+    double E = s.evaluate(s.q, targets);
+    s.r_q = s.r;
+    ++out.function_evaluations;
+    consider(E);
+    std::string run_end;
+    while (run_end.empty()) {
+      if (on_target(E)) run_end = "converged_E";
+      else if (out.iterations >= o.max_iterations) run_end = "max_iterations";
+      else if (out_of_time()) run_end = "timeout";
+      if (!run_end.empty()) break;
+      const double moved = s.step();
+      ++out.jacobian_evaluations;
+      if (moved < kZeroStepRad) {
+        run_end = "zero_step";
+        break;
+      }
+      double E_next = s.evaluate(s.q_next, targets);
+      ++out.function_evaluations;
+      for (int tries = 0; E_next >= E && tries < kMaxRejections; ++tries) {  // more damping, shorter step
+        s.set_damping(s.damping * kDampingFactor);
+        if (s.step() < kZeroStepRad) break;
+        ++out.jacobian_evaluations;
+        E_next = s.evaluate(s.q_next, targets);
+        ++out.function_evaluations;
+      }
+      if (E_next >= E) {
+        s.r = s.r_q;  // the residual of the point kept
+        run_end = "zero_step";
+        break;
+      }
+      s.set_damping(std::max(s.damping / kDampingFactor, s.min_damping));
+      std::swap(s.q, s.q_next);
+      s.r_q = s.r;
+      E = E_next;
+      ++out.iterations;
+      consider(E);
+      if (on_iterate) {
+        joints_to_angles(s.rig, s.q, s.angles);
+        on_iterate(s.angles);
+      }
+      if (s.restarts.stalls(E, o.stall_iterations)) run_end = "zero_step";  // no lower E for a while
+    }
+    reason = run_end;
+    const long restarts = o.paper_mode ? 0 : o.restarts;  // as the core: none in paper mode
+    const bool again = run_end == "zero_step" && s.restarts.used() < restarts && !out_of_time() &&
+                       out.iterations < o.max_iterations;
+    if (!again) break;
+    s.restarts.next_start(s.lower, s.upper, s.angles);
+    ++out.restarts;
+    ++out.iterations;
+  }
+  // Describe the best point.
+  out.angles = s.best;
+  angles_to_joints(s.rig, s.best, s.q);
+  out.E = s.evaluate(s.q, targets);
+  out.tip_distance = s.tip_distance();
+  out.gradient_norm = s.gradient_norm(s.q);
+  out.reached = on_target(out.E);
+  out.stop_reason = out.reached ? "converged_E" : reason == "converged_E" ? "zero_step" : reason;
+  return out;
+}
+
+}  // namespace ik::kdl
