@@ -8,21 +8,12 @@ import { Matrix4, Vector3, type Object3D } from 'three';
 
 import type { RigSpec } from '../ik/rig_spec.js';
 import type { GltfRigInfo } from '../rig/gltf_rig.js';
+import { fromRowMajor } from './row_major.js';
 
 const _parentInv = new Matrix4();
 const _pose = new Matrix4();
 const _local = new Matrix4();
 const _tip = new Vector3();
-
-function fromRowMajor(out: Matrix4, a: ArrayLike<number>, offset: number): Matrix4 {
-  const o = offset;
-  return out.set(
-    a[o], a[o + 1], a[o + 2], a[o + 3],
-    a[o + 4], a[o + 5], a[o + 6], a[o + 7],
-    a[o + 8], a[o + 9], a[o + 10], a[o + 11],
-    a[o + 12], a[o + 13], a[o + 14], a[o + 15],
-  );
-}
 
 export class PoseWriter {
   /** restLocal_i * restWorld_i^-1 per bone. */

@@ -17,6 +17,7 @@ import {
 } from 'three';
 
 import type { RigSpec } from '../ik/rig_spec.js';
+import { fromRowMajor } from '../three/row_major.js';
 
 /** A skinned mesh posed from the rig's bone poses (the glTF write-back of web/src/three/). */
 export interface MeshBinding {
@@ -37,18 +38,6 @@ const mRest = new Matrix4();
 const mBone = new Matrix4();
 const mScale = new Matrix4();
 const v = new Vector3();
-
-/** Copies the row-major 4x4 at `offset` of `src` into a three.js (column-major) matrix. */
-export function setRowMajor(out: Matrix4, src: ArrayLike<number>, offset: number): Matrix4 {
-  const s = src;
-  const o = offset;
-  return out.set(
-    s[o], s[o + 1], s[o + 2], s[o + 3],
-    s[o + 4], s[o + 5], s[o + 6], s[o + 7],
-    s[o + 8], s[o + 9], s[o + 10], s[o + 11],
-    s[o + 12], s[o + 13], s[o + 14], s[o + 15],
-  );
-}
 
 /** An elongated octahedron from (0,0,0) to (1,0,0), the classic bone glyph. */
 function boneGeometry(): BufferGeometry {
@@ -198,8 +187,8 @@ export class RigView {
 
   /** T_i * rest_i from the row-major pose array and the spec's rest transforms. */
   private frameOf(poses: Float64Array, i: number, out: Matrix4): Matrix4 {
-    setRowMajor(mPose, poses, 16 * i);
-    setRowMajor(mRest, this.spec.rest, 16 * i);
+    fromRowMajor(mPose, poses, 16 * i);
+    fromRowMajor(mRest, this.spec.rest, 16 * i);
     return out.multiplyMatrices(mPose, mRest);
   }
 
