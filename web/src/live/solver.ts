@@ -24,6 +24,13 @@ export interface SolveSettings {
 /** What a solve or a step reached (angles in degrees, distances in rig units, see SolverResult). */
 export type SolveOutcome = SolverResult;
 
+/** Whether `a` and `b` hold the same settings (no allocation: called every frame). */
+function sameSettings(a: SolveSettings, b: SolveSettings): boolean {
+  let key: keyof SolveSettings;
+  for (key in b) if (a[key] !== b[key]) return false;
+  return true;
+}
+
 export class MethodSolver {
   private readonly solver: IkSolver;
   private readonly sent: SolveSettings = { gradientTolerance: NaN, tipTolerance: NaN, maxIterations: NaN, timeBudgetMs: NaN, restarts: NaN, paperMode: false };
@@ -73,12 +80,7 @@ export class MethodSolver {
   }
 
   private configure(s: SolveSettings): void {
-    const t = this.sent;
-    if (
-      t.gradientTolerance === s.gradientTolerance && t.tipTolerance === s.tipTolerance && t.maxIterations === s.maxIterations &&
-      t.timeBudgetMs === s.timeBudgetMs && t.restarts === s.restarts && t.paperMode === s.paperMode
-    )
-      return;
+    if (sameSettings(this.sent, s)) return;
     this.solver.setOptions({
       gradientTolerance: s.gradientTolerance,
       tipTolerance: s.tipTolerance,
@@ -87,11 +89,6 @@ export class MethodSolver {
       restarts: s.restarts,
       paperMode: s.paperMode,
     });
-    t.gradientTolerance = s.gradientTolerance;
-    t.tipTolerance = s.tipTolerance;
-    t.maxIterations = s.maxIterations;
-    t.timeBudgetMs = s.timeBudgetMs;
-    t.restarts = s.restarts;
-    t.paperMode = s.paperMode;
+    Object.assign(this.sent, s);
   }
 }
