@@ -23,6 +23,8 @@ export interface EmbindRig {
   upper(): Float64Array;
   tips(angles: Float64Array): Float64Array | null;
   boneTips(angles: Float64Array): Float64Array | null;
+  /** 4 per effector: its bone frame's rotation as a unit quaternion x, y, z, w. */
+  tipRotations(angles: Float64Array): Float64Array | null;
   poses(angles: Float64Array): Float64Array | null;
   jacobian(angles: Float64Array): Float64Array | null;
   finiteDifferenceJacobian(angles: Float64Array, hDeg: number, clamp: boolean): Float64Array | null;
@@ -64,6 +66,10 @@ export interface EmbindSolver {
   readonly running: boolean;
   setOptions(options: EmbindSolverOptions): boolean;
   options(): EmbindSolverOptions;
+  /** Goals for the next start()/solveIo(): 6 per effector [positionWeight, orientationWeight, qx, qy, qz, qw]; the target gives positions. */
+  setGoals(packed: Float64Array, lengthScale: number): boolean;
+  clearGoals(): void;
+  readonly hasGoals: boolean;
   start(angles: Float64Array, target: Float64Array): string;
   step(): boolean;
   result(): EmbindSolverResult;

@@ -4,6 +4,7 @@
 #include <emscripten/bind.h>
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -82,6 +83,19 @@ val RigBinding::bone_tips(const val& angles) {
     std::vector<double>& out = scratch_;
     out.resize(3 * kin_.num_bones());
     for (int i = 0; i < kin_.num_bones(); ++i) Eigen::Map<Eigen::Vector3d>(out.data() + 3 * i) = kin_.tip(i);
+    return copy_out(out.data(), out.size());
+  }, val::null());
+}
+
+val RigBinding::tip_rotations(const val& angles) {
+  return guarded([&] {
+    kin_.forward(read_angles(angles));
+    std::vector<double>& out = scratch_;
+    out.resize(4 * kin_.num_effectors());
+    for (int e = 0; e < kin_.num_effectors(); ++e) {
+      const Eigen::Quaterniond q(kin_.tip_rotation(kin_.rig().effectors[e]));
+      Eigen::Map<Eigen::Vector4d>(out.data() + 4 * e) = q.coeffs();  // x, y, z, w
+    }
     return copy_out(out.data(), out.size());
   }, val::null());
 }
@@ -203,6 +217,7 @@ EMSCRIPTEN_BINDINGS(ik_kinematics) {
       .function("upper", &RigBinding::upper)
       .function("tips", &RigBinding::tips)
       .function("boneTips", &RigBinding::bone_tips)
+      .function("tipRotations", &RigBinding::tip_rotations)
       .function("poses", &RigBinding::poses)
       .function("jacobian", &RigBinding::jacobian)
       .function("finiteDifferenceJacobian", &RigBinding::finite_difference_jacobian)

@@ -32,6 +32,9 @@ class RigBinding {
   // All take angles as 3m numbers in degrees.
   emscripten::val tips(const emscripten::val& angles);       // Float64Array(3n)
   emscripten::val bone_tips(const emscripten::val& angles);  // Float64Array(3m), every bone's tip
+  // Float64Array(4n): each effector bone's frame rotation (Kinematics::tip_rotation) as a unit
+  // quaternion x, y, z, w (the orientation an orientation goal targets).
+  emscripten::val tip_rotations(const emscripten::val& angles);
   emscripten::val poses(const emscripten::val& angles);      // Float64Array(16m), row-major T_i
   emscripten::val jacobian(const emscripten::val& angles);   // Float64Array(3n*3m), row-major, per degree
   emscripten::val finite_difference_jacobian(const emscripten::val& angles, double h_deg, bool clamp);

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "goal_input.h"
 #include "js_arrays.h"
 #include "rig_binding.h"
 #include "solver_options.h"
@@ -73,6 +74,24 @@ class SolverBinding {
 
   // The default options, every field (their names are the options a solver takes).
   static val default_options() { return write_options(SolverOptions()); }
+
+  // Goals beyond plain positions for the following start() and solve_io() calls (goal_input.h:
+  // kGoalStride numbers per end effector; length_scale rig units per radian, 0: the rig's reach).
+  // The target still gives the positions. False (the old goals kept) if refused.
+  bool set_goals(const val& packed, double length_scale) {
+    return guarded([&] {
+      std::vector<double> numbers;
+      copy_in(packed, js_length(packed, "goals"), numbers, "goals");
+      goal_input_.set(rig_.kinematics(), numbers, length_scale);
+      has_goals_ = true;
+      return true;
+    }, false);
+  }
+
+  // Back to plain position goals of weight 1.
+  void clear_goals() { has_goals_ = false; }
+
+  bool has_goals() const { return has_goals_; }
 
   // Begins a solve: angles (3 per bone, degrees), target (3 per end effector, rig units).
   // Returns the stop reason after the start ("running" unless already converged), "" on failure.
@@ -199,8 +218,11 @@ class SolverBinding {
   // Copies the arrays in and starts; throws for wrong lengths and for invalid_input.
   void begin(const val& angles, const val& target) {
     take(angles, target);
-    solver_->start(Eigen::Map<const Eigen::VectorXd>(angles_.data(), angles_.size()),
-                   Eigen::Map<const Eigen::VectorXd>(target_.data(), target_.size()));
+    const Eigen::Map<const Eigen::VectorXd> a(angles_.data(), angles_.size());
+    if (has_goals_)
+      solver_->start(a, goal_input_.with_positions(rig_.kinematics(), target_.data()));
+    else
+      solver_->start(a, Eigen::Map<const Eigen::VectorXd>(target_.data(), target_.size()));
     throw_if_invalid();
   }
 
@@ -215,8 +237,11 @@ class SolverBinding {
   // lengths already checked; throws for invalid_input.
   const SolverSummary& solve_on(const double* angles, const double* target) {
     const Kinematics& kin = rig_.kinematics();
-    solver_->solve(Eigen::Map<const Eigen::VectorXd>(angles, kin.num_angles()),
-                   Eigen::Map<const Eigen::VectorXd>(target, kin.num_residuals()));
+    const Eigen::Map<const Eigen::VectorXd> a(angles, kin.num_angles());
+    if (has_goals_)
+      solver_->solve(a, goal_input_.with_positions(kin, target));
+    else
+      solver_->solve(a, Eigen::Map<const Eigen::VectorXd>(target, kin.num_residuals()));
     throw_if_invalid();
     return solver_->summary();
   }
@@ -236,6 +261,8 @@ class SolverBinding {
   std::unique_ptr<Solver> solver_;
   std::vector<double> angles_, target_;
   std::vector<double> io_;  // solve_io(): angles | target | result numbers
+  GoalInput goal_input_;
+  bool has_goals_ = false;
   int io_n_ = 0, io_m_ = 0;
 };
 
@@ -270,6 +297,9 @@ EMSCRIPTEN_BINDINGS(ik_solvers) {
       .property("running", &SolverBinding::running)
       .function("setOptions", &SolverBinding::set_options)
       .function("options", &SolverBinding::options)
+      .function("setGoals", &SolverBinding::set_goals)
+      .function("clearGoals", &SolverBinding::clear_goals)
+      .property("hasGoals", &SolverBinding::has_goals)
       .function("start", &SolverBinding::start)
       .function("step", &SolverBinding::step)
       .function("result", &SolverBinding::result)

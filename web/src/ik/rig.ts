@@ -87,6 +87,15 @@ export class IkRig {
     return this.checked(this.live().boneTips(a), 'boneTips');
   }
 
+  /**
+   * Each end effector's bone-frame rotation at `angles` as a unit quaternion [x, y, z, w], 4 per
+   * effector in effector order: what an orientation goal (goals.ts) compares with.
+   */
+  tipRotations(angles: Numbers): Float64Array {
+    const a = this.angles(angles);
+    return this.checked(this.live().tipRotations(a), 'tipRotations');
+  }
+
   /** Every bone's pose transform T_i (16 per bone, row-major, rest space -> posed world). */
   poses(angles: Numbers): Float64Array {
     const a = this.angles(angles);

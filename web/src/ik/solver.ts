@@ -1,8 +1,10 @@
 // The IK solvers living in WebAssembly: one method (lm, gn, bfgs, newton, gd) bound to one rig.
 // Angles are 3 numbers per bone in DEGREES (XZX); targets are 3 numbers per end effector in rig
-// units; E = 1/2 |tips - target|^2. The object owns WebAssembly memory: call dispose() when done,
-// and dispose it before its rig.
+// units; E = 1/2 |tips - target|^2. In place of a target, start() and solve() take Goals
+// (goals.ts): positions and orientations per effector, with weights. The object owns
+// WebAssembly memory: call dispose() when done, and dispose it before its rig.
 import type { EmbindSolver, EmbindSolverOptions, EmbindSolverResult, IkCoreModule } from './generated/ik_core.mjs';
+import { isGoals, packGoals, type Goals } from './goals.js';
 import { checkedNumbers, coreError, plainOptions, toFloat64 } from './inputs.js';
 import type { IkRig, Numbers } from './rig.js';
 
@@ -174,6 +176,8 @@ export class IkSolver {
   private disposed = false;
   /** solve()'s buffer in WebAssembly memory: angles | target | the result numbers (ModuleFacts.io). */
   private io: Float64Array<ArrayBufferLike> = new Float64Array(0);
+  /** The goals last handed to the core (undefined: plain targets), to skip handing them again. */
+  private goals?: { packed: Float64Array; lengthScale: number; effectors: string };
 
   /** The methods this build registers, in display order (lm, the default, first). */
   static methods(module: IkCoreModule): SolverMethod[] {
@@ -226,13 +230,13 @@ export class IkSolver {
   }
 
   /**
-   * Begins a solve from `angles` towards `target` (3 numbers per current end effector). Returns
-   * 'running', or 'converged_E' / 'converged_grad' if the start already meets a tolerance.
-   * Throws an Error for wrong lengths, non-finite numbers or out-of-range options.
+   * Begins a solve from `angles` towards `target` (3 numbers per current end effector) or `goals`.
+   * Returns 'running', or 'converged_E' / 'converged_grad' if the start already meets a tolerance.
+   * Throws an Error for wrong lengths, non-finite numbers, bad goals or out-of-range options.
    */
-  start(angles: Numbers, target: Numbers): StopReason {
+  start(angles: Numbers, target: Numbers | Goals): StopReason {
     const a = toFloat64(angles, 'angles', this.rig.numAngles);
-    const t = toFloat64(target, 'target', 3 * this.rig.numEffectors);
+    const t = this.useGoals(target);
     const reason = this.live().start(a, t);
     if (!reason) throw coreError(this.rig.module, 'start');
     return reason as StopReason;
@@ -254,13 +258,13 @@ export class IkSolver {
    * returned as `angles` (no new array per call; it may be `angles` itself). Otherwise `angles` is
    * a new array.
    */
-  solve(angles: Numbers, target: Numbers, out?: Float64Array): SolverResult {
+  solve(angles: Numbers, target: Numbers | Goals, out?: Float64Array): SolverResult {
     this.live();
     const n = this.rig.numAngles, m = 3 * this.rig.numEffectors;
     if (out !== undefined && !(out instanceof Float64Array && out.length === n))
       throw new Error(`out must be a Float64Array of ${n} numbers (the angles)`);
     const a = checkedNumbers(angles, 'angles', n);
-    const t = checkedNumbers(target, 'target', m);
+    const t = this.useGoals(target);
     const handle = this.live(); // reading a Proxy may have disposed it
     if (3 * this.rig.numEffectors !== m) throw new Error('the end effectors changed while the target was being read');
     const facts = moduleFacts(this.rig.module);
@@ -311,6 +315,31 @@ export class IkSolver {
     if (this.disposed) return;
     this.disposed = true;
     this.handle.delete();
+  }
+
+  /**
+   * Hands `target`'s goals to the core (only when they changed since the last call), or clears
+   * them for a plain target. Returns the target positions (3 per effector), checked.
+   */
+  private useGoals(target: Numbers | Goals): ArrayLike<number> {
+    const handle = this.live();
+    if (!isGoals(target)) {
+      const t = checkedNumbers(target, 'target', 3 * this.rig.numEffectors);
+      if (this.goals) {
+        handle.clearGoals();
+        this.goals = undefined;
+      }
+      return t;
+    }
+    const { packed, target: positions, lengthScale } = packGoals(this.rig, target);
+    const last = this.goals;
+    const same = last !== undefined && last.lengthScale === lengthScale && last.effectors === this.rig.effectors().join() &&
+      last.packed.length === packed.length && last.packed.every((x, i) => x === packed[i]);
+    if (!same) {
+      if (!handle.setGoals(packed, lengthScale)) throw coreError(this.rig.module, 'setGoals');
+      this.goals = { packed, lengthScale, effectors: this.rig.effectors().join() };
+    }
+    return positions;
   }
 
   /** The solve buffer for n angles, m target numbers and `stats` result numbers (asked anew when stale or resized). */

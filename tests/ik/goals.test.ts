@@ -1,0 +1,203 @@
+// Goals beyond tip positions through the TypeScript API (web/src/ik/goals.ts): pose goals reached
+// and checked against forward kinematics, orientation-only and weighted goals, the goal cache
+// between solves, and every malformed goal refused with its field named.
+import { beforeAll, describe, expect, it } from 'vitest';
+
+import type { IkCoreModule } from '../../web/src/ik/module.js';
+import { orientationErrorsDeg, type Goals } from '../../web/src/ik/goals.js';
+import { loadIkNode } from '../../web/src/ik/node.js';
+import { IkRig } from '../../web/src/ik/rig.js';
+import { IkSolver } from '../../web/src/ik/solver.js';
+import { rigSize } from '../../web/src/rig/tolerances.js';
+import { loadTestRig, randomAngles, seeded, testRigs } from '../helpers/a7.js';
+import { disposeAfterAll } from '../helpers/owned.js';
+import { sketchRig, straightLimb } from '../helpers/rig_builder.js';
+
+let ik: IkCoreModule;
+const keep = disposeAfterAll();
+
+beforeAll(async () => {
+  ik = await loadIkNode();
+});
+
+/** Row-major 3x3 rotation of a unit quaternion [x, y, z, w]. */
+function quatToMatrix(q: ArrayLike<number>): number[] {
+  const [x, y, z, w] = [q[0], q[1], q[2], q[3]];
+  return [
+    1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w),
+    2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w),
+    2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y),
+  ];
+}
+
+/** Pose goals (position and orientation of every effector) that `angles` reaches exactly. */
+function poseGoalsAt(rig: IkRig, angles: Float64Array): Goals {
+  const tips = rig.tips(angles), q = rig.tipRotations(angles);
+  return {
+    effectors: Array.from(rig.effectors(), (bone, e) => ({
+      bone,
+      position: tips.subarray(3 * e, 3 * e + 3),
+      orientation: q.subarray(4 * e, 4 * e + 4),
+    })),
+  };
+}
+
+describe('tipRotations', () => {
+  it.each(testRigs.map((r) => [r.label, r] as const))('equals the pose times the rest rotation on %s', (_, testRig) => {
+    const rig = keep(new IkRig(ik, loadTestRig(testRig)));
+    const angles = randomAngles(rig.spec, seeded(3));
+    const q = rig.tipRotations(angles), poses = rig.poses(angles);
+    Array.from(rig.effectors()).forEach((bone, e) => {
+      const quat = q.subarray(4 * e, 4 * e + 4);
+      expect(Math.hypot(...quat)).toBeCloseTo(1, 12);
+      const R = quatToMatrix(quat);
+      for (let r = 0; r < 3; r++)
+        for (let c = 0; c < 3; c++) {
+          let expected = 0;
+          for (let k = 0; k < 3; k++) expected += poses[16 * bone + 4 * r + k] * rig.spec.rest[16 * bone + 4 * k + c];
+          expect(R[3 * r + c]).toBeCloseTo(expected, 10);
+        }
+    });
+  });
+});
+
+describe('pose goals', () => {
+  it.each(testRigs.map((r) => [r.label, r] as const))('lm reaches reachable pose goals on %s, checked by forward kinematics', (_, testRig) => {
+    const rig = keep(new IkRig(ik, loadTestRig(testRig)));
+    const size = rigSize(rig.boneTips(new Float64Array(rig.numAngles)));
+    const tipTolerance = 1e-3 * size;
+    const solver = keep(new IkSolver(rig, 'lm', { tipTolerance, orientationToleranceDeg: 0.5, timeBudgetSeconds: 0, maxIterations: 20000 }));
+    const rng = seeded(17);
+    let start = randomAngles(rig.spec, rng);
+    for (let k = 0; k < 6; k++) {
+      // Incremental: each target a small move away from where the last solve ended.
+      const goalAngles = start.map((a, i) => Math.min(rig.upper[i], Math.max(rig.lower[i], a + 20 * (rng() - 0.5))));
+      const goals = poseGoalsAt(rig, goalAngles);
+      const result = solver.solve(start, goals);
+      expect(result.stopReason).toBe('converged_E');
+      const tips = rig.tips(result.angles);
+      goals.effectors.forEach((g, e) => {
+        const p = g.position!;
+        expect(Math.hypot(tips[3 * e] - p[0], tips[3 * e + 1] - p[1], tips[3 * e + 2] - p[2])).toBeLessThan(tipTolerance);
+      });
+      for (const err of orientationErrorsDeg(rig, result.angles, goals)) expect(err).toBeLessThan(0.5);
+      expect(result.angles.every((x, i) => x >= rig.lower[i] && x <= rig.upper[i])).toBe(true);
+      start = result.angles;
+    }
+  });
+
+  it('position goals of weight 1 solve exactly as the plain target array', () => {
+    const rig = keep(new IkRig(ik, loadTestRig(testRigs.find((r) => r.name === 'knight')!)));
+    const solver = keep(new IkSolver(rig, 'lm', { timeBudgetSeconds: 0 }));
+    const start = randomAngles(rig.spec, seeded(5));
+    const target = rig.tips(randomAngles(rig.spec, seeded(6)));
+    const plain = solver.solve(start, target);
+    const goals: Goals = { effectors: Array.from(rig.effectors(), (bone, e) => ({ bone, position: target.subarray(3 * e, 3 * e + 3) })) };
+    const viaGoals = solver.solve(start, goals);
+    expect(Array.from(viaGoals.angles)).toEqual(Array.from(plain.angles));
+    expect(viaGoals.iterations).toBe(plain.iterations);
+    // And back to a plain target: the goals are cleared.
+    expect(Array.from(solver.solve(start, target).angles)).toEqual(Array.from(plain.angles));
+  });
+
+  it('an orientation-only goal turns the tip frame and leaves its position free', () => {
+    const rig = keep(new IkRig(ik, straightLimb()));
+    const solver = keep(new IkSolver(rig, 'lm', { timeBudgetSeconds: 0 }));
+    const zero = new Float64Array(rig.numAngles);
+    // The tip frame turned 90 degrees about z: the last bone points along +y.
+    const s = Math.SQRT1_2;
+    const goals: Goals = { effectors: [{ bone: 'bone 1', orientation: [0, 0, s, s] }] };
+    const result = solver.solve(zero, goals);
+    expect(result.reached).toBe(true);
+    expect(orientationErrorsDeg(rig, result.angles, goals)[0]).toBeLessThan(0.5);
+    const R = quatToMatrix(rig.tipRotations(result.angles));
+    expect(R[3]).toBeCloseTo(1, 2); // the frame's x axis (the bone) now along +y
+  });
+
+  it('the weights trade one goal against the other when both cannot be met', () => {
+    // One bone of length 1: its tip cannot leave the unit sphere, so a position goal at distance 2
+    // along +y and an orientation goal keeping the bone along +x conflict.
+    const rig = keep(new IkRig(ik, sketchRig([{ parent: -1, at: [0, 0, 0], length: 1 }], [0])));
+    const solver = keep(new IkSolver(rig, 'lm', { timeBudgetSeconds: 0, restarts: 0 }));
+    const zero = new Float64Array(3);
+    const error = (positionWeight: number) => {
+      const goals: Goals = {
+        effectors: [{ bone: 0, position: [0, 2, 0], orientation: [0, 0, 0, 1], positionWeight, orientationWeight: 1 }],
+      };
+      const r = solver.solve(zero, goals);
+      return orientationErrorsDeg(rig, r.angles, goals)[0];
+    };
+    // A heavy position goal turns the bone towards +y (orientation error near 90 degrees); a light one barely.
+    expect(error(100)).toBeGreaterThan(80);
+    expect(error(0.01)).toBeLessThan(5);
+  });
+
+  it('start and step take goals too, and a change of goals between solves takes effect', () => {
+    const rig = keep(new IkRig(ik, straightLimb()));
+    const solver = keep(new IkSolver(rig, 'lm', { timeBudgetSeconds: 0 }));
+    const zero = new Float64Array(rig.numAngles);
+    const s = Math.SQRT1_2;
+    const up: Goals = { effectors: [{ bone: 1, orientation: [0, 0, s, s] }] };
+    const down: Goals = { effectors: [{ bone: 1, orientation: [0, 0, -s, s] }] };
+    expect(solver.start(zero, up)).toBe('running');
+    while (solver.step());
+    const a = solver.result();
+    expect(a.reached).toBe(true);
+    const b = solver.solve(zero, down);
+    expect(b.reached).toBe(true);
+    expect(orientationErrorsDeg(rig, b.angles, down)[0]).toBeLessThan(0.5);
+    expect(orientationErrorsDeg(rig, b.angles, up)[0]).toBeGreaterThan(170);
+  });
+
+  it('goals follow a change of end effectors', () => {
+    const rig = keep(new IkRig(ik, straightLimb()));
+    const solver = keep(new IkSolver(rig, 'lm', { timeBudgetSeconds: 0 }));
+    const zero = new Float64Array(rig.numAngles);
+    const goals: Goals = { effectors: [{ bone: 1, position: [0, 2, 0] }] };
+    expect(solver.solve(zero, goals).reached).toBe(true);
+    rig.setEffectors([0, 1]);
+    const both: Goals = { effectors: [{ bone: 0, position: [0, 1, 0] }, { bone: 1, position: [1, 1, 0] }] };
+    const r = solver.solve(zero, both);
+    expect(r.reached).toBe(true);
+    const tips = rig.tips(r.angles);
+    expect(tips[1]).toBeCloseTo(1, 2);
+    expect(tips[3]).toBeCloseTo(1, 2);
+  });
+
+  it('paper mode refuses orientation goals with a message', () => {
+    const rig = keep(new IkRig(ik, straightLimb()));
+    const solver = keep(new IkSolver(rig, 'gd', { paperMode: true }));
+    expect(() => solver.solve(new Float64Array(6), { effectors: [{ bone: 1, orientation: [0, 0, 0, 1] }] })).toThrow(/paper mode/);
+  });
+});
+
+describe('malformed goals are refused, naming the field', () => {
+  const cases: [string, unknown, RegExp][] = [
+    ['not an object', [1, 2, 3, 4], /target has 4 values/],
+    ['no effectors array', { effector: [] }, /unknown goals field "effector"/],
+    ['an unknown bone name', { effectors: [{ bone: 'hand', position: [0, 0, 0] }] }, /goals\.effectors\[0\]\.bone "hand" is not a bone/],
+    ['a bone that is no effector', { effectors: [{ bone: 0, position: [0, 0, 0] }] }, /"bone 0" is not an end effector \(the end effectors are bone 1/],
+    ['a bone index out of range', { effectors: [{ bone: 7, position: [0, 0, 0] }] }, /bone is 7, not a bone index/],
+    ['a bone named twice', { effectors: [{ bone: 1, position: [0, 0, 0] }, { bone: 'bone 1', position: [0, 0, 0] }] }, /has a goal already/],
+    ['a short position', { effectors: [{ bone: 1, position: [0, 0] }] }, /effectors\[0\]\.position has 2 values, expected 3/],
+    ['a NaN position', { effectors: [{ bone: 1, position: [0, NaN, 0] }] }, /position\[1\] is NaN/],
+    ['a zero quaternion', { effectors: [{ bone: 1, orientation: [0, 0, 0, 0] }] }, /zero quaternion/],
+    ['a quaternion of 3 numbers', { effectors: [{ bone: 1, orientation: [0, 0, 1] }] }, /orientation \(a quaternion x, y, z, w\) has 3 values/],
+    ['a negative weight', { effectors: [{ bone: 1, position: [0, 0, 0], weight: -1 }] }, /weight must be a finite number >= 0/],
+    ['an infinite orientation weight', { effectors: [{ bone: 1, orientation: [0, 0, 0, 1], orientationWeight: Infinity }] }, /orientationWeight must be a finite/],
+    ['a misspelt field', { effectors: [{ bone: 1, orientaton: [0, 0, 0, 1] }] }, /unknown field goals\.effectors\[0\]\.orientaton/],
+    ['a weight without its goal', { effectors: [{ bone: 1, positionWeight: 2 }] }, /positionWeight is given without a position/],
+    ['no goal at all', { effectors: [] }, /no goal/],
+    ['only goals of weight 0', { effectors: [{ bone: 1, position: [0, 0, 0], weight: 0 }] }, /no goal/],
+    ['a negative length scale', { effectors: [{ bone: 1, position: [0, 0, 0] }], lengthScale: -2 }, /lengthScale must be a finite number >= 0/],
+  ];
+  it.each(cases)('%s', (_, goals, message) => {
+    const rig = keep(new IkRig(ik, straightLimb()));
+    const solver = keep(new IkSolver(rig, 'lm'));
+    const zero = new Float64Array(rig.numAngles);
+    expect(() => solver.solve(zero, goals as Goals)).toThrow(message);
+    expect(() => solver.start(zero, goals as Goals)).toThrow(message);
+    // The solver still works afterwards.
+    expect(solver.solve(zero, [0, 2, 0]).reached).toBe(true);
+  });
+});
