@@ -236,7 +236,7 @@ export class IkSolver {
    */
   start(angles: Numbers, target: Numbers | Goals): StopReason {
     const a = toFloat64(angles, 'angles', this.rig.numAngles);
-    const t = this.useGoals(target);
+    const t = Float64Array.from(this.useGoals(target)); // a copy: the core reads it after user code ran
     const reason = this.live().start(a, t);
     if (!reason) throw coreError(this.rig.module, 'start');
     return reason as StopReason;
