@@ -4,6 +4,8 @@
 #include <cmath>
 
 #include "objective.h"
+#include "pole_residual.h"
+#include "rest_residual.h"
 #include "so3.h"
 
 namespace ik {
@@ -20,6 +22,18 @@ double goal_objective(Kinematics& kin, const GoalSet& goals, const Eigen::Ref<co
     else
       residual.segment<3>(3 * b) = g.scale * (kin.tip(bone) - g.position);
   }
+  const int hard = goals.hard_rows();
+  if (!goals.soft_on()) {
+    residual.tail(goals.rows() - hard).setZero();
+    return 0.5 * residual.squaredNorm();
+  }
+  for (int p = 0; p < goals.num_poles(); ++p) {
+    const GoalSet::Pole& g = goals.pole(p);
+    residual.segment<3>(hard + 3 * p) = pole_residual(kin.joint_origin(g.parent), kin.joint_origin(g.bone),
+                                                      kin.tip(g.bone), g.point, g.bend_floor,
+                                                      goals.soft_scale() * g.scale);
+  }
+  rest_residual(goals, angles, residual.tail(3 * goals.num_rest()));
   return 0.5 * residual.squaredNorm();
 }
 
@@ -45,6 +59,25 @@ void goal_jacobian(const Kinematics& kin, const GoalSet& goals, Eigen::Ref<Eigen
           jac.block<3, 1>(3 * b, 3 * j + a) = scale * kin.joint_axis(j, a).cross(p - kin.joint_origin(j));
     }
   }
+  if (!goals.soft_on()) return;
+  const int hard = goals.hard_rows();
+  for (int p = 0; p < goals.num_poles(); ++p) {
+    const GoalSet::Pole& g = goals.pole(p);
+    const Eigen::Vector3d S = kin.joint_origin(g.parent), M = kin.joint_origin(g.bone), T = kin.tip(g.bone);
+    PolePartials d;
+    pole_partials(S, M, T, g.point, g.bend_floor, goals.soft_scale() * g.scale, d);
+    // Angle a of bone k on the chain turns every point X below it by axis x (X - origin_k) per
+    // radian: T below every bone of the chain; S and M below the parent and its ancestors only
+    // (the parent turns about S itself, so its S term is 0 anyway).
+    for (int k = g.bone; k >= 0; k = kin.rig().bones[k].parent)
+      for (int a = 0; a < 3; ++a) {
+        const Eigen::Vector3d axis = kin.joint_axis(k, a), origin = kin.joint_origin(k);
+        Eigen::Vector3d column = d.wrist * axis.cross(T - origin);
+        if (k != g.bone) column += d.shoulder * axis.cross(S - origin) + d.elbow * axis.cross(M - origin);
+        jac.block<3, 1>(hard + 3 * p, 3 * k + a) = kRadPerDeg * column;
+      }
+  }
+  rest_jacobian(goals, jac.bottomRows(3 * goals.num_rest()));
 }
 
 double largest_tip_distance(const GoalSet& goals, const Eigen::Ref<const Eigen::VectorXd>& residual) {

@@ -9,6 +9,10 @@
 // for the angles on the effector's chain, 0 for the others. At |e| = pi the log's axis may flip
 // sign between neighbouring poses (E = 1/2 (w_o L pi)^2 is continuous there; it is E's maximum
 // over that goal, so the methods descend away from it).
+//
+// The soft rows follow the hard ones: poles (pole_residual.h, their Jacobian by the chain rule
+// through S, M and T) and rest rows (rest_residual.h). With GoalSet::soft_on() false they read 0.
+// Every function below that measures distances reads the hard blocks only.
 #pragma once
 
 #include <Eigen/Core>

@@ -16,6 +16,14 @@ bool is_rotation(const Eigen::Matrix3d& R) {
 
 bool valid_weight(double w) { return std::isfinite(w) && w >= 0; }
 
+// Layout codes of the soft blocks (hard blocks use 2 e + kind >= 0).
+int pole_code(int bone) { return -1 - 2 * bone; }
+int rest_code(int bone) { return -2 - 2 * bone; }
+
+// The share of the shorter of a limb's two segments below which a bend counts as "straight"
+// (pole_residual.h's delta): 5% bends a 2 x 1 limb about 6 degrees at the knee.
+constexpr double kBendFloorShare = 0.05;
+
 }  // namespace
 
 double rig_reach(const Kinematics& kin) {
@@ -35,12 +43,23 @@ void GoalSet::add(const Block& block) {
   blocks_.push_back(block);
 }
 
+void GoalSet::mark_chain(const Kinematics& kin, int bone) {
+  for (int b = bone; b >= 0; b = kin.rig().bones[b].parent) on_chain_[b] = 1;
+}
+
 void GoalSet::set_positions(const Kinematics& kin, const Eigen::Ref<const Eigen::VectorXd>& target) {
   plain_ = true;
   has_orientation_ = false;
+  soft_scale_ = 1;
+  length_ = rig_reach(kin);
   target_ = target;
   blocks_.clear();
   layout_.clear();
+  poles_.clear();
+  stiffness_.clear();
+  rest_bones_.clear();
+  rest_scale_.clear();
+  on_chain_.assign(kin.num_bones(), 0);
   position_block_.assign(kin.num_effectors(), -1);
   if (target.size() != kin.num_residuals()) return;  // check_solve_input reports it
   for (int e = 0; e < kin.num_effectors(); ++e) {
@@ -48,23 +67,68 @@ void GoalSet::set_positions(const Kinematics& kin, const Eigen::Ref<const Eigen:
     b.effector = e;
     b.position = target.segment<3>(3 * e);
     add(b);
+    mark_chain(kin, kin.rig().effectors[e]);
   }
+}
+
+void GoalSet::set_rest(const Kinematics& kin, double weight, bool from_start,
+                       const Eigen::Ref<const Eigen::VectorXd>& start) {
+  rest_bones_.clear();
+  rest_scale_.clear();
+  layout_.resize(blocks_.size() + poles_.size());
+  const int n = kin.num_angles();
+  if (!(std::isfinite(weight) && weight > 0) || start.size() != n || static_cast<int>(on_chain_.size()) != kin.num_bones())
+    return;
+  for (int b = 0; b < kin.num_bones(); ++b) {
+    const double stiffness = stiffness_.empty() ? 1.0 : stiffness_[b];
+    if (!on_chain_[b] || !(stiffness > 0)) continue;
+    rest_bones_.push_back(b);
+    rest_scale_.push_back(weight * stiffness * length_);
+    layout_.push_back(rest_code(b));
+  }
+  if (from_start) {
+    rest_reference_ = start;
+    kin.project(rest_reference_);
+  } else {
+    rest_reference_.setZero(n);
+  }
+}
+
+void GoalSet::moving_bones(const Kinematics& kin, int k, std::vector<int>& bones) const {
+  bones.clear();
+  if (k < num_blocks()) {
+    bones = kin.effector_chain(blocks_[k].effector);
+    return;
+  }
+  k -= num_blocks();
+  if (k < num_poles()) {
+    for (int b = poles_[k].bone; b >= 0; b = kin.rig().bones[b].parent) bones.insert(bones.begin(), b);
+    return;
+  }
+  bones.push_back(rest_bones_[k - num_poles()]);
 }
 
 std::string GoalSet::set(const Kinematics& kin, const Goals& goals) {
   const int m = kin.num_effectors();
   plain_ = true;
   has_orientation_ = false;
+  soft_scale_ = 1;
   blocks_.clear();
   layout_.clear();
+  poles_.clear();
+  stiffness_.clear();
+  rest_bones_.clear();
+  rest_scale_.clear();
+  on_chain_.assign(kin.num_bones(), 0);
   position_block_.assign(m, -1);
-  target_.resize(0);
+  // target_ keeps its size (read only when plain_): a second start allocates nothing.
   if (static_cast<int>(goals.effectors.size()) != m)
     return "goals has " + std::to_string(goals.effectors.size()) + " entries, expected " + std::to_string(m) +
            " (one per end effector)";
   if (!std::isfinite(goals.length_scale) || goals.length_scale < 0)
     return "the goals' length scale must be a finite number >= 0";
   const double length = goals.length_scale > 0 ? goals.length_scale : rig_reach(kin);
+  length_ = length;
   for (int e = 0; e < m; ++e) {
     const EffectorGoal& g = goals.effectors[e];
     // The message's subject, built only when there is a problem (a start allocates nothing).
@@ -93,8 +157,42 @@ std::string GoalSet::set(const Kinematics& kin, const Goals& goals) {
       add(b);
     }
     plain_ = plain_ && g.position && g.position_weight == 1;
+    if (!blocks_.empty() && blocks_.back().effector == e) mark_chain(kin, kin.rig().effectors[e]);
   }
   if (blocks_.empty()) return "no goal: every end effector's goals are off or of weight 0";
+  const int bones = kin.num_bones();
+  for (size_t i = 0; i < goals.poles.size(); ++i) {
+    const PoleGoal& p = goals.poles[i];
+    const auto which = [i](const char* what) { return std::string("the ") + what + " of pole " + std::to_string(i); };
+    if (p.bone < 0 || p.bone >= bones)
+      return which("bone") + " is " + std::to_string(p.bone) + ", not a bone index in 0.." + std::to_string(bones - 1);
+    const int parent = kin.rig().bones[p.bone].parent;
+    if (parent < 0)
+      return which("bone") + " (" + std::to_string(p.bone) +
+             ") has no parent: a bend hint needs the second bone of a two-bone limb";
+    if (!finite3(p.point)) return which("point") + " is not finite";
+    if (!valid_weight(p.weight)) return which("weight") + " must be a finite number >= 0";
+    if (p.weight == 0) continue;
+    Pole pole;
+    pole.bone = p.bone;
+    pole.parent = parent;
+    pole.point = p.point;
+    pole.scale = p.weight * length;
+    // |M - S| and |T - M| at rest: the rest heads' distance and the bone's length.
+    const double upper = (kin.rig().bones[p.bone].rest.block<3, 1>(0, 3) - kin.rig().bones[parent].rest.block<3, 1>(0, 3)).norm();
+    const double shorter = std::min(upper, kin.rig().bones[p.bone].length);
+    pole.bend_floor = kBendFloorShare * (shorter > 0 ? shorter : length);
+    poles_.push_back(pole);
+    layout_.push_back(pole_code(p.bone));
+    mark_chain(kin, p.bone);
+  }
+  if (!goals.stiffness.empty() && static_cast<int>(goals.stiffness.size()) != bones)
+    return "goals has " + std::to_string(goals.stiffness.size()) + " stiffness values, expected " +
+           std::to_string(bones) + " (one per bone) or none";
+  for (int b = 0; b < static_cast<int>(goals.stiffness.size()); ++b)
+    if (!valid_weight(goals.stiffness[b]))
+      return "the stiffness of bone " + std::to_string(b) + " must be a finite number >= 0";
+  stiffness_ = goals.stiffness;
   plain_ = plain_ && !has_orientation_;
   if (plain_) {
     target_.resize(3 * m);
@@ -105,6 +203,10 @@ std::string GoalSet::set(const Kinematics& kin, const Goals& goals) {
 
 bool GoalSet::operator==(const GoalSet& other) const {
   if (plain_ != other.plain_ || layout_ != other.layout_) return false;
+  for (int p = 0; p < num_poles(); ++p)
+    if (poles_[p].point != other.poles_[p].point || poles_[p].scale != other.poles_[p].scale) return false;
+  if (rest_scale_ != other.rest_scale_) return false;
+  if (!rest_bones_.empty() && rest_reference_ != other.rest_reference_) return false;
   if (plain_) return target_.size() == other.target_.size() && target_ == other.target_;
   for (int b = 0; b < num_blocks(); ++b) {
     const Block &x = blocks_[b], &y = other.blocks_[b];

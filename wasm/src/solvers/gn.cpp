@@ -7,7 +7,9 @@
 // limit that the step would push further out are held and the rest re-solved; and if that
 // projected path finds no lower point, every angle the step would take past a limit is fixed on
 // it and the rest re-solved, so the step stays inside the box (active_set.h). Either step is
-// scaled down to move no angle more than gn_max_step_deg.
+// scaled down to move no angle more than gn_max_step_deg. With soft rows (goals.h) past 48 rows
+// the step solves damped normal equations at the angle size instead (angle_size_direction()).
+#include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
 #include <Eigen/SVD>
 #include <algorithm>
@@ -49,6 +51,9 @@ class GaussNewton final : public Solver {
       eigen_ = Eigen::SelfAdjointEigenSolver<SmallMatrix>(residuals);
       projected_m_.resize(residuals);
       y_.resize(residuals);
+    } else {
+      angle_normal_.resize(angles, angles);
+      angle_llt_ = Eigen::LLT<Eigen::MatrixXd>(angles);
     }
   }
 
@@ -83,6 +88,7 @@ class GaussNewton final : public Solver {
   // direction_ = -pinv(J) rhs with the columns of the angles with `mask` 0 zeroed.
   bool gauss_newton_direction(const Eigen::VectorXd& mask, const Eigen::VectorXd& rhs) {
     if (!opt_.paper_mode && m_ <= kMaxResiduals) return residual_size_direction(mask, rhs);
+    if (!opt_.paper_mode && goals_.has_soft()) return angle_size_direction(mask, rhs);
     jac_.noalias() = J_ * mask.asDiagonal();
     svd_.compute(jac_);
     // pinv(J) r = V S^+ U^T r; singular values below max(rows, cols) * eps * s_max count as 0
@@ -131,6 +137,27 @@ class GaussNewton final : public Solver {
     return true;
   }
 
+  // With soft rows (goals.h: poles, rest rows, 3 per bone) past kMaxResiduals rows: the damped
+  // normal equations at the angle size,
+  //   (Jm^T Jm + c^2 tr(Jm^T Jm) I) p = -Jm^T rhs,   c = gn_singular_cutoff,
+  // Jm the columns of the angles in `mask`. The shift is at least c^2 s_max^2, so directions the
+  // cutoff would drop are damped instead (the rest rows leave few: they give every angle of a
+  // chain a singular value of their own). An LLT on matrices sized by resize(): no allocation,
+  // where the SVD of the whole Jacobian would allocate at every step.
+  bool angle_size_direction(const Eigen::VectorXd& mask, const Eigen::VectorXd& rhs) {
+    jac_.noalias() = J_ * mask.asDiagonal();
+    angle_normal_.noalias() = jac_.transpose() * jac_;
+    const double shift = opt_.gn_singular_cutoff * opt_.gn_singular_cutoff * angle_normal_.trace() +
+                         std::numeric_limits<double>::min();
+    angle_normal_.diagonal().array() += shift;
+    angle_llt_.compute(angle_normal_);
+    if (angle_llt_.info() != Eigen::Success) return false;
+    direction_.noalias() = jac_.transpose() * rhs;
+    angle_llt_.solveInPlace(direction_);
+    direction_ *= -1;
+    return direction_.allFinite();
+  }
+
   static constexpr int kMaxResiduals = 48;  // 16 end effectors
   using SmallMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxResiduals, kMaxResiduals>;
   using SmallVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxResiduals, 1>;
@@ -138,6 +165,8 @@ class GaussNewton final : public Solver {
   Eigen::SelfAdjointEigenSolver<SmallMatrix> eigen_;
   SmallVector projected_m_, y_;
   Eigen::MatrixXd jac_;
+  Eigen::MatrixXd angle_normal_;  // angle-size path (soft rows)
+  Eigen::LLT<Eigen::MatrixXd> angle_llt_;
   Eigen::JacobiSVD<Eigen::MatrixXd> svd_;
   Eigen::VectorXd projected_, direction_, all_angles_, rhs_;
   ActiveSet active_set_;

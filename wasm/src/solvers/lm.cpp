@@ -9,7 +9,8 @@
 //
 // With orientation goals (goals.h) the residual is made of 3-row blocks, each an effector's
 // position or orientation; the sparsity below is per block (a block's rows move with the angles
-// on its effector's chain). Plain goals have one position block per effector, as before.
+// on its effector's chain; a pole's, with its limb's chain; a rest bone's, with that bone's
+// angles). Plain goals have one position block per effector, as before.
 //
 // Restarts after a stall (option `restarts`) are the base Solver's, as for every method.
 #include <cmath>
@@ -34,13 +35,19 @@ class LevenbergMarquardt final : public Solver {
   void resize(int m, int n) override {
     // Per angle, the residual blocks it moves (those of the effectors whose chain holds its
     // bone), ascending: counted per bone, then filled block by block.
-    std::vector<int> per_bone(kin_.num_bones() + 1, 0);
-    for (int k = 0; k < goals_.num_blocks(); ++k)
-      for (int b : kin_.effector_chain(goals_.block(k).effector)) ++per_bone[b + 1];
+    // Soft blocks (poles, rest bones) count like the goals' blocks (GoalSet::moving_bones()).
+    const int blocks = m / 3;
+    std::vector<int> per_bone(kin_.num_bones() + 1, 0), moving;
+    for (int k = 0; k < blocks; ++k) {
+      goals_.moving_bones(kin_, k, moving);
+      for (int b : moving) ++per_bone[b + 1];
+    }
     for (int b = 0; b < kin_.num_bones(); ++b) per_bone[b + 1] += per_bone[b];
     std::vector<int> bone_effectors(per_bone.back()), fill(per_bone.begin(), per_bone.end() - 1);
-    for (int k = 0; k < goals_.num_blocks(); ++k)
-      for (int b : kin_.effector_chain(goals_.block(k).effector)) bone_effectors[fill[b]++] = k;
+    for (int k = 0; k < blocks; ++k) {
+      goals_.moving_bones(kin_, k, moving);
+      for (int b : moving) bone_effectors[fill[b]++] = k;
+    }
     column_start_.assign(n + 1, 0);
     column_effectors_.clear();
     for (int j = 0; j < n; ++j) {
@@ -79,7 +86,8 @@ class LevenbergMarquardt final : public Solver {
     }
     for (int e = 0; e < m_ / 3; ++e)
       for (int f = e + 1; f < m_ / 3; ++f) normal_.block<3, 3>(3 * f, 3 * e) = normal_.block<3, 3>(3 * e, 3 * f).transpose();
-    const double s = normal_.trace() / m_;
+    // The mean over the rows in use: soft rows the Solver dropped (all 0) do not count.
+    const double s = normal_.trace() / (goals_.soft_on() ? m_ : goals_.hard_rows());
     if (!std::isfinite(s)) return fail("the Jacobian is not finite");
     if (!(s > 0)) return Progress::stuck;  // no free angle moves a tip
     const double relative_error2 = 2 * E_ / (reach_ * reach_);

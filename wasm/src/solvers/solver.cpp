@@ -28,6 +28,10 @@ constexpr int kPaperMaxBacktracks = 2000;
 
 bool finite(double x) { return std::isfinite(x); }
 
+// With soft rows on and the hard goals on target, a step that lowers E by less than this share
+// of E ends the solve (converged_E): near the soft optimum gd and bfgs creep.
+constexpr double kSoftStallShare = 1e-4;
+
 }  // namespace
 
 const char* stop_reason_name(StopReason reason) {
@@ -60,6 +64,8 @@ StopReason Solver::start(const Eigen::Ref<const Eigen::VectorXd>& angles, const 
 StopReason Solver::begin(const Eigen::Ref<const Eigen::VectorXd>& angles, const std::string& goals_problem,
                          bool close) {
   clock_.open(Clock::now());
+  // The rest rows belong to the goals: they depend on the options and the start angles.
+  incoming_.set_rest(kin_, next_opt_.rest_weight, next_opt_.rest_from_start, angles);
   // A solve from where the previous one ended, towards the same goals (a held drag whose frame
   // budget ran out), goes on along the chain restarts instead of trying the same ones again.
   const bool continues = chain_index_ > 0 && angles.size() == summary_.angles.size() && incoming_ == goals_ &&
@@ -76,7 +82,15 @@ StopReason Solver::begin(const Eigen::Ref<const Eigen::VectorXd>& angles, const 
   const int limit = std::min(angle_limit(rows), opt_.paper_mode ? kMaxDenseAngles : kNoAngleLimit);
   summary_.message = goals_problem;
   if (summary_.message.empty())
-    summary_.message = check_solve_input(kin_, opt_, name(), limit, angles, incoming_.plain_target(), incoming_.plain());
+    summary_.message =
+        check_solve_input(kin_, opt_, name(), limit, angles, incoming_.plain_target(), incoming_.plain_positions());
+  if (summary_.message.empty() && opt_.paper_mode && (opt_.rest_weight > 0 || incoming_.num_poles() > 0))
+    summary_.message = "paper mode takes no bend hints (poles) and no rest pull (restWeight > 0): the original "
+                       "program's objective has neither; turn paper mode off for them";
+  if (summary_.message.empty() && static_cast<long long>(rows) * kin_.num_angles() > kMaxMatrixEntries)
+    summary_.message = "the goals' Jacobian would have " + std::to_string(rows) + " x " +
+                       std::to_string(kin_.num_angles()) + " entries, more than " + std::to_string(kMaxMatrixEntries) +
+                       " (fewer bones with a rest pull: restWeight 0 or stiffness 0)";
   if (summary_.message.empty() && opt_.paper_mode && !incoming_.plain())
     summary_.message = "paper mode takes position goals of weight 1 only (the original program's objective); "
                        "turn paper mode off for orientation goals or weights";
@@ -97,6 +111,8 @@ StopReason Solver::begin(const Eigen::Ref<const Eigen::VectorXd>& angles, const 
 
   a_ = angles;
   kin_.project(a_);
+  start_ = a_;
+  soft_retried_ = false;
   reset();
   E_ = evaluate(a_, r_);
   summary_.stop_reason = StopReason::running;
@@ -137,6 +153,7 @@ void Solver::resize_workspace() {
   r_trial_.resize(m_);
   a_.resize(n_);
   trial_.resize(n_);
+  start_.resize(n_);
   g_.resize(n_);
   free_mask_.resize(n_);
   J_.resize(m_, n_);
@@ -158,6 +175,8 @@ bool Solver::advance(Clock::time_point begin) {
   clock_.open(begin);
   cut_short_ = false;
   StopReason reason = StopReason::running;
+  const double before = E_;
+  double previous_E = std::numeric_limits<double>::infinity();
   if (kin_.rig().effectors != effectors_) {
     summary_.message = "the rig's end effectors changed during the solve; call start() again";
     reason = StopReason::invalid_input;
@@ -172,6 +191,7 @@ bool Solver::advance(Clock::time_point begin) {
         break;
       case Progress::moved:
         ++summary_.iterations;
+        if (goals_.soft_on()) previous_E = before;
         if (!finite(E_) || !update_derivatives(true)) {
           reason = StopReason::numerical_failure;
           summary_.message = "E or its gradient became non-finite";
@@ -179,7 +199,7 @@ bool Solver::advance(Clock::time_point begin) {
         }
         record();
         note_best();
-        reason = check_stop();
+        reason = check_stop(previous_E);
         break;
     }
     // A run stopped off target moves on: a stalled one by a restart, one stopped at a stationary
@@ -286,8 +306,10 @@ bool Solver::time_is_up() {
 }
 
 bool Solver::on_target() const {
+  // The hard rows only: the soft ones (poles, rest pull) never decide it.
   if (!goals_.has_orientation()) {
     if (opt_.tip_tolerance > 0) return largest_tip_distance(goals_, r_) < opt_.tip_tolerance;
+    if (goals_.has_soft()) return position_error(goals_, r_) < opt_.error_tolerance;
     return E_ < opt_.error_tolerance;
   }
   const bool positions = opt_.tip_tolerance > 0 ? largest_tip_distance(goals_, r_) < opt_.tip_tolerance
@@ -295,8 +317,13 @@ bool Solver::on_target() const {
   return positions && largest_orientation_error_deg(goals_, r_) < opt_.orientation_tolerance_deg;
 }
 
-StopReason Solver::check_stop() const {
-  if (on_target()) return StopReason::converged_E;
+StopReason Solver::check_stop(double previous_E) const {
+  // With soft rows on, on target is not yet the end: the run goes on towards the soft terms'
+  // optimum until |g| is under the gradient tolerance or a step lowers E by less than
+  // kSoftStallShare of it (a slow method's steps near that optimum).
+  if (on_target() && (!goals_.soft_on() || gradient_norm_ < opt_.gradient_tolerance ||
+                      previous_E - E_ < kSoftStallShare * previous_E))
+    return StopReason::converged_E;
   if (gradient_norm_ < opt_.gradient_tolerance && !descends_further()) return StopReason::converged_grad;
   return StopReason::running;
 }

@@ -12,6 +12,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -30,7 +31,10 @@ enum class StopReason {
   running,            // no test below has fired; step() may be called
   converged_E,        // on target: E < error_tolerance, or with tip_tolerance > 0 every effector's tip
                       // within tip_tolerance of its target. With orientation goals: E over the position
-                      // rows only (or the tip test), and every orientation within orientation_tolerance_deg
+                      // rows only (or the tip test), and every orientation within orientation_tolerance_deg.
+                      // With soft rows (poles, rest_weight > 0): E over the position rows only, and
+                      // while the soft rows are on, also |g| < gradient_tolerance or the last step
+                      // lowered E by less than 1e-4 of it
   converged_grad,     // |g| < gradient_tolerance, not on target; g = grad E without the components of fixed
                       // angles and of angles on a bound that the gradient pushes outward (free_set.h; paper
                       // mode: the full grad E). While restarts are left a run stops there only once |g| <
@@ -53,7 +57,7 @@ const char* stop_reason_name(StopReason reason);
 struct SolverSummary {
   Eigen::VectorXd angles;       // best angles found (#angles, degrees, inside the limits)
   double initial_E = 0;         // E at the start angles (after projection into the limits)
-  double E = 0;                 // E at `angles`
+  double E = 0;                 // E at `angles` (with the soft rows while they are on)
   double gradient_norm = 0;     // |g| at `angles` as the gradient test measures it
   double tip_distance = 0;      // largest distance of an effector's tip from its target at `angles`, rig units
                                 // (position goals only; 0 without any)
@@ -91,9 +95,18 @@ class Solver {
   // start(). Returns running, converged_E / converged_grad (already there), or invalid_input.
   StopReason start(const Eigen::Ref<const Eigen::VectorXd>& angles, const Eigen::Ref<const Eigen::VectorXd>& target);
   // The same towards `goals` (goals.h): per effector a position and/or an orientation goal with
-  // weights. Position goals of weight 1 alone behave exactly as start(angles, target); paper mode
-  // takes nothing else (invalid_input). Goals of weight 0 count as none. Goals GoalSet::set()
-  // refuses give invalid_input with its message.
+  // weights, bend hints (poles) and stiffness. Position goals of weight 1 alone (no pole, option
+  // rest_weight 0) behave exactly as start(angles, target); paper mode takes nothing else
+  // (invalid_input). Goals of weight 0 count as none. Goals GoalSet::set() refuses give
+  // invalid_input with its message.
+  //
+  // Soft rows (poles, and the rest pull of option rest_weight > 0, in either start()) never
+  // decide "on target". When a run with them stops off target (zero_step, converged_grad, a
+  // stall) they are lowered 10x and the run goes on from that point (before any escape or
+  // restart), and below 1e-3 of their weight dropped for the rest of the solve: the solve ends
+  // on target near the soft terms' optimum. If the run without them still stops off target, the
+  // next run is the plain solve from the start angles (once), then restarts and escapes as
+  // usual: soft terms do not lower the success rate (soft_goals_test measures it).
   StopReason start(const Eigen::Ref<const Eigen::VectorXd>& angles, const Goals& goals);
 
   // One iteration. Returns true while the solve is still running. No allocation. Between steps
@@ -182,7 +195,9 @@ class Solver {
   static constexpr int kNoAngleLimit = 1 << 30;
 
  private:
-  StopReason check_stop() const;
+  // The stop test at the current iterate; `previous_E`: E before the step that led here (with
+  // soft rows on, a step that barely lowered E ends a run on target).
+  StopReason check_stop(double previous_E = std::numeric_limits<double>::infinity()) const;
   void record();
   void note_best();
   // Moving on from a run stopped off target (solver_move_on.cpp).
@@ -197,6 +212,15 @@ class Solver {
   // With restarts left and E above the error tolerance: is |g| under the gradient tolerance but
   // above a tenth of it (still descending: the gradient test does not end the run)?
   bool descends_further() const;
+  // With soft rows (poles, rest pull) on and the run stopped off target: lowers them 10x (to 0
+  // below 1e-3: dropped for the rest of the solve) and goes on from the current point (a new
+  // run; E_, r_ and the best point's E re-evaluated).
+  void lower_soft_terms();
+  // Once per solve, with the soft rows dropped and the run stopped off target: a new run from
+  // the start angles without them (the plain solve), so that soft rows never lower the success rate.
+  void retry_without_soft_terms();
+  bool soft_retried_ = false;
+  Eigen::VectorXd start_;  // the solve's start angles, projected
   // Moves to the next quasi-random start inside the limits (a new run) if restarts are left.
   // Returns false when none is left or E is not finite there.
   bool restart();

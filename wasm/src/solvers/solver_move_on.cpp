@@ -1,7 +1,8 @@
-// The Solver's ways out of a run that stopped off target (move_on()): a whole restart from a
-// quasi-random point (restarts.h), an escape along negative curvature (saddle_escape.h) or a
-// restart of the off-target chains only (chain_restart.h), in that order of preference, within
-// the iteration and time budgets. The rest of the Solver is in solver.cpp.
+// The Solver's ways out of a run that stopped off target (move_on()): with soft rows on, a new
+// run with them lowered (or dropped); then a whole restart from a quasi-random point
+// (restarts.h), an escape along negative curvature (saddle_escape.h) or a restart of the
+// off-target chains only (chain_restart.h), in that order of preference, within the iteration
+// and time budgets. The rest of the Solver is in solver.cpp.
 #include <cmath>
 
 #include "solver.h"
@@ -20,6 +21,13 @@ constexpr double kStationaryFraction = 0.1;
 // Escapes from stationary points per solve (each lowers E; this bounds a solve without a time budget).
 constexpr int kMaxEscapes = 50;
 
+// A run with soft rows (poles, rest pull) that stops off target goes on with them times this
+// factor, and once the factor falls below kSoftFloor without them: each run ends nearer the
+// target and the last one on it, near the point of the hard goals' solutions that the soft
+// terms prefer (soft_goals_test measures the cost).
+constexpr double kSoftShrink = 0.1;
+constexpr double kSoftFloor = 1e-3;
+
 bool finite(double x) { return std::isfinite(x); }
 
 }  // namespace
@@ -35,6 +43,24 @@ bool Solver::chain_restarts_left() const { return !opt_.paper_mode && chain_inde
 
 bool Solver::descends_further() const {
   return restarts_left() && !on_target() && gradient_norm_ >= kStationaryFraction * opt_.gradient_tolerance;
+}
+
+void Solver::lower_soft_terms() {
+  const double scale = goals_.soft_scale() * kSoftShrink;
+  goals_.set_soft_scale(scale < kSoftFloor ? 0.0 : scale);
+  restarts_.begin_run();
+  reset();
+  // E changed meaning: the best point's E is measured afresh (poses kin_ there), then the current one's.
+  summary_.E = evaluate(summary_.angles, r_trial_);
+  E_ = evaluate(a_, r_);
+}
+
+void Solver::retry_without_soft_terms() {
+  soft_retried_ = true;
+  a_ = start_;
+  restarts_.begin_run();
+  reset();
+  E_ = evaluate(a_, r_);
 }
 
 bool Solver::restart() {
@@ -74,7 +100,14 @@ bool Solver::chain_restart() {
 }
 
 bool Solver::move_on(StopReason& reason) {
-  if (summary_.reached) return false;
+  // Soft rows on and the current point off target (an earlier point may have been on it): they
+  // are lowered first, whatever the best point so far.
+  const bool soften = goals_.soft_on() && !on_target();
+  // Dropped soft rows and still off target: the path they bent may have led where the hard goals
+  // alone converge slowly (a rest pose of straight limbs is a singular pose); the plain solve
+  // from the start angles comes next, before any escape or restart.
+  const bool retry = !goals_.soft_on() && goals_.has_soft() && !soft_retried_;
+  if (summary_.reached && !soften) return false;
   const bool out_of_iterations = summary_.iterations >= opt_.max_iterations;
   if (out_of_iterations || out_of_time()) {
     // The budget, not the problem, ends the solve while restarts of either kind are left.
@@ -85,7 +118,11 @@ bool Solver::move_on(StopReason& reason) {
   // Restarts come first while any are left: on random targets escaping first cost more than it
   // saved (native, lm, 1000 restarts: knight 96 -> 184 us mean, beast 75 -> 137 us).
   const bool stationary = reason == StopReason::zero_step || reason == StopReason::converged_grad;
-  if (stationary && !restarts_left() && escape())
+  if (soften)
+    lower_soft_terms();  // counted below as a step, like a restart
+  else if (retry)
+    retry_without_soft_terms();
+  else if (stationary && !restarts_left() && escape())
     ++summary_.escapes;
   else if (stationary && !restarts_left() && chain_restart())
     ++summary_.chain_restarts;
