@@ -171,6 +171,76 @@ describe('pose goals', () => {
   });
 });
 
+describe('bend hints, rest pull and stiffness', () => {
+  /** The straight limb's elbow (bone 1's head) at `angles`. */
+  const elbow = (rig: IkRig, angles: Float64Array) => rig.boneTips(angles).subarray(0, 3);
+
+  it.each(['lm', 'gn', 'newton', 'bfgs'])('a pole flips a bent limb to its side without moving the tip (%s, restarts 0)', (method) => {
+    const rig = keep(new IkRig(ik, straightLimb()));
+    const solver = keep(new IkSolver(rig, method, { timeBudgetSeconds: 0, tipTolerance: 1e-4, restarts: 0 }));
+    // Bent 90 degrees at the elbow, the bend plane turned -30 degrees about the limb's axis (x).
+    const bent = new Float64Array([-30, 45, 0, 0, -90, 0]);
+    const before = elbow(rig, bent);
+    const tip = rig.tips(bent);
+    // The pole mirrored through the axis: the usual way to flip a knee.
+    const result = solver.solve(bent, { effectors: [{ bone: 1, position: tip }], poles: [{ bone: 'bone 1', point: [0.7, -3 * before[1], -3 * before[2]] }] });
+    expect(result.reached).toBe(true);
+    const after = elbow(rig, result.angles);
+    expect(after[1] * before[1] + after[2] * before[2]).toBeLessThan(-0.4); // now on the other side
+    const end = rig.tips(result.angles);
+    expect(Math.hypot(end[0] - tip[0], end[1] - tip[1], end[2] - tip[2])).toBeLessThan(1e-4);
+  });
+
+  it('a pole bends a straight limb towards it when the target comes nearer', () => {
+    const rig = keep(new IkRig(ik, straightLimb()));
+    const solver = keep(new IkSolver(rig, 'lm', { timeBudgetSeconds: 0 }));
+    for (const side of [1, -1]) {
+      const result = solver.solve(new Float64Array(6), { effectors: [{ bone: 1, position: [1.5, 0, 0] }], poles: [{ bone: 1, point: [0.7, 0, 3 * side] }] });
+      expect(result.reached).toBe(true);
+      expect(elbow(rig, result.angles)[2] * side).toBeGreaterThan(0.3);
+    }
+  });
+
+  it('restWeight keeps angles nearer rest at equal success, and stiffness keeps a bone still', () => {
+    const limb = sketchRig(
+      [0, 1, 2, 3].map((i) => ({ parent: i - 1, at: [i, 0, 0] as [number, number, number], length: 1 })),
+      [3],
+    );
+    const rig = keep(new IkRig(ik, limb));
+    const rng = seeded(11);
+    const distance = (options: { restWeight: number }, stiffness?: Record<string, number>) => {
+      const solver = new IkSolver(rig, 'lm', { timeBudgetSeconds: 0, ...options });
+      let reached = 0, sum = 0, first = 0;
+      for (let k = 0; k < 20; k++) {
+        const goal = randomAngles(rig.spec, seeded(100 + k)).map((a) => a / 4);
+        const r = solver.solve(new Float64Array(rig.numAngles), { effectors: [{ bone: 3, position: rig.tips(goal) }], stiffness });
+        if (r.reached) reached++;
+        sum += r.angles.reduce((s, a) => s + Math.abs(a), 0) / rig.numAngles;
+        first += Math.abs(r.angles[0]) + Math.abs(r.angles[1]) + Math.abs(r.angles[2]);
+      }
+      solver.dispose();
+      return { reached, mean: sum / 20, first };
+    };
+    void rng;
+    const free = distance({ restWeight: 0 });
+    const pulled = distance({ restWeight: 0.05 });
+    const stiff = distance({ restWeight: 0.05 }, { 'bone 0': 20 });
+    expect(pulled.reached).toBe(free.reached);
+    expect(stiff.reached).toBe(free.reached);
+    expect(pulled.mean).toBeLessThan(free.mean);
+    expect(stiff.first).toBeLessThan(pulled.first);
+  });
+
+  it('paper mode refuses poles and the rest pull', () => {
+    const rig = keep(new IkRig(ik, straightLimb()));
+    const zero = new Float64Array(6);
+    const paper = keep(new IkSolver(rig, 'gn', { paperMode: true }));
+    expect(() => paper.solve(zero, { effectors: [{ bone: 1, position: [1, 1, 0] }], poles: [{ bone: 1, point: [0, 1, 0] }] })).toThrow(/paper mode/);
+    paper.setOptions({ paperMode: true, restWeight: 1 });
+    expect(() => paper.solve(zero, [1, 1, 0])).toThrow(/paper mode/);
+  });
+});
+
 describe('malformed goals are refused, naming the field', () => {
   const cases: [string, unknown, RegExp][] = [
     ['not an object', [1, 2, 3, 4], /target has 4 values/],
@@ -189,6 +259,13 @@ describe('malformed goals are refused, naming the field', () => {
     ['a weight without its goal', { effectors: [{ bone: 1, positionWeight: 2 }] }, /positionWeight is given without a position/],
     ['no goal at all', { effectors: [] }, /no goal/],
     ['only goals of weight 0', { effectors: [{ bone: 1, position: [0, 0, 0], weight: 0 }] }, /no goal/],
+    ['a pole on a root bone', { effectors: [{ bone: 1, position: [0, 0, 0] }], poles: [{ bone: 0, point: [0, 1, 0] }] }, /poles\[0\]\.bone "bone 0" has no parent/],
+    ['a pole without a point', { effectors: [{ bone: 1, position: [0, 0, 0] }], poles: [{ bone: 1 }] }, /poles\[0\]\.point must be an array/],
+    ['a pole with a NaN point', { effectors: [{ bone: 1, position: [0, 0, 0] }], poles: [{ bone: 1, point: [0, NaN, 0] }] }, /poles\[0\]\.point\[1\] is NaN/],
+    ['a pole with a misspelt field', { effectors: [{ bone: 1, position: [0, 0, 0] }], poles: [{ bone: 1, pont: [0, 1, 0] }] }, /unknown field goals\.poles\[0\]\.pont/],
+    ['poles not an array', { effectors: [{ bone: 1, position: [0, 0, 0] }], poles: { bone: 1 } }, /goals\.poles must be an array/],
+    ['stiffness of an unknown bone', { effectors: [{ bone: 1, position: [0, 0, 0] }], stiffness: { elbow: 2 } }, /stiffness key "elbow" is not a bone/],
+    ['a negative stiffness', { effectors: [{ bone: 1, position: [0, 0, 0] }], stiffness: { 'bone 0': -1 } }, /stiffness\["bone 0"\] must be a finite number >= 0/],
     ['a negative length scale', { effectors: [{ bone: 1, position: [0, 0, 0] }], lengthScale: -2 }, /lengthScale must be a finite number >= 0/],
   ];
   it.each(cases)('%s', (_, goals, message) => {

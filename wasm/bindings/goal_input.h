@@ -2,10 +2,13 @@
 // numbers [positionWeight, orientationWeight, qx, qy, qz, qw] (a weight of 0: no such goal; the
 // quaternion is the target orientation of the effector bone's frame in rig coordinates, any
 // nonzero length). The positions come from the solve's target (3 per effector, rig units), so
-// a drag that only moves targets writes the same buffer as a plain solve.
+// a drag that only moves targets writes the same buffer as a plain solve. Bend hints cross as
+// kPoleStride numbers each, [bone, x, y, z, weight] (rig units); stiffness as one number per bone
+// or none (all 1).
 #pragma once
 
 #include <Eigen/Geometry>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -15,12 +18,16 @@
 namespace ik::js {
 
 constexpr int kGoalStride = 6;
+constexpr int kPoleStride = 5;
 
 class GoalInput {
  public:
-  // Reads `packed` (kGoalStride numbers per effector of `kin`) and the length scale (rig units
-  // per radian; 0: the rig's reach). Throws RigError naming the effector and field.
-  void set(const Kinematics& kin, const std::vector<double>& packed, double length_scale) {
+  // Reads `packed` (kGoalStride numbers per effector of `kin`), `poles` (kPoleStride numbers per
+  // bend hint), `stiffness` (#bones numbers, or none) and the length scale (rig units per radian;
+  // 0: the rig's reach). Throws RigError naming the effector or pole and the field; the solver's
+  // start() checks the rest (GoalSet::set()).
+  void set(const Kinematics& kin, const std::vector<double>& packed, const std::vector<double>& poles,
+           const std::vector<double>& stiffness, double length_scale) {
     const int m = kin.num_effectors();
     if (static_cast<int>(packed.size()) != kGoalStride * m)
       throw RigError("goals have " + std::to_string(packed.size()) + " numbers, expected " +
@@ -48,6 +55,17 @@ class GoalInput {
         throw RigError(field("orientation") + " is not a rotation (a quaternion of finite, nonzero length)");
       goal.orientation_target = q.normalized().toRotationMatrix();
     }
+    if (poles.size() % kPoleStride != 0)
+      throw RigError("poles have " + std::to_string(poles.size()) + " numbers, not " + std::to_string(kPoleStride) +
+                     " per pole (bone, x, y, z, weight)");
+    goals_.poles.resize(poles.size() / kPoleStride);
+    for (size_t k = 0; k < goals_.poles.size(); ++k) {
+      const double* p = poles.data() + kPoleStride * k;
+      if (!(p[0] >= 0 && p[0] < kin.num_bones() && p[0] == std::floor(p[0])))
+        throw RigError("pole " + std::to_string(k) + "'s bone is not a bone index");
+      goals_.poles[k] = PoleGoal{static_cast<int>(p[0]), Eigen::Vector3d(p[1], p[2], p[3]), p[4]};
+    }
+    goals_.stiffness = stiffness;
     effectors_ = kin.rig().effectors;
   }
 

@@ -66,8 +66,11 @@ export interface EmbindSolver {
   readonly running: boolean;
   setOptions(options: EmbindSolverOptions): boolean;
   options(): EmbindSolverOptions;
-  /** Goals for the next start()/solveIo(): 6 per effector [positionWeight, orientationWeight, qx, qy, qz, qw]; the target gives positions. */
-  setGoals(packed: Float64Array, lengthScale: number): boolean;
+  /**
+   * Goals for the next start()/solveIo(): 6 per effector [positionWeight, orientationWeight, qx, qy, qz, qw]
+   * (the target gives positions), 5 per bend hint [bone, x, y, z, weight], stiffness per bone or none.
+   */
+  setGoals(packed: Float64Array, poles: Float64Array, stiffness: Float64Array, lengthScale: number): boolean;
   clearGoals(): void;
   readonly hasGoals: boolean;
   start(angles: Float64Array, target: Float64Array): string;

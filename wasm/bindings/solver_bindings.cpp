@@ -76,13 +76,16 @@ class SolverBinding {
   static val default_options() { return write_options(SolverOptions()); }
 
   // Goals beyond plain positions for the following start() and solve_io() calls (goal_input.h:
-  // kGoalStride numbers per end effector; length_scale rig units per radian, 0: the rig's reach).
-  // The target still gives the positions. False (the old goals kept) if refused.
-  bool set_goals(const val& packed, double length_scale) {
+  // kGoalStride numbers per end effector, kPoleStride per bend hint, stiffness per bone or none;
+  // length_scale rig units per radian, 0: the rig's reach). The target still gives the
+  // positions. False (the old goals kept) if refused.
+  bool set_goals(const val& packed, const val& poles, const val& stiffness, double length_scale) {
     return guarded([&] {
-      std::vector<double> numbers;
+      std::vector<double> numbers, pole_numbers, stiffness_numbers;
       copy_in(packed, js_length(packed, "goals"), numbers, "goals");
-      goal_input_.set(rig_.kinematics(), numbers, length_scale);
+      copy_in(poles, js_length(poles, "poles"), pole_numbers, "poles");
+      copy_in(stiffness, js_length(stiffness, "stiffness"), stiffness_numbers, "stiffness");
+      goal_input_.set(rig_.kinematics(), numbers, pole_numbers, stiffness_numbers, length_scale);
       has_goals_ = true;
       return true;
     }, false);

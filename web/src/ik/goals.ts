@@ -26,11 +26,34 @@ export interface EffectorGoal {
   orientationWeight?: number;
 }
 
+/**
+ * A bend hint (pole target) for the two-bone limb ending in `bone`: its parent's head (shoulder,
+ * hip), its own head (elbow, knee) and its tip (wrist, ankle). The elbow or knee turns towards
+ * `point` about the shoulder-wrist line; a soft wish that never moves a reachable tip
+ * (wasm/src/pole_residual.h).
+ */
+export interface PoleGoal {
+  /** The limb's lower bone (forearm, shin): its name or index. It must have a parent. */
+  bone: string | number;
+  /** The pole: 3 numbers, rig units. */
+  point: Numbers;
+  /** >= 0. Default 1; 0: no hint. */
+  weight?: number;
+}
+
 /** What a solve should reach. Effectors not listed have no goal (their chains move freely). */
 export interface Goals {
   effectors: readonly EffectorGoal[];
   /** Rig units per radian of orientation error. Default 0: the rig's reach (its longest chain). */
   lengthScale?: number;
+  /** Bend hints, soft. */
+  poles?: readonly PoleGoal[];
+  /**
+   * Per bone (by name or index), how strongly it keeps to its rest pose under the solver option
+   * restWeight (> 0): a factor >= 0 on its rest pull, default 1; 0 lets it move freely.
+   * Without restWeight it has no effect.
+   */
+  stiffness?: Readonly<Record<string, number>>;
 }
 
 /** Goals packed as the core takes them (wasm/bindings/goal_input.h). */
@@ -40,12 +63,18 @@ export interface PackedGoals {
   /** 3 per effector: the positions (0 where an effector has no position goal), rig units. */
   target: Float64Array;
   lengthScale: number;
+  /** 5 per pole: bone index, x, y, z (rig units), weight. */
+  poles: Float64Array;
+  /** One factor per bone, or none (all 1). */
+  stiffness: Float64Array;
 }
 
 export const GOAL_STRIDE = 6;
+export const POLE_STRIDE = 5;
 
 const GOAL_FIELDS = new Set(['bone', 'position', 'orientation', 'weight', 'positionWeight', 'orientationWeight']);
-const GOALS_FIELDS = new Set(['effectors', 'lengthScale']);
+const GOALS_FIELDS = new Set(['effectors', 'lengthScale', 'poles', 'stiffness']);
+const POLE_FIELDS = new Set(['bone', 'point', 'weight']);
 
 /** Is `value` a Goals object (rather than a target array)? */
 export function isGoals(value: unknown): value is Goals {
@@ -123,7 +152,39 @@ export function packGoals(rig: IkRig, goals: Goals): PackedGoals {
       throw new Error(`${what}.orientationWeight is given without an orientation`);
     }
   });
-  return { packed, target, lengthScale };
+  return { packed, target, lengthScale, poles: packPoles(rig, goals.poles), stiffness: packStiffness(rig, goals.stiffness) };
+}
+
+function packPoles(rig: IkRig, poles: unknown): Float64Array {
+  if (poles === undefined) return new Float64Array(0);
+  if (!Array.isArray(poles)) throw new Error('goals.poles must be an array of { bone, point, weight? }');
+  const out = new Float64Array(POLE_STRIDE * poles.length);
+  poles.forEach((pole: unknown, k) => {
+    const what = `goals.poles[${k}]`;
+    if (typeof pole !== 'object' || pole === null || Array.isArray(pole)) throw new Error(`${what} must be an object like { bone, point }`);
+    for (const key of Object.keys(pole))
+      if (!POLE_FIELDS.has(key)) throw new Error(`unknown field ${what}.${key.slice(0, 60)} (known: ${[...POLE_FIELDS].join(', ')})`);
+    const p = pole as PoleGoal;
+    const bone = boneIndex(rig, p.bone, `${what}.bone`);
+    if (rig.spec.parents[bone] < 0) throw new Error(`${what}.bone "${boneName(rig, bone)}" has no parent: a pole bends a two-bone limb at its head`);
+    out[POLE_STRIDE * k] = bone;
+    out.set(toFloat64(p.point, `${what}.point`, 3), POLE_STRIDE * k + 1);
+    out[POLE_STRIDE * k + 4] = weightOf(p.weight, 1, `${what}.weight`);
+  });
+  return out;
+}
+
+function packStiffness(rig: IkRig, stiffness: unknown): Float64Array {
+  if (stiffness === undefined) return new Float64Array(0);
+  if (typeof stiffness !== 'object' || stiffness === null || Array.isArray(stiffness))
+    throw new Error("goals.stiffness must be an object of bone names and factors, like { 'forearm.L': 5 }");
+  const out = new Float64Array(rig.numBones).fill(1);
+  for (const [name, value] of Object.entries(stiffness)) {
+    const names = rig.spec.names ?? [];
+    const bone = names.includes(name) || !/^\d+$/.test(name) ? boneIndex(rig, name, 'a goals.stiffness key') : boneIndex(rig, Number(name), 'a goals.stiffness key');
+    out[bone] = weightOf(value, 1, `goals.stiffness["${name.slice(0, 60)}"]`);
+  }
+  return out;
 }
 
 /**

@@ -7,5 +7,5 @@ export type { RigSpec } from './rig_spec.js';
 export { boneCount, restMatrix } from './rig_spec.js';
 export { IkSolver } from './solver.js';
 export { orientationErrorsDeg } from './goals.js';
-export type { EffectorGoal, Goals } from './goals.js';
+export type { EffectorGoal, Goals, PoleGoal } from './goals.js';
 export type { SolverMethod, SolverOptions, SolverResult, StopReason } from './solver.js';

@@ -4,7 +4,7 @@
 // (goals.ts): positions and orientations per effector, with weights. The object owns
 // WebAssembly memory: call dispose() when done, and dispose it before its rig.
 import type { EmbindSolver, EmbindSolverOptions, EmbindSolverResult, IkCoreModule } from './generated/ik_core.mjs';
-import { isGoals, packGoals, type Goals } from './goals.js';
+import { isGoals, packGoals, type Goals, type PackedGoals } from './goals.js';
 import { checkedNumbers, coreError, plainOptions, toFloat64 } from './inputs.js';
 import type { IkRig, Numbers } from './rig.js';
 
@@ -86,6 +86,16 @@ export interface SolverOptions {
   lmDampingFloor?: number;
   /** Rejected trials per iteration (lm and newton) before stopping with zero_step. Default 30. */
   lmMaxRejections?: number;
+  /**
+   * Pulls the angles of the bones on a goal's or a pole's chain towards the rest pose (all 0), or
+   * with restFromStart towards the solve's start angles: rows restWeight * stiffness * L * (pi/180)
+   * * (angle - reference), rig units (Goals.stiffness per bone; L the goals' length scale). Never at
+   * the cost of the goals: on target reads only them, and a run that stops off target drops the
+   * pull. Not in paper mode. Default 0 (none).
+   */
+  restWeight?: number;
+  /** The rest pull's reference is the solve's start angles instead of the rest pose. Default false. */
+  restFromStart?: boolean;
   /** Restarts from quasi-random points after a stall, within the time budget (every method outside paper mode; set 0 while dragging). Default 1000. */
   restarts?: number;
   /** Iterations without a 10% improvement that count as a stall (with restarts). Default 30. */
@@ -133,6 +143,10 @@ export interface SolverResult {
   elapsedSeconds: number;
 }
 
+function equal(a: Float64Array, b: Float64Array): boolean {
+  return a.length === b.length && a.every((x, i) => x === b[i]);
+}
+
 function toResult(r: EmbindSolverResult): SolverResult {
   return { ...r, stopReason: r.stopReason as StopReason };
 }
@@ -177,7 +191,7 @@ export class IkSolver {
   /** solve()'s buffer in WebAssembly memory: angles | target | the result numbers (ModuleFacts.io). */
   private io: Float64Array<ArrayBufferLike> = new Float64Array(0);
   /** The goals last handed to the core (undefined: plain targets), to skip handing them again. */
-  private goals?: { packed: Float64Array; lengthScale: number; effectors: string };
+  private goals?: { packed: PackedGoals; effectors: string };
 
   /** The methods this build registers, in display order (lm, the default, first). */
   static methods(module: IkCoreModule): SolverMethod[] {
@@ -331,15 +345,16 @@ export class IkSolver {
       }
       return t;
     }
-    const { packed, target: positions, lengthScale } = packGoals(this.rig, target);
+    const packed = packGoals(this.rig, target);
+    const effectors = this.rig.effectors().join();
     const last = this.goals;
-    const same = last !== undefined && last.lengthScale === lengthScale && last.effectors === this.rig.effectors().join() &&
-      last.packed.length === packed.length && last.packed.every((x, i) => x === packed[i]);
+    const same = last !== undefined && last.effectors === effectors && last.packed.lengthScale === packed.lengthScale &&
+      equal(last.packed.packed, packed.packed) && equal(last.packed.poles, packed.poles) && equal(last.packed.stiffness, packed.stiffness);
     if (!same) {
-      if (!handle.setGoals(packed, lengthScale)) throw coreError(this.rig.module, 'setGoals');
-      this.goals = { packed, lengthScale, effectors: this.rig.effectors().join() };
+      if (!handle.setGoals(packed.packed, packed.poles, packed.stiffness, packed.lengthScale)) throw coreError(this.rig.module, 'setGoals');
+      this.goals = { packed, effectors };
     }
-    return positions;
+    return packed.target;
   }
 
   /** The solve buffer for n angles, m target numbers and `stats` result numbers (asked anew when stale or resized). */
