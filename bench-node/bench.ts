@@ -9,6 +9,7 @@ import { paperIterations, summarize, type Row, type SolveResult } from './metric
 import { isNativeOnly, isPeer, type BenchOptions } from './options.js';
 import type { Progress } from './progress.js';
 import { REACH_PATH_STEPS, reachPaths } from './reach.js';
+import { addOrientations, ORIENTATION_TOLERANCE_DEG } from './pose_goals.js';
 import { markReachable, REFERENCE_METHOD } from './reachability.js';
 import { loadBenchRig, type BenchRig } from './rigs.js';
 import { checkNativeTool, runNative } from './run_native.js';
@@ -85,7 +86,8 @@ async function prepareRig(entry: string, opts: BenchOptions, ik: IkCoreModule): 
 
 /** Refuses (usage error) a --samples that would make the rig's target sets exceed MAX_TARGET_NUMBERS. */
 function checkTargetSetSize(entry: string, rig: PreparedRig, opts: BenchOptions): void {
-  const perSample = 2 * rig.spec.lower.length + 3 * rig.spec.effectors.length; // start, target angles, targets
+  // start, target angles, targets (and with --goals pose the orientations)
+  const perSample = 2 * rig.spec.lower.length + (opts.goals === 'pose' ? 7 : 3) * rig.spec.effectors.length;
   const samples = opts.experiments.reduce((n, e) => n + largestSet(rig, e, opts), 0);
   if (samples * perSample <= MAX_TARGET_NUMBERS) return;
   const mib = (numbers: number): string => `${Math.ceil((8 * numbers) / 2 ** 20)} MiB`;
@@ -130,7 +132,8 @@ export function totalSolves(opts: BenchOptions, rigs: readonly PreparedRig[]): n
 export function runSettings(rig: PreparedRig, experiment: Experiment, method: string, opts: BenchOptions): RunSettings {
   const common = { method, ftol: rig.ftol, timeoutSeconds: opts.timeoutSeconds, paper: opts.paper, rigSize: rig.size };
   if (isDragging(experiment)) return { ...common, ...rig.drag, restarts: 0 };
-  return { ...common, gtol: rig.gtol, tipTolerance: 0, ...(opts.restarts === undefined ? {} : { restarts: opts.restarts }) };
+  const pose = opts.goals === 'pose' ? { goals: opts.goals, orientationToleranceDeg: ORIENTATION_TOLERANCE_DEG } : {};
+  return { ...common, gtol: rig.gtol, tipTolerance: 0, ...(opts.restarts === undefined ? {} : { restarts: opts.restarts }), ...pose };
 }
 
 export interface RunContext {
@@ -141,12 +144,19 @@ export interface RunContext {
   onRow?: (row: Row) => void;
 }
 
-/** Target sets for one rig: one per experiment, as long as the longest method needs. */
+/**
+ * Target sets for one rig: one per experiment, as long as the longest method needs; with --goals
+ * pose each with the effectors' orientations at the target angles.
+ */
 export function targetSetsFor(rig: PreparedRig, opts: BenchOptions, ik: IkCoreModule): Map<Experiment, TargetSet> {
   const core = new IkRig(ik, rig.spec);
   try {
     const count = Math.max(...opts.methods.map((m) => opts.samples[m]));
-    return new Map(opts.experiments.map((e) => [e, generateTargets(rig.spec, e, count, opts.seed, (a) => core.tips(a))]));
+    const make = (e: Experiment): TargetSet => {
+      const set = generateTargets(rig.spec, e, count, opts.seed, (a) => core.tips(a));
+      return opts.goals === 'pose' ? addOrientations(set, (a) => core.tipRotations(a)) : set;
+    };
+    return new Map(opts.experiments.map((e) => [e, make(e)]));
   } finally {
     core.dispose();
   }
@@ -186,7 +196,7 @@ export async function runBench(rigs: readonly PreparedRig[], ctx: RunContext): P
                 ? await runNative(rig.spec, settings, set, opts.workers, (n) => progress.advance(n))
                 : await runOnPool(pool!, rig.path, rig.spec, settings, set, (n) => progress.advance(n));
             const counted = settings.paper && !isPeer(method) ? results.map(countedAsThePaper) : results;
-            const stats = summarize({ rig: rig.name, experiment, method, engine }, counted, settings, set.reachable);
+            const stats = summarize({ rig: rig.name, experiment, method, engine, goals: opts.goals }, counted, settings, set.reachable);
             const row: Row = { ...stats, restarts: effectiveRestarts(ik, settings) };
             rows.push(row);
             ctx.onRow?.(row);

@@ -36,6 +36,8 @@ const notes = [
     'max E; plus success (final E < ftol), median, 95th percentile and max time per solve, and the stop reasons. ' +
     'Drag and reach: success means every tip within the tip tolerance of its target, over the reachable steps; ' +
     'unreachable steps (reach) are counted apart; jump_max_deg is the largest change of one angle in one step. ' +
+    'With --goals pose, E is over the tip positions and success also needs every orientation within 0.5 degrees; ' +
+    'rot_err_avg_deg and rot_err_max_deg are the mean and max of each solve\'s largest orientation error. ' +
     'Definitions, the drag and reach experiments and the peers\' settings: bench-node/README.md.',
   'Times are per solve in seconds, measured on a machine that may be shared: a solve that is descheduled for ' +
     'milliseconds moves t_avg and t_max far more than t_median, so compare speeds by the medians. Wobble is in rig units.',
@@ -90,6 +92,7 @@ async function main(argv: string[], io: CommandIo): Promise<number> {
     seed: opts.seed,
     timeoutSeconds: opts.timeoutSeconds,
     paper: opts.paper,
+    goals: opts.goals,
     humanoidLimits: opts.humanoidLimits,
     rigs: rigs.map((r) => ({
       rig: r.name,

@@ -32,11 +32,18 @@ export interface OnTargetTest {
   ftol: number;
   /** Rig units; > 0: every tip within this distance of its target (the solvers' tipTolerance). */
   tipTolerance: number;
+  /** Degrees; set (--goals pose): also every effector's orientation within this angle of its target. */
+  orientationToleranceDeg?: number;
 }
 
-/** Whether a pose with error E and largest tip distance `tip` (rig units) is on target. */
-export function isOnTarget(test: OnTargetTest, E: number, tip: number): boolean {
-  return test.tipTolerance > 0 ? tip < test.tipTolerance : E < test.ftol;
+/**
+ * Whether a pose with error E (of the positions), largest tip distance `tip` (rig units) and
+ * largest orientation error `rotationDeg` (degrees; read only when the test has an orientation
+ * tolerance) is on target.
+ */
+export function isOnTarget(test: OnTargetTest, E: number, tip: number, rotationDeg = NaN): boolean {
+  const position = test.tipTolerance > 0 ? tip < test.tipTolerance : E < test.ftol;
+  return test.orientationToleranceDeg === undefined ? position : position && rotationDeg < test.orientationToleranceDeg;
 }
 
 /** The largest single-angle change from `from` to `to` (degrees, same lengths): a step's jump. */

@@ -18,7 +18,11 @@
 //   reach)          target; "during" is the largest over the solve's iterates, "after" at its end.
 //   jump (drag,     per step, the largest single-angle change (degrees) from the step's start pose
 //   reach)          to its solution; jump_max_deg is the largest over the row's steps.
+//   rotation error  --goals pose: per solve, the largest angle (degrees) between an effector's frame
+//                   at the final pose and its target orientation; rot_err_avg_deg and
+//                   rot_err_max_deg are their mean and max over the row's solves.
 import { isOnTarget, type OnTargetTest } from './evaluate.js';
+import type { GoalsKind } from './pose_goals.js';
 import { isDragging, type Experiment } from './targets.js';
 import { timeToSuccess, type TimeToSuccess } from './time_to_success.js';
 
@@ -97,6 +101,8 @@ export interface SolveResult {
   wobbleAfter: number;
   /** The largest single-angle change from the start pose to the final pose. */
   jumpDeg: number;
+  /** --goals pose: the largest angle between an effector's frame and its target orientation, degrees. */
+  rotErrDeg?: number;
 }
 
 /** A row's statistics over its solves (with its time to success, time_to_success.ts). */
@@ -105,6 +111,8 @@ export interface RowStats extends TimeToSuccess {
   experiment: Experiment;
   method: string;
   engine: string;
+  /** What the targets were: tip positions, or whole tip poses (--goals). */
+  goals: GoalsKind;
   samples: number;
   t_avg_s: number;
   t_median_s: number;
@@ -128,6 +136,9 @@ export interface RowStats extends TimeToSuccess {
   wobble_after_max: number | null;
   /** drag and reach only (null otherwise): the largest single-angle change in one step, degrees. */
   jump_max_deg: number | null;
+  /** --goals pose only (null otherwise): mean and max over the solves of the largest orientation error, degrees. */
+  rot_err_avg_deg: number | null;
+  rot_err_max_deg: number | null;
 }
 
 /** One row of the tables and of --json: its statistics and the restarts every method had. */
@@ -141,6 +152,8 @@ export interface RowKey {
   experiment: Experiment;
   method: string;
   engine: string;
+  /** Default 'position'. */
+  goals?: GoalsKind;
 }
 
 /**
@@ -157,9 +170,12 @@ export function summarize(key: RowKey, results: readonly SolveResult[], test: On
   const jumps = results.map((r) => r.jumpDeg).filter((j) => Number.isFinite(j));
   const orNull = (v: number): number | null => (Number.isFinite(v) ? v : null);
   const judged = results.filter((_, k) => reachable[k] === 1);
-  const succeeded = judged.map((r) => isOnTarget(test, r.E, r.tipDistance));
+  const succeeded = judged.map((r) => isOnTarget(test, r.E, r.tipDistance, r.rotErrDeg));
+  const goals = key.goals ?? 'position';
+  const rotation = goals === 'pose' ? results.map((r) => r.rotErrDeg ?? NaN) : [];
   return {
     ...key,
+    goals,
     samples: results.length,
     t_avg_s: mean(t),
     t_median_s: median(t),
@@ -179,5 +195,7 @@ export function summarize(key: RowKey, results: readonly SolveResult[], test: On
     wobble_after_avg: orNull(mean(after)),
     wobble_after_max: orNull(maxOf(after)),
     jump_max_deg: isDragging(key.experiment) ? orNull(maxOf(jumps)) : null,
+    rot_err_avg_deg: goals === 'pose' ? orNull(mean(rotation)) : null,
+    rot_err_max_deg: goals === 'pose' ? orNull(maxOf(rotation)) : null,
   };
 }

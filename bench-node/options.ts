@@ -7,6 +7,8 @@ import { availableParallelism } from 'node:os';
 import { Command, CommanderError, Option } from 'commander';
 
 import { BenchError, quote } from './errors.js';
+import { checkGoals } from './goals_option.js';
+import { goalsKinds, type GoalsKind } from './pose_goals.js';
 import { experiments, type Experiment } from './targets.js';
 import { WARM_UP_MS } from './warm_up.js';
 
@@ -51,6 +53,8 @@ export interface BenchOptions {
   progress: boolean;
   /** Untimed solving per worker and runner before timing, milliseconds (warm_up.ts). */
   warmUpMs: number;
+  /** What each effector's target is: its tip position (the protocol's), or its tip frame's pose (pose_goals.ts). */
+  goals: GoalsKind;
 }
 
 /** Solves of one method per experiment: the default, and the largest --samples value. */
@@ -111,6 +115,13 @@ function pick<T extends string>(flag: string, value: string, known: readonly T[]
   return [...new Set(values)] as T[];
 }
 
+/** One of `known`. */
+function pickOne<T extends string>(flag: string, value: string, known: readonly T[], what: string): T {
+  const v = present(flag, value).trim();
+  if (!(known as readonly string[]).includes(v)) throw usage(`${flag}: unknown ${what} ${quote(v)} (known: ${known.join(', ')})`);
+  return v as T;
+}
+
 /** `1000` or `1000,gd=100`: a default plus per-method overrides (methods of `allMethods`), each in 1..MAX_SAMPLES. */
 function parseSamples(value: string, allMethods: readonly string[]): Record<string, number> {
   let fallback: number | undefined;
@@ -148,6 +159,7 @@ function program(allMethods: readonly string[], defaultMethods: readonly string[
     .option('--timeout <seconds>', `time budget per solve (at most ${MAX_TIMEOUT_SECONDS})`, '1')
     .option('--restarts <n>', `restarts per solve for every method, peers included, within the time budget (random and incremental; default: the solvers' default; at most ${MAX_RESTARTS})`)
     .option('--paper', "the report's original algorithms (solver paper mode)", false)
+    .option('--goals <kind>', `targets per end effector: position (the protocol's tip positions) or pose (tip position and frame orientation)`, 'position')
     .option('--no-humanoid-limits', "a recognised humanoid keeps the file's own limits (extras.ik or +-180) instead of anatomical ones")
     .option('--engine <list>', 'wasm, native, or both (prints the ratio)', 'wasm')
     .option('--workers <n>', `worker threads (native: processes), at most ${MAX_WORKERS}`, String(Math.min(availableParallelism(), MAX_WORKERS)))
@@ -173,6 +185,7 @@ interface RawOptions {
   timeout: string;
   restarts?: string;
   paper: boolean;
+  goals: string;
   humanoidLimits: boolean;
   engine: string;
   workers: string;
@@ -228,7 +241,9 @@ export function parseOptions(argv: string[], isTTY: boolean, ownMethods: readonl
     compare: fileName('--compare', raw.compare),
     progress: raw.progress && isTTY,
     warmUpMs: integerIn('--warm-up', raw.warmUp, 0, MAX_WARM_UP_MS),
+    goals: pickOne('--goals', raw.goals, goalsKinds, 'goal kind'),
   };
+  opts.methods = checkGoals(opts.goals, opts.methods, cmd.getOptionValueSource('methods') !== 'default', opts.experiments, opts.paper, opts.compare !== undefined);
   const nativeOnly = opts.methods.find(isNativeOnly);
   if (nativeOnly !== undefined && !opts.engines.includes('native'))
     throw usage(`${nativeOnly} runs only on the native engine: add --engine native`);

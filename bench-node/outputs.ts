@@ -20,6 +20,8 @@ export interface RunInfo {
   seed: number;
   timeoutSeconds: number;
   paper: boolean;
+  /** --goals: 'position' (the protocol's tip positions) or 'pose' (tip positions and frame orientations). */
+  goals: string;
   /** Anatomical limits on recognised humanoids (false: --no-humanoid-limits). */
   humanoidLimits: boolean;
   /** Per rig: size and the tolerances used (dragGtol, tipTolerance: drag and reach's; tipTolerance 0: E < ftol). */
@@ -126,7 +128,7 @@ export function writeJson(file: string, rows: readonly Row[], info: RunInfo): vo
 
 const csvColumns = [
   'rig', 'experiment', 'method', 'engine', 'samples', 't_avg_s', 't_median_s', 't_p95_s', 't_max_s',
-  'iter_avg', 'E_avg', 'E_iqm', 'E_max', 'success_rate', 'unreachable', 'restarts',
+  'iter_avg', 'E_avg', 'E_iqm', 'E_max', 'success_rate', 'unreachable', 'restarts', 'goals', 'rot_err_avg_deg', 'rot_err_max_deg',
   't_success_median_s', 't_success_p95_s', 'success_within_1ms', 'success_within_10ms', 'success_within_100ms',
   'wobble_during_avg', 'wobble_during_max', 'wobble_after_avg', 'wobble_after_max', 'jump_max_deg', 'stop_reasons',
 ] as const;
@@ -156,7 +158,8 @@ export function markdownText(tables: readonly Table[], info: RunInfo, notes: rea
     `Made by \`${info.command}\` on ${info.date}${info.commit ? ` at commit ${info.commit}` : ''}.`,
     '',
     `Machine: ${info.cpu}, ${info.cores} cores; Node ${info.node}; ${info.workers} workers. Seed ${info.seed}, ` +
-      `time budget ${info.timeoutSeconds} s per solve${info.paper ? ', paper mode (the original algorithms)' : ''}.`,
+      `time budget ${info.timeoutSeconds} s per solve${info.paper ? ', paper mode (the original algorithms)' : ''}` +
+      `${info.goals === 'pose' ? ', pose goals (tip positions and orientations; on target also needs every orientation within 0.5 degrees)' : ''}.`,
     '',
     '| rig | bones | end effectors | size | gtol | ftol | drag gtol | drag tip tolerance |',
     '| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: |',

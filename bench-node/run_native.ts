@@ -16,19 +16,26 @@ import { batchesOf } from './run_wasm.js';
 import type { RunSettings } from './runner.js';
 import type { TargetSet } from './targets.js';
 
-export const nativeToolPath = fileURLToPath(new URL('../build/native/ik_bench_native', import.meta.url));
+/**
+ * The native tool: build/native/ik_bench_native, or ik_bench_native in the build folder named by
+ * the environment variable IK_NATIVE_BUILD (for a build of one's own beside a shared build/native).
+ */
+export const nativeToolPath = process.env.IK_NATIVE_BUILD
+  ? join(process.env.IK_NATIVE_BUILD, 'ik_bench_native')
+  : fileURLToPath(new URL('../build/native/ik_bench_native', import.meta.url));
 
 const BATCHES_PER_PROCESS = 4;
 
-/** The job file: header "IKBJOB1\0", int32 count, #angles, #residuals, 0; then per sample
- *  float64 chained, dragged, start (#angles), target (#residuals). */
+/** The job file: header "IKBJOB1\0", int32 count, #angles, #residuals, #orientation numbers (0,
+ *  or with --goals pose 4 per effector); then per sample float64 chained, dragged, start
+ *  (#angles), target (#residuals), orientations (quaternions x, y, z, w). */
 export function encodeJob(set: TargetSet, begin: number, end: number): Uint8Array {
-  const m = set.numAngles, r = set.numResiduals, stride = 2 + m + r;
+  const m = set.numAngles, r = set.numResiduals, o = set.orientations ? (4 * r) / 3 : 0, stride = 2 + m + r + o;
   const count = end - begin;
   const bytes = new Uint8Array(24 + 8 * stride * count);
   bytes.set(new TextEncoder().encode('IKBJOB1\0'), 0);
   const header = new DataView(bytes.buffer, 8, 16);
-  [count, m, r, 0].forEach((v, i) => header.setInt32(4 * i, v, true));
+  [count, m, r, o].forEach((v, i) => header.setInt32(4 * i, v, true));
   const body = new DataView(bytes.buffer, 24);
   let offset = 0;
   const put = (x: number): void => {
@@ -40,6 +47,7 @@ export function encodeJob(set: TargetSet, begin: number, end: number): Uint8Arra
     put(set.dragged[k]);
     for (let i = 0; i < m; i++) put(set.starts[k * m + i]);
     for (let i = 0; i < r; i++) put(set.targets[k * r + i]);
+    for (let i = 0; i < o; i++) put(set.orientations![k * o + i]);
   }
   return bytes;
 }
@@ -54,6 +62,8 @@ interface NativeResult {
   wobble_after: number | null;
   tip_distance: number | null;
   jump_deg: number | null;
+  /** --goals pose only. */
+  rot_err_deg?: number | null;
 }
 
 /** Parses RESULTS.jsonl (see ik_bench_native.cpp), `expected` lines; `file` names it in errors. */
@@ -72,6 +82,7 @@ export function decodeResults(text: string, expected: number, file: string): Sol
       wobbleDuring: num(r.wobble_during),
       wobbleAfter: num(r.wobble_after),
       jumpDeg: num(r.jump_deg),
+      ...(r.rot_err_deg === undefined ? {} : { rotErrDeg: num(r.rot_err_deg) }),
     };
   });
 }
@@ -134,6 +145,7 @@ export async function runNative(
           '--timeout', String(settings.timeoutSeconds)];
         if (settings.paper) args.push('--paper');
         if (settings.restarts !== undefined) args.push('--restarts', String(settings.restarts));
+        if (settings.goals === 'pose') args.push('--goals', 'pose');
         await runProcess(args);
         results[b] = decodeResults(readFileSync(output, 'utf8'), end - begin, output);
         onProgress(end - begin);

@@ -149,6 +149,7 @@ export async function runOnPool(
         numResiduals: r,
         starts: set.starts.slice(begin * m, end * m),
         targets: set.targets.slice(begin * r, end * r),
+        orientations: set.orientations?.slice((begin * 4 * r) / 3, (end * 4 * r) / 3) ?? null,
         chained: set.chained.slice(begin, end),
         dragged: set.dragged.slice(begin, end),
       },

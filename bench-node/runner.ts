@@ -3,12 +3,15 @@
 // (solve_wasm.ts) and for the peers (peers/).
 import type { OnTargetTest } from './evaluate.js';
 import type { SolveResult } from './metrics.js';
+import type { GoalsKind } from './pose_goals.js';
 
 export interface SolveInput {
   /** Start angles (#angles, degrees), or null to continue from the previous solve's pose (drag, reach). */
   start: Float64Array | null;
   /** Targets x_b (3 per end effector, rig units). */
   target: Float64Array;
+  /** --goals pose: the effectors' target orientations (4 per effector, quaternions [x, y, z, w]); else absent. */
+  orientations?: Float64Array | null;
   /** Drag, reach: the dragged effector (index into the rig's effectors); the others are pinned. -1: none. */
   dragged: number;
   /** Time budget of this call, seconds; default the settings' timeoutSeconds (peers/restarting.ts passes what is left). */
@@ -33,6 +36,11 @@ export interface RunSettings extends OnTargetTest {
    * (a restart jumps the whole pose).
    */
   restarts?: number;
+  /**
+   * What the targets are (pose_goals.ts): 'pose' adds each effector's orientation (and then
+   * orientationToleranceDeg is set); absent or 'position': tip positions only.
+   */
+  goals?: GoalsKind;
 }
 
 export interface Runner {

@@ -20,10 +20,18 @@ export function makeRunner(ik: IkCoreModule, spec: RigSpec, settings: RunSetting
     case 'three-ccd':
       return withRestarts(ik, spec, settings, new ThreeCcdRunner(spec, settings));
     case 'closed-chain-ik':
-      return withRestarts(ik, spec, settings, new ClosedChainIkRunner(spec, settings));
+      return withRestarts(ik, spec, settings, closedChainIk(ik, spec, settings));
     default:
       return new WasmSolverRunner(ik, spec, settings);
   }
+}
+
+/** closed-chain-ik; with pose goals given our forward kinematics to judge the orientations. */
+function closedChainIk(ik: IkCoreModule, spec: RigSpec, settings: RunSettings): Runner {
+  if (settings.goals !== 'pose') return new ClosedChainIkRunner(spec, settings);
+  const rig = new IkRig(ik, spec);
+  const runner = new ClosedChainIkRunner(spec, settings, (a) => rig.tipRotations(a));
+  return { solve: (input) => runner.solve(input), dispose: () => (runner.dispose(), rig.dispose()) };
 }
 
 function withRestarts(ik: IkCoreModule, spec: RigSpec, settings: RunSettings, peer: Runner): Runner {

@@ -4,8 +4,9 @@ import type { IkCoreModule } from '../web/src/ik/module.js';
 import { IkRig } from '../web/src/ik/rig.js';
 import type { RigSpec } from '../web/src/ik/rig_spec.js';
 import { IkSolver, type SolverOptions } from '../web/src/ik/solver.js';
-import { largestChange, pinnedDeviation, tipDistance } from './evaluate.js';
+import { errorOf, largestChange, pinnedDeviation, tipDistance } from './evaluate.js';
 import type { SolveResult } from './metrics.js';
+import { largestRotationErrorDeg, poseGoals } from './pose_goals.js';
 import type { Runner, RunSettings, SolveInput } from './runner.js';
 import { project } from './targets.js';
 
@@ -19,6 +20,8 @@ export class WasmSolverRunner implements Runner {
   /** Where the previous solve ended: the start of a chained (drag, reach) solve. */
   private current: Float64Array;
   private readonly buffers: [Float64Array, Float64Array];
+  /** --goals pose: the effectors' bone indices (goals name them); null for position targets. */
+  private readonly poseEffectors: number[] | null;
 
   constructor(ik: IkCoreModule, spec: RigSpec, settings: RunSettings) {
     this.rig = new IkRig(ik, spec);
@@ -29,21 +32,25 @@ export class WasmSolverRunner implements Runner {
       tipTolerance: settings.tipTolerance,
       timeBudgetSeconds: settings.timeoutSeconds,
       paperMode: settings.paper,
+      ...(settings.orientationToleranceDeg === undefined ? {} : { orientationToleranceDeg: settings.orientationToleranceDeg }),
       ...(settings.restarts === undefined ? {} : { restarts: settings.restarts }),
     };
     this.solver = new IkSolver(this.rig, settings.method, this.options);
     this.current = project(spec, new Float64Array(this.rig.numAngles));
     this.buffers = [new Float64Array(this.rig.numAngles), new Float64Array(this.rig.numAngles)];
+    this.poseEffectors = settings.goals === 'pose' ? Array.from(this.rig.effectors()) : null;
   }
 
   solve(input: SolveInput): SolveResult {
     const start = input.start ?? this.current;
+    const pose = this.poseEffectors !== null && input.orientations ? input.orientations : null;
     let result;
     const t0 = performance.now();
     try {
       // Into one of two buffers of our own, never the start's (the replay below reads the start):
-      // no new array per solve.
-      result = this.solver.solve(start, input.target, start === this.buffers[0] ? this.buffers[1] : this.buffers[0]);
+      // no new array per solve. Pose goals go in as a user passes them: a Goals object.
+      const target = pose ? poseGoals(this.poseEffectors!, input.target, pose) : input.target;
+      result = this.solver.solve(start, target, start === this.buffers[0] ? this.buffers[1] : this.buffers[0]);
     } catch {
       // The API throws for invalid input instead of returning invalid_input.
       const seconds = (performance.now() - t0) / 1000;
@@ -54,6 +61,9 @@ export class WasmSolverRunner implements Runner {
     const tips = this.observer.tips(result.angles);
     const after = pinnedDeviation(tips, input.target, input.dragged);
     const during = Number.isNaN(after) ? NaN : this.replayWobble(start, input, result.iterations, after);
+    // With pose goals the solver's E holds the orientation rows too: judge the pose by its own
+    // forward kinematics, E of the positions and the orientation error of the frames.
+    const judged = pose ? { E: errorOf(tips, input.target), rotErrDeg: largestRotationErrorDeg(this.observer.tipRotations(result.angles), pose) } : {};
     return {
       E: result.E,
       tipDistance: tipDistance(tips, input.target),
@@ -63,6 +73,7 @@ export class WasmSolverRunner implements Runner {
       wobbleDuring: during,
       wobbleAfter: after,
       jumpDeg: largestChange(start, result.angles),
+      ...judged,
     };
   }
 

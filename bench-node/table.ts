@@ -42,17 +42,19 @@ export function formatStopReasons(counts: Record<string, number>): string {
 
 /**
  * The results table of one rig and experiment. Drag and reach add the unreachable steps (left out
- * of success), the wobble and the largest jump.
+ * of success), the wobble and the largest jump; --goals pose the orientation errors (degrees).
  */
 export function resultsTable(rows: readonly Row[]): Table {
   const first = rows[0];
   const drag = isDragging(first.experiment);
+  const pose = first.goals === 'pose';
   const headers = ['method', 'engine', 'samples', 'restarts', 't_avg', 'iter_avg', 'E_avg', 'E_IQM', 'max E', 'success', 't_median', 't_p95', 't_max'];
+  if (pose) headers.push('rot_err_avg_deg', 'rot_err_max_deg');
   if (drag) headers.push('unreachable', 'wobble_during avg', 'wobble_during max', 'wobble_after avg', 'wobble_after max', 'jump_max_deg');
   headers.push('stop reasons');
   const numeric = headers.map((h) => !['method', 'engine', 'stop reasons'].includes(h));
   return {
-    title: `${first.rig}, ${first.experiment} targets`,
+    title: `${first.rig}, ${first.experiment} targets${pose ? ' (pose goals)' : ''}`,
     headers,
     numeric,
     rows: rows.map((r) => {
@@ -71,6 +73,7 @@ export function resultsTable(rows: readonly Row[]): Table {
         formatNumber(r.t_p95_s),
         formatNumber(r.t_max_s),
       ];
+      if (pose) cells.push(formatNumber(r.rot_err_avg_deg), formatNumber(r.rot_err_max_deg));
       if (drag)
         cells.push(
           String(r.unreachable),

@@ -56,6 +56,11 @@ export interface TargetSet {
   targetAngles: Float64Array | null;
   /** count x numResiduals: x_b = x(A_k) (reach: the path's points). */
   targets: Float64Array;
+  /**
+   * --goals pose only (else null): count x (4 per effector) quaternions [x, y, z, w], each
+   * effector's frame rotation at A_k (pose_goals.ts).
+   */
+  orientations: Float64Array | null;
   /** 1 where the solve starts from the previous solve's result instead of `starts` (drag, reach). */
   chained: Uint8Array;
   /** drag, reach: the dragged effector (index into spec.effectors) per sample; -1 otherwise. */
@@ -76,6 +81,7 @@ export function prefix(set: TargetSet, count: number): TargetSet {
     starts: set.starts.subarray(0, n * m),
     targetAngles: set.targetAngles?.subarray(0, n * m) ?? null,
     targets: set.targets.subarray(0, n * r),
+    orientations: set.orientations?.subarray(0, (n * 4 * r) / 3) ?? null,
     chained: set.chained.subarray(0, n),
     dragged: set.dragged.subarray(0, n),
     group: set.group.subarray(0, n),
@@ -131,6 +137,7 @@ export function generateTargets(
     starts: new Float64Array(n * m),
     targetAngles: null,
     targets: new Float64Array(n * r),
+    orientations: null,
     chained: new Uint8Array(n),
     dragged: new Int32Array(n).fill(-1),
     group: Int32Array.from({ length: n }, (_, k) => k),

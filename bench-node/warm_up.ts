@@ -7,6 +7,7 @@
 // left V8's optimising tier unreached, and the lamp's timed median was 2x too slow (9.4 against
 // 4.7 us after 300 ms of warm-up, native 2.7 us).
 import type { RigSpec } from '../web/src/ik/rig_spec.js';
+import type { RotationsFn } from './pose_goals.js';
 import { streamFor } from './prng.js';
 import type { Runner } from './runner.js';
 import { project, randomAngles, type TipsFn } from './targets.js';
@@ -16,15 +17,17 @@ export const WARM_UP_MS = 300;
 
 /**
  * Solves random targets of the warm-up stream with `runner` (on `spec`, forward kinematics `tips`)
- * for `ms` milliseconds, at least once, from the rest pose; the results are dropped.
+ * for `ms` milliseconds, at least once, from the rest pose; the results are dropped. With
+ * `rotations` (--goals pose: the effectors' frame rotations) the targets are whole poses.
  */
-export function warmUp(runner: Runner, spec: RigSpec, tips: TipsFn, ms: number): void {
+export function warmUp(runner: Runner, spec: RigSpec, tips: TipsFn, ms: number, rotations?: RotationsFn): void {
   const rand = streamFor(0, 'warm-up');
   const m = spec.lower.length;
   const rest = project(spec, new Float64Array(m));
   const deadline = performance.now() + ms;
   // At least one solve; then as many as fit before the deadline.
   do {
-    runner.solve({ start: rest, target: tips(randomAngles(spec, rand)), dragged: -1 });
+    const goal = randomAngles(spec, rand);
+    runner.solve({ start: rest, target: tips(goal), orientations: rotations?.(goal) ?? null, dragged: -1 });
   } while (performance.now() < deadline);
 }

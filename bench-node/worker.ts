@@ -7,6 +7,7 @@ import { loadIk } from '../web/src/ik/module.js';
 import { IkRig } from '../web/src/ik/rig.js';
 import { errorOf, tipDistance } from './evaluate.js';
 import type { SolveResult } from './metrics.js';
+import { largestRotationErrorDeg } from './pose_goals.js';
 import { makeRunner } from './runners.js';
 import type { Runner } from './runner.js';
 import { warmUp } from './warm_up.js';
@@ -32,34 +33,38 @@ function runnerFor(task: WorkerTask): { runner: Runner; rig: IkRig } {
   cached?.rig.dispose();
   const rig = new IkRig(ik, task.spec);
   const runner = makeRunner(ik, task.spec, task.settings);
-  warmUp(runner, task.spec, (a) => rig.tips(a), init.warmUpMs);
+  const rotations = task.settings.goals === 'pose' ? (a: Float64Array) => rig.tipRotations(a) : undefined;
+  warmUp(runner, task.spec, (a) => rig.tips(a), init.warmUpMs, rotations);
   cached = { key, rig, runner };
   return cached;
 }
 
 function run(task: WorkerTask): SolveResult[] {
   const { runner, rig } = runnerFor(task);
-  const m = task.numAngles, r = task.numResiduals;
+  const m = task.numAngles, r = task.numResiduals, q = (4 * r) / 3;
   const results: SolveResult[] = [];
   let lastReport = performance.now();
   for (let k = 0; k < task.count; k++) {
     const chained = task.chained[k] === 1 && k > 0;
     const start = chained ? null : task.starts.subarray(k * m, (k + 1) * m);
     const target = task.targets.subarray(k * r, (k + 1) * r);
+    const orientations = task.orientations?.subarray(k * q, (k + 1) * q) ?? null;
     let result: SolveResult;
     try {
-      result = runner.solve({ start, target, dragged: task.dragged[k] });
+      result = runner.solve({ start, target, orientations, dragged: task.dragged[k] });
     } catch (e) {
       const stopReason = `exception: ${(e as Error).message.split('\n')[0]}`;
       result = { E: NaN, tipDistance: NaN, iterations: 0, seconds: 0, stopReason, wobbleDuring: NaN, wobbleAfter: NaN, jumpDeg: NaN };
     }
     // A solve that failed before producing a pose (invalid input, an exception) is counted with
-    // the E and tip distance of its start, so averages stay finite and the failure shows in the
-    // stop reasons.
+    // the E, tip distance (and orientation error) of its start, so averages stay finite and the
+    // failure shows in the stop reasons.
     if (!Number.isFinite(result.E)) {
-      const tips = rig.tips(task.starts.subarray(k * m, (k + 1) * m));
+      const startAngles = task.starts.subarray(k * m, (k + 1) * m);
+      const tips = rig.tips(startAngles);
       result.E = errorOf(tips, target);
       result.tipDistance = tipDistance(tips, target);
+      if (orientations) result.rotErrDeg = largestRotationErrorDeg(rig.tipRotations(startAngles), orientations);
     }
     results.push(result);
     const now = performance.now();

@@ -23,6 +23,8 @@ export interface WorkerTask {
   numResiduals: number;
   starts: Float64Array;
   targets: Float64Array;
+  /** --goals pose: 4 per effector per sample (quaternions); else null. */
+  orientations: Float64Array | null;
   chained: Uint8Array;
   dragged: Int32Array;
 }

@@ -6,7 +6,10 @@
 // root), so the last link is the canonical bone frame T_i * rest_i and the XZX angles and their
 // limits map one to one (radians). Fixed angles (min = max) become joints without DOF, rotated by
 // the fixed value. End-effector bones get a DOF-less joint at (length, 0, 0) and a tip link, and
-// a position-only Goal (DOF X, Y, Z) closes onto that tip link.
+// a position-only Goal (DOF X, Y, Z) closes onto that tip link; with --goals pose the Goal has all
+// six DOF (X, Y, Z, EX, EY, EZ) and the effector's target orientation (the tip link's frame is the
+// bone frame, whose rotation the targets are), judged from our forward kinematics of the returned
+// angles (`rotations`).
 // One solve = Solver.solve() calls of CHUNK_ITERATIONS iterations each until every chain reports
 // CONVERGED, one reports STALLED or DIVERGED, or the time budget is spent (checked between
 // calls). E is measured from the tip links' world positions (the library computes in float32).
@@ -18,6 +21,7 @@ import { Matrix4, Quaternion, Vector3 } from 'three';
 import type { RigSpec } from '../../web/src/ik/rig_spec.js';
 import { errorOf, isOnTarget, largestChange, pinnedDeviation, tipDistance } from '../evaluate.js';
 import type { SolveResult } from '../metrics.js';
+import { largestRotationErrorDeg, ORIENTATION_TOLERANCE_DEG, type RotationsFn } from '../pose_goals.js';
 import type { Runner, RunSettings, SolveInput } from '../runner.js';
 import { REFERENCE_SIZE } from '../rigs.js';
 import { project } from '../targets.js';
@@ -49,10 +53,16 @@ export class ClosedChainIkRunner implements Runner {
   private iterations = 0;
   private observe: (() => void) | null = null;
 
+  /**
+   * `rotations` (needed with settings.goals 'pose'): the effectors' frame rotations at given
+   * angles (IkRig.tipRotations), to judge the returned pose's orientations.
+   */
   constructor(
     private readonly spec: RigSpec,
     private readonly settings: RunSettings,
+    private readonly rotations?: RotationsFn,
   ) {
+    if (settings.goals === 'pose' && !rotations) throw new Error('closed-chain-ik: pose goals need the rig\'s tip rotations');
     const n = spec.parents.length;
     const root = new Link();
     const boneLinks: Link[] = [];
@@ -95,7 +105,8 @@ export class ClosedChainIkRunner implements Runner {
       joint.addChild(tip);
       this.tipLinks[e] = tip;
       const goal = new Goal();
-      goal.setGoalDoF(DOF.X, DOF.Y, DOF.Z);
+      if (settings.goals === 'pose') goal.setGoalDoF(DOF.X, DOF.Y, DOF.Z, DOF.EX, DOF.EY, DOF.EZ);
+      else goal.setGoalDoF(DOF.X, DOF.Y, DOF.Z);
       goal.makeClosure(tip);
       this.goals[e] = goal;
     });
@@ -108,6 +119,14 @@ export class ClosedChainIkRunner implements Runner {
     // Every goal nearer than this: on target by the run's test (tipTolerance, or E < ftol).
     this.solver.translationConvergeThreshold =
       settings.tipTolerance > 0 ? settings.tipTolerance : Math.sqrt((2 * settings.ftol) / spec.effectors.length);
+    // Its rotation error is the length of a quaternion difference, 2 sin(angle / 4) for unit
+    // quaternions: under this, every frame is within the run's orientation tolerance.
+    const toleranceRad = (settings.orientationToleranceDeg ?? ORIENTATION_TOLERANCE_DEG) * RAD;
+    if (settings.goals === 'pose') this.solver.rotationConvergeThreshold = 2 * Math.sin(toleranceRad / 4);
+    // Its rotation rows (a quaternion difference, about half the angle) weigh rotationFactor
+    // (error and Jacobian alike) against translation rows in rig units: scaled with the rig like
+    // every length here, as our solvers weigh orientations by a length (the rig's reach).
+    if (settings.goals === 'pose') this.solver.rotationFactor = size;
     // Lengths in the library's defaults assume a rig about 1 unit across; scale them with the rig.
     this.solver.translationErrorClamp = 0.1 * size;
     // As the library's authors run it: the damping of its own benchmark (benchmark/solve.js: 0.01,
@@ -163,6 +182,8 @@ export class ClosedChainIkRunner implements Runner {
     const t0 = performance.now();
     if (input.start) this.setPose(input.start);
     this.goals.forEach((g, e) => g.setPosition(input.target[3 * e], input.target[3 * e + 1], input.target[3 * e + 2]));
+    const q = this.settings.goals === 'pose' ? input.orientations : null;
+    if (q) this.goals.forEach((g, e) => g.setQuaternion(q[4 * e], q[4 * e + 1], q[4 * e + 2], q[4 * e + 3]));
     let stopReason: string;
     try {
       stopReason = this.run(t0 + 1000 * (input.budgetSeconds ?? this.settings.timeoutSeconds), Infinity);
@@ -178,12 +199,14 @@ export class ClosedChainIkRunner implements Runner {
     const tips = this.readTips();
     const E = errorOf(tips, input.target);
     const distance = tipDistance(tips, input.target);
+    const rotErrDeg = q ? largestRotationErrorDeg(this.rotations!(this.poseOut), q) : undefined;
     // The library's convergence test is per goal in float32; report our own test's verdict.
-    if (stopReason === 'converged_E' && !isOnTarget(this.settings, E, distance)) stopReason = 'converged_float32';
+    if (stopReason === 'converged_E' && !isOnTarget(this.settings, E, distance, rotErrDeg)) stopReason = 'converged_float32';
     const after = pinnedDeviation(tips, input.target, input.dragged);
     let during = after;
     if (input.dragged >= 0 && Number.isFinite(after) && iterations > 0) during = this.replayWobble(start, input, iterations);
-    return { E, tipDistance: distance, iterations, seconds, stopReason, wobbleDuring: during, wobbleAfter: after, jumpDeg };
+    return { E, tipDistance: distance, iterations, seconds, stopReason, wobbleDuring: during, wobbleAfter: after, jumpDeg,
+      ...(rotErrDeg === undefined ? {} : { rotErrDeg }) };
   }
 
   /** Replays the solve (same start, same iteration count) observing the pinned effectors. */

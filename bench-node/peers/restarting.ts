@@ -33,7 +33,7 @@ export class RestartingRunner implements Runner {
       if (left <= 0) break;
       last = this.inner.solve({ ...input, start: this.startOf(k), budgetSeconds: left });
       iterations += last.iterations;
-      if (last.E < best.E) best = last;
+      if ((this.reached(last) && !this.reached(best)) || last.E < best.E) best = last;
     }
     const seconds = (performance.now() - t0) / 1000;
     const outOfTime = !this.reached(best) && seconds >= budget;
@@ -46,6 +46,6 @@ export class RestartingRunner implements Runner {
   }
 
   private reached(r: SolveResult): boolean {
-    return isOnTarget(this.settings, r.E, r.tipDistance);
+    return isOnTarget(this.settings, r.E, r.tipDistance, r.rotErrDeg);
   }
 }

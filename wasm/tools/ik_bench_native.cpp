@@ -5,6 +5,7 @@
 // Usage:
 //   ik_bench_native --rig RIG.json --method NAME --input JOB.bin --output RESULTS.jsonl
 //                   [--gtol X] [--ftol Y] [--tip-tol Z] [--timeout SECONDS] [--paper] [--restarts N]
+//                   [--goals position|pose]
 //   ik_bench_native --list-methods     prints the methods it knows (the core's registry, the
 //                                      default first, then "kdl" when built with Orocos KDL) as a
 //                                      JSON array of names
@@ -12,15 +13,25 @@
 // tree solvers under the same tolerances, time budget and restarts.
 // --tip-tol Z > 0 makes "on target" every tip within Z (rig units) of its target (SolverOptions::
 // tip_tolerance) instead of E < Y.
+// --goals pose: each record also carries each effector's target orientation, and every method
+// solves towards the whole poses (Goals of native/pose_goals.h: position and orientation per
+// effector, weight 1; kdl with its rotation rows weighted); on target then also needs every
+// orientation within SolverOptions::orientation_tolerance_deg (0.5 degrees).
 //
 // JOB.bin, little-endian:
-//   header  char[8] "IKBJOB1\0", int32 count, int32 #angles, int32 #residuals, int32 0
+//   header  char[8] "IKBJOB1\0", int32 count, int32 #angles, int32 #residuals, int32 #orientation
+//           numbers (0, or with --goals pose 4 per effector)
 //   count records of float64: chained (0 or 1), dragged effector (-1: none), start (#angles,
-//   degrees), target (#residuals, rig units). A chained record starts from the previous record's
+//   degrees), target (#residuals, rig units), then with --goals pose the target orientations
+//   (quaternions x, y, z, w, 4 per effector). A chained record starts from the previous record's
 //   solution instead of its start (drag and reach paths).
 // RESULTS.jsonl: one JSON object per record and line, numbers written to round-trip exactly:
 //   {"E", "gradient_norm", "iterations", "function_evaluations", "jacobian_evaluations", "seconds",
-//    "stop_reason", "wobble_during", "wobble_after", "tip_distance", "jump_deg"}
+//    "stop_reason", "wobble_during", "wobble_after", "tip_distance", "jump_deg"}, and with --goals
+//   pose "rot_err_deg": the largest angle of an effector's frame from its target orientation at the
+//   solution (degrees, from forward kinematics of the returned angles); E is then the positions'
+//   1/2 |x(A) - x_b|^2 at the solution, from forward kinematics too (the solver's E holds the
+//   orientation rows as well).
 // `seconds` is steady_clock around Solver::solve(). tip_distance: the largest distance of an
 // effector's tip from its target at the solution (rig units); jump_deg: the largest change of one
 // angle from the start to the solution (degrees); both null for invalid input. Wobble (records
@@ -42,6 +53,7 @@
 #include <vector>
 
 #include "../native/a7_rig.h"
+#include "../native/pose_goals.h"
 #include "kinematics.h"
 #include "solvers/solver.h"
 #include "solvers/solver_registry.h"
@@ -55,12 +67,14 @@ struct Args {
   std::string rig, method, input, output;
   ik::SolverOptions options;
   bool list_methods = false;
+  bool pose = false;  // --goals pose
 };
 
 [[noreturn]] void usage(const std::string& problem) {
   throw std::invalid_argument(problem +
                               "\nusage: ik_bench_native --rig RIG.json --method NAME --input JOB.bin --output "
                               "RESULTS.jsonl [--gtol X] [--ftol Y] [--tip-tol Z] [--timeout S] [--paper] [--restarts N]\n"
+                              "       [--goals position|pose]\n"
                               "       ik_bench_native --list-methods");
 }
 
@@ -94,6 +108,11 @@ Args parse_args(int argc, char** argv) {
     else if (flag == "--tip-tol") a.options.tip_tolerance = number_arg(flag, value);
     else if (flag == "--timeout") a.options.time_budget_s = number_arg(flag, value);
     else if (flag == "--restarts") a.options.restarts = static_cast<int>(number_arg(flag, value));
+    else if (flag == "--goals") {
+      const std::string kind = value;
+      if (kind != "position" && kind != "pose") usage("--goals: \"" + kind + "\" is not position or pose");
+      a.pose = kind == "pose";
+    }
     else usage("unknown option " + flag);
   }
   if (!a.list_methods && (a.rig.empty() || a.method.empty() || a.input.empty() || a.output.empty()))
@@ -102,9 +121,9 @@ Args parse_args(int argc, char** argv) {
 }
 
 struct Job {
-  int count = 0, num_angles = 0, num_residuals = 0;
-  std::vector<double> records;  // count x (2 + #angles + #residuals)
-  int stride() const { return 2 + num_angles + num_residuals; }
+  int count = 0, num_angles = 0, num_residuals = 0, num_orientations = 0;
+  std::vector<double> records;  // count x (2 + #angles + #residuals + #orientation numbers)
+  int stride() const { return 2 + num_angles + num_residuals + num_orientations; }
 };
 
 Job read_job(const std::string& path) {
@@ -119,7 +138,9 @@ Job read_job(const std::string& path) {
   job.count = header[0];
   job.num_angles = header[1];
   job.num_residuals = header[2];
-  if (job.count < 0 || job.num_angles <= 0 || job.num_residuals <= 0) throw std::runtime_error(path + ": bad header");
+  job.num_orientations = header[3];
+  if (job.count < 0 || job.num_angles <= 0 || job.num_residuals <= 0 || job.num_orientations < 0)
+    throw std::runtime_error(path + ": bad header");
   job.records.resize(static_cast<size_t>(job.count) * job.stride());
   in.read(reinterpret_cast<char*>(job.records.data()), static_cast<std::streamsize>(job.records.size() * sizeof(double)));
   if (!in) throw std::runtime_error(path + ": truncated");
@@ -194,19 +215,28 @@ class Method {
     solver_ = ik::make_solver(args.method, kin, args.options);
   }
 
-  // Solves from `start` (degrees) towards `target` (rig units); `seconds` is steady_clock around
-  // the solver's call alone (copying the outcome out is not timed).
-  Outcome solve(const Eigen::VectorXd& start, const Eigen::VectorXd& target, double& seconds) {
+  // Solves from `start` (degrees) towards `target` (rig units), or with `orientations` (4 per
+  // effector, quaternions x, y, z, w; empty: none) towards the whole poses; `seconds` is
+  // steady_clock around the solver's call alone (making the goals and copying the outcome out
+  // are not timed).
+  Outcome solve(const Eigen::VectorXd& start, const Eigen::VectorXd& target, const Eigen::VectorXd& orientations,
+                double& seconds) {
+    const bool pose = orientations.size() > 0;
+    if (pose) {
+      goals_ = ik::bench::pose_goals(kin_, target, orientations);
+      rotations_.clear();
+      for (const ik::EffectorGoal& g : goals_.effectors) rotations_.push_back(g.orientation_target);
+    }
     const auto t0 = std::chrono::steady_clock::now();
 #ifdef IK_HAVE_KDL
     if (kdl_) {
-      const ik::kdl::KdlSummary& s = kdl_->solve(start, target);
+      const ik::kdl::KdlSummary& s = pose ? kdl_->solve(start, target, rotations_) : kdl_->solve(start, target);
       seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       return {s.angles, s.E, s.gradient_norm, s.iterations, s.function_evaluations, s.jacobian_evaluations, s.stop_reason,
               s.stop_reason != "invalid_input"};
     }
 #endif
-    const ik::SolverSummary& s = solver_->solve(start, target);
+    const ik::SolverSummary& s = pose ? solver_->solve(start, goals_) : solver_->solve(start, target);
     seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     return {s.angles, s.E, s.gradient_norm, s.iterations, s.function_evaluations, s.jacobian_evaluations,
             ik::stop_reason_name(s.stop_reason), s.stop_reason != ik::StopReason::invalid_input};
@@ -236,6 +266,8 @@ class Method {
   const Args& args_;
   ik::Kinematics& kin_;
   std::unique_ptr<ik::Solver> solver_;
+  ik::Goals goals_;                          // pose goals of the current solve
+  std::vector<Eigen::Matrix3d> rotations_;  // their orientations, for kdl
 #ifdef IK_HAVE_KDL
   std::unique_ptr<ik::kdl::KdlSolver> kdl_;
 #endif
@@ -247,14 +279,16 @@ void run(const Args& args) {
   ik::Kinematics observer(kin.rig());  // poses for wobble, so the solver's own rig is never disturbed
   Method method(args, kin);  // first: an unknown method is the first error
   const Job job = read_job(args.input);
-  if (job.num_angles != kin.num_angles() || job.num_residuals != kin.num_residuals())
+  const int num_orientations = args.pose ? 4 * kin.num_effectors() : 0;
+  if (job.num_angles != kin.num_angles() || job.num_residuals != kin.num_residuals() || job.num_orientations != num_orientations)
     throw std::runtime_error(args.input + ": sizes do not match the rig (" + std::to_string(kin.num_angles()) +
-                             " angles, " + std::to_string(kin.num_residuals()) + " residuals)");
+                             " angles, " + std::to_string(kin.num_residuals()) + " residuals, " +
+                             std::to_string(num_orientations) + " orientation numbers)");
   std::FILE* out = std::fopen(args.output.c_str(), "w");
   if (!out) throw std::runtime_error(args.output + ": cannot write");
 
   Eigen::VectorXd start(kin.num_angles()), target(kin.num_residuals()), previous(kin.num_angles()),
-      tips(kin.num_residuals());
+      tips(kin.num_residuals()), orientations(num_orientations);
   const double nan = std::numeric_limits<double>::quiet_NaN();
   for (int k = 0; k < job.count; ++k) {
     const double* rec = job.records.data() + static_cast<size_t>(k) * job.stride();
@@ -262,11 +296,13 @@ void run(const Args& args) {
     const int dragged = static_cast<int>(rec[1]);
     start = chained ? previous : Eigen::Map<const Eigen::VectorXd>(rec + 2, job.num_angles);
     target = Eigen::Map<const Eigen::VectorXd>(rec + 2 + job.num_angles, job.num_residuals);
+    orientations = Eigen::Map<const Eigen::VectorXd>(rec + 2 + job.num_angles + job.num_residuals, num_orientations);
 
     double seconds = 0;
-    const Outcome s = method.solve(start, target, seconds);
+    const Outcome s = method.solve(start, target, orientations, seconds);
     previous = s.angles;
-    const double E = s.E, gradient_norm = s.gradient_norm;
+    double E = s.E;
+    const double gradient_norm = s.gradient_norm;
     const int iterations = s.iterations, fevals = s.fevals, jevals = s.jevals;
     const std::string& reason = s.reason;
 
@@ -278,10 +314,18 @@ void run(const Args& args) {
       after = largest_distance(observer, previous, target, dragged, tips);
       during = method.wobble(observer, start, target, dragged, iterations, after, tips);
     }
-    const nlohmann::json line = {{"E", E}, {"gradient_norm", gradient_norm}, {"iterations", iterations},
+    nlohmann::json line = {{"E", E}, {"gradient_norm", gradient_norm}, {"iterations", iterations},
                                  {"function_evaluations", fevals}, {"jacobian_evaluations", jevals},
                                  {"seconds", seconds}, {"stop_reason", reason}, {"wobble_during", during},
                                  {"wobble_after", after}, {"tip_distance", tip_distance}, {"jump_deg", jump}};
+    if (args.pose) {  // judged from forward kinematics of the returned angles, as the bench does
+      line["rot_err_deg"] = valid ? ik::bench::largest_rotation_error_deg(observer, previous, orientations) : nan;
+      if (valid) {
+        observer.tips(previous, tips);
+        E = 0.5 * (tips - target).squaredNorm();
+      }
+      line["E"] = E;
+    }
     std::fprintf(out, "%s\n", line.dump().c_str());
   }
   if (std::fclose(out) != 0) throw std::runtime_error(args.output + ": write failed");

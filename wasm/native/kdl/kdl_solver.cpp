@@ -9,6 +9,7 @@
 #include <kdl/treejnttojacsolver.hpp>
 #include <limits>
 
+#include "../../src/goals.h"
 #include "../../src/kinematics.h"
 #include "../../src/solvers/restarts.h"
 #include "kdl_rig.h"
@@ -63,6 +64,14 @@ struct KdlSolver::State {
   Eigen::VectorXd r_q;  // the residual at q, which step() moves from
   Restarts restarts;
   double reach_ = 1, damping = 0, min_damping = 0;
+  // Pose goals: per effector its target rotation; the rotation vectors (world, radians) that turn
+  // each frame onto its target, at the last evaluate() and at q; their rows' weight L (rig units
+  // per radian, the core's length scale rig_reach). Empty `goal_rotations`: positions only.
+  std::vector<KDL::Rotation> goal_rotations;
+  Eigen::VectorXd rot, rot_q;
+  double length_scale = 1;
+  Eigen::MatrixXd position_weights, pose_weights;
+  bool pose_weighted = false;
 
   // Sets the damping of KDL's velocity solver (rig units).
   void set_damping(double lambda) {
@@ -91,20 +100,51 @@ struct KdlSolver::State {
     Eigen::MatrixXd weights = Eigen::MatrixXd::Zero(2 * m, 2 * m);  // 6 rows per effector
     for (int e = 0; e < m / 3; ++e) weights.block<3, 3>(6 * e, 6 * e).setIdentity();  // rotation rows: 0
     vel.setWeightTS(weights);
+    position_weights = weights;
+    length_scale = rig_reach(Kinematics(r_in));
+    pose_weights = weights;
+    for (int e = 0; e < m / 3; ++e) pose_weights.block<3, 3>(6 * e + 3, 6 * e + 3) = length_scale * Eigen::Matrix3d::Identity();
+    rot = Eigen::VectorXd::Zero(m);
+    rot_q = Eigen::VectorXd::Zero(m);
     reach_ = reach(r_in);
     min_damping = kMinDamping * reach_;
     for (const std::string& t : rig.tip_segments) twists[t] = KDL::Twist::Zero();
   }
 
-  // Tips at `q` into `tips`, residual r = tips - targets; returns E = 1/2 |r|^2.
+  // Sets the goals' rotations (empty: positions only) and the task-space weights they need.
+  void set_orientations(const std::vector<Eigen::Matrix3d>& orientations) {
+    goal_rotations.clear();
+    for (const Eigen::Matrix3d& R : orientations)
+      goal_rotations.emplace_back(R(0, 0), R(0, 1), R(0, 2), R(1, 0), R(1, 1), R(1, 2), R(2, 0), R(2, 1), R(2, 2));
+    const bool pose = !goal_rotations.empty();
+    if (pose != pose_weighted) vel.setWeightTS(pose ? pose_weights : position_weights);
+    pose_weighted = pose;
+    rot.setZero();
+    rot_q.setZero();
+  }
+
+  // Tips at `q` into `tips`, residual r = tips - targets; returns E = 1/2 |r|^2. With pose goals
+  // also the rotation vectors `rot` and E += 1/2 L^2 |rot|^2.
   double evaluate(const KDL::JntArray& at, const Eigen::VectorXd& targets) {
     KDL::Frame f;
     for (size_t e = 0; e < rig.tip_segments.size(); ++e) {
       fk.JntToCart(at, f, rig.tip_segments[e]);
       tips.segment<3>(3 * e) << f.p.x(), f.p.y(), f.p.z();
+      if (!goal_rotations.empty()) {
+        const KDL::Vector w = KDL::diff(f.M, goal_rotations[e]);  // world rotation vector onto the target
+        rot.segment<3>(3 * e) << w.x(), w.y(), w.z();
+      }
     }
     r = tips - targets;
-    return 0.5 * r.squaredNorm();
+    if (goal_rotations.empty()) return 0.5 * r.squaredNorm();
+    return 0.5 * r.squaredNorm() + 0.5 * length_scale * length_scale * rot.squaredNorm();
+  }
+
+  // Largest angle of a frame from its target after evaluate(), degrees (0 without pose goals).
+  double rotation_error_deg() const {
+    double worst = 0;
+    for (int e = 0; e < rot.size() / 3; ++e) worst = std::max(worst, rot.segment<3>(3 * e).norm());
+    return worst / kRadPerDeg;
   }
 
   // Largest distance of a tip from its target after evaluate().
@@ -128,7 +168,9 @@ struct KdlSolver::State {
   // the largest joint change (radians).
   double step() {
     for (size_t e = 0; e < rig.tip_segments.size(); ++e)
-      twists[rig.tip_segments[e]] = KDL::Twist(KDL::Vector(-r_q[3 * e], -r_q[3 * e + 1], -r_q[3 * e + 2]), KDL::Vector::Zero());
+      twists[rig.tip_segments[e]] = KDL::Twist(KDL::Vector(-r_q[3 * e], -r_q[3 * e + 1], -r_q[3 * e + 2]),
+                                               goal_rotations.empty() ? KDL::Vector::Zero()
+                                                                      : KDL::Vector(rot_q[3 * e], rot_q[3 * e + 1], rot_q[3 * e + 2]));
     vel.CartToJnt(q, twists, qdot);
     const double largest = qdot.data.size() ? qdot.data.cwiseAbs().maxCoeff() : 0.0;
     if (!std::isfinite(largest)) return 0;  // a failed solve moves nothing
@@ -145,27 +187,49 @@ KdlSolver::~KdlSolver() = default;
 
 const KdlSummary& KdlSolver::solve(const Eigen::VectorXd& start, const Eigen::VectorXd& targets,
                                    const std::function<void(const Eigen::VectorXd&)>& on_iterate) {
+  static const std::vector<Eigen::Matrix3d> none;
+  return solve(start, targets, none, on_iterate);
+}
+
+const KdlSummary& KdlSolver::solve(const Eigen::VectorXd& start, const Eigen::VectorXd& targets,
+                                   const std::vector<Eigen::Matrix3d>& orientations,
+                                   const std::function<void(const Eigen::VectorXd&)>& on_iterate) {
   State& s = *s_;
   const SolverOptions& o = options_;
   const auto t0 = Clock::now();
   KdlSummary& out = summary_;
   out = KdlSummary();
-  if (start.size() != s.rig.num_angles() || targets.size() != s.r.size() || !start.allFinite() || !targets.allFinite()) {
+  bool bad_orientations = !orientations.empty() && orientations.size() != s.rig.tip_segments.size();
+  for (const Eigen::Matrix3d& R : orientations) bad_orientations = bad_orientations || !R.allFinite();
+  if (start.size() != s.rig.num_angles() || targets.size() != s.r.size() || !start.allFinite() || !targets.allFinite() ||
+      bad_orientations) {
     out.stop_reason = "invalid_input";
-    out.message = "start or targets: wrong length or not finite";
+    out.message = "start, targets or orientations: wrong length or not finite";
     out.angles = start;
     return out;
   }
+  s.set_orientations(orientations);
   const bool timed = o.time_budget_s > 0 && std::isfinite(o.time_budget_s);
   auto out_of_time = [&] { return timed && std::chrono::duration<double>(Clock::now() - t0).count() >= o.time_budget_s; };
-  auto on_target = [&](double E) { return o.tip_tolerance > 0 ? s.tip_distance() < o.tip_tolerance : E < o.error_tolerance; };
+  // With pose goals: the position rows' E (or the tip test), and every frame within the tolerance.
+  const bool pose = !orientations.empty();
+  auto on_target = [&](double E) {
+    if (pose) E = 0.5 * s.r.squaredNorm();
+    const bool position = o.tip_tolerance > 0 ? s.tip_distance() < o.tip_tolerance : E < o.error_tolerance;
+    return pose ? position && s.rotation_error_deg() < o.orientation_tolerance_deg : position;
+  };
 
   s.angles = start.cwiseMax(s.lower).cwiseMin(s.upper);
   s.restarts.begin_solve(s.rig.num_angles(), o.seed);
   double best_E = std::numeric_limits<double>::infinity();
-  auto consider = [&](double E) {  // keeps the best point
-    if (E < best_E) {
+  // Keeps the best point: the lowest E; with pose goals an on-target point before any other (E
+  // mixes positions and orientations there, so a lower E need not be on target).
+  bool best_on_target = false;
+  auto consider = [&](double E) {
+    const bool on = pose && on_target(E);
+    if ((on && !best_on_target) || (on == best_on_target && E < best_E)) {
       best_E = E;
+      best_on_target = on;
       joints_to_angles(s.rig, s.q, s.best);
     }
   };
@@ -175,6 +239,7 @@ const KdlSummary& KdlSolver::solve(const Eigen::VectorXd& start, const Eigen::Ve
     s.set_damping(kInitialDamping * s.reach_);
     double E = s.evaluate(s.q, targets);
     s.r_q = s.r;
+    s.rot_q = s.rot;
     ++out.function_evaluations;
     consider(E);
     std::string run_end;
@@ -200,12 +265,14 @@ const KdlSummary& KdlSolver::solve(const Eigen::VectorXd& start, const Eigen::Ve
       }
       if (E_next >= E) {
         s.r = s.r_q;  // the residual of the point kept
+        s.rot = s.rot_q;
         run_end = "zero_step";
         break;
       }
       s.set_damping(std::max(s.damping / kDampingFactor, s.min_damping));
       std::swap(s.q, s.q_next);
       s.r_q = s.r;
+      s.rot_q = s.rot;
       E = E_next;
       ++out.iterations;
       consider(E);
@@ -229,6 +296,7 @@ const KdlSummary& KdlSolver::solve(const Eigen::VectorXd& start, const Eigen::Ve
   angles_to_joints(s.rig, s.best, s.q);
   out.E = s.evaluate(s.q, targets);
   out.tip_distance = s.tip_distance();
+  out.rotation_error_deg = s.rotation_error_deg();
   out.gradient_norm = s.gradient_norm(s.q);
   out.reached = on_target(out.E);
   out.stop_reason = out.reached ? "converged_E" : reason == "converged_E" ? "zero_step" : reason;
