@@ -8,6 +8,9 @@ import { join } from 'node:path';
 import type { Row } from '../metrics.js';
 import { measureHeapGrowth, type HeapGrowth } from './heap_growth.js';
 
+/** Samples per rig and experiment for section 4 (at most). */
+export const PEER_SAMPLES = 200;
+
 /** What to measure, and where. */
 export interface ReportPlan {
   /** Samples per rig and experiment; gd takes gdSamples. */
@@ -54,7 +57,11 @@ export interface Measurements {
   /** 2. gd, bfgs, gn in normal mode on the A7 rigs; 2b. the same with --paper and the original's sample counts. */
   classic: Row[];
   paper: Row[];
-  /** 3. The peers on the A7 rigs. */
+  /**
+   * 4. lm against the peers on the A7 rigs, each with the solvers' default restarts and with none
+   * (the same restart policy for every method): three-ccd and closed-chain-ik beside lm in
+   * WebAssembly, kdl beside lm natively.
+   */
   peers: Row[];
   /** 4. solver_speed on the A7 rigs, native and WebAssembly. */
   core: CoreRow[];
@@ -99,7 +106,14 @@ export async function measure(plan: ReportPlan): Promise<Measurements> {
   // The original's success rate, which its CSV lacks: the original algorithms (--paper) on the
   // same targets, with the original's sample counts (GD 50, the others 300).
   const paper = bench(plan, 'paper', ['--rig', a7, '--methods', 'gd,bfgs,gn', '--paper', '--samples', `${Math.min(samples, 300)},gd=${Math.min(samples, 50)}`]);
-  const peers = bench(plan, 'peers', ['--rig', a7, '--methods', 'three-ccd,closed-chain-ik', '--samples', String(samples)]);
+  // Failed peer solves use the whole 1 s budget: at most 200 samples each.
+  const peerArgs = ['--rig', a7, '--samples', String(Math.min(samples, PEER_SAMPLES))];
+  const peers: Row[] = [];
+  for (const restarts of [[], ['--restarts', '0']]) {
+    const tag = restarts.length ? 'no-restarts' : 'restarts';
+    peers.push(...bench(plan, `peers-${tag}`, [...peerArgs, '--methods', 'lm,three-ccd,closed-chain-ik', ...restarts]));
+    peers.push(...bench(plan, `kdl-${tag}`, [...peerArgs, '--methods', 'lm,kdl', '--engine', 'native', ...restarts]));
+  }
   const core: CoreRow[] = [];
   for (const path of a7Rigs)
     for (const engine of ['native', 'wasm'] as const) {
