@@ -166,6 +166,85 @@ describe('<ik-widget>', () => {
     expect(errors).toEqual([]);
   });
 
+  it(`goals="hand.L:pose": dragging the hand's target keeps the hand's orientation; the turn button rotates it; bad names show an error`, async (ctx) => {
+    const { page, errors } = await openPage(browser, ctx);
+    await gotoExample(page, 'knight');
+    await page.$eval('#knight', (w) => w.setAttribute('goals', 'hand.L:pose'));
+    const before = await probe(page, 'knight');
+    const hand = before.effectorNames.indexOf('hand.L');
+    expect(hand, before.effectorNames.join(', ')).toBeGreaterThanOrEqual(0);
+    const goal = before.orientationGoals[hand];
+    if (!goal) throw new Error('hand.L got no orientation goal');
+    expect(before.orientationErrors[hand]).toBeLessThan(1e-3); // it starts at the hand's frame (the rest pose)
+    before.orientationGoals.forEach((g, k) => {
+      if (k !== hand) expect(g, before.effectorNames[k]).toBeNull();
+    });
+    expect(before.positionGoals.every((p) => p)).toBe(true);
+
+    // Select the hand's target: the gizmo moves it (translate) and the turn button appears.
+    const from = before.targetsOnScreen[hand];
+    await page.mouse.click(from.x, from.y);
+    expect((await probe(page, 'knight')).selected).toBe(hand);
+    const turn = page.locator('#knight button.turn');
+    expect(await turn.isVisible()).toBe(true);
+    expect((await probe(page, 'knight')).gizmoMode).toBe('translate');
+
+    // Drag it up and sideways: the hand must reach the new point with its frame still turned as at rest.
+    const [dx, dy] = [10, -16];
+    await page.mouse.move(from.x, from.y);
+    await page.mouse.down();
+    for (let i = 1; i <= 12; i++) {
+      await page.mouse.move(from.x + (dx * i) / 12, from.y + (dy * i) / 12);
+      await nextFrame(page);
+    }
+    await page.mouse.up();
+    // Wait until the status says on target with the hand on its moved target (not a status from before the drag).
+    await page.waitForFunction(
+      (k) => {
+        const w = document.getElementById('knight') as IkWidget | null;
+        const p = w?.probe;
+        if (!p || w?.shadowRoot?.querySelector<HTMLElement>('.stats')?.dataset.reached !== 'true') return false;
+        const d = Math.hypot(p.tips[3 * k] - p.targets[3 * k], p.tips[3 * k + 1] - p.targets[3 * k + 1], p.tips[3 * k + 2] - p.targets[3 * k + 2]);
+        return d < p.tipTolerance;
+      },
+      hand,
+      { timeout: 20_000 },
+    );
+    const after = await probe(page, 'knight');
+    expect(Math.hypot(...target(after, hand).map((c, i) => c - target(before, hand)[i]))).toBeGreaterThan(20 * after.tipTolerance);
+    expect(tipError(after, hand)).toBeLessThan(after.tipTolerance);
+    expect(after.orientationGoals[hand]).toEqual(goal);
+    expect(after.orientationErrors[hand]).toBeLessThan(0.5);
+    const line = await status(page, 'knight');
+    expect(line.text).toMatch(/^bfgs · \d+ it · tip error [\d.e-]+ · orientation error [\d.e-]+° · [\d.]+ ms · on target$/);
+
+    // The turn button switches the gizmo to rotating the target.
+    await turn.click();
+    expect((await probe(page, 'knight')).gizmoMode).toBe('rotate');
+    expect(await turn.getAttribute('aria-pressed')).toBe('true');
+
+    // An unknown bone and an unknown kind: the status line names them; nothing throws.
+    await page.$eval('#knight', (w) => w.setAttribute('goals', 'hand.X:pose, hand.L:twist'));
+    // The message stays while the widget goes on solving (the goals changed: it solves again).
+    await page.waitForFunction(() => document.getElementById('knight')?.shadowRoot?.querySelector<HTMLElement>('.stats')?.dataset.reached !== undefined);
+    const bad = await page.$eval('#knight', (w) => {
+      const el = w.shadowRoot?.querySelector<HTMLElement>('.stats');
+      return { text: el?.textContent ?? '', problem: el?.dataset.problem ?? '' };
+    });
+    expect(bad.text).toMatch(/^unknown goal bone "hand.X"; goal kind "twist" of hand.L is not position, orientation, pose — bfgs · /);
+    expect(bad.problem).toContain('unknown goal bone "hand.X"');
+    expect(await page.$eval('#knight', (w) => (w as HTMLElement).dataset.state)).toBe('ready');
+    expect((await probe(page, 'knight')).orientationGoals.every((g) => g === null)).toBe(true);
+    // Good goals again: the message goes.
+    await page.$eval('#knight', (w) => w.setAttribute('goals', 'hand.L:orientation'));
+    expect(await page.$eval('#knight', (w) => w.shadowRoot?.querySelector<HTMLElement>('.stats')?.dataset.problem)).toBeUndefined();
+    const p = await probe(page, 'knight');
+    expect(p.positionGoals[hand]).toBe(false);
+    expect(p.orientationGoals[hand]).not.toBeNull();
+    expect(p.gizmoMode).toBe('rotate'); // an orientation-only target always rotates
+    expect(errors).toEqual([]);
+  });
+
   it('a tap on a touch screen selects a target as a click does', async (ctx) => {
     const phone = await launchBrowser(true);
     try {

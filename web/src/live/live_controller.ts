@@ -2,9 +2,10 @@
 // targets' gizmo, clicks on targets, and the frame loop. While a target is dragged, or after
 // something changed, each frame solves from the current pose within the frame's budget (restarts
 // off) and goes on next frame when the budget stopped it; the view is redrawn only when the pose,
-// the targets or the selection changed. The front ends hear of solves, errors and clicks through
-// LiveEvents; everything else (stats, panels, status lines) is theirs.
-import { Vector3 } from 'three';
+// the targets or the selection changed. Targets may carry orientation goals (the rotate gizmo
+// sets them; setOrientationGoal() turns them on or off). The front ends hear of solves, errors
+// and clicks through LiveEvents; everything else (stats, panels, status lines) is theirs.
+import { Quaternion, Vector3 } from 'three';
 
 import { Handles } from '../view/handles.js';
 import { listenForClicks, type ViewClick } from '../view/picking.js';
@@ -42,6 +43,8 @@ export interface LiveEvents {
   failed(message: string): void;
   /** The problem or the pose changed (a target moved, invalidate(), reset(), setEffectors()). */
   changed?(): void;
+  /** The gizmo moved to another target (or none), or a target's orientation goal was turned on or off. */
+  targetChanged?(): void;
   /** A click or tap on the view that hit no target (a target hit takes the gizmo). */
   clicked?(click: ViewClick): void;
   /** Dragging a target started (true) or stopped (false). */
@@ -75,6 +78,9 @@ export class LiveController {
     this.handles = handles;
     this.stage.connectOrbit();
     handles.onTargetMoved = (k, x, y, z) => this.moveTarget(k, x, y, z);
+    handles.onTargetTurned = (k, q) => this.turnTarget(k, q);
+    handles.currentRotation = (k, out) => this.currentRotation(k, out);
+    handles.onSelected = () => this.events.targetChanged?.();
     handles.onDragging = (on) => this.events.dragging?.(on);
     this.stopClicks = listenForClicks(this.stage.canvas, this.stage.camera, () => handles.dragging || handles.hovering, (c) => this.click(c));
     this.stage.onFrame(() => this.frame());
@@ -116,7 +122,7 @@ export class LiveController {
     this.needsRedraw = true;
   }
 
-  /** Back to the rest pose with the targets on the rest tips; no solve follows. */
+  /** Back to the rest pose with the targets on the rest tips and no orientation goals; no solve follows. */
   reset(): void {
     const live = this.current;
     if (!live) return;
@@ -126,6 +132,24 @@ export class LiveController {
     this.needsSolve = false;
     this.needsRedraw = true;
     this.events.changed?.();
+    this.events.targetChanged?.();
+  }
+
+  /** Whether target k (effector index) has an orientation goal. */
+  orientationGoal(k: number): boolean {
+    return this.current?.session.goals.orientation[k] === 1;
+  }
+
+  /**
+   * Turns target k's orientation goal on (at the effector's current frame, so nothing jumps until
+   * the target is turned) or off, and solves again.
+   */
+  setOrientationGoal(k: number, on: boolean): void {
+    const session = this.current?.session;
+    if (!session || k < 0 || k >= session.goals.count || this.orientationGoal(k) === on) return;
+    session.setOrientationGoal(k, on);
+    this.invalidate();
+    this.events.targetChanged?.();
   }
 
   /**
@@ -168,6 +192,40 @@ export class LiveController {
     this.invalidate();
   }
 
+  /** Target k's position goal on (its tip goes to the target, the default) or off (an orientation-only goal), and solves again. */
+  setPositionGoal(k: number, on: boolean): void {
+    const goals = this.current?.session.goals;
+    if (!goals || k < 0 || k >= goals.count || (goals.position[k] === 1) === on) return;
+    goals.setPosition(k, on);
+    this.invalidate();
+    this.events.targetChanged?.();
+  }
+
+  /** Target k (effector index) turned to `q` (rig coordinates): its orientation goal, on from now. */
+  private turnTarget(k: number, q: Quaternion): void {
+    const session = this.current?.session;
+    if (!session) return;
+    const was = this.orientationGoal(k);
+    const r = session.goals.rotations;
+    r[4 * k] = q.x;
+    r[4 * k + 1] = q.y;
+    r[4 * k + 2] = q.z;
+    r[4 * k + 3] = q.w;
+    if (!was) session.goals.setOrientation(k, true);
+    this.invalidate();
+    if (!was) this.events.targetChanged?.();
+  }
+
+  /** Effector k's current bone-frame rotation, rig coordinates (identity when there is no such effector). */
+  private currentRotation(k: number, out: Quaternion): void {
+    const session = this.current?.session;
+    if (!session || k >= session.goals.count) {
+      out.identity();
+      return;
+    }
+    out.fromArray(session.tipRotations(), 4 * k);
+  }
+
   private click(c: ViewClick): void {
     if (!this.current) return;
     const target = this.handles.pick(c.raycaster);
@@ -184,7 +242,8 @@ export class LiveController {
     if (this.needsRedraw) {
       this.needsRedraw = false;
       live.redraw();
-      this.handles.sync(live.session.targets, tips ?? live.session.tips());
+      const s = live.session;
+      this.handles.sync(s.targets, tips ?? s.tips(), s.goals.orientation, s.goals.rotations);
       this.events.redrawn?.();
     }
   }

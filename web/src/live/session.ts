@@ -1,9 +1,12 @@
-// The live IK state of one rig: the WebAssembly rig, the pose, the targets and one solver per
-// method (made on first use). No three.js and no DOM: the page and the widget both drive it.
-// dispose() frees every WebAssembly object it made.
+// The live IK state of one rig: the WebAssembly rig, the pose, the targets, the goals beyond
+// positions (orientation goals, effector_goals.ts) and one solver per method (made on first use).
+// No three.js and no DOM: the page and the widget both drive it. dispose() frees every
+// WebAssembly object it made.
+import { type Goals, orientationErrorsDeg } from '../ik/goals.js';
 import type { IkCoreModule } from '../ik/module.js';
 import { IkRig } from '../ik/rig.js';
 import type { RigSpec } from '../ik/rig_spec.js';
+import { EffectorGoals } from './effector_goals.js';
 import { MethodSolver, type SolveOutcome, type SolveSettings } from './solver.js';
 
 export class IkSession {
@@ -15,6 +18,8 @@ export class IkSession {
   readonly angles: Float64Array;
   /** 3 target coordinates per end effector, in effector order (a new array when the effectors change). */
   targets: Float64Array;
+  /** Which effectors have position and orientation goals, and the orientations (a new object when the effectors change). */
+  goals: EffectorGoals;
   private effectorList: Int32Array;
   private readonly solvers = new Map<string, MethodSolver>();
   private stepping: MethodSolver | null = null;
@@ -27,6 +32,7 @@ export class IkSession {
       this.angles = this.restPose();
       this.targets = this.rig.tips(this.angles);
       this.effectorList = this.rig.effectors();
+      this.goals = new EffectorGoals(this.effectorList.length);
     } catch (e) {
       this.rig.dispose();
       throw e;
@@ -58,7 +64,34 @@ export class IkSession {
     return this.rig.poses(this.angles);
   }
 
-  /** E at the current pose and targets. */
+  /** Each end effector's bone-frame rotation at the current pose: 4 per effector [x, y, z, w], rig coordinates (a new array). */
+  tipRotations(): Float64Array {
+    return this.rig.tipRotations(this.angles);
+  }
+
+  /**
+   * The largest angle, DEGREES, between an effector's bone frame and its orientation goal at the
+   * current pose; NaN when no effector has an orientation goal.
+   */
+  orientationErrorDeg(): number {
+    if (!this.goals.anyOrientation) return NaN;
+    let worst = 0;
+    for (const e of orientationErrorsDeg(this.rig, this.angles, this.problem() as Goals)) if (e > worst) worst = e;
+    return worst;
+  }
+
+  /** What the solves aim at: the targets, or Goals when some effector has more or less than a position goal. */
+  problem(): Float64Array | Goals {
+    return this.goals.beyondPositions ? this.goals.goals(this.effectorList, this.targets) : this.targets;
+  }
+
+  /** Effector k's orientation goal on at `q` ([x, y, z, w], rig coordinates; omitted: its current frame) or off. */
+  setOrientationGoal(k: number, on: boolean, q?: ArrayLike<number>): void {
+    if (on && !q) q = this.tipRotations().subarray(4 * k, 4 * k + 4);
+    this.goals.setOrientation(k, on, q);
+  }
+
+  /** E at the current pose and targets (position goals only). */
   objective(): number {
     return this.rig.numEffectors === 0 ? 0 : this.rig.objective(this.angles, this.targets);
   }
@@ -71,6 +104,7 @@ export class IkSession {
     const before = Array.from(this.effectorList);
     const oldTargets = this.targets;
     this.rig.setEffectors(bones);
+    this.goals = this.goals.remapped(before, bones);
     this.effectorList = this.rig.effectors();
     const tips = this.rig.tips(this.angles);
     bones.forEach((b, k) => {
@@ -83,7 +117,7 @@ export class IkSession {
 
   /**
    * A new session on the same skeleton with other limits (3 per bone, degrees): the same end
-   * effectors and targets, the pose clamped into the new limits. This session is left as it is
+   * effectors, targets and goals, the pose clamped into the new limits. This session is left as it is
    * (the caller disposes it).
    */
   withLimits(lower: Float64Array, upper: Float64Array): IkSession {
@@ -91,30 +125,32 @@ export class IkSession {
     next.setEffectors(Array.from(this.effectorList));
     next.angles.set(next.rig.project(this.angles));
     next.targets = this.targets.slice();
+    next.goals = this.goals.clone();
     return next;
   }
 
-  /** Back to the rest pose, targets on the rest tips. */
+  /** Back to the rest pose, targets on the rest tips, position goals only (orientation goals cleared). */
   reset(): void {
     this.stepping = null;
     this.angles.set(this.restPose());
     this.targets = this.rig.tips(this.angles);
+    this.goals = new EffectorGoals(this.effectorList.length);
   }
 
   /** One solve from the current pose; the pose becomes the solver's result (outcome.angles is `angles`). */
   solve(method: string, settings: SolveSettings): SolveOutcome {
-    return this.solver(method).solve(this.angles, this.targets, settings, this.angles);
+    return this.solver(method).solve(this.angles, this.problem(), settings, this.angles);
   }
 
   /** Solves from `start` (default: the current pose) without changing the pose (for the compare table). */
   trySolve(method: string, settings: SolveSettings, start: Float64Array = this.angles): SolveOutcome {
-    return this.solver(method).solve(start, this.targets, settings);
+    return this.solver(method).solve(start, this.problem(), settings);
   }
 
   /** Starts step mode with `method` from the current pose. */
   beginSteps(method: string, settings: SolveSettings): SolveOutcome {
     this.stepping = this.solver(method);
-    return this.stepping.start(this.angles, this.targets, settings);
+    return this.stepping.start(this.angles, this.problem(), settings);
   }
 
   /** One iteration of the step-mode solve; the pose becomes the iterate. */

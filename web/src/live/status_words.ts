@@ -1,7 +1,8 @@
 // What a solve's outcome means to a user, in words, for the page's stats and the widget's status
 // line. The words never claim more than was reached: "on target" only when every end effector
-// is within the tip tolerance of its target. The same outcome always gets the same object, so the
-// per-frame path builds no strings and can compare words by identity.
+// is within the tip tolerance of its target and, where it has an orientation goal, within the
+// solver's orientation tolerance of it (the core's `reached`). The same outcome always gets the
+// same object, so the per-frame path builds no strings and can compare words by identity.
 
 export interface StatusWords {
   /** A few words: on target, out of reach (closest point), stuck, time budget, ... */
@@ -14,7 +15,7 @@ export interface StatusWords {
 
 function wordsFor(reached: boolean, code: string, paperMode: boolean): StatusWords {
   const words = (text: string, kind: StatusWords['kind'], why: string): StatusWords => ({ text, kind, title: `${why} (stop reason: ${code})` });
-  if (reached) return words('on target', 'on-target', 'every end effector is within the tolerance of its target');
+  if (reached) return words('on target', 'on-target', 'every end effector is within the tolerance of its target (and of its orientation goal, if any)');
   switch (code) {
     case 'running':
       return words('solving', 'solving', 'the solve has not stopped yet');

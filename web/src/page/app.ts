@@ -65,6 +65,7 @@ export class PageApp {
         if (this.controller.live?.selectedBone != null) this.selectionText.request(); // its angles changed
       },
       tick: () => this.stepMode.tick(),
+      targetChanged: () => this.showTargetGoals(),
     });
     this.report = new SolveReport(el.side, this.methods, this.controller, this.settings);
     this.compare = new Compare(el.root, this.methods, this.report.plot);
@@ -84,6 +85,7 @@ export class PageApp {
       settingsChanged: () => this.controller.invalidate(),
       displayChanged: () => this.applyDisplay(this.controller.live),
       gizmoChanged: () => handles.setMode(this.settings.gizmo),
+      orientationGoalChanged: (on) => this.setOrientationGoal(on),
       stepModeChanged: () => this.stepMode.switched(),
       resetPose: () => this.resetPose(),
       step: () => this.stepMode.step(),
@@ -96,7 +98,9 @@ export class PageApp {
     this.keyboard = new Keyboard(el.root, [
       { keys: ['R'], label: 'reset the pose', run: () => this.resetPose() },
       { keys: ['W'], label: 'gizmo: translate the target', run: () => this.setGizmo('translate') },
-      { keys: ['E'], label: 'gizmo: rotate the target about the root joint', run: () => this.setGizmo('rotate') },
+      { keys: ['E'], label: 'gizmo: rotate the target (the hand turns to its orientation)', run: () => this.setGizmo('rotate') },
+      { keys: ['Q'], label: 'gizmo: swing the target about the root joint', run: () => this.setGizmo('swing') },
+      { keys: ['O'], label: 'orientation goal of the selected target on or off', run: () => this.setOrientationGoal() },
       { keys: ['S'], label: 'step mode: one iteration', run: () => this.stepMode.step() },
       { keys: ['C'], label: () => `compare every method from the ${this.settings.compareFrom}`, run: () => void this.compare.run(this.controller, this.settings) },
       { keys: ['?', 'H'], label: 'show or hide this help', run: () => this.keyboard.toggle() },
@@ -182,6 +186,7 @@ export class PageApp {
     this.stepMode.restart();
     this.stepMode.clearInfo();
     this.showSelection();
+    this.showTargetGoals();
   }
 
   // ---- panel, keyboard and click actions -----------------------------------------------------
@@ -218,6 +223,22 @@ export class PageApp {
     this.settings.gizmo = mode;
     this.controller.handles.setMode(mode);
     this.panel.refresh();
+  }
+
+  /** The selected target's orientation goal on, off, or (no argument) the other way round. */
+  private setOrientationGoal(on?: boolean): void {
+    const k = this.controller.handles.selected;
+    if (k === null) {
+      this.showTargetGoals();
+      return;
+    }
+    this.controller.setOrientationGoal(k, on ?? !this.controller.orientationGoal(k));
+  }
+
+  /** The panel's "orientation goal" box follows the selected target. */
+  private showTargetGoals(): void {
+    const k = this.controller.handles.selected;
+    this.panel?.showOrientationGoal(k !== null && this.controller.orientationGoal(k), k !== null);
   }
 
   private applyDisplay(live: LiveRig | null): void {

@@ -14,6 +14,8 @@ export interface PanelActions {
   settingsChanged(): void;
   displayChanged(): void;
   gizmoChanged(): void;
+  /** The selected target's "orientation goal" box was ticked (true) or cleared (false). */
+  orientationGoalChanged(on: boolean): void;
   stepModeChanged(): void;
   resetPose(): void;
   step(): void;
@@ -25,6 +27,9 @@ export class Panel {
   readonly gui: GUI;
   private readonly rigController: Controller;
   private readonly humanoidController: Controller;
+  /** The selected target's goals, as the panel shows them. */
+  private readonly target = { orientationGoal: false };
+  private readonly orientationController: Controller;
 
   constructor(
     container: HTMLElement,
@@ -44,7 +49,12 @@ export class Panel {
     rig.add(s, 'showMesh').name('show mesh').onChange(() => actions.displayChanged());
     rig.add(s, 'showBones').name('show bones').onChange(() => actions.displayChanged());
     rig.add(s, 'clickBone', ['toggle effector', 'select only']).name('click on a bone');
-    rig.add(s, 'gizmo', ['translate', 'rotate']).name('gizmo (W / E)').onChange(() => actions.gizmoChanged());
+    rig.add(s, 'gizmo', ['translate', 'rotate', 'swing']).name('gizmo (W / E / Q)').onChange(() => actions.gizmoChanged());
+    this.orientationController = rig
+      .add(this.target, 'orientationGoal')
+      .name('orientation goal (O)')
+      .onChange((on: boolean) => actions.orientationGoalChanged(on));
+    this.orientationController.domElement.title = 'the selected target also sets its effector bone’s orientation (turn it with the rotate gizmo, E)';
     rig.add({ reset: () => actions.resetPose() }, 'reset').name('reset pose (R)');
 
     const solver = this.gui.addFolder('Solver (every frame)');
@@ -71,6 +81,13 @@ export class Panel {
   /** Re-reads every value (after keyboard shortcuts or URL changes). */
   refresh(): void {
     for (const c of this.gui.controllersRecursive()) c.updateDisplay();
+  }
+
+  /** Shows whether the selected target has an orientation goal; `selected` false: no target is selected (the box is disabled). */
+  showOrientationGoal(on: boolean, selected: boolean): void {
+    this.target.orientationGoal = on;
+    this.orientationController.enable(selected);
+    this.orientationController.updateDisplay();
   }
 
   /** Shows the rig choice without calling back (e.g. a dropped file: no project rig selected). */

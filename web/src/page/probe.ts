@@ -1,6 +1,9 @@
-// A small read-only window onto the page for browser tests and tools: screen positions of
-// targets and bones, the camera, and what is loaded. Set as window.ikPage by main.ts.
-import { Vector3 } from 'three';
+// A small window onto the page for browser tests and tools: screen positions of targets and
+// bones, the camera, what is loaded, the targets' orientation goals, and one action: turning the
+// selected target's gizmo as a rotate drag does (turnGizmo). Set as window.ikPage by main.ts.
+import { Quaternion, Vector3 } from 'three';
+
+import { orientationErrorsDeg } from '../ik/goals.js';
 
 import { IkSession } from '../live/session.js';
 import type { ScreenPoint } from '../view/stage.js';
@@ -41,6 +44,26 @@ export interface PageProbe {
   pixelsPerUnit(): number;
   /** The rig's bounding box at the current pose (world): min and max corners. */
   bounds(): { min: [number, number, number]; max: [number, number, number] } | null;
+  /** The root joint's world position (where swing mode swings about), or null. */
+  rootJoint(): [number, number, number] | null;
+  /** The gizmo's mode: translate, rotate or swing. */
+  gizmoMode(): string;
+  /** Target k's orientation goal [x, y, z, w] (rig coordinates), or null when it has none. */
+  orientationGoal(k: number): [number, number, number, number] | null;
+  /** End effector k's bone-frame rotation [x, y, z, w] at the current pose (rig coordinates), or null. */
+  tipRotation(k: number): [number, number, number, number] | null;
+  /** Angle between effector k's bone frame and its orientation goal, DEGREES; NaN without a goal. */
+  orientationError(k: number): number;
+  /** Whether target k shows its orientation axes. */
+  axesShown(k: number): boolean;
+  /** The gizmo's object's world quaternion [x, y, z, w] (the selected target, or the swing pivot), or null. */
+  gizmoQuaternion(): [number, number, number, number] | null;
+  /**
+   * Drags the gizmo as a user's rotate drag does: the 'dragging-changed' events around `steps`
+   * turns (one per animation frame) of its object about the world `axis` that add up to `degrees`,
+   * each followed by the gizmo's 'objectChange' event. Resolves after the drag ended.
+   */
+  turnGizmo(axis: [number, number, number], degrees: number, steps?: number): Promise<void>;
   /** Objects alive now: IK sessions and solvers (WebAssembly), geometries and textures (GPU). */
   alive(): { sessions: number; solvers: number; geometries: number; textures: number };
 }
@@ -52,7 +75,8 @@ declare global {
 }
 
 export function makeProbe(app: PageApp): PageProbe {
-  const a = new Vector3(), b = new Vector3();
+  const a = new Vector3(), b = new Vector3(), turn = new Quaternion();
+  const quad = (q: ArrayLike<number>, k: number): [number, number, number, number] => [q[4 * k], q[4 * k + 1], q[4 * k + 2], q[4 * k + 3]];
   const { controller } = app;
   const { stage } = controller;
   const session = () => controller.live?.session;
@@ -103,6 +127,39 @@ export function makeProbe(app: PageApp): PageProbe {
     bounds() {
       const box = controller.live?.view.bounds();
       return box ? { min: box.min.toArray(), max: box.max.toArray() } : null;
+    },
+    gizmoMode: () => controller.handles.gizmoMode,
+    rootJoint: () => (controller.live ? (controller.live.view.boneBase(0, a).toArray() as [number, number, number]) : null),
+    orientationGoal(k) {
+      const s = session();
+      return s && s.goals.orientation[k] === 1 ? quad(s.goals.rotations, k) : null;
+    },
+    tipRotation(k) {
+      const s = session();
+      return s && k >= 0 && k < s.goals.count ? quad(s.tipRotations(), k) : null;
+    },
+    orientationError(k) {
+      const s = session();
+      return s && s.goals.orientation[k] === 1 ? orientationErrorsDeg(s.rig, s.angles, s.goals.goals(s.effectors(), s.targets))[k] : NaN;
+    },
+    axesShown: (k) => controller.handles.axesShown(k),
+    gizmoQuaternion() {
+      const o = controller.handles.gizmo.object;
+      return o ? (o.getWorldQuaternion(new Quaternion()).toArray() as [number, number, number, number]) : null;
+    },
+    async turnGizmo(axis, degrees, steps = 12) {
+      const gizmo = controller.handles.gizmo;
+      const object = gizmo.object;
+      if (!object) throw new Error('the gizmo holds no target');
+      const frame = (): Promise<void> => new Promise((done) => requestAnimationFrame(() => done()));
+      turn.setFromAxisAngle(a.set(...axis).normalize(), (degrees * Math.PI) / 180 / steps);
+      gizmo.dragging = true;
+      for (let i = 0; i < steps; i++) {
+        object.quaternion.premultiply(turn); // the object's parent is the scene's untransformed root
+        gizmo.dispatchEvent({ type: 'objectChange' });
+        await frame();
+      }
+      gizmo.dragging = false;
     },
     effectorError(k) {
       const s = session();

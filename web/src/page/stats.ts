@@ -17,6 +17,8 @@ export interface StatsValues {
   reached: boolean;
   /** Largest distance of an end effector from its target, rig units. */
   tipDistance: number;
+  /** Largest angle between an effector's bone frame and its orientation goal, DEGREES; NaN: no orientation goal. */
+  orientationErrorDeg: number;
   /** Screen pixels per rig unit near the targets (for the tip error in pixels); NaN: unknown. */
   pixelsPerUnit: number;
   stopReason: string;
@@ -27,10 +29,18 @@ export interface StatsValues {
   pinnedDrift: number;
 }
 
+/** Fields shown only while their value is a number (not NaN). */
+const OPTIONAL = new Set<string>(['orientationErrorDeg']);
+
 const FIELDS: { key: keyof StatsValues | 'median' | 'status'; label: string; title: string }[] = [
   { key: 'method', label: 'method', title: 'the method solving every frame' },
   { key: 'status', label: 'status', title: 'what the last solve reached' },
   { key: 'tipDistance', label: 'tip error', title: 'largest distance of an end effector from its target (rig units, and screen pixels)' },
+  {
+    key: 'orientationErrorDeg',
+    label: 'orientation error',
+    title: 'largest angle between an effector’s bone frame and its orientation goal, degrees (shown while a target has an orientation goal)',
+  },
   { key: 'iterations', label: 'iterations', title: 'iterations of the last solve' },
   { key: 'E', label: 'E', title: 'E = ½ Σ |tip − target|² after the last solve' },
   { key: 'gradNorm', label: '‖∇E‖', title: 'gradient norm after the last solve' },
@@ -53,7 +63,7 @@ export class StatsPanel {
   private readonly cells = new Map<string, HTMLElement>();
   /** The last solve's values, written out by writeNumbers(). */
   private readonly latest: StatsValues = {
-    method: '', iterations: 0, E: 0, gradNorm: 0, reached: false, tipDistance: 0, pixelsPerUnit: NaN, stopReason: '', paperMode: false, ms: 0, pinnedDrift: 0,
+    method: '', iterations: 0, E: 0, gradNorm: 0, reached: false, tipDistance: 0, orientationErrorDeg: NaN, pixelsPerUnit: NaN, stopReason: '', paperMode: false, ms: 0, pinnedDrift: 0,
   };
   /** The words the status cell shows, or null. */
   private words: StatusWords | null = null;
@@ -70,6 +80,7 @@ export class StatsPanel {
       const dd = document.createElement('dd');
       dd.dataset.stat = f.key;
       dd.textContent = '–';
+      dt.hidden = dd.hidden = OPTIONAL.has(f.key);
       this.cells.set(f.key, dd);
       this.element.append(dt, dd);
     }
@@ -99,6 +110,7 @@ export class StatsPanel {
     this.numbers.cancel();
     this.set('method', method, NaN);
     this.set('E', formatNumber(E), E);
+    this.setOptional('orientationErrorDeg', '', NaN);
   }
 
   reset(): void {
@@ -106,6 +118,7 @@ export class StatsPanel {
     this.median.clear();
     this.words = null;
     for (const [key, cell] of this.cells) this.set(key, '–', NaN, cell);
+    for (const key of OPTIONAL) this.setOptional(key, '', NaN);
     const status = this.cells.get('status');
     if (status) {
       status.title = '';
@@ -135,10 +148,23 @@ export class StatsPanel {
     this.set('gradNorm', formatNumber(v.gradNorm), v.gradNorm);
     const px = v.tipDistance * v.pixelsPerUnit;
     this.set('tipDistance', `${formatNumber(v.tipDistance)}${Number.isFinite(px) ? ` (${px.toFixed(1)} px)` : ''}`, v.tipDistance);
+    this.setOptional('orientationErrorDeg', `${v.orientationErrorDeg.toPrecision(3)}°`, v.orientationErrorDeg);
     this.set('ms', v.ms.toFixed(3), v.ms);
     const m = this.median.median();
     this.set('median', Number.isNaN(m) ? '–' : `${m.toFixed(3)} (n=${this.median.size})`, m);
     this.set('pinnedDrift', formatNumber(v.pinnedDrift), v.pinnedDrift);
+  }
+
+  /** Sets an OPTIONAL field, shown only while `value` is not NaN. */
+  private setOptional(key: string, text: string, value: number): void {
+    const cell = this.cells.get(key);
+    if (!cell) return;
+    const hidden = Number.isNaN(value);
+    if (cell.hidden !== hidden) {
+      cell.hidden = hidden;
+      if (cell.previousElementSibling instanceof HTMLElement) cell.previousElementSibling.hidden = hidden;
+    }
+    this.set(key, hidden ? '–' : text, value, cell);
   }
 
   private set(key: string, text: string, value: number, cell = this.cells.get(key)): void {

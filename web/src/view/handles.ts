@@ -1,9 +1,16 @@
 // End-effector targets and their gizmo. Each effector has a target sphere (draggable with a
-// TransformControls gizmo), a small marker on its tip, and a line from tip to target. While the
-// gizmo is dragged the orbit camera is disabled. Targets not being dragged never move.
-// Translate mode moves the selected target; rotate mode swings it about the rig's root joint.
+// TransformControls gizmo), a small marker on its tip, and a line from tip to target; a target
+// with an orientation goal also shows that orientation as a red/green/blue axes triad (the
+// effector bone frame's x, y, z). While the gizmo is dragged the orbit camera is disabled.
+// Targets not being dragged never move. Modes: translate moves the selected target (keeping its
+// orientation goal); rotate turns it, which sets its orientation goal (the gizmo starts at the
+// effector's current frame, so nothing jumps until the user turns it); swing swings it (and its
+// orientation goal, if any) rigidly about the rig's root joint. Scene coordinates are rig
+// coordinates (rig_view.ts draws the poses unchanged), so the target's quaternion in the scene is
+// the goal's quaternion in the rig, with no conversion.
 import {
   BufferGeometry,
+  CylinderGeometry,
   Float32BufferAttribute,
   Group,
   LineBasicMaterial,
@@ -21,9 +28,12 @@ import { TransformControls } from 'three/addons/controls/TransformControls.js';
 
 import type { Stage } from './stage.js';
 
-export type GizmoMode = 'translate' | 'rotate';
+export type GizmoMode = 'translate' | 'rotate' | 'swing';
 
 const q = new Quaternion();
+
+/** Length of a target's axes triad, as a fraction of the rig's size (RigView.size). */
+const AXES_LENGTH = 0.09;
 
 export class Handles {
   readonly root = new Group();
@@ -31,10 +41,19 @@ export class Handles {
   /** Index (in effector order) of the target the gizmo holds, or null. */
   selected: number | null = null;
   dragging = false;
-  /** Called with the effector index whenever the user moves that target. */
+  /** Called with the effector index whenever the user moves that target (rig units). */
   onTargetMoved: (k: number, x: number, y: number, z: number) => void = () => {};
+  /**
+   * Called with the effector index whenever the user turns that target (rotate mode, or swing
+   * mode on a target with an orientation goal): its new orientation [x, y, z, w], rig coordinates.
+   */
+  onTargetTurned: (k: number, q: Quaternion) => void = () => {};
   /** Called when dragging starts (true) and stops (false). */
   onDragging: (dragging: boolean) => void = () => {};
+  /** Called after the gizmo moved to another target (or none). */
+  onSelected: (k: number | null) => void = () => {};
+  /** Writes effector k's current bone-frame rotation (rig coordinates) into `out`: where rotate mode starts. */
+  currentRotation: (k: number, out: Quaternion) => void = (_k, out) => void out.identity();
 
   private readonly targetGeo = new SphereGeometry(1, 20, 14);
   private readonly tipGeo = new SphereGeometry(1, 12, 8);
@@ -45,10 +64,18 @@ export class Handles {
   private readonly lines: LineSegments;
   private targets: Mesh[] = [];
   private tips: Mesh[] = [];
+  /** One axes triad per target, a child of its sphere (so it turns with it); visible while its orientation goal is on. */
+  private axes: Group[] = [];
+  /** A unit-length rod along +Y from the origin, shared by every triad's three axes. */
+  private readonly rodGeo = new CylinderGeometry(0.04, 0.04, 1, 6, 1).translate(0, 0.5, 0);
+  private readonly axisMats = [0xff3b3b, 0x3bdc5a, 0x3b8bff].map(
+    (color) => new MeshBasicMaterial({ color, depthTest: false, transparent: true }),
+  );
   private readonly pivot = new Object3D();
   private mode: GizmoMode = 'translate';
   private readonly swingFrom = new Vector3();
   private readonly pivotStart = new Quaternion();
+  private readonly turnFrom = new Quaternion();
   private readonly disposeGizmoListeners: () => void;
 
   private size = 1;
@@ -69,8 +96,10 @@ export class Handles {
     const onDragging = (e: { value: unknown }): void => {
       this.dragging = e.value === true;
       stage.orbit.enabled = !this.dragging;
-      if (this.dragging && this.mode === 'rotate' && this.selected !== null) {
-        this.swingFrom.copy(this.targets[this.selected].position);
+      if (this.dragging && this.mode === 'swing' && this.selected !== null) {
+        const t = this.targets[this.selected];
+        this.swingFrom.copy(t.position);
+        this.turnFrom.copy(t.quaternion);
         this.pivotStart.copy(this.pivot.quaternion);
       }
       this.onDragging(this.dragging);
@@ -80,8 +109,16 @@ export class Handles {
       if (k === null || !this.dragging) return;
       const t = this.targets[k];
       if (this.mode === 'rotate') {
+        this.onTargetTurned(k, t.quaternion);
+        return;
+      }
+      if (this.mode === 'swing') {
         q.copy(this.pivotStart).invert().premultiply(this.pivot.quaternion);
         t.position.copy(this.swingFrom).sub(this.pivot.position).applyQuaternion(q).add(this.pivot.position);
+        if (this.axes[k].visible) {
+          t.quaternion.copy(this.turnFrom).premultiply(q);
+          this.onTargetTurned(k, t.quaternion);
+        }
       }
       this.onTargetMoved(k, t.position.x, t.position.y, t.position.z);
     };
@@ -105,12 +142,19 @@ export class Handles {
     for (const m of [...this.targets, ...this.tips]) m.removeFromParent();
     this.targets = [];
     this.tips = [];
+    this.axes = [];
     const r = this.size * 0.018;
     for (let k = 0; k < count; k++) {
       const t = new Mesh(this.targetGeo, this.targetMat);
       t.name = `target ${k}`;
       t.scale.setScalar(r);
       t.position.fromArray(targets, 3 * k);
+      const axes = this.makeAxes();
+      axes.name = `target ${k} axes`;
+      axes.scale.setScalar((AXES_LENGTH * this.size) / r); // inside the sphere's scale
+      axes.visible = false;
+      t.add(axes);
+      this.axes.push(axes);
       const tip = new Mesh(this.tipGeo, this.tipMat);
       tip.scale.setScalar(r * 0.55);
       tip.renderOrder = 13;
@@ -135,15 +179,18 @@ export class Handles {
     if (k === null || !this.targets[k]) {
       this.selected = null;
       this.gizmo.detach();
+      this.onSelected(null);
       return;
     }
     this.targets[k].material = this.targetSelMat;
     this.attach();
+    this.onSelected(k);
   }
 
+  /** Translate, rotate (turn the target: its orientation goal) or swing (about the root joint). */
   setMode(mode: GizmoMode): void {
     this.mode = mode;
-    this.gizmo.setMode(mode);
+    this.gizmo.setMode(mode === 'translate' ? 'translate' : 'rotate');
     this.attach();
   }
 
@@ -151,23 +198,40 @@ export class Handles {
     return this.mode;
   }
 
-  /** Where rotate mode swings targets about (the root joint). */
+  /** Whether target k shows its orientation goal's axes. */
+  axesShown(k: number): boolean {
+    return this.axes[k]?.visible ?? false;
+  }
+
+  /** Where swing mode swings targets about (the root joint). */
   setPivot(at: Vector3): void {
     this.pivot.position.copy(at);
   }
 
-  /** Moves markers: targets (unless one is being dragged) and tips, 3 numbers per effector. */
-  sync(targets: Float64Array, tips: Float64Array): void {
+  /**
+   * Moves markers: targets (unless one is being dragged) and tips, 3 numbers per effector, rig
+   * units. `turned[k]` is 1 where effector k has an orientation goal, `rotations` its orientation
+   * (4 per effector [x, y, z, w], rig coordinates): the target turns to it and shows its axes.
+   * The selected target in rotate mode without a goal follows its effector's current frame.
+   */
+  sync(targets: Float64Array, tips: Float64Array, turned?: Uint8Array, rotations?: Float64Array): void {
     const pos = this.lines.geometry.getAttribute('position') as Float32BufferAttribute;
     for (let k = 0; k < this.targets.length; k++) {
       const t = this.targets[k];
-      if (!(this.dragging && k === this.selected)) t.position.fromArray(targets, 3 * k);
+      const held = this.dragging && k === this.selected;
+      const on = turned?.[k] === 1;
+      this.axes[k].visible = on;
+      if (!held) {
+        t.position.fromArray(targets, 3 * k);
+        if (on && rotations) t.quaternion.fromArray(rotations, 4 * k);
+        else if (k === this.selected && this.mode === 'rotate') this.currentRotation(k, t.quaternion);
+      }
       this.tips[k].position.fromArray(tips, 3 * k);
       pos.setXYZ(2 * k, tips[3 * k], tips[3 * k + 1], tips[3 * k + 2]);
       pos.setXYZ(2 * k + 1, t.position.x, t.position.y, t.position.z);
     }
     pos.needsUpdate = true;
-    if (this.mode === 'rotate' && !this.dragging) this.pivot.quaternion.identity();
+    if (this.mode === 'swing' && !this.dragging) this.pivot.quaternion.identity();
   }
 
   /** The target under the ray (effector index), or null. */
@@ -192,18 +256,33 @@ export class Handles {
     this.gizmo.dispose();
     this.root.removeFromParent();
     this.root.clear();
-    for (const x of [this.targetGeo, this.tipGeo, this.lines.geometry]) x.dispose();
-    for (const x of [this.targetMat, this.targetSelMat, this.tipMat, this.lineMat]) x.dispose();
+    for (const x of [this.targetGeo, this.tipGeo, this.rodGeo, this.lines.geometry]) x.dispose();
+    for (const x of [this.targetMat, this.targetSelMat, this.tipMat, this.lineMat, ...this.axisMats]) x.dispose();
+  }
+
+  /** A red/green/blue triad of unit rods along +x, +y, +z (seen through the model, as the tip markers are). */
+  private makeAxes(): Group {
+    const g = new Group();
+    for (let i = 0; i < 3; i++) {
+      const rod = new Mesh(this.rodGeo, this.axisMats[i]);
+      if (i === 0) rod.rotation.z = -Math.PI / 2; // +y -> +x
+      if (i === 2) rod.rotation.x = Math.PI / 2; // +y -> +z
+      rod.renderOrder = 14;
+      g.add(rod);
+    }
+    return g;
   }
 
   private attach(): void {
     const k = this.selected;
     if (k === null) return;
-    if (this.mode === 'rotate') {
+    if (this.mode === 'swing') {
       this.pivot.quaternion.identity();
       this.gizmo.attach(this.pivot);
     } else {
-      this.gizmo.attach(this.targets[k]);
+      const t = this.targets[k];
+      if (this.mode === 'rotate' && !this.axes[k].visible) this.currentRotation(k, t.quaternion);
+      this.gizmo.attach(t);
     }
   }
 }

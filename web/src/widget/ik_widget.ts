@@ -1,9 +1,12 @@
-// <ik-widget src="models/lamp.glb" method="lm" effectors="head, 3"></ik-widget>
+// <ik-widget src="models/lamp.glb" method="lm" effectors="head, 3" goals="head:pose"></ik-widget>
 // One custom element: a rig, its targets and the solver running live, in a shadow root. A click
-// or tap on a target gives it the gizmo; the status line says what the last solve reached. Loading
-// problems (file, format, WebAssembly, WebGL) show as a message inside the widget and never
-// throw into the host page. Names from files are shown as text, never as HTML. The frame loop,
-// the solve and the gizmo are web/src/live/'s LiveController, as on the page.
+// or tap on a target gives it the gizmo; the status line says what the last solve reached. The
+// `goals` attribute gives named effectors orientation goals (goal_kinds.ts): their targets start
+// at the bone's current frame, and the bar's "turn" button switches the gizmo to rotating them
+// (an orientation-only target always rotates). Unknown names in `effectors` or `goals` show in
+// the status line. Loading problems (file, format, WebAssembly, WebGL) show as a message inside
+// the widget and never throw into the host page. Names from files are shown as text, never as
+// HTML. The frame loop, the solve and the gizmo are web/src/live/'s LiveController, as on the page.
 import type { IkCoreModule } from '../ik/module.js';
 import { errorText } from '../live/error_text.js';
 import { LiveController, type FrameSettings } from '../live/live_controller.js';
@@ -11,6 +14,7 @@ import { LiveRig } from '../live/live_rig.js';
 import { MethodList } from '../live/methods.js';
 import { loadRigUrl } from '../live/rig_source.js';
 import { widgetCore } from './core.js';
+import { findBone, parseGoalKinds } from './goal_kinds.js';
 import { widgetProbe, type WidgetProbe } from './probe.js';
 import { StatusLine } from './status_line.js';
 
@@ -24,13 +28,14 @@ const STYLE = `
 .bar .name { color: #ffb454; overflow: hidden; text-overflow: ellipsis; white-space: nowrap; }
 .bar .stats { margin-left: auto; text-align: right; }
 .bar select, .bar button { font: inherit; background: #2a2f37; color: inherit; border: 1px solid #3a414c; border-radius: 3px; }
+.bar button[aria-pressed='true'] { background: #3d4654; border-color: #ffb454; }
 .message { position: absolute; inset: 0; display: grid; place-items: center; padding: 12px; text-align: center; }
 .message[data-kind='error'] { color: #ffd9dc; background: #4a1f25; }
 [hidden] { display: none !important; }
 `;
 
 export class IkWidget extends HTMLElement {
-  static readonly observedAttributes = ['src', 'method', 'effectors'];
+  static readonly observedAttributes = ['src', 'method', 'effectors', 'goals'];
 
   private readonly shadow: ShadowRoot;
   private readonly view: HTMLDivElement;
@@ -38,6 +43,10 @@ export class IkWidget extends HTMLElement {
   private readonly nameEl: HTMLSpanElement;
   private readonly status: StatusLine;
   private readonly methodSelect: HTMLSelectElement;
+  /** Switches the gizmo between moving and turning a target that has a pose goal. */
+  private readonly turnButton: HTMLButtonElement;
+  /** The gizmo turns pose targets (the turn button is pressed). */
+  private turning = false;
   private readonly message: HTMLDivElement;
   /** The core's methods, once it has loaded. */
   private methods: MethodList | null = null;
@@ -64,10 +73,21 @@ export class IkWidget extends HTMLElement {
     reset.type = 'button';
     reset.textContent = 'reset';
     reset.addEventListener('click', () => this.resetPose());
+    this.turnButton = document.createElement('button');
+    this.turnButton.type = 'button';
+    this.turnButton.className = 'turn';
+    this.turnButton.textContent = 'turn';
+    this.turnButton.title = 'rotate the selected target: the bone turns to its orientation';
+    this.turnButton.hidden = true;
+    this.turnButton.setAttribute('aria-pressed', 'false');
+    this.turnButton.addEventListener('click', () => {
+      this.turning = !this.turning;
+      this.useGizmo();
+    });
     const stats = document.createElement('span');
     stats.className = 'stats';
     this.status = new StatusLine(stats);
-    this.bar.append(this.nameEl, this.methodSelect, reset, stats);
+    this.bar.append(this.nameEl, this.methodSelect, reset, this.turnButton, stats);
     this.bar.hidden = true;
     this.message = document.createElement('div');
     this.message.className = 'message';
@@ -107,7 +127,7 @@ export class IkWidget extends HTMLElement {
     if (!this.isConnected || before === after) return;
     if (name === 'src') void this.load();
     else if (name === 'method') this.useMethod();
-    else if (name === 'effectors') this.applyEffectors();
+    else if (name === 'effectors' || name === 'goals') this.applyTargets();
   }
 
   private async load(): Promise<void> {
@@ -167,12 +187,13 @@ export class IkWidget extends HTMLElement {
     this.settings.gradientTolerance = tolerances.gradientTolerance;
     this.settings.method = this.methodSelect.value = this.method;
     const controller = new LiveController(this.view, this.settings, {
-      solved: (outcome, ms) => this.status.show(this.settings.method, outcome, ms),
+      solved: (outcome, ms) => this.status.show(this.settings.method, outcome, ms, controller.live?.session.orientationErrorDeg() ?? NaN),
       failed: (message) => this.status.note(message, 'failed'),
+      targetChanged: () => this.useGizmo(),
     });
     this.controller = controller;
     controller.show(live);
-    this.applyEffectors();
+    this.applyTargets();
     this.nameEl.textContent = live.name;
     this.nameEl.title = `${live.name}: ${live.session.rig.numBones} bones`;
     this.bar.hidden = false;
@@ -186,40 +207,87 @@ export class IkWidget extends HTMLElement {
     this.controller?.invalidate();
   }
 
-  /** The `effectors` attribute: bone names or indices, separated by commas. */
-  private applyEffectors(): void {
+  /** The `effectors` and `goals` attributes, applied in that order; what could not be read shows in the status line. */
+  private applyTargets(): void {
+    let problems: string[];
+    try {
+      problems = [...this.applyEffectors(), ...this.applyGoals()];
+    } catch (e) {
+      problems = [`ik-widget: ${errorText(e)}`]; // e.g. more end effectors than the core takes
+    }
+    this.status.problem(problems.join('; '));
+    this.useGizmo();
+  }
+
+  /** The `effectors` attribute: bone names or indices, separated by commas. Returns what could not be read. */
+  private applyEffectors(): string[] {
     const controller = this.controller;
     const live = controller?.live;
-    if (!controller || !live) return;
     const attr = this.getAttribute('effectors');
+    if (!controller || !live || !attr?.trim()) return [];
+    const names = live.session.spec.names;
+    const bones: number[] = [];
     const unknown: string[] = [];
-    if (attr && attr.trim()) {
-      const names = live.session.spec.names;
-      const bones: number[] = [];
-      for (const raw of attr.split(',')) {
-        const item = raw.trim();
-        if (!item) continue;
-        let i = /^\d+$/.test(item) ? Number(item) : names.indexOf(item);
-        if (i < 0) i = names.findIndex((n) => n.toLowerCase() === item.toLowerCase());
-        if (i >= 0 && i < names.length) {
-          if (!bones.includes(i)) bones.push(i);
-        } else unknown.push(item);
-      }
-      if (bones.length) controller.setEffectors(bones);
+    for (const raw of attr.split(',')) {
+      const item = raw.trim();
+      if (!item) continue;
+      const i = findBone(names, item);
+      if (i < 0) unknown.push(item);
+      else if (!bones.includes(i)) bones.push(i);
     }
-    this.status.note(unknown.length ? `unknown effector ${unknown.join(', ')}` : '');
+    if (bones.length) controller.setEffectors(bones);
+    return unknown.length ? [`unknown effector ${unknown.join(', ')}`] : [];
+  }
+
+  /**
+   * The `goals` attribute (goal_kinds.ts): a named bone that is not an end effector becomes one;
+   * orientation goals start at the bone's current frame; effectors not named keep a position goal
+   * only. Returns what could not be read.
+   */
+  private applyGoals(): string[] {
+    const controller = this.controller;
+    const live = controller?.live;
+    if (!controller || !live) return [];
+    const { goals, problems } = parseGoalKinds(this.getAttribute('goals') ?? '', live.session.spec.names);
+    const effectors = Array.from(live.session.effectors());
+    const missing = goals.map((g) => g.bone).filter((b) => !effectors.includes(b));
+    if (missing.length) controller.setEffectors([...effectors, ...missing]);
+    const list = Array.from(live.session.effectors());
+    list.forEach((bone, k) => {
+      const kind = goals.find((g) => g.bone === bone)?.kind ?? 'position';
+      controller.setPositionGoal(k, kind !== 'orientation');
+      controller.setOrientationGoal(k, kind !== 'position');
+    });
+    return problems;
+  }
+
+  /** The gizmo for the selected target: rotate for an orientation-only goal, the turn button's choice for a pose goal, else translate. */
+  private useGizmo(): void {
+    const controller = this.controller;
+    const goals = controller?.live?.session.goals;
+    const k = controller?.handles.selected ?? null;
+    if (!controller || !goals) return;
+    const turnable = k !== null && goals.orientation[k] === 1;
+    const pose = turnable && goals.position[k] === 1;
+    this.turnButton.hidden = !pose;
+    this.turnButton.setAttribute('aria-pressed', String(this.turning));
+    const mode = turnable && (!pose || this.turning) ? 'rotate' : 'translate';
+    if (controller.handles.gizmoMode !== mode) controller.handles.setMode(mode);
   }
 
   private resetPose(): void {
     this.controller?.reset();
     this.status.note('');
+    this.applyTargets(); // the attribute's goals again, at the rest pose
   }
 
   private teardown(): void {
+    this.status.problem('');
     this.status.note('');
     this.controller?.dispose();
     this.controller = null;
     this.bar.hidden = true;
+    this.turning = false;
   }
 
   private fail(text: string): void {

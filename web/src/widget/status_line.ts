@@ -15,21 +15,28 @@ export class StatusLine {
   /** The words shown, or null while the line shows a note. */
   private words: StatusWords | null = null;
   /** The last solve's numbers (written by show(), read when the text is written). */
-  private readonly latest = { method: '', iterations: 0, tipDistance: 0, ms: 0 };
+  private readonly latest = { method: '', iterations: 0, tipDistance: 0, orientationDeg: NaN, ms: 0 };
   private readonly text = new Throttle(() => this.writeText());
+  /** A lasting problem shown before the rest of the line ('' for none). */
+  private problemText = '';
+  /** What note() shows ('' when the line shows a solve or nothing). */
+  private noteText = '';
 
   constructor(readonly element: HTMLElement) {}
 
   /**
    * Shows one solve: "lm · 4 it · tip error 0.0012 · 0.15 ms · on target". `outcome.tipDistance`
    * is the largest distance of an end effector from its target (rig units); `ms` the main-thread
-   * time of the solve. Sets title (what the words mean), data-status (their kind) and data-reached.
+   * time of the solve; `orientationDeg` the largest orientation error in DEGREES, shown after the
+   * tip error ("orientation error 0.123°", 3 significant digits) unless NaN (no orientation goal).
+   * Sets title (what the words mean), data-status (their kind) and data-reached.
    */
-  show(method: string, outcome: SolveOutcome, ms: number): void {
+  show(method: string, outcome: SolveOutcome, ms: number, orientationDeg = NaN): void {
     const l = this.latest;
     l.method = method;
     l.iterations = outcome.iterations;
     l.tipDistance = outcome.tipDistance;
+    l.orientationDeg = orientationDeg;
     l.ms = ms;
     const words = statusWords(outcome.reached, outcome.stopReason);
     if (words === this.words) {
@@ -44,12 +51,26 @@ export class StatusLine {
     this.text.now();
   }
 
-  /** Shows `text` instead of a solve ('' empties the line); `kind`, when given, becomes data-status. */
+  /**
+   * A lasting problem (e.g. unknown names in the widget's attributes), shown in front of whatever
+   * the line shows ("unknown goal bone "x" — lm · 4 it · ...") and as data-problem, until
+   * problem('') clears it.
+   */
+  problem(text: string): void {
+    this.problemText = text;
+    if (text) this.element.dataset.problem = text;
+    else delete this.element.dataset.problem;
+    if (this.words) this.writeText();
+    else this.element.textContent = this.withProblem(this.noteText);
+  }
+
+  /** Shows `text` instead of a solve ('' empties the line, but for a problem); `kind`, when given, becomes data-status. */
   note(text: string, kind?: StatusWords['kind']): void {
     this.text.cancel();
     this.words = null;
+    this.noteText = text;
     const el = this.element;
-    el.textContent = text;
+    el.textContent = this.withProblem(text);
     el.removeAttribute('title');
     delete el.dataset.reached;
     if (kind) el.dataset.status = kind;
@@ -59,6 +80,11 @@ export class StatusLine {
   private writeText(): void {
     const l = this.latest;
     if (!this.words) return;
-    this.element.textContent = `${l.method} · ${l.iterations} it · tip error ${twoDigits(l.tipDistance)} · ${l.ms.toFixed(2)} ms · ${this.words.text}`;
+    const turn = Number.isNaN(l.orientationDeg) ? '' : ` · orientation error ${l.orientationDeg.toPrecision(3)}°`;
+    this.element.textContent = this.withProblem(`${l.method} · ${l.iterations} it · tip error ${twoDigits(l.tipDistance)}${turn} · ${l.ms.toFixed(2)} ms · ${this.words.text}`);
+  }
+
+  private withProblem(text: string): string {
+    return this.problemText && text ? `${this.problemText} — ${text}` : this.problemText || text;
   }
 }

@@ -1,0 +1,106 @@
+// What each end effector of a live session should reach beyond its target position: whether it
+// has a position goal (on by default) and an orientation goal (off by default), and the goal
+// orientations. Orientations are unit quaternions [x, y, z, w] of the effector bone's frame in
+// RIG coordinates, which are also the three.js scene's coordinates (the page and the widget draw
+// the rig's poses unchanged: glTF scene space for glTF rigs, the file's own units for A7 rigs).
+// The Goals object for the solver (web/src/ik/goals.ts) is made only when the flags or the arrays
+// change; its positions and orientations are views into the session's arrays, so moving or
+// turning a target rewrites numbers in place and the per-frame solve allocates nothing here.
+import type { EffectorGoal, Goals } from '../ik/goals.js';
+
+export class EffectorGoals {
+  /** 1 where effector k has a position goal (its target), per effector. */
+  position: Uint8Array;
+  /** 1 where effector k has an orientation goal, per effector. */
+  orientation: Uint8Array;
+  /** The orientation goals, 4 per effector [x, y, z, w], rig coordinates (kept while a goal is off). */
+  rotations: Float64Array;
+  private cached: Goals | null = null;
+  private cachedFor: Float64Array | null = null;
+
+  /** Goals for `count` effectors: position goals only. */
+  constructor(count: number) {
+    this.position = new Uint8Array(count).fill(1);
+    this.orientation = new Uint8Array(count);
+    this.rotations = new Float64Array(4 * count);
+    for (let k = 0; k < count; k++) this.rotations[4 * k + 3] = 1;
+  }
+
+  /** Number of effectors. */
+  get count(): number {
+    return this.position.length;
+  }
+
+  /** True when some effector has an orientation goal or lacks a position goal (the solve needs Goals). */
+  get beyondPositions(): boolean {
+    for (let k = 0; k < this.count; k++) if (this.orientation[k] || !this.position[k]) return true;
+    return false;
+  }
+
+  /** True when some effector has an orientation goal. */
+  get anyOrientation(): boolean {
+    return this.orientation.includes(1);
+  }
+
+  /** Turns effector k's orientation goal on at `q` ([x, y, z, w], rig coordinates; omitted: the one kept) or off. */
+  setOrientation(k: number, on: boolean, q?: ArrayLike<number>): void {
+    if (q) this.rotations.set(q, 4 * k);
+    if (this.orientation[k] !== Number(on)) this.changed();
+    this.orientation[k] = on ? 1 : 0;
+  }
+
+  /** Turns effector k's position goal on or off. */
+  setPosition(k: number, on: boolean): void {
+    if (this.position[k] !== Number(on)) this.changed();
+    this.position[k] = on ? 1 : 0;
+  }
+
+  /**
+   * The same goals for effectors `bones` (bone indices, new order) where `before` (the old bone
+   * order) had them; new effectors get a position goal only.
+   */
+  remapped(before: ArrayLike<number>, bones: readonly number[]): EffectorGoals {
+    const next = new EffectorGoals(bones.length);
+    const old = Array.from(before);
+    bones.forEach((b, k) => {
+      const j = old.indexOf(b);
+      if (j < 0) return;
+      next.position[k] = this.position[j];
+      next.orientation[k] = this.orientation[j];
+      next.rotations.set(this.rotations.subarray(4 * j, 4 * j + 4), 4 * k);
+    });
+    return next;
+  }
+
+  /** A copy (for a session with other limits). */
+  clone(): EffectorGoals {
+    const c = new EffectorGoals(this.count);
+    c.position.set(this.position);
+    c.orientation.set(this.orientation);
+    c.rotations.set(this.rotations);
+    return c;
+  }
+
+  /**
+   * The Goals for the solver: effector k (bone `bones[k]`) aims at `targets` (3 per effector, rig
+   * units) and, where on, at its orientation. The same object until a flag changes or `targets`
+   * is another array (its numbers are read at each solve).
+   */
+  goals(bones: ArrayLike<number>, targets: Float64Array): Goals {
+    if (this.cached && this.cachedFor === targets) return this.cached;
+    const effectors: EffectorGoal[] = [];
+    for (let k = 0; k < this.count; k++) {
+      const g: EffectorGoal = { bone: bones[k] };
+      if (this.position[k]) g.position = targets.subarray(3 * k, 3 * k + 3);
+      if (this.orientation[k]) g.orientation = this.rotations.subarray(4 * k, 4 * k + 4);
+      effectors.push(g);
+    }
+    this.cached = { effectors };
+    this.cachedFor = targets;
+    return this.cached;
+  }
+
+  private changed(): void {
+    this.cached = null;
+  }
+}
