@@ -36,15 +36,15 @@ export default defineConfig({
   },
 });
 
-/** For `npm start`: serves the widget's source as /widget/ik-widget.js, the path the embed
- *  example (web/embed-example.html) loads the built script from. */
+/** For `npm start`: serves the widget's source as /ik-widget.js, the path the embed example
+ *  (web/embed-example.html) loads the built script from (beside it in dist/site/). */
 export function widgetDevServer(): Plugin {
   const source = resolve(import.meta.dirname, 'web/src/widget/ik_widget.ts');
   return {
     name: 'ik-widget-dev-server',
     apply: 'serve',
     resolveId(id) {
-      return id.replace(/[?#].*$/, '') === '/widget/ik-widget.js' ? source : null;
+      return id.replace(/[?#].*$/, '') === '/ik-widget.js' ? source : null;
     },
   };
 }

@@ -58,6 +58,9 @@ export async function startStatic(routes: [string, string][]): Promise<{ url: st
     '.glb': 'model/gltf-binary',
     '.gltf': 'model/gltf+json',
     '.json': 'application/json',
+    '.wasm': 'application/wasm',
+    '.css': 'text/css',
+    '.png': 'image/png',
   };
   const server: Server = createHttpServer((req, res) => {
     const path = decodeURIComponent(new URL(req.url ?? '/', 'http://x').pathname);
@@ -66,7 +69,8 @@ export async function startStatic(routes: [string, string][]): Promise<{ url: st
       res.writeHead(404).end();
       return;
     }
-    const file = join(route[1], path.slice(route[0].length));
+    // As any static server: a folder's URL serves its index.html.
+    const file = join(route[1], path.slice(route[0].length), path.endsWith('/') ? 'index.html' : '');
     readFile(file).then(
       (body) => {
         const ext = file.slice(file.lastIndexOf('.'));

@@ -17,7 +17,7 @@ let browser: BrowserSession;
 beforeAll(async () => {
   await build({ configFile: join(repoRoot, 'vite.widget.config.ts'), logLevel: 'warn' });
   server = await startStatic([
-    ['/widget/', join(repoRoot, 'dist/widget')],
+    ['/ik-widget.js', join(repoRoot, 'dist/widget/ik-widget.js')],
     ['/models/', join(repoRoot, 'web/public/models')],
     ['/', join(repoRoot, 'web')],
   ]);
@@ -92,7 +92,7 @@ describe('<ik-widget>', () => {
     for (const w of widgets) expect(Math.min(...(w.canvas ?? [0]))).toBeGreaterThan(100);
     // One script, no separate .wasm request: the WebAssembly is inside ik-widget.js.
     expect(requests.filter((u) => u.endsWith('.wasm'))).toEqual([]);
-    expect(requests.filter((u) => u.endsWith('.js')).map((u) => new URL(u).pathname)).toEqual(['/widget/ik-widget.js']);
+    expect(requests.filter((u) => u.endsWith('.js')).map((u) => new URL(u).pathname)).toEqual(['/ik-widget.js']);
     expect(errors).toEqual([]);
   });
 

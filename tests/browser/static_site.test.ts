@@ -1,0 +1,55 @@
+// The deployable site: `npm run build` (scripts/build-site.sh) writes dist/site/, which a plain
+// static file server hosts with no dev server and no special headers: the page loads a rig and
+// solves a drag onto its target, and the embed example's widgets load from ik-widget.js.
+import { execFileSync } from 'node:child_process';
+import { existsSync } from 'node:fs';
+import { join } from 'node:path';
+
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+
+import { launchBrowser, openPage, repoRoot, startStatic, type BrowserSession } from './harness.js';
+import { dragBy, effectorNamed, gotoRig, selectTarget, waitForConvergence } from './page_helpers.js';
+
+const site = join(repoRoot, 'dist/site');
+let server: { url: string; close: () => Promise<void> };
+let browser: BrowserSession;
+
+beforeAll(async () => {
+  execFileSync('bash', ['scripts/build-site.sh'], { cwd: repoRoot, stdio: ['ignore', 'ignore', 'inherit'] });
+  server = await startStatic([['/', site]]);
+  browser = await launchBrowser();
+}, 300_000);
+
+afterAll(async () => {
+  await browser?.close();
+  await server?.close();
+});
+
+describe('the static build (dist/site/)', () => {
+  it('holds the page, the embed example, the widget script, the models and the WebAssembly', () => {
+    for (const file of ['index.html', 'embed-example.html', 'ik-widget.js', 'models/knight.glb']) expect(existsSync(join(site, file)), file).toBe(true);
+    const assets = execFileSync('ls', [join(site, 'assets')], { encoding: 'utf8' });
+    expect(assets).toMatch(/\.wasm/);
+  });
+
+  it('served by a plain static server, the page loads a rig and solves a drag', async (ctx) => {
+    const { page, errors } = await openPage(browser, ctx);
+    await gotoRig(page, server.url, 'knight');
+    const hand = await selectTarget(page, await effectorNamed(page, /^hand\.L$/));
+    await dragBy(page, hand, 30, -70);
+    await waitForConvergence(page);
+    expect(errors).toEqual([]);
+  });
+
+  it('served by a plain static server, the embed example shows its widgets ready', async (ctx) => {
+    const { page, errors } = await openPage(browser, ctx);
+    await page.goto(`${server.url}embed-example.html`);
+    await page.waitForFunction(() => {
+      const widgets = [...document.querySelectorAll('ik-widget')];
+      return widgets.length > 0 && widgets.every((w) => ['ready', 'error'].includes((w as HTMLElement).dataset.state ?? ''));
+    }, null, { timeout: 30_000 });
+    const states = await page.$$eval('ik-widget', (ws) => ws.map((w) => (w as HTMLElement).dataset.state));
+    expect(states.every((s) => s === 'ready')).toBe(true);
+    expect(errors).toEqual([]);
+  });
+});
