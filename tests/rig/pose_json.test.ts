@@ -1,0 +1,199 @@
+// The pose file (web/src/rig/pose_json.ts): round trip, bones keyed by name, every malformed
+// file refused with its field named, clamping to the rig's limits.
+import { readFileSync } from 'node:fs';
+import { resolve } from 'node:path';
+
+import { beforeAll, describe, expect, it } from 'vitest';
+
+import type { RigSpec } from '../../web/src/ik/rig_spec.js';
+import { loadRig } from '../../web/src/rig/load_rig.js';
+import { MAX_POSE_CHARS, PoseFormatError, poseFromJson, poseToJson, type PoseInput } from '../../web/src/rig/pose_json.js';
+import { randomAngles, seeded } from '../helpers/a7.js';
+
+const modelsDir = resolve(import.meta.dirname, '../../web/public/models');
+
+let knight: RigSpec;
+beforeAll(async () => {
+  knight = (await loadRig(new Uint8Array(readFileSync(resolve(modelsDir, 'knight.glb'))), 'knight.glb')).spec;
+});
+
+/** A pose of the knight at random angles, its own effectors with random targets, every other one with an orientation. */
+function knightPose(seed: number): PoseInput {
+  const rand = seeded(seed);
+  const effectors = Array.from(knight.effectors, (b) => knight.names[b]);
+  return {
+    rigName: 'knight',
+    boneNames: knight.names,
+    angles: randomAngles(knight, rand),
+    effectors,
+    targets: Float64Array.from({ length: 3 * effectors.length }, () => 4 * rand() - 2),
+    orientations: effectors.map((_, e) => {
+      if (e % 2) return null;
+      const q = [rand() - 0.5, rand() - 0.5, rand() - 0.5, rand() - 0.5];
+      const n = Math.hypot(...q);
+      return q.map((v) => v / n);
+    }),
+  };
+}
+
+const sameBits = (a: ArrayLike<number>, b: ArrayLike<number>): boolean => a.length === b.length && Array.from(a).every((v, k) => Object.is(v, b[k]));
+
+/** A small rig by name only: what poseFromJson reads. */
+const small = {
+  names: ['root', 'arm', 'hand', '__proto__'],
+  lower: Float64Array.of(-180, -180, -180, -90, 0, -45, -10, -10, -10, -Infinity, -Infinity, -Infinity),
+  upper: Float64Array.of(180, 180, 180, 90, 120, 45, 10, 10, 10, Infinity, Infinity, Infinity),
+};
+
+/** A valid file for `small`, as an object to break. */
+function smallFile(): Record<string, unknown> {
+  return {
+    format: 'ik-pose',
+    version: 1,
+    rig: 'small',
+    bones: { root: [1, 2, 3], arm: [4, 5, 6], hand: [0, 0, 0], ['__proto__']: [7, 8, 9] },
+    effectors: [{ bone: 'hand', target: [0, 1, 2], orientation: [0, 0, 0, 1] }, { bone: 'arm', target: [1, 1, 1] }],
+  };
+}
+const text = (o: unknown): string => JSON.stringify(o);
+
+describe('poseToJson / poseFromJson', () => {
+  it('round trip: the same angles bit for bit, the same effectors, targets and orientations', () => {
+    for (const seed of [1, 2, 3]) {
+      const pose = knightPose(seed);
+      const json = poseToJson(pose);
+      const doc = JSON.parse(json);
+      expect(doc.format).toBe('ik-pose');
+      expect(doc.version).toBe(1);
+      expect(Object.keys(doc.bones)).toEqual(knight.names);
+      const read = poseFromJson(json, knight);
+      expect(read.warnings).toEqual([]);
+      expect(read.rigName).toBe('knight');
+      expect(sameBits(read.angles, pose.angles), 'angles').toBe(true);
+      expect(read.effectors).toEqual(Array.from(knight.effectors));
+      expect(sameBits(read.targets, pose.targets), 'targets').toBe(true);
+      read.orientations.forEach((q, e) => {
+        const want = pose.orientations![e];
+        if (want === null) expect(q).toBeNull();
+        else expect(sameBits(q!, want), `orientation ${e}`).toBe(true);
+      });
+    }
+  });
+
+  it('bones listed in another order, and a rig whose bones come in another order, get the right angles', () => {
+    const pose = knightPose(4);
+    const doc = JSON.parse(poseToJson(pose));
+    doc.bones = Object.fromEntries(Object.entries(doc.bones).reverse());
+    const reversed = poseFromJson(text(doc), knight);
+    expect(sameBits(reversed.angles, pose.angles)).toBe(true);
+
+    // The same rig with its bones permuted: each bone's angles follow its name.
+    const n = knight.names.length;
+    const perm = Array.from({ length: n }, (_, i) => (i * 7 + 3) % n);
+    expect(new Set(perm).size).toBe(n);
+    const pick = (a: Float64Array): Float64Array => Float64Array.from({ length: 3 * n }, (_, k) => a[3 * perm[Math.floor(k / 3)] + (k % 3)]);
+    const permuted = { names: perm.map((i) => knight.names[i]), lower: pick(knight.lower), upper: pick(knight.upper) };
+    const read = poseFromJson(poseToJson(pose), permuted);
+    perm.forEach((old, i) => {
+      expect(Array.from(read.angles.subarray(3 * i, 3 * i + 3)), permuted.names[i]).toEqual(Array.from(pose.angles).slice(3 * old, 3 * old + 3));
+    });
+    expect(read.effectors.map((b) => permuted.names[b])).toEqual(pose.effectors);
+  });
+
+  it('a bone called "__proto__" is an ordinary bone', () => {
+    const read = poseFromJson(text(smallFile()), small);
+    expect(Array.from(read.angles.subarray(9, 12))).toEqual([7, 8, 9]);
+    const json = poseToJson({ rigName: 's', boneNames: small.names, angles: read.angles, effectors: ['__proto__'], targets: [1, 2, 3] });
+    expect(Array.from(poseFromJson(json, small).angles)).toEqual(Array.from(read.angles));
+    expect(poseFromJson(json, small).effectors).toEqual([3]);
+  });
+
+  it('angles outside the limits are clamped with a warning naming the bone', () => {
+    const file = smallFile();
+    (file.bones as Record<string, number[]>).arm = [100, -5, 45];
+    (file.bones as Record<string, number[]>).hand = [0, 11, 0];
+    const read = poseFromJson(text(file), small);
+    expect(Array.from(read.angles.subarray(3, 9))).toEqual([90, 0, 45, 0, 10, 0]);
+    expect(read.warnings).toHaveLength(1);
+    expect(read.warnings[0]).toMatch(/clamped for 2 bone/);
+    expect(read.warnings[0]).toMatch(/"arm" \[100, -5, 45\] -> \[90, 0, 45\]/);
+    expect(read.warnings[0]).toMatch(/"hand"/);
+    expect(read.warnings[0]).not.toMatch(/"root"/);
+    // Other limits (e.g. the humanoid's) clamp instead of the spec's.
+    const wide = { lower: new Float64Array(12).fill(-1000), upper: new Float64Array(12).fill(1000) };
+    const free = poseFromJson(text(file), small, wide);
+    expect(free.warnings).toEqual([]);
+    expect(Array.from(free.angles.subarray(3, 6))).toEqual([100, -5, 45]);
+  });
+
+  it('bones the file lacks stay at 0 with a warning naming them', () => {
+    const file = smallFile();
+    delete (file.bones as Record<string, unknown>).arm;
+    const read = poseFromJson(text(file), small);
+    expect(Array.from(read.angles.subarray(3, 6))).toEqual([0, 0, 0]);
+    expect(Array.from(read.angles.subarray(0, 3))).toEqual([1, 2, 3]);
+    expect(read.warnings).toEqual([expect.stringMatching(/no angles for 1 bone\(s\), left at 0: "arm"/)]);
+  });
+
+  const broken: [string, (f: Record<string, unknown>) => unknown, RegExp][] = [
+    ['not JSON', () => '{"format": "ik-pose",', /not JSON/],
+    ['an array', () => [], /the JSON is an array, not an object/],
+    ['no format', (f) => (delete f.format, f), /"format" is undefined, expected "ik-pose"/],
+    ['another format', (f) => ({ ...f, format: 'glTF' }), /"format" is "glTF"/],
+    ['version 2', (f) => ({ ...f, version: 2 }), /"version" is 2/],
+    ['version "1"', (f) => ({ ...f, version: '1' }), /"version" is "1"/],
+    ['rig not a string', (f) => ({ ...f, rig: 3 }), /"rig" is 3/],
+    ['no bones', (f) => (delete f.bones, f), /"bones" is undefined/],
+    ['bones an array', (f) => ({ ...f, bones: [[1, 2, 3]] }), /"bones" is an array/],
+    ['unknown bones', (f) => ({ ...f, bones: { ...(f.bones as object), tail: [0, 0, 0], wing: [0, 0, 0] } }), /"bones" names 2 bone\(s\) the rig lacks: "tail", "wing"/],
+    ['two angles', (f) => ({ ...f, bones: { arm: [1, 2] } }), /"bones"\["arm"\] has 2 values, expected 3/],
+    ['angles not an array', (f) => ({ ...f, bones: { arm: 5 } }), /"bones"\["arm"\] is 5, not an array/],
+    ['a string angle', (f) => ({ ...f, bones: { arm: [1, '2', 3] } }), /"bones"\["arm"\]\[1\] is "2", not a finite number/],
+    ['a null angle', (f) => ({ ...f, bones: { hand: [1, 2, null] } }), /"bones"\["hand"\]\[2\] is null/],
+    ['an infinite angle', (f) => JSON.stringify(f).replace('"root":[1,2,3]', '"root":[1,1e999,3]'), /"bones"\["root"\]\[1\] is Infinity/],
+    ['no effectors', (f) => (delete f.effectors, f), /"effectors" is undefined/],
+    ['effector not an object', (f) => ({ ...f, effectors: ['hand'] }), /"effectors"\[0\] is "hand", not an object/],
+    ['effector without bone', (f) => ({ ...f, effectors: [{ target: [0, 0, 0] }] }), /"effectors"\[0\]\.bone is undefined/],
+    ['effector of an unknown bone', (f) => ({ ...f, effectors: [{ bone: 'tail', target: [0, 0, 0] }] }), /"effectors"\[0\]\.bone "tail" is no bone/],
+    ['effector twice', (f) => ({ ...f, effectors: [{ bone: 'arm', target: [0, 0, 0] }, { bone: 'arm', target: [0, 0, 0] }] }), /"effectors"\[1\]\.bone "arm" is listed twice/],
+    ['short target', (f) => ({ ...f, effectors: [{ bone: 'arm', target: [0, 0] }] }), /"effectors"\[0\]\.target has 2 values, expected 3/],
+    ['target far away', (f) => ({ ...f, effectors: [{ bone: 'arm', target: [0, 2e9, 0] }] }), /"effectors"\[0\]\.target\[1\] = 2000000000 lies beyond/],
+    ['bad target number', (f) => ({ ...f, effectors: [{ bone: 'arm', target: [0, true, 0] }] }), /"effectors"\[0\]\.target\[1\] is true/],
+    ['orientation of 3', (f) => ({ ...f, effectors: [{ bone: 'arm', target: [0, 0, 0], orientation: [0, 0, 1] }] }), /"effectors"\[0\]\.orientation has 3 values, expected 4/],
+    ['orientation not unit', (f) => ({ ...f, effectors: [{ bone: 'arm', target: [0, 0, 0], orientation: [0, 0, 0, 2] }] }), /"effectors"\[0\]\.orientation has length 2, not a unit quaternion/],
+    ['too many effectors', (f) => ({ ...f, effectors: Array.from({ length: 65 }, () => ({ bone: 'arm', target: [0, 0, 0] })) }), /"effectors": 65 end effectors; at most 64/],
+    ['too deep', () => `${'['.repeat(100)}${']'.repeat(100)}`, /nests deeper/],
+  ];
+  it.each(broken)('refuses %s, naming the field', (_, make, message) => {
+    const made = make(smallFile());
+    const t = typeof made === 'string' ? made : text(made);
+    expect(() => poseFromJson(t, small)).toThrow(PoseFormatError);
+    expect(() => poseFromJson(t, small)).toThrow(message);
+  });
+
+  it('refuses a file over the size bound with a clear message', () => {
+    const file = smallFile();
+    file.padding = ' '.repeat(MAX_POSE_CHARS);
+    expect(() => poseFromJson(text(file), small)).toThrow(/MB of text, more than a pose file holds/);
+  });
+
+  it('refuses a bone name the rig gives two bones', () => {
+    const twin = { names: ['a', 'a', 'b'], lower: new Float64Array(9).fill(-180), upper: new Float64Array(9).fill(180) };
+    const file = { format: 'ik-pose', version: 1, bones: { a: [0, 0, 0], b: [0, 0, 0] }, effectors: [] };
+    expect(() => poseFromJson(text(file), twin)).toThrow(/"bones" names "a", which more than one bone/);
+    expect(() => poseFromJson(text({ ...file, bones: { b: [1, 1, 1] }, effectors: [{ bone: 'a', target: [0, 0, 0] }] }), twin)).toThrow(/"effectors"\[0\]\.bone "a" names more than one bone/);
+  });
+
+  it('poseToJson refuses inconsistent input', () => {
+    const ok: PoseInput = { rigName: 'r', boneNames: ['a', 'b'], angles: [1, 2, 3, 4, 5, 6], effectors: ['b'], targets: [1, 2, 3] };
+    expect(() => poseToJson(ok)).not.toThrow();
+    expect(() => poseToJson({ ...ok, angles: [1, 2, 3] })).toThrow(/angles has 3 values for 2 bones/);
+    expect(() => poseToJson({ ...ok, angles: [1, 2, 3, 4, NaN, 6] })).toThrow(/angles of bone "b" has a non-finite value/);
+    expect(() => poseToJson({ ...ok, boneNames: ['a', 'a'] })).toThrow(/bone names "a" are used by more than one bone/);
+    expect(() => poseToJson({ ...ok, effectors: ['c'] })).toThrow(/effector 0 names the bone "c"/);
+    expect(() => poseToJson({ ...ok, targets: [1, 2] })).toThrow(/targets has 2 values for 1 effectors/);
+    expect(() => poseToJson({ ...ok, targets: [1, Infinity, 3] })).toThrow(/target of effector "b" has a non-finite value/);
+    expect(() => poseToJson({ ...ok, orientations: [] })).toThrow(/orientations has 0 entries for 1 effectors/);
+    expect(() => poseToJson({ ...ok, orientations: [[0, 0, 1]] })).toThrow(/orientation of effector "b" has 3 values/);
+  });
+});
