@@ -204,13 +204,27 @@ describe('posedGlb', () => {
     await checkExport(new TextEncoder().encode(JSON.stringify(embedded)), 'knight.gltf', angles, undefined, readModel('knight'));
   });
 
-  it('refuses a file with extensions, a rig of another file, and wrong pose lengths', async () => {
+  it('carries a material extension over', async () => {
     const bytes = readModel('knight');
     const loaded = await loadRig(bytes, 'knight.glb');
     const poses = makeRig(loaded).poses(new Float64Array(3 * loaded.spec.parents.length));
     const { json, bin } = unpackGlb(bytes);
     json.extensionsUsed = ['KHR_materials_emissive_strength'];
-    await expect(posedGlb(packGlb(json, bin), 'x.glb', loaded.gltf!, loaded.spec, poses)).rejects.toThrow(/x\.glb.*KHR_materials_emissive_strength/);
+    (json.materials as { extensions?: unknown }[])[0].extensions = { KHR_materials_emissive_strength: { emissiveStrength: 4 } };
+    const out = unpackGlb(await posedGlb(packGlb(json, bin), 'x.glb', loaded.gltf!, loaded.spec, poses)).json;
+    expect(out.extensionsUsed).toEqual(['KHR_materials_emissive_strength']);
+    expect((out.materials as { extensions?: Record<string, unknown> }[])[0].extensions).toEqual({ KHR_materials_emissive_strength: { emissiveStrength: 4 } });
+  });
+
+  it('refuses compressed geometry or an unknown extension, a rig of another file, and wrong pose lengths', async () => {
+    const bytes = readModel('knight');
+    const loaded = await loadRig(bytes, 'knight.glb');
+    const poses = makeRig(loaded).poses(new Float64Array(3 * loaded.spec.parents.length));
+    const { json, bin } = unpackGlb(bytes);
+    for (const name of ['EXT_meshopt_compression', 'VRMC_vrm']) {
+      json.extensionsUsed = [name];
+      await expect(posedGlb(packGlb(json, bin), 'x.glb', loaded.gltf!, loaded.spec, poses)).rejects.toThrow(new RegExp(`x\\.glb.*${name}`));
+    }
     await expect(posedGlb(readModel('character'), 'character.glb', loaded.gltf!, loaded.spec, poses)).rejects.toThrow(/character\.glb.*another file/);
     await expect(posedGlb(bytes, 'knight.glb', loaded.gltf!, loaded.spec, poses.subarray(16))).rejects.toThrow(/poses has/);
     const bad = poses.slice();

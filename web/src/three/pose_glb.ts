@@ -6,8 +6,10 @@
 // written as translation, rotation quaternion and scale. A component the pose leaves unchanged (to
 // 1e-9 relative) keeps the file's own numbers, so zero angles give back the file's transforms. A
 // node the file gave as `matrix` is written as TRS, as glTF-Transform always does. Files with glTF
-// extensions are refused: glTF-Transform's core alone would silently drop them.
+// extensions glTF-Transform knows are carried over; compressed geometry (Draco, meshopt) and
+// extensions it does not know (VRM's, for one) are refused rather than silently dropped.
 import { Logger, WebIO, type Document, type GLTF } from '@gltf-transform/core';
+import { ALL_EXTENSIONS } from '@gltf-transform/extensions';
 
 import type { RigSpec } from '../ik/rig_spec.js';
 import { failIn, parseGltfContainer, type SiblingReader } from '../rig/gltf_file.js';
@@ -135,9 +137,14 @@ export function posedLocalMatrices(info: GltfRigInfo, spec: RigSpec, poses: Arra
   return out;
 }
 
+/** Extensions that store geometry compressed: reading them needs a decoder and writing an encoder. */
+const COMPRESSION = new Set(['KHR_draco_mesh_compression', 'EXT_meshopt_compression']);
+/** The extensions pose export carries over (glTF-Transform's own: materials, lights, textures, ...). */
+const CARRIED = new Set(ALL_EXTENSIONS.map((e) => e.EXTENSION_NAME).filter((name) => !COMPRESSION.has(name)));
+
 /** The glTF-Transform reader/writer used for pose export (warnings of glTF-Transform kept quiet). */
 function gltfIO(): WebIO {
-  return new WebIO().setLogger(new Logger(Logger.Verbosity.ERROR));
+  return new WebIO().setLogger(new Logger(Logger.Verbosity.ERROR)).registerExtensions(ALL_EXTENSIONS.filter((e) => CARRIED.has(e.EXTENSION_NAME)));
 }
 
 /** Reads `bytes` (.glb, or .gltf with side files through readSibling or data: URIs) into a Document. */
@@ -145,8 +152,9 @@ async function readDocument(bytes: Uint8Array, fileName: string, readSibling?: S
   const container = parseGltfContainer(bytes, fileName);
   const json = container.json;
   const used = json.extensionsUsed;
-  if (Array.isArray(used) && used.length > 0)
-    failIn(fileName, `pose export keeps core glTF only; the file uses the extension(s) ${used.map(String).join(', ')}, which would be lost`);
+  const lost = Array.isArray(used) ? used.map(String).filter((name) => !CARRIED.has(name)) : [];
+  if (lost.length > 0)
+    failIn(fileName, `pose export cannot carry the extension(s) ${lost.join(', ')} (compressed geometry or an extension glTF-Transform does not know), which would be lost`);
   const io = gltfIO();
   if (container.bin !== undefined || fileName.toLowerCase().endsWith('.glb')) return io.readBinary(bytes);
   const resources: Record<string, Uint8Array<ArrayBuffer>> = {};
