@@ -120,3 +120,30 @@ export async function waitForConvergence(page: Page): Promise<void> {
   });
   expect(await statText(page, 'status')).toBe('on target');
 }
+
+/** Where pole handle j is on screen (client pixels); throws when there is none. */
+export async function poleScreen(page: Page, j: number): Promise<ScreenPoint> {
+  const p = await page.evaluate((i) => window.ikPage?.poleHandles()[i]?.screen ?? null, j);
+  if (!p) throw new Error(`no pole handle ${j}`);
+  return p;
+}
+
+/** Puts the gizmo on pole handle j by clicking it; returns j. */
+export async function selectPole(page: Page, j: number): Promise<number> {
+  const p = await poleScreen(page, j);
+  await page.mouse.click(p.x, p.y);
+  await page.waitForFunction((i) => window.ikPage?.selectedPole() === i, j);
+  return j;
+}
+
+/** Drags the gizmo of the selected pole handle j by (dx, dy) pixels with the mouse, a frame after each of `steps` moves. */
+export async function dragPoleBy(page: Page, j: number, dx: number, dy: number, steps = 12): Promise<void> {
+  const from = await poleScreen(page, j);
+  await page.mouse.move(from.x, from.y);
+  await page.mouse.down();
+  for (let i = 1; i <= steps; i++) {
+    await page.mouse.move(from.x + (dx * i) / steps, from.y + (dy * i) / steps);
+    await nextFrame(page);
+  }
+  await page.mouse.up();
+}

@@ -1,12 +1,13 @@
 // What each end effector of a live session should reach beyond its target position: whether it
-// has a position goal (on by default) and an orientation goal (off by default), and the goal
-// orientations. Orientations are unit quaternions [x, y, z, w] of the effector bone's frame in
+// has a position goal (on by default) and an orientation goal (off by default), the goal
+// orientations, and the limbs' poles (bend hints, none by default: the page's pole handles). Orientations are unit quaternions [x, y, z, w] of the effector bone's frame in
 // RIG coordinates, which are also the three.js scene's coordinates (the page and the widget draw
 // the rig's poses unchanged: glTF scene space for glTF rigs, the file's own units for A7 rigs).
 // The Goals object for the solver (web/src/ik/goals.ts) is made only when the flags or the arrays
-// change; its positions and orientations are views into the session's arrays, so moving or
-// turning a target rewrites numbers in place and the per-frame solve allocates nothing here.
-import type { EffectorGoal, Goals } from '../ik/goals.js';
+// change; its positions, orientations and pole points are views into the session's arrays, so
+// moving or turning a target or moving a pole rewrites numbers in place and the per-frame solve
+// allocates nothing here.
+import type { EffectorGoal, Goals, PoleGoal } from '../ik/goals.js';
 
 export class EffectorGoals {
   /** 1 where effector k has a position goal (its target), per effector. */
@@ -15,6 +16,10 @@ export class EffectorGoals {
   orientation: Uint8Array;
   /** The orientation goals, 4 per effector [x, y, z, w], rig coordinates (kept while a goal is off). */
   rotations: Float64Array;
+  /** The limbs with a pole: their lower bones (forearm, shin), in pole order; empty: no poles are sent. */
+  poleBones = new Int32Array(0);
+  /** The poles, 3 per limb [x, y, z], rig units (moving a pole rewrites them in place). */
+  polePoints = new Float64Array(0);
   private cached: Goals | null = null;
   private cachedFor: Float64Array | null = null;
 
@@ -31,8 +36,9 @@ export class EffectorGoals {
     return this.position.length;
   }
 
-  /** True when some effector has an orientation goal or lacks a position goal (the solve needs Goals). */
+  /** True when some effector has an orientation goal or lacks a position goal, or a limb has a pole (the solve needs Goals). */
   get beyondPositions(): boolean {
+    if (this.poleBones.length > 0) return true;
     for (let k = 0; k < this.count; k++) if (this.orientation[k] || !this.position[k]) return true;
     return false;
   }
@@ -47,6 +53,17 @@ export class EffectorGoals {
     if (q) this.rotations.set(q, 4 * k);
     if (this.orientation[k] !== Number(on)) this.changed();
     this.orientation[k] = on ? 1 : 0;
+  }
+
+  /**
+   * Poles for the limbs ending in `bones` (their lower bones, which must have a parent) at `points`
+   * (3 per bone, rig units); empty arrays: no poles. Both are copied.
+   */
+  setPoles(bones: ArrayLike<number>, points: ArrayLike<number>): void {
+    if (points.length !== 3 * bones.length) throw new Error(`${bones.length} poles need ${3 * bones.length} numbers, not ${points.length}`);
+    this.poleBones = Int32Array.from(bones);
+    this.polePoints = Float64Array.from(points);
+    this.changed();
   }
 
   /** Turns effector k's position goal on or off. */
@@ -69,6 +86,7 @@ export class EffectorGoals {
       next.orientation[k] = this.orientation[j];
       next.rotations.set(this.rotations.subarray(4 * j, 4 * j + 4), 4 * k);
     });
+    next.setPoles(this.poleBones, this.polePoints);
     return next;
   }
 
@@ -78,13 +96,14 @@ export class EffectorGoals {
     c.position.set(this.position);
     c.orientation.set(this.orientation);
     c.rotations.set(this.rotations);
+    c.setPoles(this.poleBones, this.polePoints);
     return c;
   }
 
   /**
    * The Goals for the solver: effector k (bone `bones[k]`) aims at `targets` (3 per effector, rig
-   * units) and, where on, at its orientation. The same object until a flag changes or `targets`
-   * is another array (its numbers are read at each solve).
+   * units) and, where on, at its orientation; the poles, if any. The same object until a flag or
+   * the poles' limbs change or `targets` is another array (its numbers are read at each solve).
    */
   goals(bones: ArrayLike<number>, targets: Float64Array): Goals {
     if (this.cached && this.cachedFor === targets) return this.cached;
@@ -95,7 +114,9 @@ export class EffectorGoals {
       if (this.orientation[k]) g.orientation = this.rotations.subarray(4 * k, 4 * k + 4);
       effectors.push(g);
     }
-    this.cached = { effectors };
+    const poles: PoleGoal[] = [];
+    for (let j = 0; j < this.poleBones.length; j++) poles.push({ bone: this.poleBones[j], point: this.polePoints.subarray(3 * j, 3 * j + 3) });
+    this.cached = poles.length ? { effectors, poles } : { effectors };
     this.cachedFor = targets;
     return this.cached;
   }

@@ -3,8 +3,10 @@
 // something changed, each frame solves from the current pose within the frame's budget (restarts
 // off) and goes on next frame when the budget stopped it; the view is redrawn only when the pose,
 // the targets or the selection changed. Targets may carry orientation goals (the rotate gizmo
-// sets them; setOrientationGoal() turns them on or off). The front ends hear of solves, errors
-// and clicks through LiveEvents; everything else (stats, panels, status lines) is theirs.
+// sets them; setOrientationGoal() turns them on or off). With pole handles on (setPoleHandles),
+// each limb (pole_limbs.ts) has a pole handle the gizmo can take; its position is the limb's pole
+// goal, sent with every solve (with them off, no poles are sent). The front ends hear of solves,
+// errors and clicks through LiveEvents; everything else (stats, panels, status lines) is theirs.
 import { Quaternion, Vector3 } from 'three';
 
 import { Handles } from '../view/handles.js';
@@ -13,6 +15,8 @@ import { Stage } from '../view/stage.js';
 import { errorText } from './error_text.js';
 import type { LiveRig } from './live_rig.js';
 import { solveFrame, type FrameTiming } from './live_solve.js';
+import { poleLimbs } from './pole_limbs.js';
+import { initialPole } from './pole_placement.js';
 import type { IkSession } from './session.js';
 import type { SolveOutcome, SolveSettings } from './solver.js';
 
@@ -43,7 +47,7 @@ export interface LiveEvents {
   failed(message: string): void;
   /** The problem or the pose changed (a target moved, invalidate(), reset(), setEffectors()). */
   changed?(): void;
-  /** The gizmo moved to another target (or none), or a target's orientation goal was turned on or off. */
+  /** The gizmo moved to another target (or none, or a pole handle), or a target's orientation goal was turned on or off. */
   targetChanged?(): void;
   /** A click or tap on the view that hit no target (a target hit takes the gizmo). */
   clicked?(click: ViewClick): void;
@@ -70,6 +74,9 @@ export class LiveController {
   private readonly timing: FrameTiming = { ms: 0, again: false };
   private readonly solveSettings: SolveSettings = { gradientTolerance: 0, tipTolerance: 0, maxIterations: 0, timeBudgetMs: 0, restarts: 0, paperMode: false };
   private readonly stopClicks: () => void;
+  private polesOn = false;
+  /** The limbs' joints (elbow, knee) at the last redraw, 3 per pole, rig units: where the pole lines start. */
+  private poleJoints = new Float64Array(0);
 
   /** Makes a stage in `container`; `settings` are read every frame (and may be edited in place). */
   constructor(container: HTMLElement, readonly settings: FrameSettings, private readonly events: LiveEvents) {
@@ -79,6 +86,7 @@ export class LiveController {
     this.stage.connectOrbit();
     handles.onTargetMoved = (k, x, y, z) => this.moveTarget(k, x, y, z);
     handles.onTargetTurned = (k, q) => this.turnTarget(k, q);
+    handles.onPoleMoved = (j, x, y, z) => this.movePole(j, x, y, z);
     handles.currentRotation = (k, out) => this.currentRotation(k, out);
     handles.onSelected = () => this.events.targetChanged?.();
     handles.onDragging = (on) => this.events.dragging?.(on);
@@ -105,6 +113,7 @@ export class LiveController {
     this.handles.select(null);
     this.handles.setTargets(live.session.targets);
     this.handles.setPivot(live.view.boneBase(0, v));
+    this.placePoles(false);
     this.stage.frame(live.view.bounds());
     this.needsSolve = false;
     this.needsRedraw = true;
@@ -122,13 +131,14 @@ export class LiveController {
     this.needsRedraw = true;
   }
 
-  /** Back to the rest pose with the targets on the rest tips and no orientation goals; no solve follows. */
+  /** Back to the rest pose with the targets on the rest tips, no orientation goals and the poles placed anew; no solve follows. */
   reset(): void {
     const live = this.current;
     if (!live) return;
     live.session.reset();
     live.showGhost(null);
     this.handles.setTargets(live.session.targets);
+    this.placePoles(false);
     this.needsSolve = false;
     this.needsRedraw = true;
     this.events.changed?.();
@@ -152,15 +162,35 @@ export class LiveController {
     this.events.targetChanged?.();
   }
 
+  /** Whether the limbs show pole handles (and their poles are sent with every solve). */
+  get poleHandles(): boolean {
+    return this.polesOn;
+  }
+
+  /**
+   * Pole handles on (each limb's pole placed anew where its joint bends, pole_placement.ts) or off
+   * (no poles sent), for this rig and the ones shown after it; solves again.
+   */
+  setPoleHandles(on: boolean): void {
+    if (on === this.polesOn) return;
+    this.polesOn = on;
+    if (!this.current) return;
+    this.placePoles(false);
+    this.invalidate();
+    this.events.targetChanged?.();
+  }
+
   /**
    * Makes `bones` (bone indices) the end effectors: kept ones keep their targets, new ones get a
-   * target on their tip. `select`: the target (effector index) to put the gizmo on. No solve follows.
+   * target on their tip; the limbs' poles follow (a limb kept keeps its pole). `select`: the
+   * target (effector index) to put the gizmo on. No solve follows.
    */
   setEffectors(bones: readonly number[], select?: number): void {
     const live = this.current;
     if (!live) return;
     live.session.setEffectors(bones);
     this.handles.setTargets(live.session.targets);
+    this.placePoles(true);
     if (select !== undefined) this.handles.select(select);
     this.needsSolve = false;
     this.needsRedraw = true;
@@ -190,6 +220,39 @@ export class LiveController {
     t[3 * k + 1] = y;
     t[3 * k + 2] = z;
     this.invalidate();
+  }
+
+  /** Pole j moved to (x, y, z), rig units. */
+  private movePole(j: number, x: number, y: number, z: number): void {
+    const p = this.current?.session.goals.polePoints;
+    if (!p || 3 * j >= p.length) return;
+    p[3 * j] = x;
+    p[3 * j + 1] = y;
+    p[3 * j + 2] = z;
+    this.invalidate();
+  }
+
+  /**
+   * The limbs' poles for the rig shown and its effectors (none with pole handles off), and their
+   * handles. `keep`: a limb that had a pole keeps it; the others' start where their joints bend.
+   */
+  private placePoles(keep: boolean): void {
+    const live = this.current;
+    if (!live) return;
+    const { session } = live;
+    const goals = session.goals;
+    const limbs = this.polesOn ? poleLimbs(session.spec, session.effectors(), live.source.humanoid) : [];
+    const poses = limbs.length ? session.poses() : null;
+    const points = new Float64Array(3 * limbs.length);
+    const had = Array.from(goals.poleBones);
+    limbs.forEach((limb, j) => {
+      const old = keep ? had.indexOf(limb.bone) : -1;
+      points.set(old >= 0 ? goals.polePoints.subarray(3 * old, 3 * old + 3) : initialPole(session.spec, poses!, limb), 3 * j);
+    });
+    goals.setPoles(limbs.map((l) => l.bone), points);
+    this.poleJoints = new Float64Array(points.length);
+    this.handles.setPoles(limbs.length);
+    this.needsRedraw = true;
   }
 
   /** Target k's position goal on (its tip goes to the target, the default) or off (an orientation-only goal), and solves again. */
@@ -229,8 +292,24 @@ export class LiveController {
   private click(c: ViewClick): void {
     if (!this.current) return;
     const target = this.handles.pick(c.raycaster);
+    const pole = target === null ? this.handles.pickPole(c.raycaster) : null;
     if (target !== null) this.handles.select(target);
+    else if (pole !== null) this.handles.selectPole(pole);
     else this.events.clicked?.(c);
+  }
+
+  /** Moves the pole handles to the poles and their lines' ends to the limbs' joints as drawn now (no allocation). */
+  private syncPoles(live: LiveRig): void {
+    const goals = live.session.goals;
+    const bones = goals.poleBones, joints = this.poleJoints;
+    if (joints.length !== 3 * bones.length) return;
+    for (let j = 0; j < bones.length; j++) {
+      live.view.boneBase(bones[j], v);
+      joints[3 * j] = v.x;
+      joints[3 * j + 1] = v.y;
+      joints[3 * j + 2] = v.z;
+    }
+    this.handles.syncPoles(goals.polePoints, joints);
   }
 
   private frame(): void {
@@ -244,6 +323,7 @@ export class LiveController {
       live.redraw();
       const s = live.session;
       this.handles.sync(s.targets, tips ?? s.tips(), s.goals.orientation, s.goals.rotations);
+      if (this.handles.poles.count > 0) this.syncPoles(live);
       this.events.redrawn?.();
     }
   }

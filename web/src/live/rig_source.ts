@@ -6,6 +6,7 @@ import { MeshoptDecoder } from 'three/addons/libs/meshopt_decoder.module.js';
 
 import type { RigSpec } from '../ik/rig_spec.js';
 import type { RigLimits } from '../rig/humanoid_limits.js';
+import type { HumanoidMap } from '../rig/humanoid_roles.js';
 import { loadRig, specWithFileLimits, type GltfRigInfo, type SiblingReader } from '../rig/load_rig.js';
 import { bonesFromGltf } from '../three/find_bones.js';
 import { PoseWriter } from '../three/pose_writer.js';
@@ -28,6 +29,8 @@ export interface RigSource {
    * keeps the file's own (extras.ik or +-180). The panel's "humanoid limits" switches between them.
    */
   humanoidLimits?: RigLimits;
+  /** Which bone plays which humanoid role, when the importer recognised a humanoid (pole handles use its limbs). */
+  humanoid?: HumanoidMap;
   /** Notes from the importer (defaults applied...), shown as text. */
   warnings: string[];
   /** Builds the skinned mesh bound to the rig; null for bones-only formats (A7) and too deep glTF trees. */
@@ -96,6 +99,7 @@ export async function readRig(bytes: Uint8Array, fileName: string, readSibling?:
     format: rig.format === 'a7' ? 'A7 JSON' : rig.format,
     spec: specWithFileLimits(rig),
     humanoidLimits: info?.fileLimits ? { lower: rig.spec.lower, upper: rig.spec.upper } : undefined,
+    humanoid: info?.humanoid ?? undefined,
     warnings: tooDeep
       ? [...rig.warnings, `the node tree is ${info.treeDepth} levels deep, more than three.js's glTF loader takes (${MAX_MODEL_TREE_DEPTH}): showing the bones without the model`]
       : rig.warnings,

@@ -86,6 +86,7 @@ export class PageApp {
       displayChanged: () => this.applyDisplay(this.controller.live),
       gizmoChanged: () => handles.setMode(this.settings.gizmo),
       orientationGoalChanged: (on) => this.setOrientationGoal(on),
+      poleHandlesChanged: () => this.controller.setPoleHandles(this.settings.poleHandles),
       stepModeChanged: () => this.stepMode.switched(),
       resetPose: () => this.resetPose(),
       step: () => this.stepMode.step(),
@@ -101,6 +102,7 @@ export class PageApp {
       { keys: ['E'], label: 'gizmo: rotate the target (the hand turns to its orientation)', run: () => this.setGizmo('rotate') },
       { keys: ['Q'], label: 'gizmo: swing the target about the root joint', run: () => this.setGizmo('swing') },
       { keys: ['O'], label: 'orientation goal of the selected target on or off', run: () => this.setOrientationGoal() },
+      { keys: ['P'], label: 'pole handles on or off (drag one to turn an elbow or knee towards it)', run: () => this.togglePoleHandles() },
       { keys: ['S'], label: 'step mode: one iteration', run: () => this.stepMode.step() },
       { keys: ['C'], label: () => `compare every method from the ${this.settings.compareFrom}`, run: () => void this.compare.run(this.controller, this.settings) },
       { keys: ['?', 'H'], label: 'show or hide this help', run: () => this.keyboard.toggle() },
@@ -222,6 +224,13 @@ export class PageApp {
   private setGizmo(mode: PageSettings['gizmo']): void {
     this.settings.gizmo = mode;
     this.controller.handles.setMode(mode);
+    this.panel.refresh();
+  }
+
+  /** Pole handles on or off, the other way round from now. */
+  private togglePoleHandles(): void {
+    this.settings.poleHandles = !this.settings.poleHandles;
+    this.controller.setPoleHandles(this.settings.poleHandles);
     this.panel.refresh();
   }
 

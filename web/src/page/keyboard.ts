@@ -1,9 +1,21 @@
-// Keyboard shortcuts and the help overlay that lists them (toggled with ?).
+// Keyboard shortcuts and the help overlay that lists them (toggled with ?). Shortcuts work
+// whatever has the focus except where keys are typed: a text or number field, a text area, a
+// select (its letters pick options); a clicked checkbox or button keeps them working.
 export interface Shortcut {
   keys: string[];
   /** What the keys do; a function when it depends on a setting (read each time the help opens). */
   label: string | (() => string);
   run(): void;
+}
+
+/** Input types whose keys are not text: a shortcut pressed while one has the focus still runs. */
+const NON_TEXT_INPUTS = new Set(['checkbox', 'radio', 'button', 'submit', 'reset', 'range', 'color', 'file', 'image']);
+
+/** Whether keys pressed in `target` are typed into it (so they are no shortcuts). */
+export function typingInto(target: EventTarget | null): boolean {
+  if (target instanceof HTMLInputElement) return !NON_TEXT_INPUTS.has(target.type);
+  if (target instanceof HTMLSelectElement || target instanceof HTMLTextAreaElement) return true;
+  return target instanceof HTMLElement && target.isContentEditable;
 }
 
 export class Keyboard {
@@ -25,7 +37,7 @@ export class Keyboard {
     this.table = document.createElement('table');
     const more = document.createElement('p');
     more.textContent =
-      'Mouse or touch: drag a target’s gizmo to move it (or, in rotate mode, to turn it: the effector’s bone turns to the target’s axes); drag elsewhere to orbit; click a bone to make its tip an effector or remove it (shift-click only selects it and shows its joint limits); click a target to put the gizmo on it. Drop a .glb, .gltf or A7 .json file anywhere to load it.';
+      'Mouse or touch: drag a target’s gizmo to move it (or, in rotate mode, to turn it: the effector’s bone turns to the target’s axes); drag elsewhere to orbit; click a bone to make its tip an effector or remove it (shift-click only selects it and shows its joint limits); click a target to put the gizmo on it; with pole handles on (P), click a yellow pole handle and drag it to turn that elbow or knee towards it. Drop a .glb, .gltf or A7 .json file anywhere to load it.';
     const close = document.createElement('button');
     close.type = 'button';
     close.textContent = 'close';
@@ -39,8 +51,7 @@ export class Keyboard {
 
     this.onKey = (e: KeyboardEvent) => {
       if (e.ctrlKey || e.metaKey || e.altKey) return;
-      const t = e.target;
-      if (t instanceof HTMLInputElement || t instanceof HTMLSelectElement || t instanceof HTMLTextAreaElement) return;
+      if (typingInto(e.target)) return;
       if (e.key === 'Escape' && !this.overlay.hidden) {
         this.toggle(false);
         return;
@@ -51,7 +62,8 @@ export class Keyboard {
       e.preventDefault();
       s.run();
     };
-    window.addEventListener('keydown', this.onKey);
+    // Capture: lil-gui stops every key event inside its controllers from bubbling (a clicked checkbox keeps the focus).
+    window.addEventListener('keydown', this.onKey, true);
   }
 
   toggle(show = this.overlay.hidden): void {
@@ -60,7 +72,7 @@ export class Keyboard {
   }
 
   dispose(): void {
-    window.removeEventListener('keydown', this.onKey);
+    window.removeEventListener('keydown', this.onKey, true);
     this.overlay.remove();
   }
 

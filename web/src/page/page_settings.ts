@@ -22,6 +22,8 @@ export interface PageSettings extends FrameSettings {
   showMesh: boolean;
   showBones: boolean;
   gizmo: GizmoMode;
+  /** A pole handle per limb (a bend hint for the elbow or knee, sent with every solve). */
+  poleHandles: boolean;
   clickBone: ClickAction;
   stepMode: boolean;
   /** Step mode takes one iteration every stepIntervalMs milliseconds. */
@@ -47,6 +49,7 @@ export function initialSettings(rig: string, method: string): PageSettings {
     showMesh: true,
     showBones: true,
     gizmo: 'translate',
+    poleHandles: false,
     clickBone: 'toggle effector',
     stepMode: false,
     autoStep: false,

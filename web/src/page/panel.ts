@@ -16,6 +16,8 @@ export interface PanelActions {
   gizmoChanged(): void;
   /** The selected target's "orientation goal" box was ticked (true) or cleared (false). */
   orientationGoalChanged(on: boolean): void;
+  /** The "pole handles" box was ticked or cleared (settings.poleHandles says which). */
+  poleHandlesChanged(): void;
   stepModeChanged(): void;
   resetPose(): void;
   step(): void;
@@ -55,6 +57,11 @@ export class Panel {
       .name('orientation goal (O)')
       .onChange((on: boolean) => actions.orientationGoalChanged(on));
     this.orientationController.domElement.title = 'the selected target also sets its effector bone’s orientation (turn it with the rotate gizmo, E)';
+    rig
+      .add(s, 'poleHandles')
+      .name('pole handles (P)')
+      .onChange(() => actions.poleHandlesChanged())
+      .domElement.title = 'a yellow handle per arm and leg: drag it to turn the elbow or knee towards it (the tips stay on their targets)';
     rig.add({ reset: () => actions.resetPose() }, 'reset').name('reset pose (R)');
 
     const solver = this.gui.addFolder('Solver (every frame)');

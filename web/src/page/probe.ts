@@ -1,9 +1,11 @@
 // A small window onto the page for browser tests and tools: screen positions of targets and
-// bones, the camera, what is loaded, the targets' orientation goals, and one action: turning the
-// selected target's gizmo as a rotate drag does (turnGizmo). Set as window.ikPage by main.ts.
+// bones, the camera, what is loaded, the targets' orientation goals, the limbs' pole handles and
+// the poles the solve is sent, and one action: turning the selected target's gizmo as a rotate
+// drag does (turnGizmo). Set as window.ikPage by main.ts.
 import { Quaternion, Vector3 } from 'three';
 
-import { orientationErrorsDeg } from '../ik/goals.js';
+import { isGoals, orientationErrorsDeg } from '../ik/goals.js';
+import { limbPoints } from '../live/pole_placement.js';
 
 import { IkSession } from '../live/session.js';
 import type { ScreenPoint } from '../view/stage.js';
@@ -64,8 +66,28 @@ export interface PageProbe {
    * each followed by the gizmo's 'objectChange' event. Resolves after the drag ended.
    */
   turnGizmo(axis: [number, number, number], degrees: number, steps?: number): Promise<void>;
+  /**
+   * The limbs' pole handles as drawn (none with pole handles off): per pole its limb's lower bone,
+   * the pole, the limb's root (shoulder, hip), joint (elbow, knee) and tip (wrist, ankle) at the
+   * current pose (rig units), and where the handle is on screen (client pixels).
+   */
+  poleHandles(): PoleProbe[];
+  /** Index of the pole handle holding the gizmo, or null. */
+  selectedPole(): number | null;
+  /** The poles the next solve is sent (goals.poles: lower bone and point, rig units); [] when it is sent none. */
+  solvePoles(): { bone: number; point: [number, number, number] }[];
   /** Objects alive now: IK sessions and solvers (WebAssembly), geometries and textures (GPU). */
   alive(): { sessions: number; solvers: number; geometries: number; textures: number };
+}
+
+/** One pole handle, as poleHandles() reports it (rig units; screen: client pixels). */
+export interface PoleProbe {
+  bone: number;
+  point: [number, number, number];
+  root: [number, number, number];
+  joint: [number, number, number];
+  tip: [number, number, number];
+  screen: ScreenPoint;
 }
 
 declare global {
@@ -105,6 +127,21 @@ export function makeProbe(app: PageApp): PageProbe {
       return stage.toScreen(a.lerp(b, 0.5));
     },
     selectedTarget: () => controller.handles.selected,
+    selectedPole: () => controller.handles.selectedPole,
+    poleHandles() {
+      const s = session();
+      if (!s || controller.handles.poles.count !== s.goals.poleBones.length) return [];
+      const poses = s.poses();
+      return Array.from(s.goals.poleBones, (bone, j) => {
+        const point = Array.from(s.goals.polePoints.subarray(3 * j, 3 * j + 3)) as [number, number, number];
+        return { bone, point, ...limbPoints(s.spec, poses, bone), screen: stage.toScreen(a.fromArray(point)) };
+      });
+    },
+    solvePoles() {
+      const problem = session()?.problem();
+      if (!problem || !isGoals(problem)) return [];
+      return (problem.poles ?? []).map((p) => ({ bone: Number(p.bone), point: Array.from(p.point) as [number, number, number] }));
+    },
     cameraPosition: () => stage.camera.position.toArray() as [number, number, number],
     alive() {
       const memory = stage.renderer.info.memory;

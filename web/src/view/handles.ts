@@ -7,7 +7,9 @@
 // effector's current frame, so nothing jumps until the user turns it); swing swings it (and its
 // orientation goal, if any) rigidly about the rig's root joint. Scene coordinates are rig
 // coordinates (rig_view.ts draws the poses unchanged), so the target's quaternion in the scene is
-// the goal's quaternion in the rig, with no conversion.
+// the goal's quaternion in the rig, with no conversion. The gizmo may instead hold one of the
+// limbs' pole handles (pole_handles.ts), always in translate mode: the gizmo holds one thing at a
+// time, a target or a pole.
 import {
   BufferGeometry,
   CylinderGeometry,
@@ -26,6 +28,7 @@ import {
 } from 'three';
 import { TransformControls } from 'three/addons/controls/TransformControls.js';
 
+import { PoleHandles } from './pole_handles.js';
 import type { Stage } from './stage.js';
 
 export type GizmoMode = 'translate' | 'rotate' | 'swing';
@@ -40,6 +43,12 @@ export class Handles {
   readonly gizmo: TransformControls;
   /** Index (in effector order) of the target the gizmo holds, or null. */
   selected: number | null = null;
+  /** The limbs' pole handles (none until setPoles()). */
+  readonly poles = new PoleHandles();
+  /** Index of the pole handle the gizmo holds, or null. */
+  selectedPole: number | null = null;
+  /** Called with the pole index whenever the user moves that pole handle (rig units). */
+  onPoleMoved: (j: number, x: number, y: number, z: number) => void = () => {};
   dragging = false;
   /** Called with the effector index whenever the user moves that target (rig units). */
   onTargetMoved: (k: number, x: number, y: number, z: number) => void = () => {};
@@ -50,7 +59,7 @@ export class Handles {
   onTargetTurned: (k: number, q: Quaternion) => void = () => {};
   /** Called when dragging starts (true) and stops (false). */
   onDragging: (dragging: boolean) => void = () => {};
-  /** Called after the gizmo moved to another target (or none). */
+  /** Called after the gizmo moved to another target (or none: k null, also when it took a pole). */
   onSelected: (k: number | null) => void = () => {};
   /** Writes effector k's current bone-frame rotation (rig coordinates) into `out`: where rotate mode starts. */
   currentRotation: (k: number, out: Quaternion) => void = (_k, out) => void out.identity();
@@ -90,7 +99,7 @@ export class Handles {
     this.lines = new LineSegments(lineGeo, this.lineMat);
     this.lines.frustumCulled = false;
     this.lines.renderOrder = 12;
-    this.root.add(this.lines, this.pivot);
+    this.root.add(this.lines, this.pivot, this.poles.root);
     stage.scene.add(this.root);
 
     const onDragging = (e: { value: unknown }): void => {
@@ -105,6 +114,12 @@ export class Handles {
       this.onDragging(this.dragging);
     };
     const onChange = (): void => {
+      const j = this.selectedPole;
+      if (j !== null && this.dragging) {
+        const p = this.poles.handle(j)?.position;
+        if (p) this.onPoleMoved(j, p.x, p.y, p.z);
+        return;
+      }
       const k = this.selected;
       if (k === null || !this.dragging) return;
       const t = this.targets[k];
@@ -172,8 +187,10 @@ export class Handles {
     return this.targets.length;
   }
 
-  /** Puts the gizmo on target k (null detaches it). */
+  /** Puts the gizmo on target k (null detaches it); a pole the gizmo held is let go. */
   select(k: number | null): void {
+    this.selectedPole = null;
+    this.poles.highlight(null);
     if (this.selected !== null && this.targets[this.selected]) this.targets[this.selected].material = this.targetMat;
     this.selected = k;
     if (k === null || !this.targets[k]) {
@@ -187,10 +204,48 @@ export class Handles {
     this.onSelected(k);
   }
 
-  /** Translate, rotate (turn the target: its orientation goal) or swing (about the root joint). */
+  /**
+   * Puts the translate gizmo on pole handle j; the target it held is let go (onSelected(null)).
+   * null, or a pole that does not exist: the first target takes the gizmo instead.
+   */
+  selectPole(j: number | null): void {
+    if (j === null || !this.poles.handle(j)) {
+      this.select(this.targets.length ? 0 : null);
+      return;
+    }
+    if (this.selected !== null && this.targets[this.selected]) this.targets[this.selected].material = this.targetMat;
+    this.selected = null;
+    this.selectedPole = j;
+    this.poles.highlight(j);
+    this.attach();
+    this.onSelected(null);
+  }
+
+  /**
+   * Rebuilds the pole handles: `count` of them (0: none); sync() places them. A pole the gizmo held
+   * keeps it if it still exists, else the first target takes it.
+   */
+  setPoles(count: number): void {
+    const held = this.selectedPole;
+    this.poles.rebuild(count, this.size);
+    if (held === null) return;
+    this.selectedPole = null;
+    this.selectPole(held < count ? held : null);
+  }
+
+  /** Moves the pole handles to `points` and their lines' ends to `joints` (3 per pole each, rig units). */
+  syncPoles(points: ArrayLike<number>, joints: ArrayLike<number>): void {
+    this.poles.sync(points, joints, this.dragging ? this.selectedPole : null);
+  }
+
+  /** The pole handle under the ray (pole index), or null. */
+  pickPole(raycaster: Raycaster): number | null {
+    return this.poles.pick(raycaster);
+  }
+
+  /** Translate, rotate (turn the target: its orientation goal) or swing (about the root joint); a pole handle is always translated. */
   setMode(mode: GizmoMode): void {
     this.mode = mode;
-    this.gizmo.setMode(mode === 'translate' ? 'translate' : 'rotate');
     this.attach();
   }
 
@@ -254,6 +309,7 @@ export class Handles {
     this.gizmo.detach();
     this.disposeGizmoListeners();
     this.gizmo.dispose();
+    this.poles.dispose();
     this.root.removeFromParent();
     this.root.clear();
     for (const x of [this.targetGeo, this.tipGeo, this.rodGeo, this.lines.geometry]) x.dispose();
@@ -274,6 +330,12 @@ export class Handles {
   }
 
   private attach(): void {
+    const pole = this.selectedPole === null ? undefined : this.poles.handle(this.selectedPole);
+    this.gizmo.setMode(pole || this.mode === 'translate' ? 'translate' : 'rotate');
+    if (pole) {
+      this.gizmo.attach(pole);
+      return;
+    }
     const k = this.selected;
     if (k === null) return;
     if (this.mode === 'swing') {
