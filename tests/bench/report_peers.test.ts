@@ -27,13 +27,13 @@ const ours = [row('lm', 'wasm', 1000, 1, 50e-6), row('lm', 'wasm', 0, 0.56, 40e-
 describe('section 4: lm against the peers', () => {
   it('shows every peer with and without restarts, time to success included', () => {
     const { text, verdicts } = section([...ours,
-      row('three-ccd', 'wasm', 1000, 0.55, 2e-3), row('three-ccd', 'wasm', 0, 0.2, 1e-3),
-      row('closed-chain-ik', 'wasm', 1000, 0.92, 23e-3), row('closed-chain-ik', 'wasm', 0, 0.3, 5e-3),
+      row('three-ccd', 'js', 1000, 0.55, 2e-3), row('three-ccd', 'js', 0, 0.2, 1e-3),
+      row('closed-chain-ik', 'js', 1000, 0.92, 23e-3), row('closed-chain-ik', 'js', 0, 0.3, 5e-3),
       row('kdl', 'native', 1000, 0.9, 45e-3), row('kdl', 'native', 0, 0.3, 40e-3)]);
     expect(verdicts.missed).toEqual([]);
     const lines = text.split('\n').filter((l) => l.startsWith('| knight'));
     expect(lines).toHaveLength(3);
-    expect(lines[0]).toContain('three-ccd (wasm)');
+    expect(lines[0]).toContain('three-ccd (JavaScript)');
     expect(lines[0]).toContain('55.0%; 2000.0 us median to success; 50.0% / 75.0% / 100.0%');
     expect(lines[2]).toContain('kdl (native)');
     expect(lines[2]).toContain('100.0%; 30.0 us median to success');
@@ -41,8 +41,8 @@ describe('section 4: lm against the peers', () => {
 
   it('marks a peer that succeeds more often, or reaches its targets sooner, as a miss', () => {
     const { verdicts } = section([...ours,
-      row('three-ccd', 'wasm', 1000, 1, 20e-6), row('three-ccd', 'wasm', 0, 1, 20e-6),
-      row('closed-chain-ik', 'wasm', 1000, 0.92, 23e-3), row('closed-chain-ik', 'wasm', 0, 0.3, 5e-3)]);
+      row('three-ccd', 'js', 1000, 1, 20e-6), row('three-ccd', 'js', 0, 1, 20e-6),
+      row('closed-chain-ik', 'js', 1000, 0.92, 23e-3), row('closed-chain-ik', 'js', 0, 0.3, 5e-3)]);
     expect(verdicts.missed).toEqual([
       '4. knight random: lm does not beat three-ccd with restarts on both',
       '4. knight random: lm does not beat kdl with restarts on both', // no kdl row measured
