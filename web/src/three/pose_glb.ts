@@ -10,6 +10,7 @@
 // extensions it does not know (VRM's, for one) are refused rather than silently dropped.
 import { Logger, WebIO, type Document, type GLTF } from '@gltf-transform/core';
 import { ALL_EXTENSIONS } from '@gltf-transform/extensions';
+import { Matrix4, Quaternion } from 'three';
 
 import type { RigSpec } from '../ik/rig_spec.js';
 import { failIn, parseGltfContainer, type SiblingReader } from '../rig/gltf_file.js';
@@ -51,26 +52,10 @@ const maxAbsDiff = (a: ArrayLike<number>, b: ArrayLike<number>): number => {
 const close = (a: ArrayLike<number>, b: ArrayLike<number>): boolean =>
   maxAbsDiff(a, b) <= KEEP_FILE_TOLERANCE * Math.max(maxAbs(a), maxAbs(b));
 
-/** Unit quaternion (x, y, z, w) of a rotation given as 9 row-major numbers (Shepperd's method). */
+/** Unit quaternion (x, y, z, w) of a rotation given as 9 row-major numbers (three.js). */
 function quaternionOf(r: ArrayLike<number>): Quat {
-  const [m00, m01, m02, m10, m11, m12, m20, m21, m22] = Array.from(r);
-  const trace = m00 + m11 + m22;
-  let q: Quat;
-  if (trace > 0) {
-    const s = 0.5 / Math.sqrt(trace + 1);
-    q = [(m21 - m12) * s, (m02 - m20) * s, (m10 - m01) * s, 0.25 / s];
-  } else if (m00 > m11 && m00 > m22) {
-    const s = 2 * Math.sqrt(1 + m00 - m11 - m22);
-    q = [0.25 * s, (m01 + m10) / s, (m02 + m20) / s, (m21 - m12) / s];
-  } else if (m11 > m22) {
-    const s = 2 * Math.sqrt(1 + m11 - m00 - m22);
-    q = [(m01 + m10) / s, 0.25 * s, (m12 + m21) / s, (m02 - m20) / s];
-  } else {
-    const s = 2 * Math.sqrt(1 + m22 - m00 - m11);
-    q = [(m02 + m20) / s, (m12 + m21) / s, 0.25 * s, (m10 - m01) / s];
-  }
-  const n = Math.hypot(...q);
-  return q.map((v) => v / n) as Quat;
+  const m = new Matrix4().set(r[0], r[1], r[2], 0, r[3], r[4], r[5], 0, r[6], r[7], r[8], 0, 0, 0, 0, 1);
+  return new Quaternion().setFromRotationMatrix(m).normalize().toArray() as Quat;
 }
 
 /**
