@@ -17,6 +17,7 @@ import type { LiveRig } from './live_rig.js';
 import { solveFrame, type FrameTiming } from './live_solve.js';
 import { poleLimbs } from './pole_limbs.js';
 import { initialPole } from './pole_placement.js';
+import { restorePose, type PoseState } from './pose_state.js';
 import type { IkSession } from './session.js';
 import type { SolveOutcome, SolveSettings } from './solver.js';
 
@@ -139,6 +140,24 @@ export class LiveController {
     live.showGhost(null);
     this.handles.setTargets(live.session.targets);
     this.placePoles(false);
+    this.needsSolve = false;
+    this.needsRedraw = true;
+    this.events.changed?.();
+    this.events.targetChanged?.();
+  }
+
+  /**
+   * Makes `state` (pose_state.ts) the rig's pose, effectors, targets and goals, as undo, redo and a
+   * pose file do. Poles follow the pole-handle switch: a limb the state had a pole for keeps it.
+   * No solve follows (the pose is shown as it was). Throws, changing nothing, for another rig's state.
+   */
+  restore(state: PoseState): void {
+    const live = this.current;
+    if (!live) return;
+    restorePose(live.session, state);
+    live.showGhost(null);
+    this.handles.setTargets(live.session.targets);
+    this.placePoles(true);
     this.needsSolve = false;
     this.needsRedraw = true;
     this.events.changed?.();

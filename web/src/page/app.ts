@@ -11,11 +11,13 @@ import type { RigSource } from '../live/rig_source.js';
 import { Throttle } from '../live/throttle.js';
 import type { ViewClick } from '../view/picking.js';
 import { Compare } from './compare.js';
+import { EditHistory } from './edit_history.js';
 import { FileInput } from './file_input.js';
 import { Keyboard } from './keyboard.js';
 import { initialSettings, type PageSettings } from './page_settings.js';
 import { Panel } from './panel.js';
 import { DEFAULT_RIG, FILE_CHOICE, loadProjectRig, loadUserFile, projectRig, rigMenu } from './project_rigs.js';
+import { download, fileStem, glbExportProblem, looksLikePoseFile, poseJsonText, posedGlbBytes, readPoseText } from './pose_files.js';
 import { showSelection, toggleEffector } from './selection.js';
 import { SolveReport } from './solve_report.js';
 import type { StatsPanel } from './stats.js';
@@ -43,6 +45,9 @@ export class PageApp {
   private readonly keyboard: Keyboard;
   private readonly panel: Panel;
   private readonly files: FileInput;
+  private readonly poseFiles: FileInput;
+  /** Undo and redo of edits and rig loads. */
+  readonly history: EditHistory;
   /** The selection readout, rewritten a few times a second while the pose changes. */
   private readonly selectionText = new Throttle(() => this.showSelection());
   private rigKey: string | null = null;
@@ -60,7 +65,10 @@ export class PageApp {
       failed: (message) => this.showMessage(message, 'error'),
       changed: () => this.stepMode.restart(),
       clicked: (c) => this.click(c),
-      dragging: (on) => (el.root.dataset.dragging = String(on)),
+      dragging: (on) => {
+        el.root.dataset.dragging = String(on);
+        this.history.dragging(on);
+      },
       redrawn: () => {
         if (this.controller.live?.selectedBone != null) this.selectionText.request(); // its angles changed
       },
@@ -75,6 +83,13 @@ export class PageApp {
       switchedOn: () => this.panel.refresh(),
     });
     this.files = new FileInput(el.root, (f) => void this.loadFile(f));
+    this.poseFiles = new FileInput(el.root, (f) => void this.loadPoseFile(f), '.json', 'pose-file', false);
+    this.history = new EditHistory(
+      this.controller,
+      () => this.rigKey,
+      (source, key) => this.load(async () => source, source.name, key, false),
+      () => this.panel?.showUndo(this.history.canUndo, this.history.canRedo),
+    );
 
     const handles = this.controller.handles;
     this.panel = new Panel(el.side, this.settings, rigMenu(), this.methods, {
@@ -89,6 +104,11 @@ export class PageApp {
       poleHandlesChanged: () => this.controller.setPoleHandles(this.settings.poleHandles),
       stepModeChanged: () => this.stepMode.switched(),
       resetPose: () => this.resetPose(),
+      undo: () => void this.undo(false),
+      redo: () => void this.undo(true),
+      savePoseJson: () => this.savePoseJson(),
+      loadPoseJson: () => this.poseFiles.choose(),
+      savePosedGlb: () => void this.savePosedGlb(),
       step: () => this.stepMode.step(),
       compare: () => void this.compare.run(this.controller, this.settings),
       help: () => this.keyboard.toggle(),
@@ -98,6 +118,8 @@ export class PageApp {
 
     this.keyboard = new Keyboard(el.root, [
       { keys: ['R'], label: 'reset the pose', run: () => this.resetPose() },
+      { keys: ['Ctrl+Z'], label: 'undo (target moves, effector changes, reset, rig loads, pose files)', run: () => void this.undo(false) },
+      { keys: ['Ctrl+Shift+Z', 'Ctrl+Y'], label: 'redo', run: () => void this.undo(true) },
       { keys: ['W'], label: 'gizmo: translate the target', run: () => this.setGizmo('translate') },
       { keys: ['E'], label: 'gizmo: rotate the target (the hand turns to its orientation)', run: () => this.setGizmo('rotate') },
       { keys: ['Q'], label: 'gizmo: swing the target about the root joint', run: () => this.setGizmo('swing') },
@@ -124,8 +146,41 @@ export class PageApp {
     await this.load(() => loadProjectRig(key), projectRig(key)?.file ?? key, key);
   }
 
+  /** Loads a user's rig file; a pose file (ik-pose JSON) is applied to the rig shown instead. */
   async loadFile(file: File): Promise<void> {
+    if (/\.json$/i.test(file.name) && looksLikePoseFile(await file.slice(0, 200).text())) return this.loadPoseFile(file);
     await this.load(() => loadUserFile(file), file.name, null);
+  }
+
+  /** Applies a pose file (ik-pose JSON) to the rig shown, as one undoable step; a bad file changes nothing and says why. */
+  async loadPoseFile(file: File): Promise<void> {
+    const live = this.controller.live;
+    if (!live) return this.showMessage(`Could not load ${file.name}: no rig is loaded`, 'error');
+    try {
+      const { state, warnings } = readPoseText(await file.text(), live);
+      this.history.edit(() => this.controller.restore(state));
+      this.report.showIdle();
+      this.stepMode.clearInfo();
+      this.showRigName();
+      this.showSelection();
+      this.showMessage(`${file.name}: pose loaded${warnings.length ? ` (${warnings.join('; ')})` : ''}`, 'info');
+    } catch (e) {
+      this.showMessage(`Could not load ${file.name}: ${errorText(e)}`, 'error');
+    }
+  }
+
+  /** Undoes (redo false) or redoes the last step; a step that cannot be shown says why. */
+  async undo(redo: boolean): Promise<void> {
+    try {
+      if (!(await (redo ? this.history.redo() : this.history.undo()))) return;
+    } catch (e) {
+      this.showMessage(`Could not ${redo ? 'redo' : 'undo'}: ${errorText(e)}`, 'error');
+      return;
+    }
+    this.report.showIdle();
+    this.stepMode.clearInfo();
+    this.showRigName();
+    this.showSelection();
   }
 
   dispose(): void {
@@ -133,6 +188,7 @@ export class PageApp {
     this.selectionText.cancel();
     this.keyboard.dispose();
     this.files.dispose();
+    this.poseFiles.dispose();
     this.panel.dispose();
     this.compare.dispose();
     this.report.dispose();
@@ -141,7 +197,8 @@ export class PageApp {
 
   // ---- loading -------------------------------------------------------------------------------
 
-  private async load(read: () => Promise<RigSource>, what: string, key: string | null): Promise<void> {
+  /** Loads a rig and shows it; `undoable`: the rig shown before becomes an undo step. */
+  private async load(read: () => Promise<RigSource>, what: string, key: string | null, undoable = true): Promise<void> {
     const token = ++this.loadToken;
     this.el.root.dataset.state = 'loading';
     this.showMessage(`loading ${what}…`, 'info');
@@ -161,6 +218,7 @@ export class PageApp {
       live.dispose();
       return;
     }
+    if (undoable) this.history.rigReplacing();
     this.install(live, key);
     const notes = live.source.warnings;
     this.showMessage(notes.length ? `${live.name}: ${notes.join('; ')}` : '', 'info');
@@ -189,6 +247,7 @@ export class PageApp {
     this.stepMode.clearInfo();
     this.showSelection();
     this.showTargetGoals();
+    this.panel.showGlbExport(glbExportProblem(live));
   }
 
   // ---- panel, keyboard and click actions -----------------------------------------------------
@@ -241,7 +300,7 @@ export class PageApp {
       this.showTargetGoals();
       return;
     }
-    this.controller.setOrientationGoal(k, on ?? !this.controller.orientationGoal(k));
+    this.history.edit(() => this.controller.setOrientationGoal(k, on ?? !this.controller.orientationGoal(k)));
   }
 
   /** The panel's "orientation goal" box follows the selected target. */
@@ -258,7 +317,7 @@ export class PageApp {
 
   private resetPose(): void {
     if (!this.controller.live) return;
-    this.controller.reset();
+    this.history.edit(() => this.controller.reset());
     this.report.showIdle();
     this.stepMode.clearInfo();
     this.showSelection();
@@ -271,13 +330,35 @@ export class PageApp {
     const bone = live.view.pick(c.raycaster);
     live.selectedBone = bone;
     if (bone !== null && !c.shiftKey && this.settings.clickBone === 'toggle effector') {
-      if (toggleEffector(this.controller, bone)) {
+      if (this.history.edit(() => toggleEffector(this.controller, bone))) {
         this.showRigName();
         this.report.showIdle();
       } else this.showMessage('a rig keeps at least one end effector', 'info');
     }
     this.controller.redraw();
     this.showSelection();
+  }
+
+  // ---- pose files ----------------------------------------------------------------------------
+
+  private savePoseJson(): void {
+    const live = this.controller.live;
+    if (!live) return;
+    try {
+      download(poseJsonText(live), `${fileStem(live.name)}-pose.json`, 'application/json');
+    } catch (e) {
+      this.showMessage(`Could not save the pose: ${errorText(e)}`, 'error');
+    }
+  }
+
+  private async savePosedGlb(): Promise<void> {
+    const live = this.controller.live;
+    if (!live) return;
+    try {
+      download(await posedGlbBytes(live), `${fileStem(live.name)}-posed.glb`, 'model/gltf-binary');
+    } catch (e) {
+      this.showMessage(`Could not save the posed model: ${errorText(e)}`, 'error');
+    }
   }
 
   // ---- text ----------------------------------------------------------------------------------

@@ -1,22 +1,27 @@
-// Files from the user: a hidden file chooser and drag-and-drop anywhere on the page.
+// Files from the user: a hidden file chooser and, optionally, drag-and-drop anywhere on the page.
 export const RIG_FILE_TYPES = '.glb,.gltf,.json';
 
 export class FileInput {
   private readonly input: HTMLInputElement;
   private readonly cleanup: () => void;
 
-  constructor(root: HTMLElement, onFile: (file: File) => void) {
+  /** A chooser for `accept` (file types) with element id `id`; `acceptDrops`: files dropped on the page come here too. */
+  constructor(root: HTMLElement, onFile: (file: File) => void, accept = RIG_FILE_TYPES, id = 'rig-file', acceptDrops = true) {
     this.input = document.createElement('input');
     this.input.type = 'file';
-    this.input.accept = RIG_FILE_TYPES;
+    this.input.accept = accept;
     this.input.hidden = true;
-    this.input.id = 'rig-file';
+    this.input.id = id;
     this.input.addEventListener('change', () => {
       const f = this.input.files?.[0];
       this.input.value = '';
       if (f) onFile(f);
     });
     root.append(this.input);
+    if (!acceptDrops) {
+      this.cleanup = () => this.input.remove();
+      return;
+    }
 
     const over = (e: DragEvent): void => {
       if (!e.dataTransfer?.types.includes('Files')) return;

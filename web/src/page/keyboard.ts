@@ -18,6 +18,17 @@ export function typingInto(target: EventTarget | null): boolean {
   return target instanceof HTMLElement && target.isContentEditable;
 }
 
+/**
+ * The key pressed, as shortcuts name keys, lower case: a letter or symbol ('z', '?'), a named key
+ * ('escape'), and with Ctrl (or Cmd) held, 'ctrl+z' / 'ctrl+shift+z' (Shift is named only with Ctrl:
+ * it is how '?' is typed).
+ */
+export function keyName(e: Pick<KeyboardEvent, 'key' | 'ctrlKey' | 'metaKey' | 'shiftKey'>): string {
+  const key = e.key.toLowerCase();
+  if (!e.ctrlKey && !e.metaKey) return key;
+  return `ctrl+${e.shiftKey ? 'shift+' : ''}${key}`;
+}
+
 export class Keyboard {
   readonly overlay: HTMLElement;
   private readonly table: HTMLTableElement;
@@ -50,13 +61,13 @@ export class Keyboard {
     parent.append(this.overlay);
 
     this.onKey = (e: KeyboardEvent) => {
-      if (e.ctrlKey || e.metaKey || e.altKey) return;
+      if (e.altKey) return;
       if (typingInto(e.target)) return;
       if (e.key === 'Escape' && !this.overlay.hidden) {
         this.toggle(false);
         return;
       }
-      const key = e.key.length === 1 ? e.key.toLowerCase() : e.key;
+      const key = keyName(e);
       const s = this.shortcuts.find((x) => x.keys.some((k) => k.toLowerCase() === key));
       if (!s) return;
       e.preventDefault();

@@ -20,6 +20,11 @@ export interface PanelActions {
   poleHandlesChanged(): void;
   stepModeChanged(): void;
   resetPose(): void;
+  undo(): void;
+  redo(): void;
+  savePoseJson(): void;
+  loadPoseJson(): void;
+  savePosedGlb(): void;
   step(): void;
   compare(): void;
   help(): void;
@@ -32,6 +37,9 @@ export class Panel {
   /** The selected target's goals, as the panel shows them. */
   private readonly target = { orientationGoal: false };
   private readonly orientationController: Controller;
+  private readonly undoController: Controller;
+  private readonly redoController: Controller;
+  private readonly glbController: Controller;
 
   constructor(
     container: HTMLElement,
@@ -64,6 +72,14 @@ export class Panel {
       .domElement.title = 'a yellow handle per arm and leg: drag it to turn the elbow or knee towards it (the tips stay on their targets)';
     rig.add({ reset: () => actions.resetPose() }, 'reset').name('reset pose (R)');
 
+    const pose = this.gui.addFolder('Pose');
+    this.undoController = pose.add({ undo: () => actions.undo() }, 'undo').name('undo (Ctrl+Z)');
+    this.redoController = pose.add({ redo: () => actions.redo() }, 'redo').name('redo (Ctrl+Shift+Z)');
+    pose.add({ save: () => actions.savePoseJson() }, 'save').name('save pose (.json)');
+    pose.add({ load: () => actions.loadPoseJson() }, 'load').name('load pose (.json)…');
+    this.glbController = pose.add({ glb: () => actions.savePosedGlb() }, 'glb').name('save posed model (.glb)');
+    this.showUndo(false, false);
+
     const solver = this.gui.addFolder('Solver (every frame)');
     solver.add(s, 'method', [...methods.names]).name('method').onChange(() => actions.methodChanged());
     solver.add(s, 'tipTolerance').name('on target within (distance)').onChange(() => actions.settingsChanged());
@@ -95,6 +111,18 @@ export class Panel {
     this.target.orientationGoal = on;
     this.orientationController.enable(selected);
     this.orientationController.updateDisplay();
+  }
+
+  /** Enables undo and redo as there are steps to take. */
+  showUndo(canUndo: boolean, canRedo: boolean): void {
+    this.undoController.enable(canUndo);
+    this.redoController.enable(canRedo);
+  }
+
+  /** Enables "save posed model" when `problem` is null; else disables it with `problem` as its tooltip. */
+  showGlbExport(problem: string | null): void {
+    this.glbController.enable(problem === null);
+    this.glbController.domElement.title = problem ?? 'the rig’s file with the solved joint rotations written into its nodes';
   }
 
   /** Shows the rig choice without calling back (e.g. a dropped file: no project rig selected). */

@@ -31,6 +31,8 @@ export interface PageProbe {
   worldToScreen(p: [number, number, number]): ScreenPoint;
   /** Where target k is on screen (client pixels), or null. */
   targetScreen(k: number): ScreenPoint | null;
+  /** Bone i's tip as drawn (world coordinates), or null. */
+  boneTip(i: number): [number, number, number] | null;
   /** Where the middle of bone i is on screen, or null. */
   boneScreen(i: number): ScreenPoint | null;
   /** Index of the target holding the gizmo. */
@@ -76,6 +78,12 @@ export interface PageProbe {
   selectedPole(): number | null;
   /** The poles the next solve is sent (goals.poles: lower bone and point, rig units); [] when it is sent none. */
   solvePoles(): { bone: number; point: [number, number, number] }[];
+  /** The current pose: 3 XZX angles per bone, degrees. */
+  angles(): number[];
+  /** All targets, 3 per effector, rig units. */
+  targets(): number[];
+  /** Steps undo can take now. */
+  undoSteps(): number;
   /** Objects alive now: IK sessions and solvers (WebAssembly), geometries and textures (GPU). */
   alive(): { sessions: number; solvers: number; geometries: number; textures: number };
 }
@@ -119,6 +127,11 @@ export function makeProbe(app: PageApp): PageProbe {
       const t = session()?.targets;
       return t && k >= 0 && 3 * k < t.length ? stage.toScreen(a.fromArray(t, 3 * k)) : null;
     },
+    boneTip(i) {
+      const live = controller.live;
+      if (!live || i < 0 || i >= live.session.rig.numBones) return null;
+      return live.view.boneTip(i, a).toArray() as [number, number, number];
+    },
     boneScreen(i) {
       const live = controller.live;
       if (!live || i < 0 || i >= live.session.rig.numBones) return null;
@@ -142,6 +155,9 @@ export function makeProbe(app: PageApp): PageProbe {
       if (!problem || !isGoals(problem)) return [];
       return (problem.poles ?? []).map((p) => ({ bone: Number(p.bone), point: Array.from(p.point) as [number, number, number] }));
     },
+    angles: () => Array.from(session()?.angles ?? []),
+    targets: () => Array.from(session()?.targets ?? []),
+    undoSteps: () => app.history.undoSteps,
     cameraPosition: () => stage.camera.position.toArray() as [number, number, number],
     alive() {
       const memory = stage.renderer.info.memory;

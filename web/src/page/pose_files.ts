@@ -1,0 +1,76 @@
+// Saving and loading poses from the page: the posed character as .glb (the rig's own file with the
+// solved joints written into its nodes, pose_glb.ts), the pose as JSON (angles and targets keyed by
+// bone name, pose_json.ts), and a JSON pose read back as a PoseState for the rig shown.
+import type { LiveRig } from '../live/live_rig.js';
+import { poseWithOrientations, type PoseState } from '../live/pose_state.js';
+import { poseFromJson, poseToJson } from '../rig/pose_json.js';
+
+/** Why the rig shown cannot be saved as a posed .glb, or null when it can. */
+export function glbExportProblem(live: LiveRig | null): string | null {
+  if (!live) return 'no rig is loaded';
+  if (!live.source.posedGlb) return `${live.name} is an A7 rig (bones only): there is no glTF file to pose; save the pose as .json`;
+  return null;
+}
+
+/** The rig's name as a file name stem (letters, digits, dot, dash and underscore kept). */
+export function fileStem(name: string): string {
+  return name.replace(/\.(glb|gltf|json)$/i, '').replace(/[^\w.-]+/g, '_') || 'rig';
+}
+
+/** The posed .glb of the rig shown at its current pose. Throws an Error naming the problem. */
+export async function posedGlbBytes(live: LiveRig): Promise<Uint8Array> {
+  const problem = glbExportProblem(live);
+  if (problem || !live.source.posedGlb) throw new Error(problem ?? 'no glTF to pose');
+  return live.source.posedGlb(live.session.poses());
+}
+
+/** The pose file (ik-pose JSON text) of the rig shown: angles, effectors, targets and orientation goals. */
+export function poseJsonText(live: LiveRig): string {
+  const { session } = live;
+  const names = session.spec.names;
+  const goals = session.goals;
+  const effectors = Array.from(session.effectors(), (b) => names[b]);
+  return poseToJson({
+    rigName: live.name,
+    boneNames: names,
+    angles: session.angles,
+    effectors,
+    targets: session.targets,
+    orientations: effectors.map((_, k) => (goals.orientation[k] ? goals.rotations.subarray(4 * k, 4 * k + 4) : null)),
+  });
+}
+
+/**
+ * A pose file's text read for the rig shown, as the state to restore (angles clamped into the
+ * limits in use) and the reader's warnings. A file listing no end effectors keeps the rig's, with
+ * their targets on the tips of the pose read. Throws a PoseFormatError naming the field.
+ */
+export function readPoseText(text: string, live: LiveRig): { state: PoseState; warnings: string[] } {
+  const { session } = live;
+  const read = poseFromJson(text, session.spec);
+  if (read.effectors.length === 0) {
+    const effectors = session.effectors();
+    const targets = session.rig.tips(read.angles);
+    return { state: poseWithOrientations(read.angles, effectors, targets, []), warnings: read.warnings };
+  }
+  return { state: poseWithOrientations(read.angles, read.effectors, read.targets, read.orientations), warnings: read.warnings };
+}
+
+/** Offers `data` to the user as a download called `name`. */
+export function download(data: Uint8Array | string, name: string, type: string): void {
+  const blob = new Blob([data as BlobPart], { type });
+  const url = URL.createObjectURL(blob);
+  const a = document.createElement('a');
+  a.href = url;
+  a.download = name;
+  a.hidden = true;
+  document.body.append(a);
+  a.click();
+  a.remove();
+  setTimeout(() => URL.revokeObjectURL(url), 10_000);
+}
+
+/** Whether `text` (a .json file's start) is a pose file rather than an A7 rig. */
+export function looksLikePoseFile(text: string): boolean {
+  return /^\s*\{\s*"format"\s*:\s*"ik-pose"/.test(text.slice(0, 200));
+}
