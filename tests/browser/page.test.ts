@@ -14,6 +14,7 @@ import {
   dragTowardsRoot,
   effectorNamed,
   gotoRig as openRig,
+  panelControl,
   selectTarget,
   stat,
   statText,
@@ -63,7 +64,7 @@ describe('the page', () => {
   it('switching methods works (panel select, stats and URL follow)', async (ctx) => {
     const { page, errors } = await openPage(env.browser, ctx);
     await gotoRig(page, 'robot-arm');
-    const select = page.locator('.lil-controller', { has: page.locator('.lil-name', { hasText: /^method$/ }) }).locator('select');
+    const select = (await panelControl(page, /^method$/)).locator('select');
     // The menu lists the core's registry in its order, the default (lm) first.
     const methods = await select.locator('option').allTextContents();
     expect(methods[0]).toBe('lm');
@@ -89,7 +90,7 @@ describe('the page', () => {
   it('step mode advances one iteration per S', async (ctx) => {
     const { page, errors } = await openPage(env.browser, ctx);
     await gotoRig(page, 'lamp', '&method=gd');
-    await page.locator('.lil-controller', { has: page.locator('.lil-name', { hasText: /^step mode$/ }) }).locator('input').check();
+    await (await panelControl(page, /^step mode$/)).locator('input').check();
     await dragTowardsRoot(page, 0, 0.3);
     await page.waitForFunction(() => document.getElementById('app')?.dataset.dragging === 'false');
     await page.keyboard.press('s');
@@ -227,7 +228,7 @@ describe('the page', () => {
     await dragBy(page, hand, 30, -70);
     await waitForSettled(page);
     // Compare every method from the rest pose to these targets.
-    await page.locator('.lil-controller', { has: page.locator('.lil-name', { hasText: /^compare: start from$/ }) }).locator('select').selectOption('rest pose');
+    await (await panelControl(page, /^compare: start from$/)).locator('select').selectOption('rest pose');
     // Show one joint's limits (shift-click: select without toggling the effector).
     const bone = await page.evaluate(() => {
       const p = window.ikPage;

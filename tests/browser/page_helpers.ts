@@ -147,3 +147,21 @@ export async function dragPoleBy(page: Page, j: number, dx: number, dy: number, 
   }
   await page.mouse.up();
 }
+
+/**
+ * The panel's control labelled `name` (a lil-gui controller), its folder opened first: the panel
+ * opens one folder at a time, so a control in a closed folder is hidden until its title is clicked.
+ */
+export async function panelControl(page: Page, name: RegExp) {
+  const control = page.locator('.lil-controller', { has: page.locator('.lil-name', { hasText: name }) });
+  const titles = await control.evaluate((el) => {
+    const closed: number[] = [];
+    const all = Array.from(document.querySelectorAll('.lil-gui > .lil-title'));
+    for (let g = el.closest('.lil-gui.lil-closed'); g; g = g.parentElement?.closest('.lil-gui.lil-closed') ?? null) {
+      closed.unshift(all.indexOf(g.querySelector(':scope > .lil-title') as Element));
+    }
+    return closed;
+  });
+  for (const i of titles) await page.locator('.lil-gui > .lil-title').nth(i).click();
+  return control;
+}

@@ -14,6 +14,7 @@ import {
   dragTowardsRoot,
   effectorNamed,
   gotoRig,
+  panelControl,
   selectPole,
   selectTarget,
   usePageServer,
@@ -206,7 +207,7 @@ describe('pole handles', () => {
     expect(await page.evaluate(() => window.ikPage?.gizmoMode())).toBe('rotate');
 
     // Typing in a number field is typing, not shortcuts.
-    const field = page.locator('.lil-controller', { has: page.locator('.lil-name', { hasText: /^on target within/ }) }).locator('input');
+    const field = (await panelControl(page, /^on target within/)).locator('input');
     await field.click();
     await page.keyboard.press('p');
     await page.keyboard.press('w');

@@ -12,7 +12,7 @@ import { describe, expect, it } from 'vitest';
 
 import { treeA7 } from '../rig/synthetic_rigs.js';
 import { openPage, renderedFrames, resultsDir } from './harness.js';
-import { dragBy, effectorNamed, gotoRig, selectTarget, usePageServer, waitForConvergence } from './page_helpers.js';
+import { dragBy, effectorNamed, gotoRig, panelControl, selectTarget, usePageServer, waitForConvergence } from './page_helpers.js';
 
 const env = usePageServer();
 
@@ -30,8 +30,8 @@ async function snapshot(page: Page): Promise<Snapshot> {
 }
 
 /** A panel button by its label's start. */
-function panelButton(page: Page, label: RegExp) {
-  return page.locator('.lil-controller', { has: page.locator('.lil-name', { hasText: label }) }).locator('button');
+async function panelButton(page: Page, label: RegExp) {
+  return (await panelControl(page, label)).locator('button');
 }
 
 /** Presses a key (combination) with the page's focus on the view, and waits for what it starts to be drawn. */
@@ -88,14 +88,14 @@ describe('undo and redo', () => {
     expect((await snapshot(page)).rig).toBe('lamp');
 
     // The panel's buttons do the same, and a new edit after an undo clears the redo.
-    await panelButton(page, /^undo/).click();
+    await (await panelButton(page, /^undo/)).click();
     await page.waitForFunction(() => window.ikPage?.rigName() === 'knight');
     await renderedFrames(page, 3);
     expect(await snapshot(page)).toEqual(rest);
     await selectTarget(page, hand); // the knight was built anew: no target holds the gizmo
     await dragBy(page, hand, 15, -30);
     await waitForConvergence(page);
-    expect(await panelButton(page, /^redo/).isDisabled()).toBe(true);
+    expect(await (await panelButton(page, /^redo/)).isDisabled()).toBe(true);
     expect(errors).toEqual([]);
   });
 });
@@ -109,7 +109,8 @@ describe('pose files', () => {
     await waitForConvergence(page);
     const posed = await snapshot(page);
 
-    const [saved] = await Promise.all([page.waitForEvent('download'), panelButton(page, /^save pose \(/).click()]);
+    const save = await panelButton(page, /^save pose \(/);
+    const [saved] = await Promise.all([page.waitForEvent('download'), save.click()]);
     expect(saved.suggestedFilename()).toBe('knight-pose.json');
     const file = join(resultsDir, 'knight-pose.json');
     await saved.saveAs(file);
@@ -148,7 +149,8 @@ describe('pose files', () => {
       return b ? Math.hypot(b.max[0] - b.min[0], b.max[1] - b.min[1], b.max[2] - b.min[2]) : NaN;
     });
 
-    const [saved] = await Promise.all([page.waitForEvent('download'), panelButton(page, /^save posed model/).click()]);
+    const save = await panelButton(page, /^save posed model/);
+    const [saved] = await Promise.all([page.waitForEvent('download'), save.click()]);
     expect(saved.suggestedFilename()).toBe('knight-posed.glb');
     const file = join(resultsDir, 'knight-posed.glb');
     await saved.saveAs(file);
@@ -167,7 +169,7 @@ describe('pose files', () => {
   it('an A7 rig cannot be saved as .glb: the button is disabled and says why', async (ctx) => {
     const { page } = await openPage(env.browser, ctx);
     await gotoRig(page, env.url, 'knight');
-    expect(await panelButton(page, /^save posed model/).isDisabled()).toBe(false);
+    expect(await (await panelButton(page, /^save posed model/)).isDisabled()).toBe(false);
     await page.setInputFiles('#rig-file', {
       name: 'two.json',
       mimeType: 'application/json',
@@ -175,7 +177,7 @@ describe('pose files', () => {
     });
     await page.waitForFunction(() => window.ikPage?.rigName() === 'two' || document.getElementById('message')?.dataset.kind === 'error');
     expect(await page.textContent('#message')).not.toMatch(/Could not/);
-    const button = panelButton(page, /^save posed model/);
+    const button = await panelButton(page, /^save posed model/);
     expect(await button.isDisabled()).toBe(true);
     expect(await page.locator('.lil-controller', { has: page.locator('.lil-name', { hasText: /^save posed model/ }) }).getAttribute('title')).toMatch(/A7/);
   });

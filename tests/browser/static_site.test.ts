@@ -1,6 +1,7 @@
 // The deployable site: `npm run build` (scripts/build-site.sh) writes dist/site/, which a plain
 // static file server hosts with no dev server and no special headers: the page loads a rig and
-// solves a drag onto its target, and the embed example's widgets load from ik-widget.js.
+// solves a drag onto its target (saying that its timer is coarse without cross-origin isolation),
+// and the embed example's widgets load from ik-widget.js.
 import { execFileSync } from 'node:child_process';
 import { existsSync } from 'node:fs';
 import { join } from 'node:path';
@@ -38,6 +39,10 @@ describe('the static build (dist/site/)', () => {
     const hand = await selectTarget(page, await effectorNamed(page, /^hand\.L$/));
     await dragBy(page, hand, 30, -70);
     await waitForConvergence(page);
+    // No isolation headers here: the stats say the timer is coarse, and why.
+    expect(await page.evaluate(() => window.crossOriginIsolated)).toBe(false);
+    expect(await page.textContent('[data-stat="timer"]')).toMatch(/coarse, 0\.1 ms/);
+    expect(await page.getAttribute('[data-stat="timer"]', 'title')).toMatch(/cross-origin isolated/);
     expect(errors).toEqual([]);
   });
 

@@ -114,7 +114,7 @@ export class PageApp {
       help: () => this.keyboard.toggle(),
     });
     if (window.matchMedia('(max-width: 700px)').matches) this.panel.gui.close();
-    el.side.replaceChildren(this.report.stats.element, el.stepInfo, el.selection, this.report.plot.element, this.panel.gui.domElement);
+    el.side.replaceChildren(this.report.stats.element, el.stepInfo, this.panel.gui.domElement, el.selection, this.report.plot.element);
 
     this.keyboard = new Keyboard(el.root, [
       { keys: ['R'], label: 'reset the pose', run: () => this.resetPose() },
@@ -125,11 +125,18 @@ export class PageApp {
       { keys: ['Q'], label: 'gizmo: swing the target about the root joint', run: () => this.setGizmo('swing') },
       { keys: ['O'], label: 'orientation goal of the selected target on or off', run: () => this.setOrientationGoal() },
       { keys: ['P'], label: 'pole handles on or off (drag one to turn an elbow or knee towards it)', run: () => this.togglePoleHandles() },
-      { keys: ['S'], label: 'step mode: one iteration', run: () => this.stepMode.step() },
-      { keys: ['C'], label: () => `compare every method from the ${this.settings.compareFrom}`, run: () => void this.compare.run(this.controller, this.settings) },
+      { keys: ['S'], label: () => `step mode: one iteration of ${this.settings.method}${this.settings.paperMode ? ' (paper mode)' : ''}`, run: () => this.stepMode.step() },
+      { keys: ['C'], label: () => this.compareHelp(), run: () => void this.compare.run(this.controller, this.settings) },
       { keys: ['?', 'H'], label: 'show or hide this help', run: () => this.keyboard.toggle() },
       { keys: ['Escape'], label: 'close this help', run: () => this.keyboard.toggle(false) },
     ]);
+  }
+
+  /** What C does with the settings in the panel now (the help overlay reads it each time it opens). */
+  private compareHelp(): string {
+    const s = this.settings;
+    const paper = s.paperMode ? ', as the report ran them (paper mode)' : '';
+    return `compare every method from the ${s.compareFrom}${paper}: ${s.compareTimeBudgetMs} ms and ${s.compareMaxIterations} iterations each, ${s.restarts} restart${s.restarts === 1 ? '' : 's'}`;
   }
 
   /** Loads the rig named in the URL (or the default). */

@@ -1,6 +1,8 @@
-// The method panel (lil-gui): rig choice, method (the core's registered methods), tolerances,
-// per-frame budget, display options and the teaching actions. It edits a PageSettings record and
-// calls the page back; every label it shows is set as text by lil-gui.
+// The method panel (lil-gui): rig choice, pose (undo, redo, files), method (the core's registered
+// methods), tolerances, per-frame budget, display options and the teaching actions. It edits a
+// PageSettings record and calls the page back; every label it shows is set as text by lil-gui.
+// Its folders open one at a time (opening one closes the others), so the panel fits the screen
+// and every folder's title is in view without scrolling.
 import GUI, { type Controller } from 'lil-gui';
 
 import type { MethodList } from '../live/methods.js';
@@ -32,6 +34,8 @@ export interface PanelActions {
 
 export class Panel {
   readonly gui: GUI;
+  /** The top-level folders, opened one at a time. */
+  private readonly folders: GUI[];
   private readonly rigController: Controller;
   private readonly humanoidController: Controller;
   /** The selected target's goals, as the panel shows them. */
@@ -89,6 +93,7 @@ export class Panel {
     solver.add(s, 'paperMode').name('paper mode (the report’s algorithms)').onChange(() => actions.settingsChanged());
 
     const teach = this.gui.addFolder('Teaching');
+    this.folders = [rig, pose, solver, teach];
     teach.add(s, 'stepMode').name('step mode').onChange(() => actions.stepModeChanged());
     teach.add({ step: () => actions.step() }, 'step').name('one iteration (S)');
     teach.add(s, 'autoStep').name('slow tick');
@@ -99,6 +104,12 @@ export class Panel {
     teach.add(s, 'compareMaxIterations', 1, 100000, 1).name('compare: iterations');
     teach.add(s, 'restarts', 0, 20, 1).name('compare: restarts');
     teach.add({ help: () => actions.help() }, 'help').name('keyboard help (?)');
+
+    for (const f of this.folders) if (f !== rig) f.close();
+    this.gui.onOpenClose((changed) => {
+      if (changed._closed || !this.folders.includes(changed)) return;
+      for (const f of this.folders) if (f !== changed) f.close();
+    });
   }
 
   /** Re-reads every value (after keyboard shortcuts or URL changes). */

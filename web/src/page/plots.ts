@@ -1,5 +1,7 @@
 // Convergence plot: E per iteration (log scale) of the last solve of each method, overlaid, one
-// series per method the core registers, coloured by its place in that list. Redraws at most a
+// series per method the core registers, coloured by its place in that list. The iteration axis is
+// logarithmic by default (asinh: linear near 0, so iteration 0 is shown), or linear with the
+// checkbox under the plot: gd's thousands of iterations in paper mode flatten a linear axis. Redraws at most a
 // few times a second and only while on screen, so live dragging does not pay for it every frame;
 // a method's live history is copied out of WebAssembly only when the plot draws (follow()). The
 // element's data-state is 'waiting' while a change is not drawn yet, then 'drawn' (for tests).
@@ -22,7 +24,10 @@ export type HistoryReader = (method: string) => Float64Array | null;
 
 export class ConvergencePlot {
   readonly element: HTMLElement;
-  private readonly plot: uPlot;
+  private plot: uPlot;
+  /** The iteration axis is logarithmic (the checkbox under the plot). */
+  logIterations = true;
+  private readonly chart: HTMLElement;
   private readonly histories = new Map<string, Float64Array>();
   /** Methods whose latest history is to be read from `read` at the next draw. */
   private readonly followed = new Set<string>();
@@ -37,22 +42,59 @@ export class ConvergencePlot {
   constructor(
     parent: HTMLElement,
     private readonly methods: MethodList,
-    title = 'log E vs iteration (last solve per method)',
-    height = 170,
+    private readonly title = 'log E vs iteration (last solve per method)',
+    private readonly height = 170,
     private readonly read: HistoryReader = () => null,
   ) {
     this.element = document.createElement('div');
     this.element.className = 'plot';
     this.element.dataset.state = 'drawn';
+    this.chart = document.createElement('div');
+    const toggle = document.createElement('label');
+    toggle.className = 'plot-axis';
+    const box = document.createElement('input');
+    box.type = 'checkbox';
+    box.checked = this.logIterations;
+    box.addEventListener('change', () => this.setLogIterations(box.checked));
+    toggle.append(box, ' log iteration axis');
+    this.element.append(this.chart, toggle);
     parent.append(this.element);
+    this.plot = this.build(title, height);
+    this.element.dataset.axis = 'log';
+    this.resizeObserver = new ResizeObserver(() => {
+      const w = this.element.clientWidth;
+      if (w > 0 && Math.abs(w - this.plot.width) > 1) this.plot.setSize({ width: w, height });
+    });
+    this.resizeObserver.observe(this.element);
+    this.visibility = new IntersectionObserver((entries) => {
+      this.visible = entries[entries.length - 1].isIntersecting;
+      this.schedule();
+    });
+    this.visibility.observe(this.element);
+  }
+
+  /** The iteration axis logarithmic (true) or linear; the plot is built anew with the same histories. */
+  setLogIterations(on: boolean): void {
+    if (on === this.logIterations) return;
+    this.logIterations = on;
+    this.plot.destroy();
+    this.plot = this.build(this.title, this.height);
+    this.element.dataset.axis = on ? 'log' : 'linear';
+  }
+
+  /** A uPlot in the chart slot with the histories shown now. */
+  private build(title: string, height: number): uPlot {
+    const { methods } = this;
     const width = Math.max(200, this.element.clientWidth || 300);
+    const range: uPlot.Scale.Range = (_u, _min, max) => [0, Math.max(1, max)];
+    const x: uPlot.Scale = this.logIterations ? { time: false, distr: 4, asinh: 1, range } : { time: false, range };
     const opts: uPlot.Options = {
       title,
       width,
       height,
-      scales: { x: { time: false }, y: { distr: 3 } },
+      scales: { x, y: { distr: 3 } },
       axes: [
-        { stroke: '#aab', grid: { stroke: '#ffffff14' }, label: 'iteration' },
+        { stroke: '#aab', grid: { stroke: '#ffffff14' }, label: this.logIterations ? 'iteration (log scale)' : 'iteration' },
         {
           stroke: '#aab',
           grid: { stroke: '#ffffff14' },
@@ -75,18 +117,9 @@ export class ConvergencePlot {
         })),
       ],
     };
-    this.plot = new uPlot(opts, this.data(), this.element);
-    this.plot.root.title = methods.names.map((m) => `${m}: ${methods.label(m)}`).join('\n');
-    this.resizeObserver = new ResizeObserver(() => {
-      const w = this.element.clientWidth;
-      if (w > 0 && Math.abs(w - this.plot.width) > 1) this.plot.setSize({ width: w, height });
-    });
-    this.resizeObserver.observe(this.element);
-    this.visibility = new IntersectionObserver((entries) => {
-      this.visible = entries[entries.length - 1].isIntersecting;
-      this.schedule();
-    });
-    this.visibility.observe(this.element);
+    const plot = new uPlot(opts, this.data(), this.chart);
+    plot.root.title = methods.names.map((m) => `${m}: ${methods.label(m)}`).join('\n');
+    return plot;
   }
 
   /** Shows `history` (E before iteration 1, then after each) as `method`'s last solve. */

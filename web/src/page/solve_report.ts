@@ -59,7 +59,7 @@ export class SolveReport {
   /** Shows E at the current pose, which no solve reached (a reset, a new rig, method, limits or effectors). */
   showIdle(): void {
     const live = this.controller.live;
-    if (live) this.stats.showIdle(this.settings.method, live.session.objective());
+    if (live) this.stats.showIdle(this.settings.method, live.session.objective(), this.settings.paperMode);
   }
 
   /** A new rig: empty stats and plot. */

@@ -49,12 +49,25 @@ const FIELDS: { key: keyof StatsValues | 'median' | 'status'; label: string; tit
   { key: 'pinnedDrift', label: 'pinned drift', title: 'largest distance of a pinned effector from its target (the report’s “wobble”)' },
 ];
 
-/** A number in 4 significant digits, exponential outside [1e-3, 1e4). */
+/** What the method cell says: the method, and that it runs as the report's algorithm in paper mode. */
+const methodText = (v: Pick<StatsValues, 'method' | 'paperMode'>): string => (v.paperMode && v.method ? `${v.method} (paper mode)` : v.method);
+
+/** A number to 3 significant digits: plain in [1e-3, 1e4) (trailing zeros dropped), exponential outside. */
 export function formatNumber(x: number): string {
   if (!Number.isFinite(x)) return String(x);
   if (x === 0) return '0';
   const a = Math.abs(x);
-  return a >= 1e-3 && a < 1e4 ? x.toPrecision(4) : x.toExponential(2);
+  return a >= 1e-3 && a < 1e4 ? String(Number(x.toPrecision(3))) : x.toExponential(2);
+}
+
+/**
+ * Why the page's times are coarse, or null when they are fine: without cross-origin isolation
+ * browsers round performance.now() to 0.1 ms, so a solve of 20 µs reads 0 or 0.1 ms.
+ */
+export function coarseTimerNote(isolated = globalThis.crossOriginIsolated === true): string | null {
+  return isolated
+    ? null
+    : 'times are rounded to 0.1 ms: this server does not make the page cross-origin isolated (the Cross-Origin-Opener-Policy: same-origin and Cross-Origin-Embedder-Policy: require-corp headers; see the README, Deploying), so browsers coarsen performance.now(). Medians over many solves are still meaningful.';
 }
 
 export class StatsPanel {
@@ -84,6 +97,17 @@ export class StatsPanel {
       this.cells.set(f.key, dd);
       this.element.append(dt, dd);
     }
+    const note = coarseTimerNote();
+    if (note) {
+      const dt = document.createElement('dt');
+      dt.textContent = 'timer';
+      const dd = document.createElement('dd');
+      dd.dataset.stat = 'timer';
+      dd.className = 'timer-note';
+      dd.textContent = 'coarse, 0.1 ms steps (page not cross-origin isolated)';
+      dt.title = dd.title = note;
+      this.element.append(dt, dd);
+    }
     parent.append(this.element);
   }
 
@@ -106,9 +130,9 @@ export class StatsPanel {
   }
 
   /** Shows E for a pose that was not solved (after reset, load, or an effector change). */
-  showIdle(method: string, E: number): void {
+  showIdle(method: string, E: number, paperMode = false): void {
     this.numbers.cancel();
-    this.set('method', method, NaN);
+    this.set('method', methodText({ method, paperMode }), NaN);
     this.set('E', formatNumber(E), E);
     this.setOptional('orientationErrorDeg', '', NaN);
   }
@@ -142,16 +166,16 @@ export class StatsPanel {
 
   private writeNumbers(): void {
     const v = this.latest;
-    this.set('method', v.method, NaN);
+    this.set('method', methodText(v), NaN);
     this.set('iterations', String(v.iterations), v.iterations);
     this.set('E', formatNumber(v.E), v.E);
     this.set('gradNorm', formatNumber(v.gradNorm), v.gradNorm);
     const px = v.tipDistance * v.pixelsPerUnit;
     this.set('tipDistance', `${formatNumber(v.tipDistance)}${Number.isFinite(px) ? ` (${px.toFixed(1)} px)` : ''}`, v.tipDistance);
     this.setOptional('orientationErrorDeg', `${v.orientationErrorDeg.toPrecision(3)}°`, v.orientationErrorDeg);
-    this.set('ms', v.ms.toFixed(3), v.ms);
+    this.set('ms', formatNumber(v.ms), v.ms);
     const m = this.median.median();
-    this.set('median', Number.isNaN(m) ? '–' : `${m.toFixed(3)} (n=${this.median.size})`, m);
+    this.set('median', Number.isNaN(m) ? '–' : `${formatNumber(m)} (n=${this.median.size})`, m);
     this.set('pinnedDrift', formatNumber(v.pinnedDrift), v.pinnedDrift);
   }
 

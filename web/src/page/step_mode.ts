@@ -7,6 +7,7 @@ import type { LiveController } from '../live/live_controller.js';
 import type { MethodList } from '../live/methods.js';
 import type { IkSession } from '../live/session.js';
 import type { SolveOutcome } from '../live/solver.js';
+import { statusWords } from '../live/status_words.js';
 import type { PageSettings } from './page_settings.js';
 
 /** What the page does with a step. */
@@ -52,9 +53,11 @@ function takeStep(session: IkSession, method: string, label: string, settings: P
   let len = 0;
   for (let j = 0; j < before.length; j++) len += (outcome.angles[j] - before[j]) ** 2;
   const stepLength = Math.sqrt(len);
-  const state = isRunning(outcome.stopReason) ? 'running' : `stopped: ${outcome.stopReason}`;
+  const state = isRunning(outcome.stopReason)
+    ? 'running'
+    : `stopped: ${statusWords(outcome.reached, outcome.stopReason, settings.paperMode).text} [${outcome.stopReason}]`;
   const text =
-    `${label}, iteration ${outcome.iterations}: E ${E0.toExponential(3)} → ${outcome.E.toExponential(3)}; ` +
+    `${label}${settings.paperMode ? ' (paper mode)' : ''}, iteration ${outcome.iterations}: E ${E0.toExponential(2)} → ${outcome.E.toExponential(2)}; ` +
     `|ΔA| = ${stepLength.toPrecision(3)}° (${state}). Faint bones: the previous iterate.`;
   return { outcome, ms, before, stepLength, text };
 }
