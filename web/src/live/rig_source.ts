@@ -35,11 +35,18 @@ export interface RigSource {
   warnings: string[];
   /** Builds the skinned mesh bound to the rig; null for bones-only formats (A7) and too deep glTF trees. */
   makeMesh: (() => Promise<MeshBinding>) | null;
-  /**
-   * The file posed as `poses` (16 row-major numbers per bone, IkRig.poses()) written as one .glb
-   * (web/src/three/pose_glb.ts, loaded when first used); absent for A7 rigs, which have no glTF to pose.
-   */
-  posedGlb?: (poses: Float64Array) => Promise<Uint8Array>;
+  /** The glTF file the rig was read from (the page writes posed copies of it); absent for A7 rigs. */
+  gltf?: GltfSource;
+}
+
+/** A glTF rig's file as read: what web/src/three/pose_glb.ts needs to write it posed. */
+export interface GltfSource {
+  bytes: Uint8Array;
+  fileName: string;
+  info: GltfRigInfo;
+  /** The importer's spec (the file's rest transforms). */
+  spec: RigSpec;
+  readSibling?: SiblingReader;
 }
 
 /** Reads the bytes of `url`; `what` names it in the error. */
@@ -109,9 +116,7 @@ export async function readRig(bytes: Uint8Array, fileName: string, readSibling?:
       ? [...rig.warnings, `the node tree is ${info.treeDepth} levels deep, more than three.js's glTF loader takes (${MAX_MODEL_TREE_DEPTH}): showing the bones without the model`]
       : rig.warnings,
     makeMesh: info && !tooDeep ? () => gltfMesh(bytes, fileName, resourcePath, rig.spec, info) : null,
-    posedGlb: info
-      ? async (poses) => (await import('../three/pose_glb.js')).posedGlb(bytes, fileName, info, rig.spec, poses, readSibling)
-      : undefined,
+    gltf: info ? { bytes, fileName, info, spec: rig.spec, readSibling } : undefined,
   };
 }
 

@@ -8,7 +8,7 @@ import { poseFromJson, poseToJson } from '../rig/pose_json.js';
 /** Why the rig shown cannot be saved as a posed .glb, or null when it can. */
 export function glbExportProblem(live: LiveRig | null): string | null {
   if (!live) return 'no rig is loaded';
-  if (!live.source.posedGlb) return `${live.name} is an A7 rig (bones only): there is no glTF file to pose; save the pose as .json`;
+  if (!live.source.gltf) return `${live.name} is an A7 rig (bones only): there is no glTF file to pose; save the pose as .json`;
   return null;
 }
 
@@ -17,11 +17,15 @@ export function fileStem(name: string): string {
   return name.replace(/\.(glb|gltf|json)$/i, '').replace(/[^\w.-]+/g, '_') || 'rig';
 }
 
-/** The posed .glb of the rig shown at its current pose. Throws an Error naming the problem. */
+/**
+ * The posed .glb of the rig shown at its current pose (glTF-Transform is loaded on first use).
+ * Throws an Error naming the problem.
+ */
 export async function posedGlbBytes(live: LiveRig): Promise<Uint8Array> {
-  const problem = glbExportProblem(live);
-  if (problem || !live.source.posedGlb) throw new Error(problem ?? 'no glTF to pose');
-  return live.source.posedGlb(live.session.poses());
+  const file = live.source.gltf;
+  if (!file) throw new Error(glbExportProblem(live) ?? 'no glTF to pose');
+  const { posedGlb } = await import('../three/pose_glb.js');
+  return posedGlb(file.bytes, file.fileName, file.info, file.spec, live.session.poses(), file.readSibling);
 }
 
 /** The pose file (ik-pose JSON text) of the rig shown: angles, effectors, targets and orientation goals. */
