@@ -19,5 +19,7 @@ export default defineConfig({
   preview: { headers: isolation },
   // `npm run build` (scripts/build-site.sh) writes the page here and adds the widget and its example.
   // three.js alone is about 700 kB minified: one chunk is fine for this page.
+  // The compare worker (web/src/page/compare_worker.ts) is an ES module: it imports the WebAssembly glue.
+  worker: { format: 'es' },
   build: { outDir: resolve(import.meta.dirname, 'dist/site'), emptyOutDir: true, target: 'es2022', chunkSizeWarningLimit: 2000 },
 });

@@ -1,9 +1,11 @@
 // The compare table: one row per method with the report's columns (t, iterations, E, ||grad E||),
 // the tip error and the outcome in words (the stop reason's code in its tooltip), and the
-// convergence histories overlaid in its own plot.
+// convergence histories overlaid in its own plot. While a compare runs, a progress line says which
+// method is solving, how many are done and for how long, beside a cancel button. The element's
+// data-state is running, done, cancelled or failed (for tests).
 import type { MethodList } from '../live/methods.js';
 import { statusWords } from '../live/status_words.js';
-import type { CompareRow } from './compare.js';
+import type { CompareEnd, CompareRow } from './compare_messages.js';
 import { ConvergencePlot, methodColor } from './plots.js';
 import { formatNumber } from './stats.js';
 
@@ -12,8 +14,16 @@ export class CompareView {
   private readonly body: HTMLTableSectionElement;
   private readonly caption: HTMLElement;
   private readonly plot: ConvergencePlot;
+  private readonly status: HTMLElement;
+  private readonly cancelButton: HTMLButtonElement;
+  private total = 0;
+  private done = 0;
+  private current = '';
+  private startedAt = 0;
+  private ticker = 0;
 
-  constructor(parent: HTMLElement, private readonly methods: MethodList) {
+  /** `cancel` ends the running compare (the cancel button and closing the box while it runs). */
+  constructor(parent: HTMLElement, private readonly methods: MethodList, cancel: () => void) {
     this.element = document.createElement('section');
     this.element.className = 'compare';
     this.element.id = 'compare';
@@ -25,8 +35,22 @@ export class CompareView {
     close.type = 'button';
     close.textContent = '×';
     close.title = 'close';
-    close.addEventListener('click', () => (this.element.hidden = true));
+    close.addEventListener('click', () => {
+      cancel();
+      this.element.hidden = true;
+    });
     head.append(this.caption, close);
+    const progress = document.createElement('div');
+    progress.className = 'compare-progress';
+    this.status = document.createElement('span');
+    this.status.className = 'compare-status';
+    this.status.setAttribute('role', 'status');
+    this.cancelButton = document.createElement('button');
+    this.cancelButton.type = 'button';
+    this.cancelButton.className = 'compare-cancel';
+    this.cancelButton.textContent = 'cancel';
+    this.cancelButton.addEventListener('click', () => cancel());
+    progress.append(this.status, this.cancelButton);
     const table = document.createElement('table');
     table.className = 'compare-table';
     const thead = table.createTHead().insertRow();
@@ -36,22 +60,38 @@ export class CompareView {
       thead.append(th);
     }
     this.body = table.createTBody();
-    this.element.append(head, table);
+    this.element.append(head, progress, table);
     parent.append(this.element);
     this.plot = new ConvergencePlot(this.element, methods, 'log E vs iteration, every method from the same pose', 160);
   }
 
-  /** Clears the table for a new comparison; `what` names the rig and settings. */
-  begin(what: string): void {
+  /** Clears the table for a new comparison of `total` methods; `what` names the rig and settings. */
+  begin(what: string, total: number): void {
     this.element.hidden = false;
     this.caption.textContent = `Compare: ${what}`;
     this.body.replaceChildren();
     this.plot.clear();
     this.element.dataset.state = 'running';
+    this.total = total;
+    this.done = 0;
+    this.current = '';
+    this.startedAt = performance.now();
+    this.cancelButton.hidden = false;
+    clearInterval(this.ticker);
+    this.ticker = window.setInterval(() => this.showProgress(), 100);
+    this.showProgress();
+  }
+
+  /** Method `method` (the `index`-th, from 0) started solving. */
+  progress(method: string, index: number): void {
+    this.current = method;
+    this.done = index;
+    this.showProgress();
   }
 
   /** Adds one method's row; `paperMode` words a stationary point off target as paper mode has it. */
   addRow(row: CompareRow, paperMode = false): void {
+    this.done = this.body.rows.length + 1;
     const tr = this.body.insertRow();
     tr.dataset.method = row.method;
     const name = tr.insertCell();
@@ -77,8 +117,22 @@ export class CompareView {
     if (row.history) this.plot.record(row.method, row.history);
   }
 
-  end(): void {
-    this.element.dataset.state = 'done';
+  /** The compare ended: done, cancelled by the user, or failed (`message` says why). */
+  end(how: CompareEnd = 'done', message = ''): void {
+    clearInterval(this.ticker);
+    this.element.dataset.state = how;
+    this.cancelButton.hidden = true;
+    const seconds = ((performance.now() - this.startedAt) / 1000).toFixed(1);
+    const rows = `${this.body.rows.length} of ${this.total} methods`;
+    this.status.textContent =
+      how === 'done' ? `done in ${seconds} s` : how === 'cancelled' ? `cancelled after ${seconds} s (${rows} done)` : `failed: ${message}`;
+  }
+
+  /** Which method is solving, how many are done, and the time so far. */
+  private showProgress(): void {
+    const seconds = ((performance.now() - this.startedAt) / 1000).toFixed(1);
+    const now = this.current ? `solving with ${this.current}` : 'starting';
+    this.status.textContent = `${now}: ${this.done} of ${this.total} methods done, ${seconds} s`;
   }
 
   hide(): void {
@@ -86,6 +140,7 @@ export class CompareView {
   }
 
   dispose(): void {
+    clearInterval(this.ticker);
     this.plot.dispose();
     this.element.remove();
   }

@@ -9,6 +9,7 @@ import uPlot from 'uplot';
 import 'uplot/dist/uPlot.min.css';
 
 import type { MethodList } from '../live/methods.js';
+import { plotIndices } from './plot_sampling.js';
 
 /** Series colours, by a method's position in the registry's list (lm, gn, bfgs, newton, gd, then any added). */
 const PALETTE = ['#f2b134', '#59c26b', '#4e9bf5', '#b07aa1', '#e15759', '#76b7b2', '#ff9da7', '#9c755f', '#edc948', '#bab0ac'];
@@ -73,7 +74,7 @@ export class ConvergencePlot {
     this.visibility.observe(this.element);
   }
 
-  /** The iteration axis logarithmic (true) or linear; the plot is built anew with the same histories. */
+  /** The iteration axis logarithmic (true) or linear; the plot is built anew with the same histories (sampled for that axis). */
   setLogIterations(on: boolean): void {
     if (on === this.logIterations) return;
     this.logIterations = on;
@@ -94,7 +95,12 @@ export class ConvergencePlot {
       height,
       scales: { x, y: { distr: 3 } },
       axes: [
-        { stroke: '#aab', grid: { stroke: '#ffffff14' }, label: this.logIterations ? 'iteration (log scale)' : 'iteration' },
+        {
+          stroke: '#aab',
+          grid: { stroke: '#ffffff14' },
+          label: this.logIterations ? 'iteration (log scale)' : 'iteration',
+          filter: (_u: uPlot, splits: number[]) => splits.map((v) => (v >= 0 ? v : null)), // asinh ticks reach below 0
+        },
         {
           stroke: '#aab',
           grid: { stroke: '#ffffff14' },
@@ -188,7 +194,8 @@ export class ConvergencePlot {
   private data(): uPlot.AlignedData {
     let n = 1;
     for (const h of this.histories.values()) n = Math.max(n, h.length);
-    const xs = Array.from({ length: n }, (_, i) => i);
+    const ends = [...this.histories.values()].map((h) => h.length - 1);
+    const xs = plotIndices(n, this.logIterations, ends);
     const ys = this.methods.names.map((m) => {
       const h = this.histories.get(m);
       return xs.map((i) => (h && i < h.length && h[i] > 0 && Number.isFinite(h[i]) ? h[i] : null));

@@ -10,6 +10,7 @@ import { limbPoints } from '../live/pole_placement.js';
 import { IkSession } from '../live/session.js';
 import type { ScreenPoint } from '../view/stage.js';
 import type { PageApp } from './app.js';
+import type { PageSettings } from './page_settings.js';
 import type { SlowestSolve } from './solve_report.js';
 
 export interface PageProbe {
@@ -82,6 +83,8 @@ export interface PageProbe {
   angles(): number[];
   /** All targets, 3 per effector, rig units. */
   targets(): number[];
+  /** The page's settings record (what the panel edits): a test may set values the panel's sliders do not reach. */
+  settings(): PageSettings;
   /** Steps undo can take now. */
   undoSteps(): number;
   /** Objects alive now: IK sessions and solvers (WebAssembly), geometries and textures (GPU). */
@@ -158,6 +161,7 @@ export function makeProbe(app: PageApp): PageProbe {
     angles: () => Array.from(session()?.angles ?? []),
     targets: () => Array.from(session()?.targets ?? []),
     undoSteps: () => app.history.undoSteps,
+    settings: () => app.settings,
     cameraPosition: () => stage.camera.position.toArray() as [number, number, number],
     alive() {
       const memory = stage.renderer.info.memory;
