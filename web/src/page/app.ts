@@ -10,6 +10,7 @@ import { MethodList } from '../live/methods.js';
 import type { RigSource } from '../live/rig_source.js';
 import { Throttle } from '../live/throttle.js';
 import type { ViewClick } from '../view/picking.js';
+import { bottomSheet } from './bottom_sheet.js';
 import { Compare } from './compare.js';
 import { EditHistory } from './edit_history.js';
 import { FileInput } from './file_input.js';
@@ -46,6 +47,7 @@ export class PageApp {
   private readonly panel: Panel;
   private readonly files: FileInput;
   private readonly poseFiles: FileInput;
+  private readonly removeSheet: () => void;
   /** Undo and redo of edits and rig loads. */
   readonly history: EditHistory;
   /** The selection readout, rewritten a few times a second while the pose changes. */
@@ -113,8 +115,8 @@ export class PageApp {
       compare: () => void this.compare.run(this.controller, this.settings),
       help: () => this.keyboard.toggle(),
     });
-    if (window.matchMedia('(max-width: 700px)').matches) this.panel.gui.close();
     el.side.replaceChildren(this.report.stats.element, el.stepInfo, this.panel.gui.domElement, el.selection, this.report.plot.element);
+    this.removeSheet = bottomSheet(el.root, el.side);
 
     this.keyboard = new Keyboard(el.root, [
       { keys: ['R'], label: 'reset the pose', run: () => this.resetPose() },
@@ -194,6 +196,7 @@ export class PageApp {
     this.loadToken++;
     this.selectionText.cancel();
     this.keyboard.dispose();
+    this.removeSheet();
     this.files.dispose();
     this.poseFiles.dispose();
     this.panel.dispose();

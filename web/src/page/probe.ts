@@ -39,6 +39,8 @@ export interface PageProbe {
   /** Index of the target holding the gizmo. */
   selectedTarget(): number | null;
   cameraPosition(): [number, number, number];
+  /** Height of the floor (the ground grid), world units. */
+  floorY(): number;
   /** Distance from effector k's tip to its target. */
   effectorError(k: number): number;
   /** Target k's world position, or null. */
@@ -163,6 +165,7 @@ export function makeProbe(app: PageApp): PageProbe {
     undoSteps: () => app.history.undoSteps,
     settings: () => app.settings,
     cameraPosition: () => stage.camera.position.toArray() as [number, number, number],
+    floorY: () => stage.floorY,
     alive() {
       const memory = stage.renderer.info.memory;
       return { ...IkSession.alive, geometries: memory.geometries, textures: memory.textures };

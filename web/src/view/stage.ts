@@ -1,5 +1,7 @@
 // The three.js stage: renderer, camera, OrbitControls, lights and a ground grid, sized to its
 // container (ResizeObserver), with a render loop that calls the per-frame work (onFrame) first.
+// The camera stays above the floor (the grid, at the framed rig's lowest point): it orbits no lower
+// than level with the point it looks at, and a pan cannot take that point under the floor.
 import {
   AmbientLight,
   Box3,
@@ -58,6 +60,8 @@ export class Stage {
     this.camera.position.set(2, 1.5, 3);
     this.orbit = new OrbitControls(this.camera, null);
     this.orbit.enableDamping = false;
+    this.orbit.maxPolarAngle = Math.PI / 2; // level with the target at most: never from below the floor
+    this.orbit.addEventListener('change', () => this.keepAboveFloor());
 
     this.resizeObserver = new ResizeObserver(() => this.resize());
     this.resizeObserver.observe(container);
@@ -113,6 +117,19 @@ export class Stage {
     const size = Math.pow(10, Math.ceil(Math.log10(r * 4)));
     this.grid.scale.setScalar(size / 10);
     this.grid.position.set(sphere.center.x, box.min.y, sphere.center.z);
+  }
+
+  /** Height of the floor (the grid), world units. */
+  get floorY(): number {
+    return this.grid.position.y;
+  }
+
+  /** Lifts the orbit's target (and the camera with it) back onto the floor after a pan took it below. */
+  private keepAboveFloor(): void {
+    const below = this.floorY - this.orbit.target.y;
+    if (below <= 0) return;
+    this.orbit.target.y += below;
+    this.camera.position.y += below;
   }
 
   resize(): void {
