@@ -100,6 +100,8 @@ export class ConvergencePlot {
           grid: { stroke: '#ffffff14' },
           label: this.logIterations ? 'iteration (log scale)' : 'iteration',
           filter: (_u: uPlot, splits: number[]) => splits.map((v) => (v >= 0 ? v : null)), // asinh ticks reach below 0
+          // On the log axis only 0 and powers of 10 are labelled (every tick keeps its grid line).
+          values: (_u: uPlot, splits: number[]) => splits.map((v) => (!this.logIterations || v === 0 || Number.isInteger(Math.log10(v)) ? String(v) : '')),
         },
         {
           stroke: '#aab',
