@@ -48,7 +48,7 @@ export class Keyboard {
     this.table = document.createElement('table');
     const more = document.createElement('p');
     more.textContent =
-      'Mouse or touch: drag a target’s gizmo to move it (or, in rotate mode, to turn it: the effector’s bone turns to the target’s axes); drag elsewhere to orbit; click a bone to make its tip an effector or remove it (shift-click only selects it and shows its joint limits); click a target to put the gizmo on it; with pole handles on (P), click a yellow pole handle and drag it to turn that elbow or knee towards it. Drop a .glb, .gltf or A7 .json file anywhere to load it.';
+      'Mouse or touch: drag a target’s gizmo to move it (or, in rotate mode, to turn it: the effector’s bone turns to the target’s axes); drag elsewhere to orbit; click a bone to make its tip an effector or remove it (shift-click only selects it and shows its joint limits); click a target to put the gizmo on it; with pole handles on (P), click a yellow pole handle and drag it to turn that elbow or knee towards it. Drop a .glb, .gltf or A7 .json file anywhere to load it, or a saved pose (.json) to put that pose on the rig shown.';
     const close = document.createElement('button');
     close.type = 'button';
     close.textContent = 'close';
