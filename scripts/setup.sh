@@ -31,8 +31,10 @@ if [ ${#missing[@]} -gt 0 ]; then
   sudo_cmd=()
   [ "$(id -u)" != 0 ] && sudo_cmd=(sudo)
   export DEBIAN_FRONTEND=noninteractive
-  "${sudo_cmd[@]}" apt-get install -y --no-install-recommends "${missing[@]}" \
-    || { "${sudo_cmd[@]}" apt-get update && "${sudo_cmd[@]}" apt-get install -y --no-install-recommends "${missing[@]}"; }
+  # Wait (up to 10 minutes) for another apt or dpkg, e.g. `npm start` and `npm test` set up at once.
+  apt=("${sudo_cmd[@]}" apt-get -o DPkg::Lock::Timeout=600)
+  "${apt[@]}" install -y --no-install-recommends "${missing[@]}" \
+    || { "${apt[@]}" update && "${apt[@]}" install -y --no-install-recommends "${missing[@]}"; }
 fi
 
 # npm packages, pinned by package-lock.json; reinstall when the lockfile changed.
