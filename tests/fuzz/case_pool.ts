@@ -1,6 +1,7 @@
 // Worker threads that run cases, each under a watchdog: a case that runs longer than the hang
-// limit is recorded as a hang, its worker is stopped and a new one started. A worker that dies
-// is a crash of its case, and is replaced too.
+// limit is recorded as a hang, its worker is stopped and a new one started. The limit counts
+// from when a file case's input is drawn (drawing it gets a limit of its own). A worker that
+// dies is a crash of its case, and is replaced too.
 import { readFileSync } from 'node:fs';
 import { Worker } from 'node:worker_threads';
 
@@ -32,8 +33,7 @@ class Slot {
   async run(id: CaseId): Promise<CaseReport> {
     await this.ready;
     return new Promise((finish) => {
-      const timer = setTimeout(() => this.replace({ kind: 'hang', message: `still running after ${this.hangSeconds} s` }), this.hangSeconds * 1000);
-      this.running = { id, notes: [], began: performance.now(), finish, timer };
+      this.running = { id, notes: [], began: performance.now(), finish, timer: this.watch() };
       this.worker!.postMessage({ type: 'run', id });
     });
   }
@@ -52,6 +52,7 @@ class Slot {
         if (!mine()) return;
         if (m.type === 'ready') ready();
         else if (m.type === 'note') this.running?.notes.push(m.text);
+        else if (m.type === 'drawn') this.rewatch();
         else this.finish(m.report);
       });
       worker.on('error', (e) => {
@@ -61,6 +62,18 @@ class Slot {
       });
       worker.on('exit', (code) => mine() && this.running && this.replace({ kind: 'crash', message: `the worker exited with code ${code}` }));
     });
+  }
+
+  /** The watchdog: the running case is a hang if it has not finished within the limit. */
+  private watch(): NodeJS.Timeout {
+    return setTimeout(() => this.replace({ kind: 'hang', message: `still running after ${this.hangSeconds} s` }), this.hangSeconds * 1000);
+  }
+
+  /** Starts the limit again: drawing the case's input (test code) is not counted as running it. */
+  private rewatch(): void {
+    if (!this.running) return;
+    clearTimeout(this.running.timer);
+    this.running.timer = this.watch();
   }
 
   private finish(report: CaseReport): void {

@@ -24,16 +24,20 @@ export interface CaseEnv {
   seeds: A7Seed[];
 }
 
-async function runKind(env: CaseEnv, id: CaseId, note: (text: string) => void, budgets: BudgetSample[]): Promise<Outcome> {
+async function runKind(env: CaseEnv, id: CaseId, note: (text: string) => void, drawn: () => void, budgets: BudgetSample[]): Promise<Outcome> {
   const r = Rand.forCase(id.seed, id.kind, id.index);
   if (id.kind === 'api') return runApiCase(r, env.ik, note, budgets);
   const fc = id.kind === 'a7' ? a7Case(r, env.seeds) : gltfCase(r, env.bases, env.fixture);
   note(fc.description);
+  drawn();
   return runFileCase(env.ik, env.folder, fc, r, budgets);
 }
 
-/** Runs case `id`; `note` gets the parts of its description as they are drawn. */
-export async function runCase(env: CaseEnv, id: CaseId, note: (text: string) => void): Promise<CaseReport> {
+/**
+ * Runs case `id`; `note` gets the parts of its description as they are drawn, `drawn` is called
+ * once a file case's input is drawn (an api case draws each step as it runs it).
+ */
+export async function runCase(env: CaseEnv, id: CaseId, note: (text: string) => void, drawn: () => void = () => undefined): Promise<CaseReport> {
   const began = performance.now();
   const parts: string[] = [];
   const budgets: BudgetSample[] = [];
@@ -43,7 +47,7 @@ export async function runCase(env: CaseEnv, id: CaseId, note: (text: string) => 
   };
   let outcome: Outcome;
   try {
-    outcome = await runKind(env, id, noted, budgets);
+    outcome = await runKind(env, id, noted, drawn, budgets);
   } catch (e) {
     const c = classifyThrown(e);
     outcome = { kind: c.kind === 'clear' ? 'unclear' : c.kind, message: `escaped the case: ${c.message}` };

@@ -37,6 +37,6 @@ const env: CaseEnv = {
 };
 
 port.on('message', (m: ToWorker) => {
-  void runCase(env, m.id, (text) => send({ type: 'note', text })).then((report) => send({ type: 'done', report }));
+  void runCase(env, m.id, (text) => send({ type: 'note', text }), () => send({ type: 'drawn' })).then((report) => send({ type: 'done', report }));
 });
 send({ type: 'ready' });
