@@ -2,7 +2,7 @@
 // A method that gives up early has a short mean time over all its solves; here it can no longer look
 // faster than one that succeeds. Per row: the median and p95 time of the successful solves, and the
 // share of the (reachable) samples solved within 1, 10 and 100 ms. Times in seconds.
-import { median, quantile } from './metrics.js';
+import { median, quantile } from './statistics.js';
 import { formatNumber, formatPercent, type Table } from './table.js';
 
 /** The budgets of the "solved within" columns, seconds. */

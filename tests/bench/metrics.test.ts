@@ -1,7 +1,8 @@
 // Statistics on hand-made result lists.
 import { describe, expect, it } from 'vitest';
 
-import { interquartileMean, mean, median, paperIterations, quantile, summarize, type SolveResult } from '../../bench-node/metrics.js';
+import { paperIterations, summarize, type SolveResult } from '../../bench-node/metrics.js';
+import { interquartileMean, mean, median, quantile } from '../../bench-node/statistics.js';
 
 describe('interquartile mean', () => {
   it('n divisible by 4: the plain mean of the middle half', () => {
