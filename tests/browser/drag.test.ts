@@ -2,7 +2,8 @@
 // real mouse events on the page's gizmo: the README's knight drag ends on target; lifting the
 // character's foot straight up bends the leg and the foot follows within the tip tolerance at
 // every step while the hands and the head stay on theirs; a target dragged past a limb's reach
-// ends at the closest point and says so. With the humanoid limits and without them (the README's
+// ends at the closest point and says so, and a reset and its undo each show their own pose's
+// status. With the humanoid limits and without them (the README's
 // before and after); writes docs/foot-lift.png and docs/foot-lift-free.png when UPDATE_SCREENSHOT=1.
 import { mkdirSync } from 'node:fs';
 import { join } from 'node:path';
@@ -16,6 +17,7 @@ import {
   effectorNamed,
   gotoRig,
   selectTarget,
+  stat,
   statText,
   targetScreen,
   usePageServer,
@@ -148,6 +150,19 @@ describe('dragging from the rest pose', () => {
     e.forEach((d, k) => {
       if (k !== hand) expect(d, `effector ${k}`).toBeLessThan(tolerance);
     });
+    // The stats describe the pose shown: pinned drift leaves out the hand (still selected, no longer
+    // dragged); a reset and its undo each show their own pose's status and tip error.
+    expect(Number(await stat(page, 'tipDistance'))).toBeCloseTo(Math.max(...e), 6);
+    expect(Number(await stat(page, 'pinnedDrift'))).toBeLessThan(tolerance);
+    await page.keyboard.press('r');
+    await waitForConvergence(page);
+    expect(Number(await stat(page, 'tipDistance'))).toBeLessThan(tolerance);
+    await page.keyboard.press('Control+z');
+    await page.waitForFunction(() => document.querySelector<HTMLElement>('[data-stat="status"]')?.dataset.reached === 'false');
+    expect(await statText(page, 'status')).toBe('out of reach (closest point)');
+    const undone = await tipErrors(page);
+    expect(undone[hand]).toBeCloseTo(e[hand], 6);
+    expect(Number(await stat(page, 'tipDistance'))).toBeCloseTo(Math.max(...undone), 6);
     expect(errors).toEqual([]);
   });
 });

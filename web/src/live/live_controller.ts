@@ -100,11 +100,6 @@ export class LiveController {
     return this.current;
   }
 
-  /** The target being dragged (effector index), or null. */
-  get draggedEffector(): number | null {
-    return this.handles.dragging ? this.handles.selected : null;
-  }
-
   /** Shows `live` instead of the rig shown (which is disposed); the controller owns it from now on. */
   show(live: LiveRig): void {
     this.removeRig();
@@ -132,7 +127,10 @@ export class LiveController {
     this.needsRedraw = true;
   }
 
-  /** Back to the rest pose with the targets on the rest tips, no orientation goals and the poles placed anew; no solve follows. */
+  /**
+   * Back to the rest pose with the targets on the rest tips, no orientation goals and the poles
+   * placed anew. A solve follows: it stops at once, on target, so the stats describe the rest pose.
+   */
   reset(): void {
     const live = this.current;
     if (!live) return;
@@ -140,7 +138,7 @@ export class LiveController {
     live.showGhost(null);
     this.handles.setTargets(live.session.targets);
     this.placePoles(false);
-    this.needsSolve = false;
+    this.needsSolve = true;
     this.needsRedraw = true;
     this.events.changed?.();
     this.events.targetChanged?.();
@@ -149,7 +147,9 @@ export class LiveController {
   /**
    * Makes `state` (pose_state.ts) the rig's pose, effectors, targets and goals, as undo, redo and a
    * pose file do. Poles follow the pole-handle switch: a limb the state had a pole for keeps it.
-   * No solve follows (the pose is shown as it was). Throws, changing nothing, for another rig's state.
+   * The pose is shown as it was, then solved from: a pose on target stays as it is (the solve stops
+   * before a step) and the stats describe it; one off target goes on as the page would have.
+   * Throws, changing nothing, for another rig's state.
    */
   restore(state: PoseState): void {
     const live = this.current;
@@ -158,7 +158,7 @@ export class LiveController {
     live.showGhost(null);
     this.handles.setTargets(live.session.targets);
     this.placePoles(true);
-    this.needsSolve = false;
+    this.needsSolve = true;
     this.needsRedraw = true;
     this.events.changed?.();
     this.events.targetChanged?.();
@@ -202,7 +202,7 @@ export class LiveController {
   /**
    * Makes `bones` (bone indices) the end effectors: kept ones keep their targets, new ones get a
    * target on their tip; the limbs' poles follow (a limb kept keeps its pole). `select`: the
-   * target (effector index) to put the gizmo on. No solve follows.
+   * target (effector index) to put the gizmo on. A solve follows, so the stats describe the new set.
    */
   setEffectors(bones: readonly number[], select?: number): void {
     const live = this.current;
@@ -211,7 +211,7 @@ export class LiveController {
     this.handles.setTargets(live.session.targets);
     this.placePoles(true);
     if (select !== undefined) this.handles.select(select);
-    this.needsSolve = false;
+    this.needsSolve = true;
     this.needsRedraw = true;
     this.events.changed?.();
   }

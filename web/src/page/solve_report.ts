@@ -45,7 +45,7 @@ export class SolveReport {
     if (ms > (this.slowest?.ms ?? -1))
       this.slowest = { ms, solverMs: outcome.elapsedSeconds * 1000, iterations: outcome.iterations, stopReason: outcome.stopReason };
     if (outcome.iterations > 0) this.plot.follow(this.settings.method);
-    this.stats.show(this.valuesOf(outcome, ms, tips, this.controller.draggedEffector));
+    this.stats.show(this.valuesOf(outcome, ms, tips));
   }
 
   /** One step of step mode: its outcome and main-thread ms. */
@@ -53,7 +53,7 @@ export class SolveReport {
     const tips = this.controller.live?.session.tips();
     if (!tips) return;
     this.plot.follow(this.settings.method);
-    this.stats.showStep(this.valuesOf(outcome, ms, tips, null));
+    this.stats.showStep(this.valuesOf(outcome, ms, tips));
   }
 
   /** Shows E at the current pose, which no solve reached (a reset, a new rig, method, limits or effectors). */
@@ -74,8 +74,8 @@ export class SolveReport {
     this.plot.dispose();
   }
 
-  /** The stats of one solve; `except` is the dragged effector (not counted as pinned), or null. */
-  private valuesOf(outcome: SolveOutcome, ms: number, tips: Float64Array, except: number | null): StatsValues {
+  /** The stats of one solve. Pinned: every effector but the selected target's (the one dragged, or last dragged). */
+  private valuesOf(outcome: SolveOutcome, ms: number, tips: Float64Array): StatsValues {
     const targets = this.controller.live?.session.targets ?? tips;
     const k = Math.min(this.controller.handles.selected ?? 0, targets.length / 3 - 1);
     const s = this.values;
@@ -90,7 +90,7 @@ export class SolveReport {
     s.stopReason = outcome.stopReason;
     s.paperMode = this.settings.paperMode;
     s.ms = ms;
-    s.pinnedDrift = largestTipDistance(tips, targets, except ?? -1);
+    s.pinnedDrift = largestTipDistance(tips, targets, this.controller.handles.selected ?? -1);
     return s;
   }
 }

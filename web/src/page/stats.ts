@@ -25,7 +25,7 @@ export interface StatsValues {
   /** The report's algorithms (no escape from stationary points): changes the words of converged_grad. */
   paperMode: boolean;
   ms: number;
-  /** Largest distance from a pinned (not dragged) effector to its target: the report's "wobble". */
+  /** Largest distance from its target of an effector other than the selected one (pinned): the report's "wobble". */
   pinnedDrift: number;
 }
 
@@ -46,7 +46,7 @@ const FIELDS: { key: keyof StatsValues | 'median' | 'status'; label: string; tit
   { key: 'gradNorm', label: '‖∇E‖', title: 'gradient norm after the last solve' },
   { key: 'ms', label: 'ms / solve', title: 'main-thread milliseconds of the last solve (JS + WebAssembly)' },
   { key: 'median', label: 'median ms', title: 'running median of ms / solve over the last solves' },
-  { key: 'pinnedDrift', label: 'pinned drift', title: 'largest distance of a pinned effector from its target (the report’s “wobble”)' },
+  { key: 'pinnedDrift', label: 'pinned drift', title: 'largest distance from its target of an end effector other than the selected one (the one you drag): the report’s “wobble”' },
 ];
 
 /** What the method cell says: the method, and that it runs as the report's algorithm in paper mode. */
