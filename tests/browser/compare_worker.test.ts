@@ -4,7 +4,7 @@
 // progress line names each method as it starts, rows arrive one by one as each budget ends, and
 // the table ends with one row per method; the figures (seconds, frames, the longest gap) are
 // printed. Cancel stops a long compare within its first method's budget, keeps the rows shown,
-// and the live solve takes drags again.
+// and the live solve takes drags again. The table fits its box, its longest outcome wrapped.
 import type { Page } from 'playwright-core';
 import { describe, expect, it } from 'vitest';
 
@@ -93,6 +93,24 @@ describe('compare in a worker', () => {
     // Rows arrive one by one as each method's budget ends (1.6 s from first to last; a starved
     // main thread may take two at once).
     expect(log.rows[4] - log.rows[0]).toBeGreaterThan(2 * budget);
+    expect(errors).toEqual([]);
+  });
+
+  it('the table fits its box: the longest outcome wraps instead of scrolling sideways', async (ctx) => {
+    const { page, errors } = await openPage(env.browser, ctx);
+    await gotoRig(page, env.url, 'knight');
+    const hand = await selectTarget(page, await effectorNamed(page, /^hand\.L$/));
+    await dragBy(page, hand, 300, -250);
+    await waitForSettled(page);
+    await setNumber(page, /^compare: ms budget/, 100);
+    await page.keyboard.press('c');
+    await page.waitForFunction(() => document.getElementById('compare')?.dataset.state === 'done', null, { timeout: 30_000 });
+    expect(await page.locator('#compare .compare-table tbody td', { hasText: 'out of reach (closest point)' }).count()).toBeGreaterThan(0);
+    const box = await page.evaluate(() => {
+      const c = document.getElementById('compare')!;
+      return { scroll: c.scrollWidth, width: c.clientWidth };
+    });
+    expect(box.scroll).toBeLessThanOrEqual(box.width);
     expect(errors).toEqual([]);
   });
 
