@@ -2,7 +2,7 @@
 // stats' status is on screen from the start without scrolling the page; its handle expands it to
 // most of the screen, where the panel's Teaching folder is reached by scrolling inside the sheet
 // (the page itself never scrolls), and collapses it again. A touch drag on a target still moves it
-// and the hand follows; vertical swipes on the view cannot take the camera under the floor.
+// and the hand follows; the compare table fits the screen's width; vertical swipes on the view cannot take the camera under the floor.
 import type { CDPSession, Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 
@@ -75,7 +75,7 @@ describe('the page on a phone', () => {
     expect(errors).toEqual([]);
   });
 
-  it('a touch drag moves a target and the hand follows', async (ctx) => {
+  it('a touch drag moves a target and the hand follows; the compare box fits the screen', async (ctx) => {
     const { page, errors } = await openPage(phone, ctx);
     await gotoRig(page, server.url, 'knight');
     const hand = await effectorNamed(page, /^hand\.L$/);
@@ -91,6 +91,16 @@ describe('the page on a phone', () => {
     const to = await targetScreen(page, hand);
     expect(Math.hypot(to.x - from.x - 12, to.y - from.y + 30)).toBeLessThan(3);
     await waitForConvergence(page);
+
+    // Compare (the Teaching folder's button, or C): its box fits the screen's width, no sideways scrolling.
+    await page.keyboard.press('c');
+    await page.waitForFunction(() => document.getElementById('compare')?.dataset.state === 'done', null, { timeout: 30_000 });
+    const box = await page.evaluate(() => {
+      const c = document.getElementById('compare')!;
+      return { scroll: c.scrollWidth, width: c.clientWidth, right: c.getBoundingClientRect().right };
+    });
+    expect(box.scroll).toBeLessThanOrEqual(box.width);
+    expect(box.right).toBeLessThanOrEqual(390);
     expect(errors).toEqual([]);
   });
 
