@@ -100,7 +100,10 @@ export class LiveController {
     return this.current;
   }
 
-  /** Shows `live` instead of the rig shown (which is disposed); the controller owns it from now on. */
+  /**
+   * Shows `live` instead of the rig shown (which is disposed); the controller owns it from now on.
+   * A solve follows at the next frame.
+   */
   show(live: LiveRig): void {
     this.removeRig();
     this.current = live;
@@ -111,7 +114,8 @@ export class LiveController {
     this.handles.setPivot(live.view.boneBase(0, v));
     this.placePoles(false);
     this.stage.frame(live.view.bounds());
-    this.needsSolve = false;
+    // A first solve: it stops before a step (the targets sit on the tips), so the status says so.
+    this.needsSolve = true;
     this.needsRedraw = true;
   }
 
