@@ -1,10 +1,11 @@
 // Dragging as a user does, from the pose a user starts in (the rest pose, straight limbs), with
 // real mouse events on the page's gizmo: the README's knight drag ends on target; lifting the
-// character's foot straight up bends the leg and the foot follows within the tip tolerance at
-// every step while the hands and the head stay on theirs; a target dragged past a limb's reach
-// ends at the closest point and says so, and a reset and its undo each show their own pose's
-// status, and a freshly loaded rig says it is on target. With the humanoid limits and without them (the README's
-// before and after); writes docs/foot-lift.png and docs/foot-lift-free.png when UPDATE_SCREENSHOT=1.
+// character's foot straight up bends the leg and the foot follows within the tip tolerance at every
+// step while the hands and the head stay on theirs; a target dragged past a limb's reach ends at
+// the closest point and says so, and a reset and its undo each show their own pose's status, and a
+// freshly loaded rig says it is on target. With the humanoid limits and without them (the README's
+// before and after); writes docs/foot-lift.png and docs/foot-lift-free.png when
+// UPDATE_SCREENSHOT=1.
 import { mkdirSync } from 'node:fs';
 import { join } from 'node:path';
 
