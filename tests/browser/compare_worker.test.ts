@@ -111,6 +111,9 @@ describe('compare in a worker', () => {
       return { scroll: c.scrollWidth, width: c.clientWidth };
     });
     expect(box.scroll).toBeLessThanOrEqual(box.width);
+    // The methods iterated: their curves are drawn, with no "nothing to plot" line.
+    await page.waitForFunction(() => document.querySelector<HTMLElement>('#compare .plot')?.dataset.state === 'drawn');
+    expect(await page.locator('#compare .plot-note').isHidden()).toBe(true);
     expect(errors).toEqual([]);
   });
 

@@ -207,6 +207,9 @@ describe('the page', () => {
       await page.keyboard.press('c'); // every method solves (in the compare worker, which frees its own session)
       await page.waitForFunction(() => document.getElementById('compare')?.dataset.state === 'done', null, { timeout: 30_000 });
       expect(await page.evaluate(() => window.ikPage?.alive().sessions)).toBe(1);
+      // From the rest pose every method starts with E = 0: the plot says there is nothing to plot.
+      await page.waitForFunction(() => document.querySelector<HTMLElement>('#compare .plot')?.dataset.state === 'drawn');
+      expect(await page.locator('#compare .plot-note').isVisible()).toBe(true);
     }
     await dragTowardsRoot(page, 0, 0.1);
     await waitForConvergence(page);

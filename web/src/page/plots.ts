@@ -4,7 +4,9 @@
 // checkbox under the plot: gd's thousands of iterations in paper mode flatten a linear axis. Redraws at most a
 // few times a second and only while on screen, so live dragging does not pay for it every frame;
 // a method's live history is copied out of WebAssembly only when the plot draws (follow()). The
-// element's data-state is 'waiting' while a change is not drawn yet, then 'drawn' (for tests).
+// element's data-state is 'waiting' while a change is not drawn yet, then 'drawn' (for tests). When
+// every history shown is E = 0 throughout (solves that started on target), a line under the plot
+// says there is nothing a log scale can show.
 import uPlot from 'uplot';
 import 'uplot/dist/uPlot.min.css';
 
@@ -29,6 +31,8 @@ export class ConvergencePlot {
   /** The iteration axis is logarithmic (the checkbox under the plot). */
   logIterations = true;
   private readonly chart: HTMLElement;
+  /** "Nothing to plot", shown when every history is E = 0 throughout. */
+  private readonly note: HTMLElement;
   private readonly histories = new Map<string, Float64Array>();
   /** Methods whose latest history is to be read from `read` at the next draw. */
   private readonly followed = new Set<string>();
@@ -58,7 +62,11 @@ export class ConvergencePlot {
     box.checked = this.logIterations;
     box.addEventListener('change', () => this.setLogIterations(box.checked));
     toggle.append(box, ' log iteration axis');
-    this.element.append(this.chart, toggle);
+    this.note = document.createElement('p');
+    this.note.className = 'plot-note';
+    this.note.textContent = 'Nothing to plot: E was 0 from the start (already on target), which a log scale cannot show.';
+    this.note.hidden = true;
+    this.element.append(this.chart, this.note, toggle);
     parent.append(this.element);
     this.plot = this.build(title, height);
     this.element.dataset.axis = 'log';
@@ -187,7 +195,9 @@ export class ConvergencePlot {
         if (h) this.histories.set(m, h);
       }
       this.followed.clear();
-      this.plot.setData(this.data());
+      const data = this.data();
+      this.plot.setData(data);
+      this.note.hidden = this.histories.size === 0 || data.slice(1).some((ys) => ys.some((y) => y !== null));
       this.element.dataset.state = 'drawn';
     };
     this.frame = requestAnimationFrame(draw);
