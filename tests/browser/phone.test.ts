@@ -2,7 +2,8 @@
 // stats' status is on screen from the start without scrolling the page; its handle expands it to
 // most of the screen, where the panel's Teaching folder is reached by scrolling inside the sheet
 // (the page itself never scrolls), and collapses it again. A touch drag on a target still moves it
-// and the hand follows; the compare table fits the screen's width; vertical swipes on the view cannot take the camera under the floor.
+// and the hand follows; the compare table fits the screen's width; vertical swipes on the view
+// cannot take the camera under the floor.
 import type { CDPSession, Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 

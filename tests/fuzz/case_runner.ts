@@ -37,7 +37,7 @@ async function runKind(env: CaseEnv, id: CaseId, note: (text: string) => void, d
  * Runs case `id`; `note` gets the parts of its description as they are drawn, `drawn` is called
  * once a file case's input is drawn (an api case draws each step as it runs it).
  */
-export async function runCase(env: CaseEnv, id: CaseId, note: (text: string) => void, drawn: () => void = () => undefined): Promise<CaseReport> {
+export async function runCase(env: CaseEnv, id: CaseId, note: (text: string) => void, drawn: () => void): Promise<CaseReport> {
   const began = performance.now();
   const parts: string[] = [];
   const budgets: BudgetSample[] = [];

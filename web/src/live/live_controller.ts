@@ -142,9 +142,7 @@ export class LiveController {
     live.showGhost(null);
     this.handles.setTargets(live.session.targets);
     this.placePoles(false);
-    this.needsSolve = true;
-    this.needsRedraw = true;
-    this.events.changed?.();
+    this.invalidate();
     this.events.targetChanged?.();
   }
 
@@ -162,9 +160,7 @@ export class LiveController {
     live.showGhost(null);
     this.handles.setTargets(live.session.targets);
     this.placePoles(true);
-    this.needsSolve = true;
-    this.needsRedraw = true;
-    this.events.changed?.();
+    this.invalidate();
     this.events.targetChanged?.();
   }
 
@@ -215,9 +211,7 @@ export class LiveController {
     this.handles.setTargets(live.session.targets);
     this.placePoles(true);
     if (select !== undefined) this.handles.select(select);
-    this.needsSolve = true;
-    this.needsRedraw = true;
-    this.events.changed?.();
+    this.invalidate();
   }
 
   dispose(): void {

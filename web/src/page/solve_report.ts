@@ -56,7 +56,10 @@ export class SolveReport {
     this.stats.showStep(this.valuesOf(outcome, ms, tips));
   }
 
-  /** Shows E at the current pose, which no solve reached (a reset, a new rig, method, limits or effectors). */
+  /**
+   * Shows E at the current pose at once (a reset, a new rig, method, limits or effectors), before
+   * the next frame's solve reports on it; in step mode, where no solve follows, it stays.
+   */
   showIdle(): void {
     const live = this.controller.live;
     if (live) this.stats.showIdle(this.settings.method, live.session.objective(), this.settings.paperMode);
