@@ -5,6 +5,9 @@ import { IkRig } from '../web/src/ik/rig.js';
 import { defaultTolerances, dragTolerances, rigSize } from '../web/src/rig/tolerances.js';
 import { draggableEffectors } from './effectors.js';
 import { BenchError, errorLine } from './errors.js';
+import { flipLimbs, type FlipLimb } from './flips.js';
+import { gesturePaths, gestureSteps, type GestureBody } from './gestures.js';
+import { draggedTargetMoves } from './jumps.js';
 import { paperIterations, summarize, type Row, type SolveResult } from './metrics.js';
 import { isNativeOnly, isPeer, type BenchOptions } from './options.js';
 import type { Progress } from './progress.js';
@@ -16,7 +19,8 @@ import { checkNativeTool, runNative } from './run_native.js';
 import { effectiveRestarts } from './runners.js';
 import { runOnPool, WorkerPool } from './run_wasm.js';
 import type { RunSettings } from './runner.js';
-import { generateTargets, isDragging, prefix, project, type Experiment, type TargetSet } from './targets.js';
+import { addFlips, StepMeasurer } from './step_measures.js';
+import { generateTargets, hasReachability, isDragging, prefix, project, type Experiment, type TargetSet } from './targets.js';
 
 export interface PreparedRig extends BenchRig {
   /** Rig units (rigSize). */
@@ -28,6 +32,10 @@ export interface PreparedRig extends BenchRig {
   drag: { gtol: number; tipTolerance: number };
   /** Samples in the whole reach set. */
   reachSteps: number;
+  /** Samples in the whole gestures set: 0 for a rig without a recognised humanoid (no gestures). */
+  gestureSteps: number;
+  /** The limbs whose flips count in drag, reach and gestures (flips.ts; empty: flips not measured). */
+  limbs: FlipLimb[];
 }
 
 /** Most numbers (float64) the target sets of one rig may hold: 512 MiB. */
@@ -41,7 +49,22 @@ const MAX_TARGET_NUMBERS = 2 ** 26;
 export async function prepareRigs(opts: BenchOptions, ik: IkCoreModule): Promise<PreparedRig[]> {
   const out: PreparedRig[] = [];
   for (const entry of opts.rigs) out.push(await namingRig(entry, () => prepareRig(entry, opts, ik)));
+  if (opts.experiments.includes('gestures') && out.every((rig) => rig.gestureSteps === 0)) {
+    const why = 'the gestures experiment needs a humanoid the importer recognises, with hand, foot or head end effectors (npm run rig -- FILE shows the mapping; A7 rigs have none)';
+    throw new BenchError(out.length === 1 ? `${opts.rigs[0]}: ${why}` : `--experiment gestures: no rig has gestures: ${why}`);
+  }
   return out;
+}
+
+/**
+ * Why `rig` has no gestures rows (a note for the user), or undefined when it has gestures. A run of
+ * several rigs leaves those out; a run where no rig has gestures is refused (prepareRigs).
+ */
+export function noGesturesNote(rig: PreparedRig): string | undefined {
+  if (rig.gestureSteps > 0) return undefined;
+  return rig.humanoid
+    ? `${rig.name}: no gestures (no hand, foot or head end effector of its humanoid)`
+    : `${rig.name}: no gestures (the importer recognised no humanoid)`;
 }
 
 /** `work()`, with any error but a BenchError turned into one line naming the --rig entry. */
@@ -58,10 +81,12 @@ async function namingRig<T>(entry: string, work: () => T | Promise<T>): Promise<
 async function prepareRig(entry: string, opts: BenchOptions, ik: IkCoreModule): Promise<PreparedRig> {
   const rig = await loadBenchRig(entry, opts.humanoidLimits);
   const core = new IkRig(ik, rig.spec);
-  let size: number, reachSteps: number;
+  let size: number, reachSteps: number, gestures = 0;
   try {
     size = rigSize(core.boneTips(new Float64Array(core.numAngles)));
-    reachSteps = reachPaths(rig.spec, core.tips(project(rig.spec, new Float64Array(core.numAngles)))).length * REACH_PATH_STEPS;
+    const rest = project(rig.spec, new Float64Array(core.numAngles));
+    reachSteps = reachPaths(rig.spec, core.tips(rest)).length * REACH_PATH_STEPS;
+    if (rig.humanoid) gestures = gestureSteps(gesturePaths(rig.spec, gestureBody(rig, core)!, rest, core.tips(rest)));
   } finally {
     core.dispose();
   }
@@ -79,6 +104,8 @@ async function prepareRig(entry: string, opts: BenchOptions, ik: IkCoreModule): 
     ftol: opts.ftol ?? defaults.ftol,
     drag: { gtol: opts.gtol ?? drag.gradientTolerance, tipTolerance: opts.ftol === undefined ? drag.tipTolerance : 0 },
     reachSteps,
+    gestureSteps: gestures,
+    limbs: flipLimbs(rig.spec, rig.humanoid),
   };
   checkTargetSetSize(entry, prepared, opts);
   return prepared;
@@ -103,9 +130,19 @@ export function enginesFor(method: string, opts: BenchOptions): string[] {
   return isPeer(method) ? ['js'] : isNativeOnly(method) ? ['native'] : opts.engines;
 }
 
-/** Samples of `experiment` that `method` solves on `rig` (reach: at most its whole set). */
+/**
+ * Samples of `experiment` that `method` solves on `rig` (reach: at most its whole set; gestures:
+ * its whole set, or without gestures none, the first --samples steps when that is given).
+ */
 function samplesOf(rig: PreparedRig, experiment: Experiment, method: string, opts: BenchOptions): number {
-  return experiment === 'reach' ? Math.min(opts.samples[method], rig.reachSteps) : opts.samples[method];
+  if (experiment === 'reach') return Math.min(opts.samples[method], rig.reachSteps);
+  if (experiment === 'gestures') return opts.samplesGiven ? Math.min(opts.samples[method], rig.gestureSteps) : rig.gestureSteps;
+  return opts.samples[method];
+}
+
+/** The humanoid of `rig` for the gestures set, with `core` for its forward kinematics; undefined without one. */
+function gestureBody(rig: BenchRig, core: IkRig): GestureBody | undefined {
+  return rig.humanoid ? { humanoid: rig.humanoid, poses: (a) => core.poses(a) } : undefined;
 }
 
 /** Samples of the longest set one method solves in `experiment` on `rig`. */
@@ -119,7 +156,7 @@ export function totalSolves(opts: BenchOptions, rigs: readonly PreparedRig[]): n
   for (const rig of rigs)
     for (const experiment of opts.experiments) {
       for (const m of opts.methods) n += samplesOf(rig, experiment, m, opts) * enginesFor(m, opts).length;
-      if (experiment === 'reach') n += largestSet(rig, experiment, opts);
+      if (hasReachability(experiment)) n += largestSet(rig, experiment, opts);
     }
   return n;
 }
@@ -144,19 +181,24 @@ export interface RunContext {
   onRow?: (row: Row) => void;
 }
 
+/** The experiments of the run that `rig` takes part in (all but gestures on a rig without them). */
+export function experimentsOf(rig: PreparedRig, opts: BenchOptions): Experiment[] {
+  return opts.experiments.filter((e) => e !== 'gestures' || rig.gestureSteps > 0);
+}
+
 /**
- * Target sets for one rig: one per experiment, as long as the longest method needs; with --goals
- * pose each with the effectors' orientations at the target angles.
+ * Target sets for one rig: one per experiment it takes part in, as long as the longest method
+ * needs; with --goals pose each with the effectors' orientations at the target angles.
  */
 export function targetSetsFor(rig: PreparedRig, opts: BenchOptions, ik: IkCoreModule): Map<Experiment, TargetSet> {
   const core = new IkRig(ik, rig.spec);
   try {
-    const count = Math.max(...opts.methods.map((m) => opts.samples[m]));
     const make = (e: Experiment): TargetSet => {
-      const set = generateTargets(rig.spec, e, count, opts.seed, (a) => core.tips(a));
+      const count = largestSet(rig, e, opts);
+      const set = generateTargets(rig.spec, e, count, opts.seed, (a) => core.tips(a), gestureBody(rig, core));
       return opts.goals === 'pose' ? addOrientations(set, (a) => core.tipRotations(a)) : set;
     };
-    return new Map(opts.experiments.map((e) => [e, make(e)]));
+    return new Map(experimentsOf(rig, opts).map((e) => [e, make(e)]));
   } finally {
     core.dispose();
   }
@@ -170,38 +212,51 @@ function countedAsThePaper(r: SolveResult): SolveResult {
 /** Runs everything; rows in (rig, experiment, method, engine) order. */
 export async function runBench(rigs: readonly PreparedRig[], ctx: RunContext): Promise<Row[]> {
   const { opts, ik, progress } = ctx;
-  const needsPool = opts.experiments.includes('reach') || opts.methods.some((m) => isPeer(m) || opts.engines.includes('wasm'));
+  const needsPool = opts.experiments.some(hasReachability) || opts.methods.some((m) => isPeer(m) || opts.engines.includes('wasm'));
   const ours = opts.methods.filter((m) => !isPeer(m));
   if (ours.length > 0 && opts.engines.includes('native')) checkNativeTool(ours);
   // No more workers than the longest set has solves: the others would only take memory.
-  const longest = Math.max(...rigs.flatMap((rig) => opts.experiments.map((e) => largestSet(rig, e, opts))));
+  const longest = Math.max(...rigs.flatMap((rig) => experimentsOf(rig, opts).map((e) => largestSet(rig, e, opts))));
   const pool = needsPool ? await WorkerPool.create(Math.min(opts.workers, longest), opts.warmUpMs) : undefined;
   const rows: Row[] = [];
   try {
     for (const rig of rigs) {
       const sets = await namingRig(rig.path, () => targetSetsFor(rig, opts, ik));
-      const reach = sets.get('reach');
-      if (reach) {
-        progress.label(`${rig.name} reach: reachability (${REFERENCE_METHOD} with restarts, untimed)`);
-        await markReachable(pool!, rig.path, rig.spec, runSettings(rig, 'reach', REFERENCE_METHOD, opts), reach, (n) => progress.advance(n));
+      for (const experiment of experimentsOf(rig, opts).filter(hasReachability)) {
+        progress.label(`${rig.name} ${experiment}: reachability (${REFERENCE_METHOD} with restarts, untimed)`);
+        await markReachable(pool!, rig.path, rig.spec, runSettings(rig, experiment, REFERENCE_METHOD, opts), sets.get(experiment)!, (n) => progress.advance(n));
       }
-      for (const experiment of opts.experiments) {
-        for (const method of opts.methods) {
-          const set = prefix(sets.get(experiment)!, opts.samples[method]);
-          const settings = runSettings(rig, experiment, method, opts);
-          for (const engine of enginesFor(method, opts)) {
-            progress.label(`${rig.name} ${experiment} ${method} ${engine}`);
-            const results =
-              engine === 'native'
-                ? await runNative(rig.spec, settings, set, opts.workers, (n) => progress.advance(n))
-                : await runOnPool(pool!, rig.path, rig.spec, settings, set, (n) => progress.advance(n));
-            const counted = settings.paper && !isPeer(method) ? results.map(countedAsThePaper) : results;
-            const stats = summarize({ rig: rig.name, experiment, method, engine, goals: opts.goals }, counted, settings, set.reachable);
-            const row: Row = { ...stats, restarts: effectiveRestarts(ik, settings) };
-            rows.push(row);
-            ctx.onRow?.(row);
+      // Forward kinematics in this thread: how far each step moves its dragged target, and the
+      // native engine's flips.
+      const core = new IkRig(ik, rig.spec);
+      try {
+        const measurer = new StepMeasurer(rig.spec, core, rig.limbs);
+        for (const experiment of experimentsOf(rig, opts)) {
+          const dragging = isDragging(experiment);
+          const all = sets.get(experiment)!;
+          const targetMoves = dragging ? draggedTargetMoves(all, (a) => core.tips(a)) : undefined;
+          for (const method of opts.methods) {
+            const set = prefix(all, samplesOf(rig, experiment, method, opts));
+            const settings = runSettings(rig, experiment, method, opts);
+            const limbs = dragging ? rig.limbs : null;
+            for (const engine of enginesFor(method, opts)) {
+              progress.label(`${rig.name} ${experiment} ${method} ${engine}`);
+              const results =
+                engine === 'native'
+                  ? await runNative(rig.spec, settings, set, opts.workers, (n) => progress.advance(n))
+                  : await runOnPool(pool!, rig.path, rig.spec, settings, set, (n) => progress.advance(n), limbs);
+              if (engine === 'native' && dragging) addFlips(results, set, measurer);
+              const counted = settings.paper && !isPeer(method) ? results.map(countedAsThePaper) : results;
+              const jumpRule = targetMoves ? { targetMoves: targetMoves.subarray(0, set.count), size: rig.size } : undefined;
+              const stats = summarize({ rig: rig.name, experiment, method, engine, goals: opts.goals }, counted, settings, set.reachable, jumpRule);
+              const row: Row = { ...stats, restarts: effectiveRestarts(ik, settings) };
+              rows.push(row);
+              ctx.onRow?.(row);
+            }
           }
         }
+      } finally {
+        core.dispose();
       }
     }
   } finally {

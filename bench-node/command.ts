@@ -6,7 +6,7 @@ import { fileURLToPath } from 'node:url';
 
 import { loadIkNode } from '../web/src/ik/node.js';
 import { IkSolver } from '../web/src/ik/solver.js';
-import { prepareRigs, runBench, totalSolves } from './bench.js';
+import { noGesturesNote, prepareRigs, runBench, totalSolves } from './bench.js';
 import { compareTable, readReferenceCsv } from './compare.js';
 import { BenchError } from './errors.js';
 import type { Row } from './metrics.js';
@@ -34,8 +34,11 @@ const processIo: CommandIo = {
 const notes = [
   'Columns as in the report: t_avg (s), iter_avg, E_avg, E_IQM (mean of the middle half of the sorted final E), ' +
     'max E; plus success (final E < ftol), median, 95th percentile and max time per solve, and the stop reasons. ' +
-    'Drag and reach: success means every tip within the tip tolerance of its target, over the reachable steps; ' +
-    'unreachable steps (reach) are counted apart; jump_max_deg is the largest change of one angle in one step. ' +
+    'Drag, reach and gestures: success means every tip within the tip tolerance of its target, over the reachable steps; ' +
+    'unreachable steps (reach, gestures) are counted apart, wobble_unreach is the pinned effectors\' wobble after them; ' +
+    'jumps counts steps where a joint moved more than 5% of the rig size while the dragged target moved less than 1%; ' +
+    'flips counts steps where an elbow or knee bent against its anatomical direction or its bend plane turned more than 90 degrees; ' +
+    'jump_max_deg is the largest change of one angle in one step (the shortest way round for an angle without limits). ' +
     'With --goals pose, E is over the tip positions and success also needs every orientation within 0.5 degrees; ' +
     'rot_err_avg_deg and rot_err_max_deg are the mean and max of each solve\'s largest orientation error. ' +
     'Definitions, the drag and reach experiments and the peers\' settings: bench-node/README.md.',
@@ -60,6 +63,11 @@ async function main(argv: string[], io: CommandIo): Promise<number> {
   );
   const reference = opts.compare ? readReferenceCsv(opts.compare) : undefined;
   const rigs = await prepareRigs(opts, ik);
+  if (opts.experiments.includes('gestures'))
+    for (const rig of rigs) {
+      const note = noGesturesNote(rig);
+      if (note) io.err(`gestures: ${note}, left out\n`);
+    }
   const progress = makeProgress(opts.progress, totalSolves(opts, rigs));
   let rows: Row[];
   try {

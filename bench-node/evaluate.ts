@@ -46,9 +46,23 @@ export function isOnTarget(test: OnTargetTest, E: number, tip: number, rotationD
   return test.orientationToleranceDeg === undefined ? position : position && rotationDeg < test.orientationToleranceDeg;
 }
 
-/** The largest single-angle change from `from` to `to` (degrees, same lengths): a step's jump. */
-export function largestChange(from: ArrayLike<number>, to: ArrayLike<number>): number {
+/**
+ * The largest single-angle change from `from` to `to` (degrees, same lengths): a step's jump.
+ * `lower`, `upper`: the angles' limits (degrees). An angle whose limits span a full turn or more
+ * (upper - lower >= 360) changes the shortest way round, min(|d| mod 360, 360 - |d| mod 360): a
+ * turn of 350 is one of 10 degrees the other way. A limited angle changes by |d|.
+ */
+export function largestChange(from: ArrayLike<number>, to: ArrayLike<number>, lower: ArrayLike<number>, upper: ArrayLike<number>): number {
   let worst = 0;
-  for (let i = 0; i < from.length; i++) worst = Math.max(worst, Math.abs(to[i] - from[i]));
+  for (let i = 0; i < from.length; i++) {
+    const d = Math.abs(to[i] - from[i]);
+    worst = Math.max(worst, upper[i] - lower[i] >= 360 ? shortestTurn(d) : d);
+  }
   return worst;
+}
+
+/** The shortest turn (degrees, 0..180) equal to a turn of `d` degrees (d >= 0). */
+export function shortestTurn(d: number): number {
+  const r = d % 360;
+  return Math.min(r, 360 - r);
 }

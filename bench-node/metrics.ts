@@ -7,12 +7,20 @@
 //                   left out of the success rate
 //   wobble (drag,   per step, the largest distance (rig units) of a pinned end effector from its
 //   reach)          target; "during" is the largest over the solve's iterates, "after" at its end.
-//   jump (drag,     per step, the largest single-angle change (degrees) from the step's start pose
-//   reach)          to its solution; jump_max_deg is the largest over the row's steps.
+//   wobble over     the mean and max of wobble after over the unreachable steps (reach, gestures):
+//   unreachable     how far an out-of-reach target pulls the pinned effectors off theirs.
+//   jump_max_deg    per step, the largest single-angle change (degrees) from the step's start pose
+//   (dragging)      to its solution (an angle without limits the shortest way round); the largest
+//                   over the row's steps.
+//   jumps           steps where a joint moved more than 5% of the rig size while the dragged
+//   (dragging)      target moved less than 1% of it (jumps.ts).
+//   flips           steps where an elbow or knee bent against its anatomical direction or its bend
+//   (dragging)      plane turned more than 90 degrees (flips.ts); null for a rig without limbs.
 //   rotation error  --goals pose: per solve, the largest angle (degrees) between an effector's frame
 //                   at the final pose and its target orientation; rot_err_avg_deg and
 //                   rot_err_max_deg are their mean and max over the row's solves.
 import { isOnTarget, type OnTargetTest } from './evaluate.js';
+import { countJumps } from './jumps.js';
 import type { GoalsKind } from './pose_goals.js';
 import { interquartileMean, maxOf, mean, median, quantile } from './statistics.js';
 import { isDragging, type Experiment } from './targets.js';
@@ -40,8 +48,14 @@ export interface SolveResult {
   /** drag, reach: pinned effectors' largest distance from their targets over the iterates / at the end. */
   wobbleDuring: number;
   wobbleAfter: number;
-  /** The largest single-angle change from the start pose to the final pose. */
+  /** The largest single-angle change from the start pose to the final pose (largestChange). */
   jumpDeg: number;
+  /** Drag, reach, gestures: the largest distance (rig units) a joint moved from the start pose to the final pose. */
+  jointMove?: number;
+  /** Drag, reach, gestures: 1 when the step flipped a limb (flips.ts), 0 when not; NaN or absent: not measured (no limbs). */
+  flip?: number;
+  /** The final pose (degrees), as the runner returned it; dropped before results leave a worker. */
+  angles?: Float64Array;
   /** --goals pose: the largest angle between an effector's frame and its target orientation, degrees. */
   rotErrDeg?: number;
 }
@@ -75,8 +89,15 @@ export interface RowStats extends TimeToSuccess {
   wobble_during_max: number | null;
   wobble_after_avg: number | null;
   wobble_after_max: number | null;
-  /** drag and reach only (null otherwise): the largest single-angle change in one step, degrees. */
+  /** Reach and gestures (null otherwise, and without unreachable steps): wobble after over the unreachable steps. */
+  wobble_unreachable_avg: number | null;
+  wobble_unreachable_max: number | null;
+  /** Drag, reach and gestures only (null otherwise): the largest single-angle change in one step, degrees. */
   jump_max_deg: number | null;
+  /** Drag, reach and gestures only (null otherwise): the steps that were jumps (jumps.ts). */
+  jumps: number | null;
+  /** Drag, reach and gestures on a rig with limbs (null otherwise): the steps that flipped a limb (flips.ts). */
+  flips: number | null;
   /** --goals pose only (null otherwise): mean and max over the solves of the largest orientation error, degrees. */
   rot_err_avg_deg: number | null;
   rot_err_max_deg: number | null;
@@ -97,11 +118,18 @@ export interface RowKey {
   goals?: GoalsKind;
 }
 
+/** What tells a jump (jumps.ts): per result how far the dragged target moved, and the rig size (rig units). */
+export interface JumpRule {
+  targetMoves: ArrayLike<number>;
+  size: number;
+}
+
 /**
  * Summarises per-solve results into a table row. `test`: what counts as on target (success);
- * `reachable`: 1 per result whose targets are reachable (the others are left out of success).
+ * `reachable`: 1 per result whose targets are reachable (the others are left out of success);
+ * `jumpRule`: for drag, reach and gestures, what makes a step a jump (without it jumps is null).
  */
-export function summarize(key: RowKey, results: readonly SolveResult[], test: OnTargetTest, reachable: ArrayLike<number>): RowStats {
+export function summarize(key: RowKey, results: readonly SolveResult[], test: OnTargetTest, reachable: ArrayLike<number>, jumpRule?: JumpRule): RowStats {
   const E = results.map((r) => r.E);
   const t = results.map((r) => r.seconds);
   const stop: Record<string, number> = {};
@@ -114,6 +142,9 @@ export function summarize(key: RowKey, results: readonly SolveResult[], test: On
   const succeeded = judged.map((r) => isOnTarget(test, r.E, r.tipDistance, r.rotErrDeg));
   const goals = key.goals ?? 'position';
   const rotation = goals === 'pose' ? results.map((r) => r.rotErrDeg ?? NaN) : [];
+  const dragging = isDragging(key.experiment);
+  const unreachableWobble = results.filter((r, k) => reachable[k] !== 1 && Number.isFinite(r.wobbleAfter)).map((r) => r.wobbleAfter);
+  const flips = results.map((r) => r.flip ?? NaN).filter((f) => Number.isFinite(f));
   return {
     ...key,
     goals,
@@ -135,7 +166,11 @@ export function summarize(key: RowKey, results: readonly SolveResult[], test: On
     wobble_during_max: orNull(maxOf(during)),
     wobble_after_avg: orNull(mean(after)),
     wobble_after_max: orNull(maxOf(after)),
-    jump_max_deg: isDragging(key.experiment) ? orNull(maxOf(jumps)) : null,
+    wobble_unreachable_avg: dragging ? orNull(mean(unreachableWobble)) : null,
+    wobble_unreachable_max: dragging ? orNull(maxOf(unreachableWobble)) : null,
+    jump_max_deg: dragging ? orNull(maxOf(jumps)) : null,
+    jumps: dragging && jumpRule ? countJumps(results.map((r) => r.jointMove ?? NaN), jumpRule.targetMoves, jumpRule.size) : null,
+    flips: dragging && flips.length > 0 ? flips.filter((f) => f === 1).length : null,
     rot_err_avg_deg: goals === 'pose' ? orNull(mean(rotation)) : null,
     rot_err_max_deg: goals === 'pose' ? orNull(maxOf(rotation)) : null,
   };

@@ -34,6 +34,8 @@ export interface BenchOptions {
   methods: string[];
   /** Samples per known method (a --samples default plus METHOD=N overrides). */
   samples: Record<string, number>;
+  /** Whether --samples was given: without it the gestures experiment runs its whole set. */
+  samplesGiven: boolean;
   seed: number;
   /** Overrides of the per-rig default tolerances; undefined means the rig's default. */
   gtol?: number;
@@ -226,6 +228,7 @@ export function parseOptions(argv: string[], isTTY: boolean, ownMethods: readonl
     experiments: pick('--experiment', raw.experiment, experiments, 'experiment'),
     methods: pick('--methods', raw.methods, allMethods, 'method'),
     samples: parseSamples(raw.samples, allMethods),
+    samplesGiven: cmd.getOptionValueSource('samples') !== 'default',
     seed: integerIn('--seed', raw.seed, 0, 0xffffffff),
     gtol: raw.gtol === undefined ? undefined : positiveNumber('--gtol', raw.gtol),
     ftol: raw.ftol === undefined ? undefined : positiveNumber('--ftol', raw.ftol),

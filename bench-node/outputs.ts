@@ -130,7 +130,8 @@ const csvColumns = [
   'rig', 'experiment', 'method', 'engine', 'samples', 't_avg_s', 't_median_s', 't_p95_s', 't_max_s',
   'iter_avg', 'E_avg', 'E_iqm', 'E_max', 'success_rate', 'unreachable', 'restarts', 'goals', 'rot_err_avg_deg', 'rot_err_max_deg',
   't_success_median_s', 't_success_p95_s', 'success_within_1ms', 'success_within_10ms', 'success_within_100ms',
-  'wobble_during_avg', 'wobble_during_max', 'wobble_after_avg', 'wobble_after_max', 'jump_max_deg', 'stop_reasons',
+  'wobble_during_avg', 'wobble_during_max', 'wobble_after_avg', 'wobble_after_max', 'wobble_unreachable_avg', 'wobble_unreachable_max',
+  'jump_max_deg', 'jumps', 'flips', 'stop_reasons',
 ] as const;
 
 export function csvText(rows: readonly Row[]): string {

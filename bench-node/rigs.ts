@@ -14,6 +14,7 @@ import { extname, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
 
 import type { RigSpec } from '../web/src/ik/rig_spec.js';
+import type { HumanoidMap } from '../web/src/rig/humanoid_roles.js';
 import { specWithFileLimits, type RigFormat } from '../web/src/rig/load_rig.js';
 import { loadRigFromPath } from '../web/src/rig/load_rig_node.js';
 import { BenchError, errorLine, quote } from './errors.js';
@@ -28,6 +29,8 @@ export interface BenchRig {
   path: string;
   format: RigFormat;
   spec: RigSpec;
+  /** The humanoid mapping the importer recognised (glTF; `npm run rig` shows it), or null. */
+  humanoid: HumanoidMap | null;
 }
 
 /** Resolves a --rig entry to a file path; throws BenchError naming the entry when it does not exist. */
@@ -64,7 +67,7 @@ export async function loadBenchRig(entry: string, humanoidLimits = true): Promis
   try {
     const loaded = await loadRigFromPath(path);
     const spec = humanoidLimits ? loaded.spec : specWithFileLimits(loaded);
-    return { name: loaded.name, path, format: loaded.format, spec };
+    return { name: loaded.name, path, format: loaded.format, spec, humanoid: loaded.gltf?.humanoid ?? null };
   } catch (e) {
     const message = errorLine(e);
     throw new BenchError(`${entry}: ${message.startsWith(`${path}: `) ? message.slice(path.length + 2) : message}`);

@@ -62,6 +62,10 @@ interface NativeResult {
   wobble_after: number | null;
   tip_distance: number | null;
   jump_deg: number | null;
+  /** The largest distance a joint moved from the start to the solution (rig units). */
+  jump_move?: number | null;
+  /** Records with a dragged effector: the solution (degrees). */
+  angles?: number[];
   /** --goals pose only. */
   rot_err_deg?: number | null;
 }
@@ -82,6 +86,8 @@ export function decodeResults(text: string, expected: number, file: string): Sol
       wobbleDuring: num(r.wobble_during),
       wobbleAfter: num(r.wobble_after),
       jumpDeg: num(r.jump_deg),
+      ...(r.jump_move === undefined ? {} : { jointMove: num(r.jump_move) }),
+      ...(r.angles === undefined ? {} : { angles: Float64Array.from(r.angles) }),
       ...(r.rot_err_deg === undefined ? {} : { rotErrDeg: num(r.rot_err_deg) }),
     };
   });

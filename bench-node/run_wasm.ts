@@ -9,6 +9,7 @@ import { Worker } from 'node:worker_threads';
 import type { RigSpec } from '../web/src/ik/rig_spec.js';
 import { wasmPath } from '../web/src/ik/node.js';
 import { BenchError } from './errors.js';
+import type { FlipLimb } from './flips.js';
 import type { SolveResult } from './metrics.js';
 import type { RunSettings } from './runner.js';
 import { independentRanges, type TargetSet } from './targets.js';
@@ -128,7 +129,10 @@ export function batchesOf(set: TargetSet, batches: number): Array<[number, numbe
   return out;
 }
 
-/** Runs every sample of `set` on the pool; results in sample order. */
+/**
+ * Runs every sample of `set` on the pool; results in sample order. `limbs` (drag, reach,
+ * gestures): the rig's limbs for the step measures (joint move, flips); null: none measured.
+ */
 export async function runOnPool(
   pool: WorkerPool,
   rigKey: string,
@@ -136,6 +140,7 @@ export async function runOnPool(
   settings: RunSettings,
   set: TargetSet,
   onProgress: (solved: number) => void,
+  limbs: FlipLimb[] | null = null,
 ): Promise<SolveResult[]> {
   const m = set.numAngles, r = set.numResiduals;
   const parts = batchesOf(set, pool.size * BATCHES_PER_WORKER).map(([begin, end]) =>
@@ -152,6 +157,7 @@ export async function runOnPool(
         orientations: set.orientations?.slice((begin * 4 * r) / 3, (end * 4 * r) / 3) ?? null,
         chained: set.chained.slice(begin, end),
         dragged: set.dragged.slice(begin, end),
+        limbs,
       },
       onProgress,
     ),

@@ -72,7 +72,8 @@ export class WasmSolverRunner implements Runner {
       stopReason: result.stopReason,
       wobbleDuring: during,
       wobbleAfter: after,
-      jumpDeg: largestChange(start, result.angles),
+      jumpDeg: largestChange(start, result.angles, this.rig.lower, this.rig.upper),
+      angles: result.angles,
       ...judged,
     };
   }

@@ -40,9 +40,15 @@ export function formatStopReasons(counts: Record<string, number>): string {
     .join(', ');
 }
 
+/** A count, or '-' when there is none (null: not measured). */
+function formatCount(n: number | null): string {
+  return n === null ? '-' : String(n);
+}
+
 /**
- * The results table of one rig and experiment. Drag and reach add the unreachable steps (left out
- * of success), the wobble and the largest jump; --goals pose the orientation errors (degrees).
+ * The results table of one rig and experiment. Drag, reach and gestures add the unreachable steps
+ * (left out of success), the wobble (also over the unreachable steps), the jumps, the flips and
+ * the largest angle jump; --goals pose the orientation errors (degrees).
  */
 export function resultsTable(rows: readonly Row[]): Table {
   const first = rows[0];
@@ -50,7 +56,9 @@ export function resultsTable(rows: readonly Row[]): Table {
   const pose = first.goals === 'pose';
   const headers = ['method', 'engine', 'samples', 'restarts', 't_avg', 'iter_avg', 'E_avg', 'E_IQM', 'max E', 'success', 't_median', 't_p95', 't_max'];
   if (pose) headers.push('rot_err_avg_deg', 'rot_err_max_deg');
-  if (drag) headers.push('unreachable', 'wobble_during avg', 'wobble_during max', 'wobble_after avg', 'wobble_after max', 'jump_max_deg');
+  if (drag)
+    headers.push('unreachable', 'wobble_during avg', 'wobble_during max', 'wobble_after avg', 'wobble_after max', 'wobble_unreach max',
+      'jumps', 'flips', 'jump_max_deg');
   headers.push('stop reasons');
   const numeric = headers.map((h) => !['method', 'engine', 'stop reasons'].includes(h));
   return {
@@ -81,6 +89,9 @@ export function resultsTable(rows: readonly Row[]): Table {
           formatNumber(r.wobble_during_max),
           formatNumber(r.wobble_after_avg),
           formatNumber(r.wobble_after_max),
+          formatNumber(r.wobble_unreachable_max),
+          formatCount(r.jumps),
+          formatCount(r.flips),
           formatNumber(r.jump_max_deg),
         );
       cells.push(formatStopReasons(r.stop_reasons));

@@ -11,25 +11,36 @@
 //                previous step's solution (`chained`), as when a user drags an effector.
 //   reach:       straight paths of one effector's target from its rest tip, the others pinned at
 //                theirs, from P(0), chained (reach.ts). Not seeded: the set is the same for every seed.
+//   gestures:    a humanoid's scripted gestures (hand across the chest, over the head...) in small
+//                steps from P(0), the others pinned at their rest tips, chained (gestures.ts). Not
+//                seeded either.
 // The targets of random, incremental and drag are x_b = x(A_k): reachable by construction. Reach
-// targets are points, reachable or not: `reachable` says which (reachability.ts fills it in).
+// and gestures targets are points, reachable or not: `reachable` says which (reachability.ts
+// fills it in).
 // Angles are degrees, P clamps to limits. The native tools and tests make random and incremental
 // sets with the same streams in C++ (wasm/native/protocol.h); tests/bench/protocol_agreement.test.ts
 // checks both give the same sets.
 import type { RigSpec } from '../web/src/ik/rig_spec.js';
 import { draggableEffectors, exclusiveAngles } from './effectors.js';
+import { fillGestures, gesturePaths, gestureSteps, type GestureBody } from './gestures.js';
 import { signedUnit, streamFor } from './prng.js';
 import { fillReach, REACH_PATH_STEPS, reachPaths } from './reach.js';
 
-export type Experiment = 'random' | 'incremental' | 'drag' | 'reach';
-export const experiments: readonly Experiment[] = ['random', 'incremental', 'drag', 'reach'];
+export type Experiment = 'random' | 'incremental' | 'drag' | 'reach' | 'gestures';
+export const experiments: readonly Experiment[] = ['random', 'incremental', 'drag', 'reach', 'gestures'];
 
 /**
- * Drag and reach: paths a user drags an effector along. Solved as the page solves while dragging
- * (the drag tolerances, no restarts), judged by the tip test, with wobble and jump columns.
+ * Drag, reach and gestures: paths a user drags an effector along. Solved as the page solves while
+ * dragging (the drag tolerances, no restarts), judged by the tip test, with wobble, jump and flip
+ * columns.
  */
 export function isDragging(experiment: Experiment): boolean {
-  return experiment === 'drag' || experiment === 'reach';
+  return experiment === 'drag' || experiment === 'reach' || experiment === 'gestures';
+}
+
+/** Reach and gestures: fixed sets of target points, some perhaps out of reach (reachability.ts decides). */
+export function hasReachability(experiment: Experiment): boolean {
+  return experiment === 'reach' || experiment === 'gestures';
 }
 
 /** Steps per drag path. */
@@ -114,7 +125,8 @@ export function incrementalAngles(spec: RigSpec, previous: ArrayLike<number>, ra
 
 /**
  * Generates `count` samples of `experiment` for a run seeded with `seed`; reach has at most
- * reachPaths(...).length * REACH_PATH_STEPS samples (its whole set), so it may return fewer.
+ * reachPaths(...).length * REACH_PATH_STEPS samples (its whole set), gestures at most its paths'
+ * steps, so they may return fewer. Gestures need `body`, the humanoid (else: an Error).
  */
 export function generateTargets(
   spec: RigSpec,
@@ -122,13 +134,17 @@ export function generateTargets(
   count: number,
   seed: number,
   tips: TipsFn,
+  body?: GestureBody,
 ): TargetSet {
   const m = spec.lower.length;
   const r = 3 * spec.effectors.length;
   const rest = project(spec, new Float64Array(m));
   const restTips = tips(rest);
+  if (experiment === 'gestures' && !body) throw new Error('gestures: the rig is no recognised humanoid');
   const paths = experiment === 'reach' ? reachPaths(spec, restTips) : [];
-  const n = experiment === 'reach' ? Math.min(count, paths.length * REACH_PATH_STEPS) : count;
+  const gestures = experiment === 'gestures' ? gesturePaths(spec, body!, rest, restTips) : [];
+  const whole = experiment === 'reach' ? paths.length * REACH_PATH_STEPS : gestureSteps(gestures);
+  const n = hasReachability(experiment) ? Math.min(count, whole) : count;
   const set: TargetSet = {
     experiment,
     count: n,
@@ -145,6 +161,10 @@ export function generateTargets(
   };
   if (experiment === 'reach') {
     fillReach(set, paths, rest, restTips);
+    return set;
+  }
+  if (experiment === 'gestures') {
+    fillGestures(set, gestures, rest, restTips);
     return set;
   }
   const targetAngles = (set.targetAngles = new Float64Array(n * m));

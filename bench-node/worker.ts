@@ -9,6 +9,7 @@ import { errorOf, tipDistance } from './evaluate.js';
 import type { SolveResult } from './metrics.js';
 import { largestRotationErrorDeg } from './pose_goals.js';
 import { makeRunner } from './runners.js';
+import { StepMeasurer } from './step_measures.js';
 import type { Runner } from './runner.js';
 import { warmUp } from './warm_up.js';
 import type { WorkerInit, WorkerReply, WorkerTask } from './worker_protocol.js';
@@ -24,9 +25,9 @@ const ik: IkCoreModule = await loadIk({
   },
 });
 
-let cached: { key: string; runner: Runner; rig: IkRig } | undefined;
+let cached: { key: string; runner: Runner; rig: IkRig; measurer?: StepMeasurer } | undefined;
 
-function runnerFor(task: WorkerTask): { runner: Runner; rig: IkRig } {
+function runnerFor(task: WorkerTask): { runner: Runner; rig: IkRig; measurer?: StepMeasurer } {
   const key = `${task.rigKey}\u0000${JSON.stringify(task.settings)}`;
   if (cached?.key === key) return cached;
   cached?.runner.dispose();
@@ -40,10 +41,14 @@ function runnerFor(task: WorkerTask): { runner: Runner; rig: IkRig } {
 }
 
 function run(task: WorkerTask): SolveResult[] {
-  const { runner, rig } = runnerFor(task);
+  const entry = runnerFor(task);
+  const { runner, rig } = entry;
+  const measurer = task.limbs ? (entry.measurer ??= new StepMeasurer(task.spec, rig, task.limbs)) : undefined;
   const m = task.numAngles, r = task.numResiduals, q = (4 * r) / 3;
   const results: SolveResult[] = [];
   let lastReport = performance.now();
+  // Where the previous solve ended: a chained step's start, for the step measures.
+  let previous: Float64Array | null = null;
   for (let k = 0; k < task.count; k++) {
     const chained = task.chained[k] === 1 && k > 0;
     const start = chained ? null : task.starts.subarray(k * m, (k + 1) * m);
@@ -66,6 +71,11 @@ function run(task: WorkerTask): SolveResult[] {
       result.tipDistance = tipDistance(tips, target);
       if (orientations) result.rotErrDeg = largestRotationErrorDeg(rig.tipRotations(startAngles), orientations);
     }
+    // The step's joint move and flip, from where it started to the pose the runner returned.
+    const from = chained ? previous : task.starts.subarray(k * m, (k + 1) * m);
+    if (measurer && from && result.angles) Object.assign(result, measurer.measure(from, result.angles));
+    previous = result.angles ? result.angles.slice() : null;
+    delete result.angles;
     results.push(result);
     const now = performance.now();
     if (now - lastReport > 100 || k === task.count - 1) {

@@ -1,5 +1,6 @@
 // Messages between the main thread (run_wasm.ts) and the worker threads (worker.ts).
 import type { RigSpec } from '../web/src/ik/rig_spec.js';
+import type { FlipLimb } from './flips.js';
 import type { SolveResult } from './metrics.js';
 import type { RunSettings } from './runner.js';
 
@@ -27,6 +28,11 @@ export interface WorkerTask {
   orientations: Float64Array | null;
   chained: Uint8Array;
   dragged: Int32Array;
+  /**
+   * Drag, reach, gestures: the rig's limbs whose flips count (flips.ts; empty: none), and then each
+   * step's joint move and flip are measured (step_measures.ts); null: nothing measured.
+   */
+  limbs: FlipLimb[] | null;
 }
 
 export type WorkerReply =

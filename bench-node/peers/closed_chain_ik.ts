@@ -194,7 +194,7 @@ export class ClosedChainIkRunner implements Runner {
     this.copyOut();
     const seconds = (performance.now() - t0) / 1000;
     const iterations = this.iterations;
-    const jumpDeg = largestChange(start, this.poseOut);
+    const jumpDeg = largestChange(start, this.poseOut, this.spec.lower, this.spec.upper);
 
     const tips = this.readTips();
     const E = errorOf(tips, input.target);
@@ -206,7 +206,7 @@ export class ClosedChainIkRunner implements Runner {
     let during = after;
     if (input.dragged >= 0 && Number.isFinite(after) && iterations > 0) during = this.replayWobble(start, input, iterations);
     return { E, tipDistance: distance, iterations, seconds, stopReason, wobbleDuring: during, wobbleAfter: after, jumpDeg,
-      ...(rotErrDeg === undefined ? {} : { rotErrDeg }) };
+      angles: this.poseOut.slice(), ...(rotErrDeg === undefined ? {} : { rotErrDeg }) };
   }
 
   /** Replays the solve (same start, same iteration count) observing the pinned effectors. */

@@ -227,7 +227,8 @@ export class ThreeCcdRunner implements Runner {
       stopReason,
       wobbleDuring: passes === 0 ? after : during,
       wobbleAfter: after,
-      jumpDeg: largestChange(from, this.angles),
+      jumpDeg: largestChange(from, this.angles, this.spec.lower, this.spec.upper),
+      angles: this.angles.slice(),
     };
   }
 

@@ -130,7 +130,7 @@ describe('careless values: a usage error naming the option and the value', () =>
     [['--ftol', 'Infinity'], /--ftol: "Infinity" is not a positive number/],
     [['--ftol', '0'], /--ftol: "0" is not a positive number/],
     [['--warm-up', '-1'], /--warm-up: "-1" is not an integer in 0\.\.60000$/],
-    [['--experiment', 'random,Drag'], /--experiment: unknown experiment "Drag" \(known: random, incremental, drag, reach\)/],
+    [['--experiment', 'random,Drag'], /--experiment: unknown experiment "Drag" \(known: random, incremental, drag, reach, gestures\)/],
     [['--methods', `lm,${'y'.repeat(500)}`], /--methods: unknown method "y{57}\.\.\." \(known:/],
   ] as Array<[string[], RegExp]>)('%j', async (args, pattern) => {
     expectOneLineError(await benchHere('--rig', knight, ...args), 2, pattern);
@@ -313,12 +313,13 @@ describe('the reach experiment', () => {
     expect(r.stderr).toBe('');
     expect(r.code).toBe(0);
     expect(r.stdout).toMatch(/lamp, reach targets/);
-    expect(r.stdout).toMatch(/unreachable .* jump_max_deg/);
+    expect(r.stdout).toMatch(/unreachable .* wobble_unreach max  jumps  flips  jump_max_deg/);
     const [row] = (JSON.parse(readFileSync(file, 'utf8')) as { rows: JsonRow[] }).rows;
     for (const [key, type] of Object.entries(schema)) expect(typeof row[key], key).toBe(type);
     expect(row).toMatchObject({ rig: 'lamp', experiment: 'reach', method: 'lm', samples: 40 });
     expect(row.jump_max_deg as number).toBeGreaterThan(0);
-    expect(readFileSync(csv, 'utf8').split('\n')[0]).toMatch(/,success_rate,unreachable,.*,jump_max_deg,stop_reasons$/);
+    expect(row.jumps).toBe(0); // 1% steps of a lamp's arm: no joint moves 5% of the rig in a step
+    expect(readFileSync(csv, 'utf8').split('\n')[0]).toMatch(/,success_rate,unreachable,.*,wobble_unreachable_max,jump_max_deg,jumps,flips,stop_reasons$/);
   });
 
   it('counts steps out of reach as unreachable and leaves them out of success, on both engines', async () => {

@@ -27,14 +27,19 @@
 //   solution instead of its start (drag and reach paths).
 // RESULTS.jsonl: one JSON object per record and line, numbers written to round-trip exactly:
 //   {"E", "gradient_norm", "iterations", "function_evaluations", "jacobian_evaluations", "seconds",
-//    "stop_reason", "wobble_during", "wobble_after", "tip_distance", "jump_deg"}, and with --goals
+//    "stop_reason", "wobble_during", "wobble_after", "tip_distance", "jump_deg", "jump_move"},
+//   "angles" (records with a dragged effector), and with --goals
 //   pose "rot_err_deg": the largest angle of an effector's frame from its target orientation at the
 //   solution (degrees, from forward kinematics of the returned angles); E is then the positions'
 //   1/2 |x(A) - x_b|^2 at the solution, from forward kinematics too (the solver's E holds the
 //   orientation rows as well).
 // `seconds` is steady_clock around Solver::solve(). tip_distance: the largest distance of an
 // effector's tip from its target at the solution (rig units); jump_deg: the largest change of one
-// angle from the start to the solution (degrees); both null for invalid input. Wobble (records
+// angle from the start to the solution (degrees; an angle whose limits span 360 degrees or more
+// the shortest way round, as bench-node/evaluate.ts largestChange); jump_move: the largest
+// distance a joint (the head or the tip of any bone) moved from the start to the solution (rig
+// units); all three null for invalid input. Records with a dragged effector also carry "angles",
+// the solution (degrees), from which the command line judges the step's limbs. Wobble (records
 // with a dragged effector and other effectors to pin; null otherwise): the largest distance of a
 // pinned effector from its target, over the iterates of a replay of the same solve
 // (max_iterations = the solve's count, no time budget) for "during", at the solution for "after".
@@ -180,6 +185,39 @@ double replay_wobble(const Args& args, ik::Kinematics& kin, ik::Kinematics& obse
   return seen == 0 ? after : during;  // no iterate: the start already met a stopping test
 }
 
+// The largest change of one angle from `from` to `to` (degrees): an angle whose limits span a full
+// turn or more the shortest way round, min(|d| mod 360, 360 - |d| mod 360); a limited one |d|.
+double largest_angle_change(const ik::Kinematics& kin, const Eigen::VectorXd& from, const Eigen::VectorXd& to) {
+  double worst = 0;
+  for (int i = 0; i < kin.num_angles(); ++i) {
+    const double d = std::abs(to[i] - from[i]);
+    const double r = std::fmod(d, 360.0);
+    worst = std::max(worst, kin.upper()[i] - kin.lower()[i] >= 360 ? std::min(r, 360 - r) : d);
+  }
+  return worst;
+}
+
+// Every bone's head (joint origin) and tip at `angles`, 6 per bone (rig units), into `joints`.
+void joint_positions(ik::Kinematics& kin, const Eigen::VectorXd& angles, Eigen::VectorXd& joints) {
+  kin.forward(angles);
+  joints.resize(6 * kin.num_bones());
+  for (int b = 0; b < kin.num_bones(); ++b) {
+    joints.segment<3>(6 * b) = kin.joint_origin(b);
+    joints.segment<3>(6 * b + 3) = kin.tip(b);
+  }
+}
+
+// The largest distance (rig units) any joint (the head or the tip of a bone) moves from the pose at
+// `from` to the pose at `to`; `a` and `b` are workspace.
+double largest_joint_move(ik::Kinematics& kin, const Eigen::VectorXd& from, const Eigen::VectorXd& to, Eigen::VectorXd& a,
+                          Eigen::VectorXd& b) {
+  joint_positions(kin, from, a);
+  joint_positions(kin, to, b);
+  double worst = 0;
+  for (int j = 0; j < a.size() / 3; ++j) worst = std::max(worst, (b.segment<3>(3 * j) - a.segment<3>(3 * j)).norm());
+  return worst;
+}
+
 // The registry's method names, the default first, then "kdl" when built with KDL, as a JSON
 // array on stdout.
 void list_methods() {
@@ -288,7 +326,7 @@ void run(const Args& args) {
   if (!out) throw std::runtime_error(args.output + ": cannot write");
 
   Eigen::VectorXd start(kin.num_angles()), target(kin.num_residuals()), previous(kin.num_angles()),
-      tips(kin.num_residuals()), orientations(num_orientations);
+      tips(kin.num_residuals()), orientations(num_orientations), joints_from, joints_to;
   const double nan = std::numeric_limits<double>::quiet_NaN();
   for (int k = 0; k < job.count; ++k) {
     const double* rec = job.records.data() + static_cast<size_t>(k) * job.stride();
@@ -308,7 +346,8 @@ void run(const Args& args) {
 
     const bool valid = s.valid;
     const double tip_distance = valid ? largest_distance(observer, previous, target, -1, tips) : nan;
-    const double jump = valid ? (previous - start).cwiseAbs().maxCoeff() : nan;
+    const double jump = valid ? largest_angle_change(observer, start, previous) : nan;
+    const double jump_move = valid ? largest_joint_move(observer, start, previous, joints_from, joints_to) : nan;
     double during = nan, after = nan;
     if (dragged >= 0 && kin.num_effectors() > 1 && valid) {
       after = largest_distance(observer, previous, target, dragged, tips);
@@ -317,7 +356,9 @@ void run(const Args& args) {
     nlohmann::json line = {{"E", E}, {"gradient_norm", gradient_norm}, {"iterations", iterations},
                                  {"function_evaluations", fevals}, {"jacobian_evaluations", jevals},
                                  {"seconds", seconds}, {"stop_reason", reason}, {"wobble_during", during},
-                                 {"wobble_after", after}, {"tip_distance", tip_distance}, {"jump_deg", jump}};
+                                 {"wobble_after", after}, {"tip_distance", tip_distance}, {"jump_deg", jump},
+                                 {"jump_move", jump_move}};
+    if (dragged >= 0 && valid) line["angles"] = std::vector<double>(previous.data(), previous.data() + previous.size());
     if (args.pose) {  // judged from forward kinematics of the returned angles, as the bench does
       line["rot_err_deg"] = valid ? ik::bench::largest_rotation_error_deg(observer, previous, orientations) : nan;
       if (valid) {
