@@ -22,11 +22,13 @@ export function draggingSection(rows: readonly Row[], verdicts: Verdicts): strin
       '(reachable by construction). `reach`: from the rest pose, one target moves in 40 steps towards its chain root and ' +
       'along two perpendicular directions, 40% of the distance, the others pinned; steps an untimed reference solve ' +
       '(`lm` with restarts, 1 s) cannot reach are counted as unreachable and left out of success. Wobble: the largest ' +
-      'distance of a pinned effector from its target (rig units) over the iterates and at the solution; jump: the largest ' +
-      `change of one angle in one step. Target: on target at >= ${pct(DRAG_SUCCESS_TARGET)} of the reachable steps on every rig.`,
+      'distance of a pinned effector from its target (rig units) over the iterates and at the solution; jump max: the largest ' +
+      'change of one angle in one step; jumps: steps where a joint moved more than 5% of the rig size while the dragged ' +
+      'target moved less than 1%; flips: steps where an elbow or knee bent against its anatomical direction or its bend ' +
+      `plane turned more than 90 degrees (bench-node/README.md). Target: on target at >= ${pct(DRAG_SUCCESS_TARGET)} of the reachable steps on every rig.`,
     '',
     table(
-      ['rig', 'experiment', 'steps', 'success (reachable)', 'unreachable', 'wobble during max', 'wobble after max', 'jump max (deg)', 'median per step (us)', 'stop reasons', 'met'],
+      ['rig', 'experiment', 'steps', 'success (reachable)', 'unreachable', 'wobble during max', 'wobble after max', 'jump max (deg)', 'jumps', 'flips', 'median per step (us)', 'stop reasons', 'met'],
       rows.map((r) => [
         r.rig,
         r.experiment,
@@ -36,6 +38,8 @@ export function draggingSection(rows: readonly Row[], verdicts: Verdicts): strin
         length(r.wobble_during_max),
         length(r.wobble_after_max),
         length(r.jump_max_deg),
+        r.jumps === null ? '-' : String(r.jumps),
+        r.flips === null ? '-' : String(r.flips),
         us(r.t_median_s),
         formatStopReasons(r.stop_reasons),
         // Nothing reachable: nothing missed.
