@@ -115,7 +115,7 @@ describe.each(rigsLike('knight'))('the native engine on $label', (knight) => {
       const settings = { method: 'lm', gtol: 1e-9, ftol: 2e-4, tipTolerance: 0.001 * size, timeoutSeconds: 0.2, paper: false, rigSize: size, restarts: 0 };
       const results = await runNative(spec, settings, set, 1, () => {});
       const measurer = new StepMeasurer(spec, core, []);
-      let from = set.starts.slice(0, core.numAngles), largest = 0;
+      let from: Float64Array = set.starts.slice(0, core.numAngles), largest = 0;
       for (const r of results) {
         expect(r.angles).toHaveLength(core.numAngles);
         expect(r.jointMove).toBeCloseTo(measurer.measure(from, r.angles!).jointMove, 9);
