@@ -48,6 +48,9 @@ export interface EmbindSolverResult {
   restarts: number;
   escapes: number;
   chainRestarts: number;
+  outOfReach: boolean;
+  orientationOutOfReach: boolean;
+  goalsGivenUp: number;
   stopReason: string;
   message: string;
   elapsedSeconds: number;

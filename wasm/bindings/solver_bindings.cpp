@@ -25,8 +25,9 @@ using emscripten::val;
 struct SolverResultJs {
   val angles = val::undefined();  // Float64Array copy
   double E = 0, initial_E = 0, gradient_norm = 0, tip_distance = 0;
-  bool reached = false;
+  bool reached = false, out_of_reach = false, orientation_out_of_reach = false;
   int iterations = 0, function_evaluations = 0, jacobian_evaluations = 0, restarts = 0, escapes = 0, chain_restarts = 0;
+  int goals_given_up = 0;
   std::string stop_reason, message;
   double elapsed_s = 0;
 };
@@ -109,7 +110,8 @@ class SolverBinding {
   bool step() { return solver_->step(); }
 
   // { angles, E, initialE, gradNorm, tipDistance, reached, iterations, functionEvaluations,
-  //   jacobianEvaluations, restarts, escapes, chainRestarts, stopReason, message, elapsedSeconds }
+  //   jacobianEvaluations, restarts, escapes, chainRestarts, outOfReach, orientationOutOfReach,
+  //   goalsGivenUp, stopReason, message, elapsedSeconds }
   //   of the solve so far (best angles found).
   SolverResultJs result() const {
     const SolverSummary& s = solver_->summary();
@@ -126,6 +128,9 @@ class SolverBinding {
     r.restarts = s.restarts;
     r.escapes = s.escapes;
     r.chain_restarts = s.chain_restarts;
+    r.out_of_reach = s.out_of_reach;
+    r.orientation_out_of_reach = s.orientation_out_of_reach;
+    r.goals_given_up = s.goals_given_up;
     r.stop_reason = stop_reason_name(s.stop_reason);
     r.message = s.message;
     r.elapsed_s = s.elapsed_s;
@@ -179,6 +184,9 @@ class SolverBinding {
       stats[kReached] = s.reached ? 1 : 0;
       stats[kEscapes] = s.escapes;
       stats[kChainRestarts] = s.chain_restarts;
+      stats[kOutOfReach] = s.out_of_reach ? 1 : 0;
+      stats[kOrientationOutOfReach] = s.orientation_out_of_reach ? 1 : 0;
+      stats[kGoalsGivenUp] = s.goals_given_up;
       return static_cast<int>(s.stop_reason);
     }, -1);
   }
@@ -195,14 +203,15 @@ class SolverBinding {
   // order, so JavaScript reads the offsets from here instead of repeating them.
   enum IoStat {
     kE, kInitialE, kGradNorm, kIterations, kFunctionEvaluations, kJacobianEvaluations, kRestarts, kElapsed,
-    kTipDistance, kReached, kEscapes, kChainRestarts, kIoStats
+    kTipDistance, kReached, kEscapes, kChainRestarts, kOutOfReach, kOrientationOutOfReach, kGoalsGivenUp, kIoStats
   };
 
   // The result numbers' names (as in the result object), indexed by IoStat.
   static val io_stats() {
     static const char* const kNames[kIoStats] = {
         "E", "initialE", "gradNorm", "iterations", "functionEvaluations", "jacobianEvaluations", "restarts",
-        "elapsedSeconds", "tipDistance", "reached", "escapes", "chainRestarts"};
+        "elapsedSeconds", "tipDistance", "reached", "escapes", "chainRestarts", "outOfReach",
+        "orientationOutOfReach", "goalsGivenUp"};
     val names = val::array();
     for (const char* name : kNames) names.call<void>("push", std::string(name));
     return names;
@@ -287,6 +296,9 @@ EMSCRIPTEN_BINDINGS(ik_solvers) {
       .field("restarts", &SolverResultJs::restarts)
       .field("escapes", &SolverResultJs::escapes)
       .field("chainRestarts", &SolverResultJs::chain_restarts)
+      .field("outOfReach", &SolverResultJs::out_of_reach)
+      .field("orientationOutOfReach", &SolverResultJs::orientation_out_of_reach)
+      .field("goalsGivenUp", &SolverResultJs::goals_given_up)
       .field("stopReason", &SolverResultJs::stop_reason)
       .field("message", &SolverResultJs::message)
       .field("elapsedSeconds", &SolverResultJs::elapsed_s);

@@ -26,50 +26,64 @@ Eigen::Vector3d rest_origin(const Rig& rig, int bone) { return rig.bones[bone].r
 }  // namespace
 
 void ChainRestart::resize(const Kinematics& kin) {
-  const int m = kin.num_effectors();
-  first_movable_.assign(m, -1);
-  reach_.assign(m, 0);
-  for (int e = 0; e < m; ++e) {
-    const int bone = kin.rig().effectors[e];
-    const std::vector<int>& chain = kin.effector_chain(e);  // root first
-    for (size_t i = 0; i < chain.size(); ++i) {
-      if (!movable(kin, chain[i])) continue;
-      first_movable_[e] = chain[i];
-      // Joint to joint down the chain, then the effector bone itself: rigid at any pose.
-      double length = kin.rig().bones[bone].length;
-      for (size_t j = i; j + 1 < chain.size(); ++j)
-        length += (rest_origin(kin.rig(), chain[j + 1]) - rest_origin(kin.rig(), chain[j])).norm();
-      reach_[e] = length;
-      break;
-    }
-  }
+  off_.assign(kin.num_effectors(), 0);
   moved_.assign(kin.num_bones(), 0);
   kept_.assign(kin.num_bones(), 0);
   unit_.resize(kin.num_angles());
   anywhere_.resize(kin.num_angles());
 }
 
+void ChainRestart::mark(const Kinematics& kin, const Eigen::Ref<const Eigen::VectorXd>& r, const GoalSet& goals) {
+  const double largest = largest_goal_distance(goals, r);
+  std::fill(kept_.begin(), kept_.end(), 0);
+  for (int e = 0; e < kin.num_effectors(); ++e) {
+    off_[e] = largest > 0 && goal_off_target(goals, r, e, largest);
+    if (!off_[e])
+      for (int b : kin.effector_chain(e)) kept_[b] = 1;
+  }
+}
+
 bool ChainRestart::beyond_reach(const Kinematics& kin, int e, const GoalSet& goals, double slack) const {
-  const int top = first_movable_[e];
-  if (top < 0) return true;  // nothing on its chain moves
-  if (goals.plain()) return (goals.plain_target().segment<3>(3 * e) - kin.joint_origin(top)).norm() >= reach_[e] + slack;
-  const int b = goals.position_block(e);
-  return b >= 0 && (goals.block(b).position - kin.joint_origin(top)).norm() >= reach_[e] + slack;
+  Eigen::Vector3d target;
+  if (goals.plain()) {
+    target = goals.plain_target().segment<3>(3 * e);
+  } else {
+    const int b = goals.position_block(e);
+    if (b < 0) return false;
+    target = goals.block(b).position;
+  }
+  // The top of the chain that can move without moving an on-target effector, and its reach:
+  // joint to joint down the chain, then the effector bone itself (rigid at any pose).
+  const std::vector<int>& chain = kin.effector_chain(e);  // root first
+  const int bone = kin.rig().effectors[e];
+  for (size_t i = 0; i < chain.size(); ++i) {
+    if (!movable(kin, chain[i]) || kept_[chain[i]]) continue;
+    double length = kin.rig().bones[bone].length;
+    for (size_t j = i; j + 1 < chain.size(); ++j)
+      length += (rest_origin(kin.rig(), chain[j + 1]) - rest_origin(kin.rig(), chain[j])).norm();
+    return (target - kin.joint_origin(chain[i])).norm() >= length + slack;
+  }
+  return true;  // nothing on its chain moves without moving an effector on target
+}
+
+bool ChainRestart::beyond_any(const Kinematics& kin, const Eigen::Ref<const Eigen::VectorXd>& r, const GoalSet& goals,
+                              double slack) {
+  mark(kin, r, goals);
+  for (int e = 0; e < kin.num_effectors(); ++e)
+    if (off_[e] && beyond_reach(kin, e, goals, slack)) return true;
+  return false;
 }
 
 bool ChainRestart::propose(const Kinematics& kin, const Eigen::Ref<const Eigen::VectorXd>& best,
                            const Eigen::Ref<const Eigen::VectorXd>& r, const GoalSet& goals,
                            double slack, const QuasiRandom& sequence, long attempt, Eigen::Ref<Eigen::VectorXd> start) {
-  const double largest = largest_goal_distance(goals, r);
-  if (!(largest > 0)) return false;
+  mark(kin, r, goals);
   std::fill(moved_.begin(), moved_.end(), 0);
-  std::fill(kept_.begin(), kept_.end(), 0);
   bool any = false;
   for (int e = 0; e < kin.num_effectors(); ++e) {
-    const bool off = goal_off_target(goals, r, e, largest);
-    if (off && beyond_reach(kin, e, goals, slack)) continue;
-    for (int b : kin.effector_chain(e)) (off ? moved_ : kept_)[b] = 1;
-    any = any || off;
+    if (!off_[e] || beyond_reach(kin, e, goals, slack)) continue;
+    for (int b : kin.effector_chain(e)) moved_[b] = 1;
+    any = true;
   }
   if (!any) return false;
   // Bones shared with an on-target chain stay, unless that leaves nothing to move.

@@ -7,9 +7,10 @@
 // bent leg reaches the target. A chain restart starts a new run from the best point with only the
 // movable angles of the off-target effectors' chains moved, by up to 15, 30, 60 or 120 degrees or
 // anywhere inside their limits, in turn (quasi-random), leaving the bones that also carry an effector on
-// target as they are. An effector whose target lies beyond everything its chain can reach (the
-// distance from the fixed joint of its first movable bone exceeds the sum of the rigid segments
-// below it) is left out: its closest point is not a local accident.
+// target as they are. An effector whose target lies beyond everything its chain can reach
+// without moving an effector on target (the distance from the joint of its first movable bone
+// below the ones shared with on-target chains exceeds the sum of the rigid segments below it) is
+// left out: its closest point is not a local accident.
 #pragma once
 
 #include <Eigen/Core>
@@ -23,7 +24,7 @@ namespace ik {
 
 class ChainRestart {
  public:
-  // Workspace and the per-effector reach for `kin` (allocates).
+  // Workspace for `kin` (allocates).
   void resize(const Kinematics& kin);
 
   // From the best point `best` (#angles, degrees; `kin` posed there) with residual `r`
@@ -36,13 +37,19 @@ class ChainRestart {
                const Eigen::Ref<const Eigen::VectorXd>& r, const GoalSet& goals,
                double slack, const QuasiRandom& sequence, long attempt, Eigen::Ref<Eigen::VectorXd> start);
 
+  // With `kin` posed at a point with residual `r`: is some off-target effector's target beyond
+  // what its chain reaches without moving an effector on target (beyond_reach)? No allocation.
+  bool beyond_any(const Kinematics& kin, const Eigen::Ref<const Eigen::VectorXd>& r, const GoalSet& goals, double slack);
+
  private:
-  // Is effector e's target farther from its chain's fixed joint than the chain can reach?
-  // An effector without a position goal never is.
+  // Which effectors are off target at residual `r` (off_) and which bones carry one on target (kept_).
+  void mark(const Kinematics& kin, const Eigen::Ref<const Eigen::VectorXd>& r, const GoalSet& goals);
+  // Is effector e's target farther from the top of the part of its chain that moves no
+  // effector on target (its first movable bone not in kept_) than that part reaches, plus
+  // `slack`? An effector without a position goal never is. After mark().
   bool beyond_reach(const Kinematics& kin, int e, const GoalSet& goals, double slack) const;
 
-  std::vector<int> first_movable_;  // per effector: the first bone of its chain with a movable angle, or -1
-  std::vector<double> reach_;       // per effector: the rigid segments' lengths from that bone's joint to the tip
+  std::vector<char> off_;           // per effector: off target (after mark())
   std::vector<char> moved_, kept_;  // per bone: on an off-target chain / on an on-target chain
   Eigen::VectorXd unit_, anywhere_;
 };

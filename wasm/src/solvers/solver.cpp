@@ -28,6 +28,10 @@ constexpr int kPaperMaxBacktracks = 2000;
 
 bool finite(double x) { return std::isfinite(x); }
 
+// A run off target has settled when its distance from the goals fell by less than this share of
+// the tip tolerance over Settling::kSteps steps.
+constexpr double kSettleShare = 0.05;
+
 // With soft rows on and the hard goals on target, a step that lowers E by less than this share
 // of E ends the solve (converged_E): near the soft optimum gd and bfgs creep.
 constexpr double kSoftStallShare = 1e-4;
@@ -74,8 +78,8 @@ StopReason Solver::begin(const Eigen::Ref<const Eigen::VectorXd>& angles, const 
   opt_ = next_opt_;
   clock_.reset(opt_.time_budget_s);
   summary_.iterations = summary_.function_evaluations = summary_.jacobian_evaluations = summary_.restarts = 0;
-  summary_.escapes = summary_.chain_restarts = 0;
-  summary_.reached = false;
+  summary_.escapes = summary_.chain_restarts = summary_.goals_given_up = 0;
+  summary_.reached = summary_.out_of_reach = summary_.orientation_out_of_reach = false;
   history_size_ = 0;
   failure_ = nullptr;
   const int rows = incoming_.plain() ? kin_.num_residuals() : incoming_.rows();
@@ -106,6 +110,7 @@ StopReason Solver::begin(const Eigen::Ref<const Eigen::VectorXd>& angles, const 
   goals_ = incoming_;
   if (m_ != goals_.rows() || n_ != kin_.num_angles() || effectors_ != kin_.rig().effectors || layout_ != goals_.layout())
     resize_workspace();
+  priority_.clear();
   restarts_.begin_solve(n_, opt_.seed);
   if (static_cast<int>(history_.size()) != opt_.history_capacity) history_.resize(opt_.history_capacity);
 
@@ -113,8 +118,21 @@ StopReason Solver::begin(const Eigen::Ref<const Eigen::VectorXd>& angles, const 
   kin_.project(a_);
   start_ = a_;
   soft_retried_ = false;
+  settling_.begin_run();
+  settled_ = false;
   reset();
+  priority_damping_.reset(opt_.lm_initial_mu);
   E_ = evaluate(a_, r_);
+  if (finite(E_)) {
+    priority_.note_start(goals_, r_, goal_tolerance());
+    // A target beyond what its chain reaches with the goals met at the start kept there (a hand
+    // dragged past the arm's reach, the rest pinned) is given up at once: no run towards the
+    // least-squares point of all goals, which would pull the others off theirs.
+    if (!opt_.paper_mode && opt_.strict_priority && goals_.num_blocks() > 1 &&
+        chain_restart_.beyond_any(kin_, r_, goals_, goal_tolerance().tip) &&
+        priority_.give_up_next(goals_, r_, goal_tolerance()))
+      summary_.goals_given_up = priority_.count();
+  }
   summary_.stop_reason = StopReason::running;
   if (!finite(E_)) {
     summary_.stop_reason = StopReason::numerical_failure;
@@ -129,6 +147,9 @@ StopReason Solver::begin(const Eigen::Ref<const Eigen::VectorXd>& angles, const 
   summary_.tip_distance = largest_tip_distance(goals_, r_);
   summary_.reached = finite(E_) && on_target();
   summary_.angles = a_;
+  best_rank_ = finite(E_) ? rank() : 0;
+  best_given_up_E_ = priority_.given_up_E(goals_, r_);
+  note_given_up();
   record();
   if (running()) {
     // A start on a stationary point off target (a tip pointing straight away from its target, a
@@ -141,6 +162,7 @@ StopReason Solver::begin(const Eigen::Ref<const Eigen::VectorXd>& angles, const 
   }
   if (close || !running()) clock_.close();  // otherwise the first step's time runs from this call's start
   summary_.elapsed_s = clock_.spent();
+  if (!running()) finish();
   return summary_.stop_reason;
 }
 
@@ -165,6 +187,7 @@ void Solver::resize_workspace() {
   reach_ = rig_reach(kin_);
   escape_.resize(kin_, m_);
   chain_restart_.resize(kin_);
+  priority_.resize(goals_, n_);
   resize(m_, n_);
 }
 
@@ -181,7 +204,7 @@ bool Solver::advance(Clock::time_point begin) {
     summary_.message = "the rig's end effectors changed during the solve; call start() again";
     reason = StopReason::invalid_input;
   } else {
-    switch (iterate()) {
+    switch (priority_.active() ? priority_iterate() : iterate()) {
       case Progress::failed:
         reason = StopReason::numerical_failure;
         summary_.message = failure_ ? failure_ : "numerical failure";
@@ -204,7 +227,10 @@ bool Solver::advance(Clock::time_point begin) {
     }
     // A run stopped off target moves on: a stalled one by a restart, one stopped at a stationary
     // point by an escape or a restart (again while it lands on one).
-    if (reason == StopReason::running && stalls()) move_on(reason);
+    if (reason == StopReason::running && stalls())
+      move_on(reason);
+    else if (reason == StopReason::running && settles())
+      reason = StopReason::zero_step;  // judged as a stop: an escape, a chain restart or a give-up, else the end
     while ((reason == StopReason::zero_step || reason == StopReason::converged_grad) && move_on(reason)) {
     }
   }
@@ -218,6 +244,7 @@ bool Solver::advance(Clock::time_point begin) {
   }
   summary_.stop_reason = settle(reason);
   summary_.elapsed_s = clock_.spent();
+  if (reason != StopReason::running) finish();
   return reason == StopReason::running;
 }
 
@@ -277,6 +304,10 @@ bool Solver::update_derivatives(bool posed) {
   const FreeAngles found = find_free_angles(a_, kin_.lower(), kin_.upper(), g_, free_, free_mask_);
   num_free_ = found.count;
   gradient_norm_ = opt_.paper_mode ? g_.norm() : found.gradient_norm;
+  if (priority_.active()) {
+    if (!priority_.prepare(kin_, J_)) return false;
+    gradient_norm_ = priority_.reduced_gradient_norm(kin_, J_, a_, r_);
+  }
   return finite(gradient_norm_);
 }
 
@@ -324,6 +355,12 @@ StopReason Solver::check_stop(double previous_E) const {
   if (on_target() && (!goals_.soft_on() || gradient_norm_ < opt_.gradient_tolerance ||
                       previous_E - E_ < kSoftStallShare * previous_E))
     return StopReason::converged_E;
+  // Goals given up: the closest point once the held goals are met and the given-up rows'
+  // gradient within their freedom vanishes.
+  if (priority_.active())
+    return gradient_norm_ < opt_.gradient_tolerance && priority_.held_share(goals_, r_, goal_tolerance()) <= 1
+               ? StopReason::converged_grad
+               : StopReason::running;
   if (gradient_norm_ < opt_.gradient_tolerance && !descends_further()) return StopReason::converged_grad;
   return StopReason::running;
 }
@@ -333,14 +370,49 @@ void Solver::record() {
 }
 
 void Solver::note_best() {
-  // A point on target beats any point off it (the tip test is not the E order); then lower E.
-  const bool reached = on_target();
-  if (reached != summary_.reached ? !reached : !(E_ < summary_.E)) return;
+  // A point on target beats any point off it (the tip test is not the E order); with goals given
+  // up, one that meets the held goals beats one that does not, and among those the lower E of
+  // the given-up rows wins; otherwise lower E.
+  const int now = rank();
+  const double given_up_E = priority_.given_up_E(goals_, r_);
+  if (now != best_rank_ ? now < best_rank_ : !(now == 1 ? given_up_E < best_given_up_E_ : E_ < summary_.E)) return;
+  best_rank_ = now;
+  best_given_up_E_ = given_up_E;
   summary_.E = E_;
   summary_.gradient_norm = gradient_norm_;
   summary_.tip_distance = largest_tip_distance(goals_, r_);
-  summary_.reached = reached;
+  summary_.reached = now == 2;
   summary_.angles = a_;
+  note_given_up();
 }
+
+void Solver::note_given_up() {
+  const GoalTolerance tol = goal_tolerance();
+  summary_.out_of_reach = !summary_.reached && priority_.position_given_up(goals_, r_, tol);
+  summary_.orientation_out_of_reach =
+      !summary_.reached && !summary_.out_of_reach && priority_.orientation_given_up(goals_, r_, tol);
+}
+
+bool Solver::settles() {
+  if (opt_.paper_mode || restarts_left() || on_target()) return false;
+  const double E = priority_.active() ? priority_.given_up_E(goals_, r_) : E_;
+  if (!settling_.settled(std::sqrt(2 * E), kSettleShare * goal_tolerance().tip)) return false;
+  // Without goals given up, only a run crawling towards a target beyond its chain's reach has
+  // settled (a slow method still closing on a reachable target has not).
+  settled_ = priority_.active() ||
+             (opt_.strict_priority && chain_restart_.beyond_any(kin_, r_, goals_, goal_tolerance().tip));
+  return settled_;
+}
+
+void Solver::finish() {
+  const bool closest = summary_.stop_reason == StopReason::converged_grad ||
+                       (summary_.stop_reason == StopReason::zero_step && settled_);
+  if (!priority_.active() && !summary_.reached && closest && !opt_.paper_mode) {
+    // Nothing given up: the point is the closest one for every goal.
+    summary_.out_of_reach = summary_.tip_distance >= goal_tolerance().tip || !goals_.has_orientation();
+    summary_.orientation_out_of_reach = !summary_.out_of_reach;
+  }
+}
+
 
 }  // namespace ik

@@ -17,11 +17,14 @@
 #include <vector>
 
 #include "chain_restart.h"
+#include "damping.h"
 #include "deadline.h"
 #include "goals.h"
 #include "kinematics.h"
+#include "priority.h"
 #include "restarts.h"
 #include "saddle_escape.h"
+#include "settling.h"
 #include "solver_options.h"
 #include "time_budget.h"
 
@@ -68,8 +71,18 @@ struct SolverSummary {
   int restarts = 0;             // restarts performed
   int escapes = 0;              // steps along negative curvature out of a stationary point (escape_saddles)
   int chain_restarts = 0;       // restarts of the off-target chains only (chain_restarts)
+  // Strict priority (priority.h), outside paper mode: when the goals cannot all be met, the ones
+  // that can are held within their tolerance and the others given up, brought as close as the
+  // freedom left allows. At `angles`: a position goal was given up and is off target (out of
+  // reach), or only orientation goals were (their positions held: orientation out of reach).
+  bool out_of_reach = false;
+  bool orientation_out_of_reach = false;
+  int goals_given_up = 0;       // goals (3-row blocks) given up in this solve; 0: none (the
+                                // history then falls at every step of a run)
   // Describes `angles`: converged_E if and only if `reached`; converged_grad only with
   // gradient_norm < gradient_tolerance; with restarts, taken from the best point, not the last run.
+  // With goals given up (out_of_reach or orientation_out_of_reach), gradient_norm is that of the
+  // given-up rows within what leaves the held ones alone (Priority::reduced_gradient_norm).
   StopReason stop_reason = StopReason::invalid_input;
   std::string message;          // why, for invalid_input and numerical_failure
   double elapsed_s = 0;         // seconds spent inside start() and step()
@@ -230,6 +243,43 @@ class Solver {
   // From a local minimum off target, outside paper mode: a new run from the best point with the
   // off-target chains moved (chain_restart.h). Returns false if none is left or worth trying.
   bool chain_restart();
+  // Strict priority (solver_priority.cpp). With nothing left to try off target: gives up the
+  // next goal (Priority::give_up_next at the best point) and starts a priority run from the
+  // start angles. Returns false when no goal can be given up.
+  bool give_up_next_goal();
+  // At the best point: is some off-target effector's target beyond what its chain reaches with
+  // the effectors on target kept there (ChainRestart::beyond_any)? Outside paper mode, with
+  // strict_priority.
+  bool beyond_reach();
+  // In priority mode: are the held goals met at the current point?
+  bool held() const;
+  // Could give_up_next_goal() still give a goal up (a budget stop is then not the last word)?
+  bool could_give_up() const;
+  // One iteration of the priority run: the damped task-priority step (priority.h), judged first
+  // by the held goals (while they are beyond kHoldShare of their tolerance), then by the
+  // given-up ones with the held ones kept there.
+  Progress priority_iterate();
+  // How far off a goal may be and count as met (the options' tolerances).
+  GoalTolerance goal_tolerance() const;
+  // The current point's rank: 2 on target, 1 the held goals met (priority mode), 0 otherwise.
+  int rank() const;
+  // Sets the summary's out_of_reach flags for the current point (the new best).
+  void note_given_up();
+  // After an accepted step off target with nothing but a give-up left to try (no restart left,
+  // outside paper mode): has the run settled (settling.h) on a closest point? Its distance: of
+  // the given-up goals in priority mode, else sqrt(2 E).
+  bool settles();
+  Settling settling_;
+  bool settled_ = false;  // the last run ended by settling, not by a stop test
+  // At the end of a solve: the out_of_reach flags (from the given-up goals, or without any, from
+  // a run that ended at a stationary or settled point off target).
+  void finish();
+  Priority priority_;
+  NielsenDamping priority_damping_;
+  int best_rank_ = 0;
+  double best_given_up_E_ = 0;
+  bool chain_run_ = false;      // the priority run began at a chain restart, not at the start angles
+
   // After a run stopped off target with `reason` (zero_step, converged_grad, or running for a
   // stall): leaves the point by an escape (not for a stall) or a restart, counting it as an
   // iteration, and sets `reason` to the stop test at the new point (or numerical_failure).

@@ -1,8 +1,9 @@
 // The Solver's ways out of a run that stopped off target (move_on()): with soft rows on, a new
 // run with them lowered (or dropped); then a whole restart from a quasi-random point
 // (restarts.h), an escape along negative curvature (saddle_escape.h) or a restart of the
-// off-target chains only (chain_restart.h), in that order of preference, within the iteration
-// and time budgets. The rest of the Solver is in solver.cpp.
+// off-target chains only (chain_restart.h), in that order of preference, and when none is left
+// giving up the goals that cannot be met (solver_priority.cpp), within the iteration and time
+// budgets. The rest of the Solver is in solver.cpp.
 #include <cmath>
 
 #include "solver.h"
@@ -37,7 +38,11 @@ bool Solver::stalls() {
   return restarts_.stalls(E_, opt_.stall_iterations);
 }
 
-bool Solver::restarts_left() const { return !opt_.paper_mode && restarts_.used() < opt_.restarts; }
+// With goals given up, a run moves on only by giving up more (solver_priority.cpp): a restart
+// or an escape would judge the point by the weighted sum of all goals.
+bool Solver::restarts_left() const {
+  return !opt_.paper_mode && !priority_.active() && restarts_.used() < opt_.restarts;
+}
 
 bool Solver::chain_restarts_left() const { return !opt_.paper_mode && chain_index_ < opt_.chain_restarts; }
 
@@ -49,6 +54,8 @@ void Solver::lower_soft_terms() {
   const double scale = goals_.soft_scale() * kSoftShrink;
   goals_.set_soft_scale(scale < kSoftFloor ? 0.0 : scale);
   restarts_.begin_run();
+  settling_.begin_run();
+  settled_ = false;
   reset();
   // E changed meaning: the best point's E is measured afresh (poses kin_ there), then the current one's.
   summary_.E = evaluate(summary_.angles, r_trial_);
@@ -59,6 +66,8 @@ void Solver::retry_without_soft_terms() {
   soft_retried_ = true;
   a_ = start_;
   restarts_.begin_run();
+  settling_.begin_run();
+  settled_ = false;
   reset();
   E_ = evaluate(a_, r_);
 }
@@ -66,6 +75,8 @@ void Solver::retry_without_soft_terms() {
 bool Solver::restart() {
   if (!restarts_left()) return false;
   restarts_.next_start(kin_.lower(), kin_.upper(), a_);
+  settling_.begin_run();
+  settled_ = false;
   reset();
   E_ = evaluate(a_, r_);
   return finite(E_);
@@ -81,7 +92,15 @@ bool Solver::escape() {
   r_.swap(r_trial_);
   E_ = found.E;
   reset();
+  settling_.begin_run();
+  settled_ = false;
   return true;
+}
+
+bool Solver::beyond_reach() {
+  if (opt_.paper_mode || !opt_.strict_priority) return false;
+  evaluate(summary_.angles, r_trial_);  // poses kin_ at the best point
+  return chain_restart_.beyond_any(kin_, r_trial_, goals_, goal_tolerance().tip);
 }
 
 bool Solver::chain_restart() {
@@ -94,7 +113,11 @@ bool Solver::chain_restart() {
   if (!chain_restart_.propose(kin_, trial_, r_trial_, goals_, slack, restarts_.sequence(), ++chain_index_, a_))
     return false;
   restarts_.begin_run();
+  settling_.begin_run();
+  settled_ = false;
   reset();
+  chain_run_ = priority_.active();
+  priority_damping_.reset(opt_.lm_initial_mu);
   E_ = evaluate(a_, r_);
   return finite(E_);
 }
@@ -111,23 +134,34 @@ bool Solver::move_on(StopReason& reason) {
   const bool out_of_iterations = summary_.iterations >= opt_.max_iterations;
   if (out_of_iterations || out_of_time()) {
     // The budget, not the problem, ends the solve while restarts of either kind are left.
-    const bool left = restarts_left() || chain_restarts_left();
+    const bool left = restarts_left() || chain_restarts_left() || could_give_up();
     if (left) reason = out_of_iterations ? StopReason::max_iterations : StopReason::timeout;
     return false;
   }
   // Restarts come first while any are left: on random targets escaping first cost more than it
   // saved (native, lm, 1000 restarts: knight 96 -> 184 us mean, beast 75 -> 137 us).
   const bool stationary = reason == StopReason::zero_step || reason == StopReason::converged_grad;
+  // Without restarts: an escape along negative curvature first (a straight limb), unless a
+  // target lies beyond its chain's reach; then the goals that cannot be met are given up; a chain
+  // restart comes after that (in priority mode, moving the given-up chains only), or instead of
+  // it when no goal can be given up (one goal, or strict_priority off).
+  const bool last_resort = stationary && !restarts_left();
+  const bool prioritised = priority_.active();
   if (soften)
     lower_soft_terms();  // counted below as a step, like a restart
   else if (retry)
     retry_without_soft_terms();
-  else if (stationary && !restarts_left() && escape())
+  else if (!prioritised && last_resort && !beyond_reach() && escape())
     ++summary_.escapes;
-  else if (stationary && !restarts_left() && chain_restart())
+  else if (!prioritised && last_resort && give_up_next_goal()) {
+  } else if (!prioritised && last_resort && chain_restart())
     ++summary_.chain_restarts;
-  else if (restart())
+  else if (!prioritised && restart())
     ++summary_.restarts;
+  else if (prioritised && !held() && !chain_run_ && give_up_next_goal()) {
+  } else if (prioritised && stationary && chain_restart())
+    ++summary_.chain_restarts;  // the given-up chains moved, the held ones kept (a run that
+                                // fails to keep them is not a reason to give up more)
   else
     return false;
   ++summary_.iterations;

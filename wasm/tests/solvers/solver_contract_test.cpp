@@ -71,7 +71,9 @@ void expect_stepping_equals_solving(const std::string& method, const test::TestR
     // The history holds E at the start and after every iteration.
     ASSERT_EQ(solved->error_history().size(), b.iterations + 1);
     EXPECT_EQ(solved->error_history()[0], b.initial_E);
-    for (int k = 1; k <= b.iterations; ++k) EXPECT_LT(solved->error_history()[k], solved->error_history()[k - 1]);
+    // (A run with goals given up starts again from the start angles: strict_priority_test.)
+    if (b.goals_given_up == 0)
+      for (int k = 1; k <= b.iterations; ++k) EXPECT_LT(solved->error_history()[k], solved->error_history()[k - 1]);
   }
 }
 

@@ -113,6 +113,13 @@ export interface SolverOptions {
    * chains keep their pose. Default 64 per solve.
    */
   chainRestarts?: number;
+  /**
+   * When the goals cannot all be met (not in paper mode): the ones that can are held within their
+   * tolerance and the others brought as close as the freedom left allows, an orientation given
+   * up before a position; a target out of reach no longer pulls the others off theirs (result:
+   * outOfReach, orientationOutOfReach). false: the least-squares point of all goals. Default true.
+   */
+  strictPriority?: boolean;
 }
 
 export interface SolverResult {
@@ -136,6 +143,16 @@ export interface SolverResult {
   escapes: number;
   /** Restarts of the off-target chains only (chainRestarts). */
   chainRestarts: number;
+  /**
+   * Strict priority (option strictPriority): a position goal could not be met and is at its
+   * closest point, with every goal that can be met on target (the others are not pulled off
+   * theirs). Also true for a solve that ended at the closest point of goals that cannot all be met.
+   */
+  outOfReach: boolean;
+  /** Only orientation goals could not be met: every position goal is on target (position first). */
+  orientationOutOfReach: boolean;
+  /** Goals (an effector's position or orientation) given up in this solve to hold the others. */
+  goalsGivenUp: number;
   stopReason: StopReason;
   /** Explains numerical_failure; empty otherwise. */
   message: string;
@@ -301,6 +318,9 @@ export class IkSolver {
       restarts: io[s + at.restarts],
       escapes: io[s + at.escapes],
       chainRestarts: io[s + at.chainRestarts],
+      outOfReach: io[s + at.outOfReach] === 1,
+      orientationOutOfReach: io[s + at.orientationOutOfReach] === 1,
+      goalsGivenUp: io[s + at.goalsGivenUp],
       tipDistance: io[s + at.tipDistance],
       reached: io[s + at.reached] === 1,
       stopReason,

@@ -1,0 +1,206 @@
+#include "priority.h"
+
+#include <cmath>
+
+#include "small_cholesky.h"
+
+namespace ik {
+
+namespace {
+
+// Block b's error as a share of its tolerance: a position block's distance over the tip
+// tolerance, an orientation block's angle over the orientation tolerance.
+double block_share(const GoalSet& goals, const Eigen::Ref<const Eigen::VectorXd>& r, int b, const GoalTolerance& tol) {
+  const GoalSet::Block& g = goals.block(b);
+  const double size = r.segment<3>(3 * b).norm() / g.scale;  // rig units, or radians
+  return g.orientation ? size / (kRadPerDeg * tol.orientation_deg) : size / tol.tip;
+}
+
+}  // namespace
+
+void Priority::resize(const GoalSet& goals, int angles) {
+  const int m = goals.rows();
+  given_up_.assign(goals.num_blocks(), 0);
+  off_at_start_.assign(goals.num_blocks(), 0);
+  given_up_count_ = 0;
+  held_rows_ = goals.hard_rows();
+  movable_.resize(angles);
+  normal_.resize(m, m);
+  reduced_.resize(m, m);
+  shifted_.resize(m, m);
+  held_normal_.resize(m, m);
+  rhs_.resize(m);
+  jd_.resize(m);
+  y_.resize(m);
+  held_y_.resize(m);
+  gradient_.resize(angles);
+  active_set_.resize(angles);
+}
+
+void Priority::note_start(const GoalSet& goals, const Eigen::Ref<const Eigen::VectorXd>& r, const GoalTolerance& tol) {
+  for (int b = 0; b < goals.num_blocks(); ++b) off_at_start_[b] = tol.tip > 0 && tol.orientation_deg > 0 && block_share(goals, r, b, tol) > 1;
+}
+
+void Priority::clear() {
+  std::fill(given_up_.begin(), given_up_.end(), 0);
+  given_up_count_ = 0;
+}
+
+void Priority::set_given_up(const std::vector<char>& given_up) {
+  if (given_up.size() != given_up_.size()) return;
+  given_up_ = given_up;
+  given_up_count_ = 0;
+  for (char c : given_up_) given_up_count_ += c;
+}
+
+bool Priority::give_up_next(const GoalSet& goals, const Eigen::Ref<const Eigen::VectorXd>& r, const GoalTolerance& tol) {
+  if (!(tol.tip > 0 && tol.orientation_deg > 0)) return false;
+  int pick = -1;
+  double worst = 1;  // only a block beyond its tolerance
+  for (int pass = 0; pass < 4 && pick < 0; ++pass) {
+    const bool orientation = pass % 2 == 0, asked_anew = pass < 2;
+    for (int b = 0; b < goals.num_blocks(); ++b) {
+      if (given_up_[b] || goals.block(b).orientation != orientation || (asked_anew && !off_at_start_[b])) continue;
+      const double share = block_share(goals, r, b, tol);
+      if (share > worst) worst = share, pick = b;
+    }
+  }
+  if (pick < 0 || given_up_count_ + 1 >= goals.num_blocks()) return false;
+  given_up_[pick] = 1;
+  ++given_up_count_;
+  return true;
+}
+
+double Priority::held_share(const GoalSet& goals, const Eigen::Ref<const Eigen::VectorXd>& r, const GoalTolerance& tol) const {
+  double worst = 0;
+  for (int b = 0; b < goals.num_blocks(); ++b)
+    if (!given_up_[b]) worst = std::max(worst, block_share(goals, r, b, tol));
+  return worst;
+}
+
+double Priority::held_E(const GoalSet& goals, const Eigen::Ref<const Eigen::VectorXd>& r) const {
+  double sum = 0;
+  for (int b = 0; b < goals.num_blocks(); ++b)
+    if (!given_up_[b]) sum += r.segment<3>(3 * b).squaredNorm();
+  return 0.5 * sum;
+}
+
+double Priority::given_up_E(const GoalSet& goals, const Eigen::Ref<const Eigen::VectorXd>& r) const {
+  return 0.5 * r.squaredNorm() - held_E(goals, r);
+}
+
+bool Priority::position_given_up(const GoalSet& goals, const Eigen::Ref<const Eigen::VectorXd>& r,
+                                 const GoalTolerance& tol) const {
+  for (int b = 0; b < goals.num_blocks(); ++b)
+    if (given_up_[b] && !goals.block(b).orientation && block_share(goals, r, b, tol) > 1) return true;
+  return false;
+}
+
+bool Priority::orientation_given_up(const GoalSet& goals, const Eigen::Ref<const Eigen::VectorXd>& r,
+                                    const GoalTolerance& tol) const {
+  for (int b = 0; b < goals.num_blocks(); ++b)
+    if (given_up_[b] && goals.block(b).orientation && block_share(goals, r, b, tol) > 1) return true;
+  return false;
+}
+
+bool Priority::prepare(const Kinematics& kin, const Eigen::MatrixXd& J) {
+  int count = 0;
+  movable_.resize(kin.num_angles());  // within the capacity resize() gave
+  for (int j = 0; j < kin.num_angles(); ++j)
+    if (kin.lower()[j] < kin.upper()[j]) movable_[count++] = j;
+  movable_.resize(count);
+  normal_.setZero();
+  for (int c = 0; c < count; ++c) normal_.noalias() += J.col(movable_[c]) * J.col(movable_[c]).transpose();
+  // The mean diagonal over the rows in use: soft rows the Solver dropped (all 0) do not count.
+  int rows = 0;
+  for (int i = 0; i < normal_.rows(); ++i) rows += normal_(i, i) > 0 || i < held_rows_;
+  scale_ = rows > 0 ? normal_.trace() / rows : 0;
+  return std::isfinite(scale_);
+}
+
+Priority::Status Priority::step(const Kinematics& kin, const Eigen::MatrixXd& J, const Eigen::Ref<const Eigen::VectorXd>& a,
+                                const Eigen::Ref<const Eigen::VectorXd>& r, double lambda, double floor,
+                                const Deadline& deadline, Eigen::Ref<Eigen::VectorXd> trial) {
+  const int m = static_cast<int>(normal_.rows());
+  reduced_ = normal_;
+  rhs_ = r;
+  const auto solve_system = [&] {
+    shifted_ = reduced_;
+    for (int i = 0; i < m; ++i) shifted_(i, i) += held_row(i) ? kHeldDamping * lambda + floor : lambda;
+    if (!small_cholesky(shifted_, m)) return false;
+    y_ = rhs_;
+    small_cholesky_solve(shifted_, m, y_);
+    return true;
+  };
+  const auto proposed = [&](int i) { return -J.col(i).dot(y_); };
+  const auto take_out = [&](int i, double d) {
+    rhs_.noalias() += d * J.col(i);
+    reduced_.noalias() -= J.col(i) * J.col(i).transpose();
+  };
+  switch (active_set_.run(a, kin.lower(), kin.upper(), movable_, static_cast<int>(movable_.size()),
+                          ActiveSet::Fix::past_limit, deadline, solve_system, proposed, take_out)) {
+    case ActiveSet::Status::solve_failed: return Status::failed;
+    case ActiveSet::Status::out_of_time: return Status::out_of_time;
+    case ActiveSet::Status::done: break;
+  }
+  trial = a;
+  jd_.setZero();
+  for (int j : movable_) {
+    const double d = active_set_.step()[j];
+    if (d == 0) continue;
+    trial[j] += d;
+    jd_.noalias() += d * J.col(j);
+  }
+  kin.project(trial);
+  return Status::ok;
+}
+
+double Priority::predicted_decrease(const Eigen::Ref<const Eigen::VectorXd>& r, bool held) const {
+  double sum = 0;
+  for (int i = 0; i < r.size(); ++i)
+    if (held_row(i) == held) sum -= r[i] * jd_[i] + 0.5 * jd_[i] * jd_[i];
+  return sum;
+}
+
+double Priority::reduced_gradient_norm(const Kinematics& kin, const Eigen::MatrixXd& J,
+                                       const Eigen::Ref<const Eigen::VectorXd>& a,
+                                       const Eigen::Ref<const Eigen::VectorXd>& r) {
+  const int m = static_cast<int>(normal_.rows());
+  // The given-up rows' residual (held rows zeroed) and its gradient over the movable angles.
+  y_ = r;
+  for (int i = 0; i < m; ++i)
+    if (held_row(i)) y_[i] = 0;
+  gradient_.setZero();
+  for (int j : movable_) gradient_[j] = J.col(j).dot(y_);
+  // Less its part in the held rows' row space: g - Jh^T (Jh Jh^T)^-1 Jh g.
+  held_normal_ = normal_;
+  for (int i = 0; i < m; ++i) {
+    if (held_row(i)) {
+      held_normal_(i, i) += 1e-12 * scale_ + 1e-300;
+      continue;
+    }
+    held_normal_.row(i).setZero();
+    held_normal_.col(i).setZero();
+    held_normal_(i, i) = 1;
+  }
+  held_y_.setZero();
+  for (int j : movable_)
+    for (int i = 0; i < m; ++i)
+      if (held_row(i)) held_y_[i] += J(i, j) * gradient_[j];
+  if (small_cholesky(held_normal_, m)) {
+    small_cholesky_solve(held_normal_, m, held_y_);
+    for (int j : movable_)
+      for (int i = 0; i < m; ++i)
+        if (held_row(i)) gradient_[j] -= J(i, j) * held_y_[i];
+  }
+  // An angle on a limit that the descent direction -g pushes outward cannot move.
+  double sum = 0;
+  for (int j : movable_) {
+    const double g = gradient_[j];
+    if ((a[j] <= kin.lower()[j] && g > 0) || (a[j] >= kin.upper()[j] && g < 0)) continue;
+    sum += g * g;
+  }
+  return std::sqrt(sum);
+}
+
+}  // namespace ik

@@ -1,0 +1,106 @@
+// Strict priority in the Solver (priority.h): when nothing else is left to try off target, the
+// goal farthest beyond its tolerance is given up (orientations before positions) and a priority
+// run starts from the solve's start angles: every step holds the other goals (Newton on their
+// rows) and brings the given-up ones as close as the freedom left allows. Every method takes
+// these steps once goals are given up (outside paper mode), so all of them follow one order:
+// reachable goals within their tolerance, then the closest point for the rest. The rest of the
+// Solver is in solver.cpp and solver_move_on.cpp.
+#include <algorithm>
+#include <cmath>
+
+#include "goal_residual.h"
+#include "solver.h"
+
+namespace ik {
+
+namespace {
+
+// While a held goal is beyond this share of its tolerance, a step is judged by the held goals
+// alone (they are brought back first); below it, by the given-up ones, with the held ones kept
+// below it or where they were.
+constexpr double kHoldShare = 0.5;
+
+}  // namespace
+
+GoalTolerance Solver::goal_tolerance() const {
+  GoalTolerance tol;
+  tol.tip = opt_.tip_tolerance > 0 ? opt_.tip_tolerance : std::sqrt(2 * opt_.error_tolerance);
+  tol.orientation_deg = opt_.orientation_tolerance_deg;
+  return tol;
+}
+
+int Solver::rank() const {
+  if (on_target()) return 2;
+  return priority_.active() && priority_.held_share(goals_, r_, goal_tolerance()) <= 1 ? 1 : 0;
+}
+
+bool Solver::held() const { return priority_.held_share(goals_, r_, goal_tolerance()) <= 1; }
+
+bool Solver::could_give_up() const {
+  if (opt_.paper_mode || !opt_.strict_priority || summary_.reached || goals_.num_blocks() < 2) return false;
+  return !priority_.active() || !held();
+}
+
+bool Solver::give_up_next_goal() {
+  if (opt_.paper_mode || !opt_.strict_priority) return false;
+  const GoalTolerance tol = goal_tolerance();
+  if (priority_.active()) {
+    // The priority run ended here with a held goal off target: one more is given up.
+    if (!priority_.give_up_next(goals_, r_, tol)) return false;
+  } else {
+    evaluate(summary_.angles, r_trial_);  // the best point so far (the least-squares closest point)
+    if (!priority_.give_up_next(goals_, r_trial_, tol)) return false;
+  }
+  summary_.goals_given_up = priority_.count();
+  // The best point ranked again under the new levels.
+  evaluate(summary_.angles, r_trial_);
+  best_rank_ = priority_.held_share(goals_, r_trial_, tol) <= 1 ? 1 : 0;
+  best_given_up_E_ = priority_.given_up_E(goals_, r_trial_);
+  a_ = start_;
+  chain_run_ = false;
+  restarts_.begin_run();
+  settling_.begin_run();
+  settled_ = false;
+  reset();
+  priority_damping_.reset(opt_.lm_initial_mu);
+  E_ = evaluate(a_, r_);
+  return std::isfinite(E_);
+}
+
+Solver::Progress Solver::priority_iterate() {
+  const double s = priority_.scale();
+  if (!std::isfinite(s)) return fail("the Jacobian is not finite");
+  if (!(s > 0)) return Progress::stuck;  // no movable angle moves a goal
+  const GoalTolerance tol = goal_tolerance();
+  const double held_before = priority_.held_share(goals_, r_, tol);
+  const bool restoring = held_before > kHoldShare;
+  const double held_E = priority_.held_E(goals_, r_), given_up_E = priority_.given_up_E(goals_, r_);
+  for (int attempt = 0; attempt < opt_.lm_max_rejections; ++attempt) {
+    if (attempt > 0 && time_is_up()) return Progress::stuck;
+    const double lambda = priority_damping_.shift(2 * given_up_E / (reach_ * reach_), opt_.lm_damping_floor, s);
+    switch (priority_.step(kin_, J_, a_, r_, lambda, opt_.lm_damping_floor * s, deadline(), trial_)) {
+      case Priority::Status::failed: return fail("the priority step's matrix could not be factorised");
+      case Priority::Status::out_of_time: gave_up_for_time(); return Progress::stuck;
+      case Priority::Status::ok: break;
+    }
+    if (trial_ == a_) return Progress::stuck;
+    const double E_trial = evaluate(trial_, r_trial_);
+    bool accepted;
+    if (restoring) {
+      accepted = priority_damping_.accept(held_E, priority_.held_E(goals_, r_trial_), priority_.predicted_decrease(r_, true));
+    } else {
+      const bool held = priority_.held_share(goals_, r_trial_, tol) <= std::max(kHoldShare, held_before);
+      const double trial_given_up_E = held ? priority_.given_up_E(goals_, r_trial_) : INFINITY;
+      accepted = priority_damping_.accept(given_up_E, trial_given_up_E, priority_.predicted_decrease(r_, false));
+    }
+    if (accepted && std::isfinite(E_trial)) {
+      a_.swap(trial_);
+      r_.swap(r_trial_);
+      E_ = E_trial;
+      return Progress::moved;
+    }
+  }
+  return Progress::stuck;
+}
+
+}  // namespace ik
