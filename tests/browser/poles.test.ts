@@ -4,7 +4,10 @@
 // handles off no poles are sent. After a hand target is pulled in (the arm bends), dragging that
 // arm's pole handle far to one side turns the elbow to that side of the shoulder-wrist line while
 // the hand stays on its target. Reset re-places the poles; changing the effectors rebuilds them.
-// Shortcuts work after clicking a panel checkbox, not while typing in a number field.
+// On the knight, whose arms hang straight, the elbow pole starts behind the elbow (the way it
+// bends); after the hand is pulled in a little, the pole dragged 0.4 units sideways carries the
+// elbow along while the hand stays on target. Shortcuts work after clicking a panel checkbox, not while typing in a
+// number field.
 import type { Page } from 'playwright-core';
 import { describe, expect, it } from 'vitest';
 
@@ -57,6 +60,32 @@ async function poleNamed(page: Page, pattern: RegExp): Promise<number> {
   }, pattern.source);
   if (j < 0) throw new Error(`no pole handle on ${pattern}`);
   return j;
+}
+
+/**
+ * Drags the selected pole handle j with the mouse the way `towards` (rig units) looks on the
+ * screen until its pole has moved `distance` rig units: the gizmo moves it in the plane facing
+ * the camera, so a second drag along the same line makes up what the first fell short.
+ */
+async function dragPoleAcross(page: Page, j: number, towards: V3, distance: number): Promise<void> {
+  const pole = async (): Promise<V3> => {
+    const p = await page.evaluate((i) => window.ikPage?.poleHandles()[i]?.point ?? null, j);
+    if (!p) throw new Error(`no pole handle ${j}`);
+    return p;
+  };
+  const start = await pole();
+  const pixels = await page.evaluate(
+    ([p, q]) => {
+      const a = window.ikPage?.worldToScreen(p), b = window.ikPage?.worldToScreen(q);
+      return a && b ? { x: b.x - a.x, y: b.y - a.y } : null;
+    },
+    [start, [start[0] + towards[0], start[1] + towards[1], start[2] + towards[2]]] as [V3, V3],
+  );
+  if (!pixels) throw new Error('no screen position');
+  await dragPoleBy(page, j, pixels.x, pixels.y, 20);
+  const moved = Math.hypot(...sub(await pole(), start));
+  const more = distance / moved - 1;
+  if (moved > 0 && Math.abs(more) > 0.01) await dragPoleBy(page, j, pixels.x * more, pixels.y * more, 10);
 }
 
 function poleBox(page: Page) {
@@ -190,6 +219,44 @@ describe('pole handles', () => {
     const knight = await page.evaluate(() => (window.ikPage?.poleHandles() ?? []).map((p) => window.ikPage?.boneNames()[p.bone]));
     expect(knight.sort()).toEqual(['forearm.L', 'forearm.R', 'shin.L', 'shin.R']);
     expect(await poleCount(page)).toEqual({ shown: 4, sent: 4 });
+    expect(errors).toEqual([]);
+  });
+
+  it('the knight’s elbow pole starts behind its straight arm; dragged 0.4 units sideways it carries the elbow along, the hand within δ', async (ctx) => {
+    const { page, errors } = await openPage(env.browser, ctx);
+    await gotoRig(page, env.url, 'knight');
+    await poleBox(page).click();
+    const pole = await poleNamed(page, /^forearm\.L$/);
+    const rest = await page.evaluate((j) => window.ikPage?.poleHandles()[j] ?? null, pole);
+    if (!rest) throw new Error('no pole');
+    // The arm hangs straight (its elbow 1.2 cm off the shoulder-wrist line, sideways): the pole
+    // goes the way the elbow bends, behind it (the knight faces +Z), one arm's length away.
+    const length = Math.hypot(...sub(rest.joint, rest.root)) + Math.hypot(...sub(rest.tip, rest.joint));
+    expect((rest.point[2] - rest.joint[2]) / length).toBeLessThan(-0.9);
+    // Bend the arm as a user starts: its hand a little towards the body. The elbow bends back, to its pole.
+    const hand = await selectTarget(page, await effectorNamed(page, /^hand\.L$/));
+    await dragTowardsRoot(page, hand, 0.2);
+    await waitForConvergence(page);
+    expect(await sideOf(page, pole)).toBeGreaterThan(0.9);
+    const bent = await page.evaluate((j) => window.ikPage?.poleHandles()[j] ?? null, pole);
+    if (!bent) throw new Error('no pole');
+
+    // The pole dragged 0.4 units towards the body's middle (-X on the screen).
+    await selectTarget(page, await effectorNamed(page, /^head$/)); // the gizmo off the arm first
+    await selectPole(page, pole);
+    await dragPoleAcross(page, pole, [-0.4, 0, 0], 0.4);
+    await waitForConvergence(page);
+    const after = await page.evaluate((j) => window.ikPage?.poleHandles()[j] ?? null, pole);
+    if (!after) throw new Error('no pole');
+    const dragged = sub(after.point, bent.point);
+    expect(Math.abs(Math.hypot(...dragged) - 0.4)).toBeLessThan(0.02);
+    // The elbow follows the pole: it moves at least 0.1 the way the pole went (0.01 before poles
+    // were placed where the elbow bends and pulled it within reach of the pole).
+    const followed = dot(sub(after.joint, bent.joint), dragged) / Math.hypot(...dragged);
+    console.log(`knight elbow pole dragged ${Math.hypot(...dragged).toFixed(3)}: the elbow moved ${Math.hypot(...sub(after.joint, bent.joint)).toFixed(4)}, ${followed.toFixed(4)} the pole's way, ${(Math.hypot(...sub(after.point, bent.joint)) - Math.hypot(...sub(after.point, after.joint))).toFixed(4)} nearer it; hand error ${(await worstTipError(page)).toExponential(2)}`);
+    expect(followed).toBeGreaterThan(0.1);
+    expect(await sideOf(page, pole)).toBeGreaterThan(0.9);
+    expect(await worstTipError(page)).toBeLessThan(await page.evaluate(() => window.ikPage?.tipTolerance() ?? 0));
     expect(errors).toEqual([]);
   });
 

@@ -1,6 +1,6 @@
 // Bend hints and rest rows (goals.h, pole_residual.h, rest_residual.h): their analytic Jacobian
-// against central differences on every rig (including a straight limb), the residual's zeros,
-// and GoalSet::set()'s refusals naming the pole or bone.
+// against central differences on every rig (including a straight limb and poles beyond reach), the
+// residual's zeros, the reach row, and GoalSet::set()'s refusals naming the pole or bone.
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -71,7 +71,9 @@ TEST(PoleResidual, JacobianMatchesCentralDifferencesOnEveryRig) {
       const Eigen::VectorXd a =
           sample == 0 ? Eigen::VectorXd::Zero(kin.num_angles()).eval() : test::random_angles(kin, rng);
       GoalSet goals;
-      ASSERT_EQ(goals.set(kin, soft_goals(kin, a, rng, sample == 3 ? 0.01 : 1.0)), "");
+      // Sample 3: poles near the elbows; sample 2: beyond every limb's length (the reach rows on).
+      const double offset = sample == 3 ? 0.01 : sample == 2 ? 3 * rig_reach(kin) : 1.0;
+      ASSERT_EQ(goals.set(kin, soft_goals(kin, a, rng, offset)), "");
       goals.set_rest(kin, 0.3, sample % 2 == 1, test::random_angles(kin, rng));
       ASSERT_GT(goals.num_rest(), 0);
       const double error = jacobian_error(kin, goals, a);
@@ -97,7 +99,10 @@ TEST(PoleResidual, StraightLimbHasAFiniteResidualThatBendsTowardsThePole) {
   goal_jacobian(kin, set, J);
   ASSERT_TRUE(r.allFinite());
   ASSERT_TRUE(J.allFinite());
-  EXPECT_NEAR(r.segment<3>(3).norm(), rig_reach(kin), 1e-12);  // |q_hat| = 1, times w L
+  // Across the limb (+x): |q_hat| = 1, times w L; along it, the reach row (the pole is 3 from the
+  // elbow, beyond the limb's length 2).
+  EXPECT_NEAR(r.segment<2>(4).norm(), rig_reach(kin), 1e-12);
+  EXPECT_GT(r[3], 0);
   // A small step down the gradient bends the limb: the elbow (the head of bone 1) leaves the
   // shoulder-wrist axis on the pole's side (+y).
   const Eigen::VectorXd g = J.transpose() * r;
@@ -109,15 +114,68 @@ TEST(PoleResidual, StraightLimbHasAFiniteResidualThatBendsTowardsThePole) {
   EXPECT_LT(jacobian_error(kin, set, a), 1e-6);
 }
 
-TEST(PoleResidual, ZeroWhenTheLimbBendsTowardsThePoleHoweverFar) {
+// The swivel rows (across the shoulder-wrist axis u; the reach row lies along it) vanish however
+// far the limb bends towards the pole, and are 2 s for the mirrored bend.
+TEST(PoleResidual, SwivelRowsAreZeroWhenTheLimbBendsTowardsThePoleHoweverFar) {
   const Eigen::Vector3d S(0, 0, 0), T(1.5, 0, 0), P(0.2, 5, 1e-9);
+  const Eigen::Vector3d u = (T - S).normalized();
+  const auto across = [&u](const Eigen::Vector3d& r) { return (r - r.dot(u) * u).norm(); };
   for (double bend : {0.1, 0.4, 0.9}) {
     const Eigen::Vector3d M(0.7, bend, 0);
-    EXPECT_LT(pole_residual(S, M, T, P, 0.05, 3).norm(), 1e-8) << bend;
-    EXPECT_NEAR(pole_residual(S, Eigen::Vector3d(0.7, -bend, 0), T, P, 0.05, 3).norm(), 6, 1e-6) << bend;
+    EXPECT_LT(across(pole_residual(S, M, T, P, 0.05, 3)), 1e-8) << bend;
+    EXPECT_NEAR(across(pole_residual(S, Eigen::Vector3d(0.7, -bend, 0), T, P, 0.05, 3)), 6, 1e-6) << bend;
   }
+  // Within one limb length of the elbow, nothing at all.
+  EXPECT_LT(pole_residual(S, Eigen::Vector3d(0.7, 0.4, 0), T, Eigen::Vector3d(0.7, 1.5, 0), 0.05, 3).norm(), 1e-12);
   // Folded onto itself (T = S): no axis, no row.
   EXPECT_EQ(pole_residual(S, Eigen::Vector3d(1, 0, 0), S, P, 0.05, 3), Eigen::Vector3d::Zero());
+}
+
+// Central differences of pole_residual() in S, M and T (step h rig units) against pole_partials();
+// returns the largest error relative to the largest entry.
+double partials_error(const Eigen::Vector3d& S, const Eigen::Vector3d& M, const Eigen::Vector3d& T,
+                      const Eigen::Vector3d& P, double delta, double s, double h = 1e-6) {
+  PolePartials d;
+  pole_partials(S, M, T, P, delta, s, d);
+  const Eigen::Matrix3d* analytic[3] = {&d.shoulder, &d.elbow, &d.wrist};
+  double worst = 0, scale = 1e-12;
+  for (int point = 0; point < 3; ++point)
+    for (int c = 0; c < 3; ++c) {
+      Eigen::Vector3d x[3] = {S, M, T}, y[3] = {S, M, T};
+      x[point][c] += h;
+      y[point][c] -= h;
+      const Eigen::Vector3d numeric =
+          (pole_residual(x[0], x[1], x[2], P, delta, s) - pole_residual(y[0], y[1], y[2], P, delta, s)) / (2 * h);
+      worst = std::max(worst, (analytic[point]->col(c) - numeric).cwiseAbs().maxCoeff());
+      scale = std::max(scale, numeric.cwiseAbs().maxCoeff());
+    }
+  return worst / scale;
+}
+
+// The reach row (pole_residual.h): nothing while the elbow lies within one limb length of the
+// pole, whichever side it bends to; beyond, a row along the shoulder-wrist axis growing with the
+// distance, at most s kappa; its partials match central differences.
+TEST(PoleResidual, ReachRowPullsTheElbowOnlyFromBeyondOneLimbLength) {
+  const Eigen::Vector3d S(0, 0, 0), M(0.7, 0.2, 0), T(1.5, 0, 0);
+  const double limb = M.norm() + (T - M).norm(), s = 3;
+  const Eigen::Vector3d u = (T - S).normalized();
+  // Bent towards the pole, the pole one limb length (or less) from the elbow: r = 0.
+  for (double share : {0.2, 0.99})
+    EXPECT_LT(pole_residual(S, M, T, M + share * limb * Eigen::Vector3d::UnitY(), 0.05, s).norm(), 1e-12) << share;
+  // Further along the bend: the swivel rows stay 0, the reach row grows (less than s kappa = 0.03).
+  double last = 0;
+  for (double share : {1.1, 2.0, 10.0}) {
+    const Eigen::Vector3d r = pole_residual(S, M, T, M + share * limb * Eigen::Vector3d::UnitY(), 0.05, s);
+    EXPECT_LT((r - r.dot(u) * u).norm(), 1e-12) << share;
+    EXPECT_GT(r.dot(u), last) << share;
+    EXPECT_LT(r.dot(u), 0.03) << share;
+    last = r.dot(u);
+  }
+  // A pole beyond reach and off the bend, and one on the other side: partials against differences.
+  for (const Eigen::Vector3d& P : {Eigen::Vector3d(2, 1.5, 1), Eigen::Vector3d(0.3, -2, 0.5)}) {
+    ASSERT_GT((P - M).norm(), limb);
+    EXPECT_LT(partials_error(S, M, T, P, 0.05, s), 1e-6) << P.transpose();
+  }
 }
 
 TEST(PoleGoals, SetRefusesBadPolesNamingTheirIndexAndField) {

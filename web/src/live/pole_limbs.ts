@@ -9,7 +9,7 @@
 import type { RigSpec } from '../ik/rig_spec.js';
 import { bendAxis } from '../rig/anatomy_axes.js';
 import { bodyFrame } from '../rig/anatomy_frame.js';
-import { cross, norm, restAxis, restOrigin, sub, unit, type Vec3 } from '../rig/anatomy_vec.js';
+import { cross, norm, restAxis, restOrigin, scale, sub, unit, type Vec3 } from '../rig/anatomy_vec.js';
 import type { HumanoidMap, HumanoidRole } from '../rig/humanoid_roles.js';
 
 /** One limb that takes a pole. */
@@ -20,7 +20,8 @@ export interface PoleLimb {
    * Unit direction, rig coordinates at the rest pose, in which the joint (elbow, knee) leaves the
    * line from the limb's root to its tip when the limb bends: for a humanoid the way its knees
    * (forward) and elbows (back) bend, from anatomy_axes.ts (a rest pose bent the other way wins);
-   * otherwise the rig's facing, glTF's +Z (pole_placement.ts takes it across the limb).
+   * otherwise the way the lower bone's limits let it bend (limitsBend), else the rig's facing,
+   * glTF's +Z (pole_placement.ts takes it across the limb).
    */
   restBend: Vec3;
 }
@@ -29,6 +30,21 @@ const LOWER_ROLES: readonly HumanoidRole[] = ['leftLowerArm', 'rightLowerArm', '
 
 /** The rigs' facing where no humanoid says otherwise (glTF's forward). */
 const FACING: Vec3 = [0, 0, 1];
+
+/**
+ * The way limb `bone` bends by its own limits, for a rig without a humanoid map: its bend angle
+ * (the middle one, about the bone's local Z: rig_spec.ts's XZX angles) reaching further one way
+ * than the other turns the tip that way about Z, towards Z x bone for a positive bend, and the
+ * joint leaves the root-tip line the other way: bone x Z. Null when the range is even (a robot's
+ * hinge) or the bone cannot bend.
+ */
+function limitsBend(spec: RigSpec, bone: number): Vec3 | null {
+  const lo = spec.lower[3 * bone + 1], hi = spec.upper[3 * bone + 1];
+  const lean = hi + lo; // > 0: more room for a positive bend than a negative one
+  if (!(Math.abs(lean) > 1e-6 * Math.max(1, hi - lo)) || !(hi > lo)) return null;
+  const bent = unit(cross(restAxis(spec, bone, 0), restAxis(spec, bone, 2)));
+  return bent && lean < 0 ? scale(bent, -1) : bent;
+}
 
 /** Whether bone `bone` of `spec` and its parent both have length at rest (so the limb can bend). */
 function bendable(spec: RigSpec, bone: number): boolean {
@@ -70,7 +86,7 @@ export function poleLimbs(spec: RigSpec, effectors: ArrayLike<number>, humanoid?
       // then leaves the root-tip line the other way: bone x axis.
       const bent = unit(cross(restAxis(spec, bone, 0), bendAxis(spec, humanoid, role, bone, frame).axis));
       if (bent) restBend = bent;
-    }
+    } else if (!humanoid) restBend = limitsBend(spec, bone) ?? FACING;
     limbs.push({ bone, restBend });
   }
   return limbs;

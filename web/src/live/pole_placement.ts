@@ -5,8 +5,15 @@ import type { RigSpec } from '../ik/rig_spec.js';
 import { add, norm, reject, restAxis, restOrigin, scale, sub, unit, type Vec3 } from '../rig/anatomy_vec.js';
 import type { PoleLimb } from './pole_limbs.js';
 
-/** A bend smaller than this share of the limb's length (the joint's distance off the root-tip line) counts as straight. */
-const STRAIGHT_SHARE = 0.02;
+/**
+ * A joint nearer the root-tip line than this share of the limb's shorter segment counts as
+ * straight: the pole residual's bend floor (goals.cpp kBendFloorShare, pole_residual.h's delta),
+ * below which the residual counts the limb as not yet bent (it asks for at least that bend). The
+ * knight's elbows sit 4.6% of the forearm (2.1% of the arm) off that line, sideways: a modelling
+ * kink across the way they bend. A pole placed along it turned the elbow outwards as soon as the
+ * arm bent; now it goes behind the elbow, the way the elbow bends.
+ */
+const STRAIGHT_SHARE = 0.05;
 
 /** The limb's root (its upper bone's head: shoulder, hip), joint (elbow, knee) and tip (wrist, ankle), rig units. */
 export interface LimbPoints {
@@ -34,17 +41,19 @@ export function limbPoints(spec: RigSpec, poses: ArrayLike<number>, bone: number
 }
 
 /**
- * Where limb `limb`'s pole starts at `poses`: about one limb length (upper plus lower part) from the
- * joint, the way the joint already bends off the root-tip line; for a (nearly) straight limb the
- * way it bends (its rest bend direction turned with the lower bone), else the rig's facing (+Z),
- * up (+Y) or +X, whichever first lies well across the limb.
+ * Where limb `limb`'s pole starts at `poses`: one limb length (upper plus lower part) from the
+ * joint, where its reach row is zero (pole_residual.h), the way the joint already bends off the
+ * root-tip line; for a straight limb (see STRAIGHT_SHARE) the way it bends (its rest bend
+ * direction turned with the lower bone), else the rig's facing (+Z), up (+Y) or +X, whichever
+ * first lies well across the limb.
  */
 export function initialPole(spec: RigSpec, poses: ArrayLike<number>, limb: PoleLimb): Vec3 {
   const { root, joint, tip } = limbPoints(spec, poses, limb.bone);
-  const length = norm(sub(joint, root)) + norm(sub(tip, joint));
+  const upper = norm(sub(joint, root)), lower = norm(sub(tip, joint));
+  const length = upper + lower;
   const line = unit(sub(tip, root)) ?? unit(sub(joint, root)) ?? ([1, 0, 0] as Vec3);
   const off = reject(sub(joint, root), line);
-  let dir = norm(off) > STRAIGHT_SHARE * length ? unit(off) : null;
+  let dir = norm(off) > STRAIGHT_SHARE * (Math.min(upper, lower) || length) ? unit(off) : null;
   for (const d of [transform(poses, limb.bone, limb.restBend, 0), [0, 0, 1], [0, 1, 0], [1, 0, 0]] as Vec3[]) {
     if (dir) break;
     const across = reject(d, line);
