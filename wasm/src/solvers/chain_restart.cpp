@@ -52,18 +52,19 @@ bool ChainRestart::beyond_reach(const Kinematics& kin, int e, const GoalSet& goa
     if (b < 0) return false;
     target = goals.block(b).position;
   }
-  // The top of the chain that can move without moving an on-target effector, and its reach:
-  // joint to joint down the chain, then the effector bone itself (rigid at any pose).
+  // The chain's first movable bone, and its reach: joint to joint down the chain, then the
+  // effector bone itself (rigid at any pose). (Bones shared with on-target chains count: the
+  // other effectors' own joints can make up for their move, as fingers do for a wrist.)
   const std::vector<int>& chain = kin.effector_chain(e);  // root first
   const int bone = kin.rig().effectors[e];
   for (size_t i = 0; i < chain.size(); ++i) {
-    if (!movable(kin, chain[i]) || kept_[chain[i]]) continue;
+    if (!movable(kin, chain[i])) continue;
     double length = kin.rig().bones[bone].length;
     for (size_t j = i; j + 1 < chain.size(); ++j)
       length += (rest_origin(kin.rig(), chain[j + 1]) - rest_origin(kin.rig(), chain[j])).norm();
     return (target - kin.joint_origin(chain[i])).norm() >= length + slack;
   }
-  return true;  // nothing on its chain moves without moving an effector on target
+  return true;  // nothing on its chain moves
 }
 
 bool ChainRestart::beyond_any(const Kinematics& kin, const Eigen::Ref<const Eigen::VectorXd>& r, const GoalSet& goals,

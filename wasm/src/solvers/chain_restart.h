@@ -7,10 +7,9 @@
 // bent leg reaches the target. A chain restart starts a new run from the best point with only the
 // movable angles of the off-target effectors' chains moved, by up to 15, 30, 60 or 120 degrees or
 // anywhere inside their limits, in turn (quasi-random), leaving the bones that also carry an effector on
-// target as they are. An effector whose target lies beyond everything its chain can reach
-// without moving an effector on target (the distance from the joint of its first movable bone
-// below the ones shared with on-target chains exceeds the sum of the rigid segments below it) is
-// left out: its closest point is not a local accident.
+// target as they are. An effector whose target lies beyond everything its chain can reach (the
+// distance from the fixed joint of its first movable bone exceeds the sum of the rigid segments
+// below it) is left out: its closest point is not a local accident.
 #pragma once
 
 #include <Eigen/Core>
@@ -38,15 +37,14 @@ class ChainRestart {
                double slack, const QuasiRandom& sequence, long attempt, Eigen::Ref<Eigen::VectorXd> start);
 
   // With `kin` posed at a point with residual `r`: is some off-target effector's target beyond
-  // what its chain reaches without moving an effector on target (beyond_reach)? No allocation.
+  // what its chain reaches (beyond_reach)? No allocation.
   bool beyond_any(const Kinematics& kin, const Eigen::Ref<const Eigen::VectorXd>& r, const GoalSet& goals, double slack);
 
  private:
   // Which effectors are off target at residual `r` (off_) and which bones carry one on target (kept_).
   void mark(const Kinematics& kin, const Eigen::Ref<const Eigen::VectorXd>& r, const GoalSet& goals);
-  // Is effector e's target farther from the top of the part of its chain that moves no
-  // effector on target (its first movable bone not in kept_) than that part reaches, plus
-  // `slack`? An effector without a position goal never is. After mark().
+  // Is effector e's target farther from its chain's first movable bone's joint than the chain
+  // reaches from there, plus `slack`? An effector without a position goal never is.
   bool beyond_reach(const Kinematics& kin, int e, const GoalSet& goals, double slack) const;
 
   std::vector<char> off_;           // per effector: off target (after mark())

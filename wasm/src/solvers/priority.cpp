@@ -54,18 +54,22 @@ void Priority::set_given_up(const std::vector<char>& given_up) {
 }
 
 bool Priority::give_up_next(const GoalSet& goals, const Eigen::Ref<const Eigen::VectorXd>& r, const GoalTolerance& tol) {
-  if (!(tol.tip > 0 && tol.orientation_deg > 0)) return false;
+  if (!(tol.tip > 0 && tol.orientation_deg > 0) || held_share(goals, r, tol) <= 1 ||
+      given_up_count_ + 1 >= goals.num_blocks())
+    return false;
+  // In turn: asked anew (off target at the start, wherever it is now), then beyond its
+  // tolerance here; orientations before positions in each.
   int pick = -1;
-  double worst = 1;  // only a block beyond its tolerance
   for (int pass = 0; pass < 4 && pick < 0; ++pass) {
     const bool orientation = pass % 2 == 0, asked_anew = pass < 2;
+    double worst = asked_anew ? -1 : 1;
     for (int b = 0; b < goals.num_blocks(); ++b) {
       if (given_up_[b] || goals.block(b).orientation != orientation || (asked_anew && !off_at_start_[b])) continue;
       const double share = block_share(goals, r, b, tol);
       if (share > worst) worst = share, pick = b;
     }
   }
-  if (pick < 0 || given_up_count_ + 1 >= goals.num_blocks()) return false;
+  if (pick < 0) return false;
   given_up_[pick] = 1;
   ++given_up_count_;
   return true;

@@ -13,11 +13,12 @@
 // system positive definite at a singular pose). Bounds: the clip-on-the-limit active set.
 //
 // Which goals are given up, one at a time until the held ones can be met: at a point where the
-// solve stopped off target, the held block farthest beyond its tolerance among, in turn, the
-// orientation blocks off target at the solve's start, the position blocks off target there, the
-// other orientation blocks, the other position blocks. What was on target when the solve began
-// (a pinned hand while another is dragged) is kept before what was asked anew, and an
-// orientation is given up before a position (inside one effector too).
+// solve stopped with a held goal off target, the block farthest off among, in turn, the
+// orientation blocks off target at the solve's start, the position blocks off target there,
+// then the orientation blocks beyond their tolerance here, the position blocks beyond theirs.
+// What was on target when the solve began (a pinned hand while another is dragged) is kept
+// before what was asked anew, also when the least-squares point met the new goal at the
+// others' cost, and an orientation is given up before a position (inside one effector too).
 // No allocation after resize().
 #pragma once
 
@@ -60,9 +61,9 @@ class Priority {
   // Notes which blocks are off target at the solve's start (residual `r` there).
   void note_start(const GoalSet& goals, const Eigen::Ref<const Eigen::VectorXd>& r, const GoalTolerance& tol);
 
-  // Gives up the held block of `goals` farthest beyond its tolerance at residual `r`, in the
-  // order above. Returns false when no held block is off target, when giving it up would
-  // leave no goal held, or when a tolerance is 0 (no goal can be held within it).
+  // Gives up a held block of `goals`, in the order above, judged at residual `r`. Returns false
+  // when every held block is within its tolerance there, when giving one up would leave no goal
+  // held, or when a tolerance is 0 (no goal can be held within it).
   bool give_up_next(const GoalSet& goals, const Eigen::Ref<const Eigen::VectorXd>& r, const GoalTolerance& tol);
 
   // The worst held block's error as a share of its tolerance (<= 1: every held goal met; 0: none held).

@@ -396,11 +396,18 @@ void Solver::note_given_up() {
 bool Solver::settles() {
   if (opt_.paper_mode || restarts_left() || on_target()) return false;
   const double E = priority_.active() ? priority_.given_up_E(goals_, r_) : E_;
-  if (!settling_.settled(std::sqrt(2 * E), kSettleShare * goal_tolerance().tip)) return false;
-  // Without goals given up, only a run crawling towards a target beyond its chain's reach has
-  // settled (a slow method still closing on a reachable target has not).
-  settled_ = priority_.active() ||
-             (opt_.strict_priority && chain_restart_.beyond_any(kin_, r_, goals_, goal_tolerance().tip));
+  const GoalTolerance tol = goal_tolerance();
+  const double threshold = kSettleShare * tol.tip;
+  settling_.record(std::sqrt(2 * E));
+  // With goals given up, a run that stopped falling, or will not get nearer than the tolerance,
+  // has settled. Without: one crawling towards a target beyond its chain's reach, or with goals
+  // that could be given up, one that will not get nearer than the tolerance (a slow method still
+  // closing on a reachable target has not; a single goal keeps the stationarity test).
+  const bool strict = opt_.strict_priority && goals_.num_blocks() > 1;
+  settled_ = priority_.active()
+                 ? settling_.stalled(threshold) || settling_.settled(threshold, tol.tip)
+                 : strict && ((settling_.stalled(threshold) && chain_restart_.beyond_any(kin_, r_, goals_, tol.tip)) ||
+                              settling_.settled(threshold, tol.tip));
   return settled_;
 }
 

@@ -141,22 +141,23 @@ bool Solver::move_on(StopReason& reason) {
   // Restarts come first while any are left: on random targets escaping first cost more than it
   // saved (native, lm, 1000 restarts: knight 96 -> 184 us mean, beast 75 -> 137 us).
   const bool stationary = reason == StopReason::zero_step || reason == StopReason::converged_grad;
-  // Without restarts: an escape along negative curvature first (a straight limb), unless a
-  // target lies beyond its chain's reach; then the goals that cannot be met are given up; a chain
-  // restart comes after that (in priority mode, moving the given-up chains only), or instead of
-  // it when no goal can be given up (one goal, or strict_priority off).
+  // Without restarts: an escape along negative curvature first (a straight limb), then chain
+  // restarts (the other chains follow the moved ones: a hand's fingers around a moved wrist),
+  // unless a target lies beyond its chain's reach; then the goals that cannot be met are given
+  // up, and what is left of the chain restarts moves the given-up chains only.
   const bool last_resort = stationary && !restarts_left();
   const bool prioritised = priority_.active();
+  const bool beyond = !prioritised && last_resort && beyond_reach();
   if (soften)
     lower_soft_terms();  // counted below as a step, like a restart
   else if (retry)
     retry_without_soft_terms();
-  else if (!prioritised && last_resort && !beyond_reach() && escape())
+  else if (!prioritised && last_resort && !beyond && escape())
     ++summary_.escapes;
-  else if (!prioritised && last_resort && give_up_next_goal()) {
-  } else if (!prioritised && last_resort && chain_restart())
+  else if (!prioritised && last_resort && !beyond && chain_restart())
     ++summary_.chain_restarts;
-  else if (!prioritised && restart())
+  else if (!prioritised && last_resort && give_up_next_goal()) {
+  } else if (!prioritised && restart())
     ++summary_.restarts;
   else if (prioritised && !held() && !chain_run_ && give_up_next_goal()) {
   } else if (prioritised && stationary && chain_restart())

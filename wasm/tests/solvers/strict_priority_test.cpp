@@ -68,7 +68,7 @@ SolverOptions drag_options() {
   o.gradient_tolerance = 1e-3 * kTipTolerance * 1.0 * kRadPerDeg;
   o.restarts = 0;
   o.time_budget_s = 0;
-  o.max_iterations = 5000;
+  o.max_iterations = 100000;  // gd and bfgs crawl through their chain restarts before giving up
   return o;
 }
 
