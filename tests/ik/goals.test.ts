@@ -118,7 +118,8 @@ describe('pose goals', () => {
     // One bone of length 1: its tip cannot leave the unit sphere, so a position goal at distance 2
     // along +y and an orientation goal keeping the bone along +x conflict.
     const rig = keep(new IkRig(ik, sketchRig([{ parent: -1, at: [0, 0, 0], length: 1 }], [0])));
-    const solver = keep(new IkSolver(rig, 'lm', { timeBudgetSeconds: 0, restarts: 0 }));
+    // The weighted sum (strictPriority off); with strict priority the position wins whatever the weights (next test).
+    const solver = keep(new IkSolver(rig, 'lm', { timeBudgetSeconds: 0, restarts: 0, strictPriority: false }));
     const zero = new Float64Array(3);
     const error = (positionWeight: number) => {
       const goals: Goals = {
@@ -130,6 +131,24 @@ describe('pose goals', () => {
     // A heavy position goal turns the bone towards +y (orientation error near 90 degrees); a light one barely.
     expect(error(100)).toBeGreaterThan(80);
     expect(error(0.01)).toBeLessThan(5);
+  });
+
+  it('with strict priority (the default) the position holds as far as it can and the orientation gives way, whatever the weights', () => {
+    const rig = keep(new IkRig(ik, sketchRig([{ parent: -1, at: [0, 0, 0], length: 1 }], [0])));
+    const solver = keep(new IkSolver(rig, 'lm', { timeBudgetSeconds: 0, restarts: 0, tipTolerance: 1e-3 }));
+    for (const positionWeight of [0.01, 1, 100]) {
+      // Within reach (0.8 along +y) but against the orientation goal (the bone along +x).
+      const goals: Goals = {
+        effectors: [{ bone: 0, position: [0, 0.8, 0.6], orientation: [0, 0, 0, 1], positionWeight, orientationWeight: 1 }],
+      };
+      const r = solver.solve(new Float64Array(3), goals);
+      const tip = rig.tips(r.angles);
+      expect(Math.hypot(tip[0], tip[1] - 0.8, tip[2] - 0.6), `weight ${positionWeight}`).toBeLessThan(1e-3);
+      expect(r.reached).toBe(false);
+      expect(r.orientationOutOfReach).toBe(true);
+      expect(r.outOfReach).toBe(false);
+      expect(orientationErrorsDeg(rig, r.angles, goals)[0]).toBeGreaterThan(80);
+    }
   });
 
   it('start and step take goals too, and a change of goals between solves takes effect', () => {

@@ -106,9 +106,9 @@ describe('the Solver binding', () => {
 
   it.each(rigsLike('beast'))('stepping gives the same solve as solve(), with E per iteration ($label)', (testRig) => {
     const rig = keep(new IkRig(ik, loadTestRig(testRig)));
-    // Without restarts (of the whole pose or of a chain) or saddle escapes (each one more
-    // iteration within a step): one iteration per step, and the last iterate is the best point.
-    const options = { ...reportOptions(testRig, rig), restarts: 0, chainRestarts: 0, escapeSaddles: false };
+    // Without restarts (of the whole pose or of a chain), saddle escapes or goals given up (each
+    // one more iteration within a step): one iteration per step, and the last iterate is the best point.
+    const options = { ...reportOptions(testRig, rig), restarts: 0, chainRestarts: 0, escapeSaddles: false, strictPriority: false };
     const stepped = keep(new IkSolver(rig, 'gn', options));
     const solved = keep(new IkSolver(rig, 'gn', options));
     const rand = seeded(5);

@@ -41,6 +41,12 @@ void Priority::note_start(const GoalSet& goals, const Eigen::Ref<const Eigen::Ve
   for (int b = 0; b < goals.num_blocks(); ++b) off_at_start_[b] = tol.tip > 0 && tol.orientation_deg > 0 && block_share(goals, r, b, tol) > 1;
 }
 
+bool Priority::effector_off_at_start(const GoalSet& goals, int e) const {
+  for (int b = 0; b < goals.num_blocks(); ++b)
+    if (goals.block(b).effector == e && off_at_start_[b]) return true;
+  return false;
+}
+
 void Priority::clear() {
   std::fill(given_up_.begin(), given_up_.end(), 0);
   given_up_count_ = 0;
@@ -57,14 +63,15 @@ bool Priority::give_up_next(const GoalSet& goals, const Eigen::Ref<const Eigen::
   if (!(tol.tip > 0 && tol.orientation_deg > 0) || held_share(goals, r, tol) <= 1 ||
       given_up_count_ + 1 >= goals.num_blocks())
     return false;
-  // In turn: asked anew (off target at the start, wherever it is now), then beyond its
-  // tolerance here; orientations before positions in each.
+  // In turn: asked anew (an effector off target at the start, wherever it is now), then beyond
+  // its tolerance here; orientations before positions in each.
   int pick = -1;
   for (int pass = 0; pass < 4 && pick < 0; ++pass) {
     const bool orientation = pass % 2 == 0, asked_anew = pass < 2;
     double worst = asked_anew ? -1 : 1;
     for (int b = 0; b < goals.num_blocks(); ++b) {
-      if (given_up_[b] || goals.block(b).orientation != orientation || (asked_anew && !off_at_start_[b])) continue;
+      const bool anew = orientation ? effector_off_at_start(goals, goals.block(b).effector) : off_at_start_[b];
+      if (given_up_[b] || goals.block(b).orientation != orientation || (asked_anew && !anew)) continue;
       const double share = block_share(goals, r, b, tol);
       if (share > worst) worst = share, pick = b;
     }

@@ -14,7 +14,8 @@
 //
 // Which goals are given up, one at a time until the held ones can be met: at a point where the
 // solve stopped with a held goal off target, the block farthest off among, in turn, the
-// orientation blocks off target at the solve's start, the position blocks off target there,
+// orientation blocks of effectors off target at the solve's start (in position or orientation),
+// the position blocks off target there,
 // then the orientation blocks beyond their tolerance here, the position blocks beyond theirs.
 // What was on target when the solve began (a pinned hand while another is dragged) is kept
 // before what was asked anew, also when the least-squares point met the new goal at the
@@ -98,6 +99,8 @@ class Priority {
                                const Eigen::Ref<const Eigen::VectorXd>& r);
 
  private:
+  // Was effector e off target at the start (one of its blocks beyond its tolerance)?
+  bool effector_off_at_start(const GoalSet& goals, int e) const;
   // Is row i held (a row of a held hard block)?
   bool held_row(int i) const { return i < held_rows_ && !given_up_[i / 3]; }
 

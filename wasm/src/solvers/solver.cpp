@@ -149,7 +149,7 @@ StopReason Solver::begin(const Eigen::Ref<const Eigen::VectorXd>& angles, const 
   summary_.angles = a_;
   best_rank_ = finite(E_) ? rank() : 0;
   best_given_up_E_ = priority_.given_up_E(goals_, r_);
-  note_given_up();
+  note_given_up(r_);
   record();
   if (running()) {
     // A start on a stationary point off target (a tip pointing straight away from its target, a
@@ -383,14 +383,14 @@ void Solver::note_best() {
   summary_.tip_distance = largest_tip_distance(goals_, r_);
   summary_.reached = now == 2;
   summary_.angles = a_;
-  note_given_up();
+  note_given_up(r_);
 }
 
-void Solver::note_given_up() {
+void Solver::note_given_up(const Eigen::Ref<const Eigen::VectorXd>& r) {
   const GoalTolerance tol = goal_tolerance();
-  summary_.out_of_reach = !summary_.reached && priority_.position_given_up(goals_, r_, tol);
+  summary_.out_of_reach = !summary_.reached && priority_.position_given_up(goals_, r, tol);
   summary_.orientation_out_of_reach =
-      !summary_.reached && !summary_.out_of_reach && priority_.orientation_given_up(goals_, r_, tol);
+      !summary_.reached && !summary_.out_of_reach && priority_.orientation_given_up(goals_, r, tol);
 }
 
 bool Solver::settles() {

@@ -263,8 +263,8 @@ class Solver {
   GoalTolerance goal_tolerance() const;
   // The current point's rank: 2 on target, 1 the held goals met (priority mode), 0 otherwise.
   int rank() const;
-  // Sets the summary's out_of_reach flags for the current point (the new best).
-  void note_given_up();
+  // Sets the summary's out_of_reach flags for the best point, whose residual is `r`.
+  void note_given_up(const Eigen::Ref<const Eigen::VectorXd>& r);
   // After an accepted step off target with nothing but a give-up left to try (no restart left,
   // outside paper mode): has the run settled (settling.h) on a closest point? Its distance: of
   // the given-up goals in priority mode, else sqrt(2 E).

@@ -56,6 +56,7 @@ bool Solver::give_up_next_goal() {
   evaluate(summary_.angles, r_trial_);
   best_rank_ = priority_.held_share(goals_, r_trial_, tol) <= 1 ? 1 : 0;
   best_given_up_E_ = priority_.given_up_E(goals_, r_trial_);
+  note_given_up(r_trial_);
   a_ = start_;
   chain_run_ = false;
   restarts_.begin_run();
@@ -77,8 +78,14 @@ Solver::Progress Solver::priority_iterate() {
   const double held_E = priority_.held_E(goals_, r_), given_up_E = priority_.given_up_E(goals_, r_);
   for (int attempt = 0; attempt < opt_.lm_max_rejections; ++attempt) {
     if (attempt > 0 && time_is_up()) return Progress::stuck;
-    const double lambda = priority_damping_.shift(2 * given_up_E / (reach_ * reach_), opt_.lm_damping_floor, s);
-    switch (priority_.step(kin_, J_, a_, r_, lambda, opt_.lm_damping_floor * s, deadline(), trial_)) {
+    // Bringing the held goals back: Levenberg-Marquardt on their rows (their error sets the
+    // damping), the others damped 1 / kHeldDamping times as much. Holding them: the damping of
+    // the given-up rows, the held ones nearly undamped.
+    const double lambda = restoring ? priority_damping_.shift(2 * held_E / (reach_ * reach_), opt_.lm_damping_floor, s) /
+                                          Priority::kHeldDamping
+                                    : priority_damping_.shift(2 * given_up_E / (reach_ * reach_), opt_.lm_damping_floor, s);
+    const double floor = restoring ? 0 : opt_.lm_damping_floor * s;
+    switch (priority_.step(kin_, J_, a_, r_, lambda, floor, deadline(), trial_)) {
       case Priority::Status::failed: return fail("the priority step's matrix could not be factorised");
       case Priority::Status::out_of_time: gave_up_for_time(); return Progress::stuck;
       case Priority::Status::ok: break;
