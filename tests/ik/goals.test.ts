@@ -133,6 +133,27 @@ describe('pose goals', () => {
     expect(error(0.01)).toBeLessThan(5);
   });
 
+  it('yields: a dragged goal gives way to the pinned ones; a value other than true or false is refused by name', () => {
+    const rig = keep(new IkRig(ik, sketchRig([
+      { parent: -1, at: [0, 0, 0], length: 1 },
+      { parent: 0, at: [1, 0, 0], length: 1 },
+      { parent: 0, at: [1, 0, 0], length: 1 },
+    ], [1, 2])));
+    const start = new Float64Array(rig.numAngles);
+    const tips = rig.tips(start);
+    const solver = keep(new IkSolver(rig, 'lm', { timeBudgetSeconds: 0, restarts: 0, tipTolerance: 1e-3 }));
+    // Bone 1's target far beyond reach: it yields, bone 2 stays on its target although they share bone 0.
+    const goals: Goals = { effectors: [{ bone: 1, position: [10, 5, 0], yields: true }, { bone: 2, position: tips.subarray(3, 6) }] };
+    const r = solver.solve(start, goals);
+    const end = rig.tips(r.angles);
+    expect(Math.hypot(end[3] - tips[3], end[4] - tips[4], end[5] - tips[5])).toBeLessThan(1e-3);
+    expect(r.outOfReach).toBe(true);
+    expect(r.goalsGivenUp).toBe(1);
+    expect(() => solver.solve(start, { effectors: [{ bone: 1, position: [1, 1, 0], yields: 1 as unknown as boolean }] })).toThrow(
+      'goals.effectors[0].yields must be true or false',
+    );
+  });
+
   it('with strict priority (the default) the position holds as far as it can and the orientation gives way, whatever the weights', () => {
     const rig = keep(new IkRig(ik, sketchRig([{ parent: -1, at: [0, 0, 0], length: 1 }], [0])));
     const solver = keep(new IkSolver(rig, 'lm', { timeBudgetSeconds: 0, restarts: 0, tipTolerance: 1e-3 }));

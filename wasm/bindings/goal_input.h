@@ -1,7 +1,7 @@
 // Goals as they cross from JavaScript: per end effector, in the rig's effector order, the kGoalStride
-// numbers [positionWeight, orientationWeight, qx, qy, qz, qw] (a weight of 0: no such goal; the
+// numbers [positionWeight, orientationWeight, qx, qy, qz, qw, yields] (a weight of 0: no such goal; the
 // quaternion is the target orientation of the effector bone's frame in rig coordinates, any
-// nonzero length). The positions come from the solve's target (3 per effector, rig units), so
+// nonzero length; yields 1: EffectorGoal::yields, else 0). The positions come from the solve's target (3 per effector, rig units), so
 // a drag that only moves targets writes the same buffer as a plain solve. Bend hints cross as
 // kPoleStride numbers each, [bone, x, y, z, weight] (rig units); stiffness as one number per bone
 // or none (all 1).
@@ -17,7 +17,7 @@
 
 namespace ik::js {
 
-constexpr int kGoalStride = 6;
+constexpr int kGoalStride = 7;
 constexpr int kPoleStride = 5;
 
 class GoalInput {
@@ -48,6 +48,8 @@ class GoalInput {
       goal.position_weight = g[0];
       goal.orientation = g[1] > 0;
       goal.orientation_weight = g[1];
+      if (g[6] != 0 && g[6] != 1) throw RigError(field("yields flag") + " must be 0 or 1");
+      goal.yields = g[6] == 1;
       if (!goal.orientation) continue;
       const Eigen::Quaterniond q(g[5], g[2], g[3], g[4]);
       const double norm = q.norm();

@@ -50,6 +50,7 @@ void GoalSet::mark_chain(const Kinematics& kin, int bone) {
 void GoalSet::set_positions(const Kinematics& kin, const Eigen::Ref<const Eigen::VectorXd>& target) {
   plain_ = true;
   has_orientation_ = false;
+  has_yielding_ = false;
   soft_scale_ = 1;
   length_ = rig_reach(kin);
   target_ = target;
@@ -112,6 +113,7 @@ std::string GoalSet::set(const Kinematics& kin, const Goals& goals) {
   const int m = kin.num_effectors();
   plain_ = true;
   has_orientation_ = false;
+  has_yielding_ = false;
   soft_scale_ = 1;
   blocks_.clear();
   layout_.clear();
@@ -146,6 +148,7 @@ std::string GoalSet::set(const Kinematics& kin, const Goals& goals) {
       b.effector = e;
       b.scale = g.position_weight;
       b.position = g.position_target;
+      b.yields = g.yields;
       add(b);
     }
     if (g.orientation && g.orientation_weight > 0) {
@@ -154,12 +157,16 @@ std::string GoalSet::set(const Kinematics& kin, const Goals& goals) {
       b.orientation = true;
       b.scale = g.orientation_weight * length;
       b.rotation = g.orientation_target;
+      b.yields = g.yields;
       add(b);
     }
-    plain_ = plain_ && g.position && g.position_weight == 1;
+    plain_ = plain_ && g.position && g.position_weight == 1 && !g.yields;
     if (!blocks_.empty() && blocks_.back().effector == e) mark_chain(kin, kin.rig().effectors[e]);
   }
   if (blocks_.empty()) return "no goal: every end effector's goals are off or of weight 0";
+  int yielding = 0;
+  for (const Block& b : blocks_) yielding += b.yields;
+  has_yielding_ = yielding > 0 && yielding < num_blocks();
   const int bones = kin.num_bones();
   for (size_t i = 0; i < goals.poles.size(); ++i) {
     const PoleGoal& p = goals.poles[i];
@@ -210,7 +217,7 @@ bool GoalSet::operator==(const GoalSet& other) const {
   if (plain_) return target_.size() == other.target_.size() && target_ == other.target_;
   for (int b = 0; b < num_blocks(); ++b) {
     const Block &x = blocks_[b], &y = other.blocks_[b];
-    if (x.scale != y.scale || x.position != y.position || x.rotation != y.rotation) return false;
+    if (x.scale != y.scale || x.position != y.position || x.rotation != y.rotation || x.yields != y.yields) return false;
   }
   return true;
 }

@@ -33,6 +33,10 @@ struct EffectorGoal {
   bool orientation = false;
   Eigen::Matrix3d orientation_target = Eigen::Matrix3d::Identity();  // R_target, a rotation (world)
   double orientation_weight = 1;                                      // w_o >= 0
+  // Strict priority (solver option strict_priority): this effector's goals give way first when
+  // not every goal can be met (the one a user drags, while the others stay pinned). The solve
+  // holds the other goals from its start and brings these as close as their freedom allows.
+  bool yields = false;
 };
 
 // A bend hint (pole target) for the two-bone limb ending in `bone` (forearm, shin): S = head of
@@ -64,6 +68,7 @@ class GoalSet {
     int effector = 0;          // index into the effector list
     bool orientation = false;  // false: a position block
     double scale = 1;          // w_p, or w_o * L for an orientation block
+    bool yields = false;       // EffectorGoal::yields
     Eigen::Vector3d position = Eigen::Vector3d::Zero();
     Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();
   };
@@ -102,6 +107,8 @@ class GoalSet {
   int num_blocks() const { return static_cast<int>(blocks_.size()); }
   const Block& block(int b) const { return blocks_[b]; }
   bool has_orientation() const { return has_orientation_; }
+  // Does some block yield (EffectorGoal::yields) while another does not?
+  bool has_yielding() const { return has_yielding_; }
   int num_poles() const { return static_cast<int>(poles_.size()); }
   const Pole& pole(int p) const { return poles_[p]; }
   // Rest rows 3i..3i+2 after the poles' rows belong to bone rest_bone(i), scaled by rest_scale(i)
@@ -140,6 +147,7 @@ class GoalSet {
   std::vector<double> rest_scale_;
   Eigen::VectorXd rest_reference_;
   bool has_orientation_ = false;
+  bool has_yielding_ = false;
   Eigen::VectorXd target_;
   std::vector<Block> blocks_;
   std::vector<int> position_block_;

@@ -52,11 +52,14 @@ void Priority::clear() {
   given_up_count_ = 0;
 }
 
-void Priority::set_given_up(const std::vector<char>& given_up) {
-  if (given_up.size() != given_up_.size()) return;
-  given_up_ = given_up;
+void Priority::give_up_yielding(const GoalSet& goals) {
   given_up_count_ = 0;
-  for (char c : given_up_) given_up_count_ += c;
+  for (int b = 0; b < goals.num_blocks(); ++b) {
+    const GoalSet::Block& g = goals.block(b);
+    const bool turned = !g.orientation && b + 1 < goals.num_blocks() && goals.block(b + 1).effector == g.effector;
+    given_up_[b] = g.yields && !turned;
+    given_up_count_ += given_up_[b];
+  }
 }
 
 bool Priority::give_up_next(const GoalSet& goals, const Eigen::Ref<const Eigen::VectorXd>& r, const GoalTolerance& tol) {

@@ -56,8 +56,10 @@ class Priority {
   int count() const { return given_up_count_; }
   // Per hard block: 1 if given up. Same size as the goals' blocks.
   const std::vector<char>& given_up() const { return given_up_; }
-  // Sets the given-up blocks (a copy of given_up() from an earlier solve with the same layout).
-  void set_given_up(const std::vector<char>& given_up);
+  // Gives up the blocks of `goals` that yield (EffectorGoal::yields): an orientation block, or a
+  // position block of an effector without one (position first: a yielding effector's position
+  // is given up only when it cannot be held, by give_up_next()).
+  void give_up_yielding(const GoalSet& goals);
 
   // Notes which blocks are off target at the solve's start (residual `r` there).
   void note_start(const GoalSet& goals, const Eigen::Ref<const Eigen::VectorXd>& r, const GoalTolerance& tol);

@@ -128,10 +128,12 @@ StopReason Solver::begin(const Eigen::Ref<const Eigen::VectorXd>& angles, const 
     // A target beyond what its chain reaches with the goals met at the start kept there (a hand
     // dragged past the arm's reach, the rest pinned) is given up at once: no run towards the
     // least-squares point of all goals, which would pull the others off theirs.
-    if (!opt_.paper_mode && opt_.strict_priority && goals_.num_blocks() > 1 &&
-        chain_restart_.beyond_any(kin_, r_, goals_, goal_tolerance().tip) &&
-        priority_.give_up_next(goals_, r_, goal_tolerance()))
-      summary_.goals_given_up = priority_.count();
+    // Goals that yield (the dragged one) give way from the start: the others are held.
+    if (!opt_.paper_mode && opt_.strict_priority && goals_.has_yielding()) priority_.give_up_yielding(goals_);
+    if (!opt_.paper_mode && opt_.strict_priority && goals_.num_blocks() > 1 && !priority_.active() &&
+        chain_restart_.beyond_any(kin_, r_, goals_, goal_tolerance().tip))
+      priority_.give_up_next(goals_, r_, goal_tolerance());
+    summary_.goals_given_up = priority_.count();
   }
   summary_.stop_reason = StopReason::running;
   if (!finite(E_)) {

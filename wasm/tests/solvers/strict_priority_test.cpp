@@ -139,6 +139,36 @@ TEST_P(StrictPriority, ADragPastReachKeepsThePinnedEffectorsAtEveryStep) {
   EXPECT_GT(out, 10);  // the last steps are out of reach
 }
 
+// A goal marked to yield (the dragged one) gives way from the first step: the others are held,
+// and a yielding target within reach is still reached.
+TEST_P(StrictPriority, AYieldingGoalGivesWayFromTheStart) {
+  Kinematics kin(upper_body());
+  const Eigen::VectorXd rest = Eigen::VectorXd::Zero(kin.num_angles());
+  kin.forward(rest);
+  Goals goals;
+  for (int e = 0; e < kin.num_effectors(); ++e) {
+    EffectorGoal g;
+    g.position_target = kin.tip(kin.rig().effectors[e]);
+    goals.effectors.push_back(g);
+  }
+  goals.effectors[0].yields = true;
+  goals.effectors[0].position_target += Eigen::Vector3d(-1.0, 0.3, 0.2);  // out of reach
+  auto solver = make_solver(GetParam(), kin, drag_options());
+  const SolverSummary& s = solver->solve(rest, goals);
+  kin.forward(s.angles);
+  EXPECT_LT((kin.tip(kin.rig().effectors[1]) - goals.effectors[1].position_target).norm(), kTipTolerance);
+  EXPECT_LT((kin.tip(kin.rig().effectors[2]) - goals.effectors[2].position_target).norm(), kTipTolerance);
+  EXPECT_TRUE(s.out_of_reach);
+  EXPECT_EQ(s.goals_given_up, 1);
+  // Within reach: the arm bends to it, the others stay.
+  goals.effectors[0].position_target = kin.tip(kin.rig().effectors[0]);  // where the closest point left it
+  kin.forward(rest);
+  goals.effectors[0].position_target = kin.tip(kin.rig().effectors[0]) + Eigen::Vector3d(0.15, 0.2, 0.1);
+  const SolverSummary& t = solver->solve(rest, goals);
+  EXPECT_TRUE(t.reached) << stop_reason_name(t.stop_reason);
+  EXPECT_FALSE(t.out_of_reach);
+}
+
 // Position first, orientation second: a hand turned further than its wrist allows keeps its
 // position and says that the orientation is out of reach.
 TEST_P(StrictPriority, PositionHoldsWhenTheOrientationCannot) {

@@ -24,6 +24,12 @@ export interface EffectorGoal {
   positionWeight?: number;
   /** Weight of the orientation goal; overrides `weight`. */
   orientationWeight?: number;
+  /**
+   * Strict priority (solver option strictPriority): this effector's goals give way first when not
+   * every goal can be met, as the one a user drags while the others stay pinned: the solve holds
+   * the others and brings this one as close as its freedom allows. Default false.
+   */
+  yields?: boolean;
 }
 
 /**
@@ -58,7 +64,7 @@ export interface Goals {
 
 /** Goals packed as the core takes them (wasm/bindings/goal_input.h). */
 export interface PackedGoals {
-  /** 6 per effector in the rig's effector order: positionWeight, orientationWeight, qx, qy, qz, qw. */
+  /** 7 per effector in the rig's effector order: positionWeight, orientationWeight, qx, qy, qz, qw, yields (0 or 1). */
   packed: Float64Array;
   /** 3 per effector: the positions (0 where an effector has no position goal), rig units. */
   target: Float64Array;
@@ -69,10 +75,10 @@ export interface PackedGoals {
   stiffness: Float64Array;
 }
 
-export const GOAL_STRIDE = 6;
+export const GOAL_STRIDE = 7;
 export const POLE_STRIDE = 5;
 
-const GOAL_FIELDS = new Set(['bone', 'position', 'orientation', 'weight', 'positionWeight', 'orientationWeight']);
+const GOAL_FIELDS = new Set(['bone', 'position', 'orientation', 'weight', 'positionWeight', 'orientationWeight', 'yields']);
 const GOALS_FIELDS = new Set(['effectors', 'lengthScale', 'poles', 'stiffness']);
 const POLE_FIELDS = new Set(['bone', 'point', 'weight']);
 
@@ -151,6 +157,8 @@ export function packGoals(rig: IkRig, goals: Goals): PackedGoals {
     } else if (g.orientationWeight !== undefined) {
       throw new Error(`${what}.orientationWeight is given without an orientation`);
     }
+    if (g.yields !== undefined && typeof g.yields !== 'boolean') throw new Error(`${what}.yields must be true or false`);
+    packed[GOAL_STRIDE * e + 6] = g.yields ? 1 : 0;
   });
   return { packed, target, lengthScale, poles: packPoles(rig, goals.poles), stiffness: packStiffness(rig, goals.stiffness) };
 }

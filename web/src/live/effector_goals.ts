@@ -22,6 +22,7 @@ export class EffectorGoals {
   polePoints = new Float64Array(0);
   private cached: Goals | null = null;
   private cachedFor: Float64Array | null = null;
+  private cachedYielding = -1;
 
   /** Goals for `count` effectors: position goals only. */
   constructor(count: number) {
@@ -102,14 +103,17 @@ export class EffectorGoals {
 
   /**
    * The Goals for the solver: effector k (bone `bones[k]`) aims at `targets` (3 per effector, rig
-   * units) and, where on, at its orientation; the poles, if any. The same object until a flag or
-   * the poles' limbs change or `targets` is another array (its numbers are read at each solve).
+   * units) and, where on, at its orientation; effector `yielding` (-1: none) gives way first when
+   * not every goal can be met (EffectorGoal.yields); the poles, if any. The same object until a
+   * flag, the yielding effector or the poles' limbs change or `targets` is another array (its
+   * numbers are read at each solve).
    */
-  goals(bones: ArrayLike<number>, targets: Float64Array): Goals {
-    if (this.cached && this.cachedFor === targets) return this.cached;
+  goals(bones: ArrayLike<number>, targets: Float64Array, yielding = -1): Goals {
+    if (this.cached && this.cachedFor === targets && this.cachedYielding === yielding) return this.cached;
     const effectors: EffectorGoal[] = [];
     for (let k = 0; k < this.count; k++) {
       const g: EffectorGoal = { bone: bones[k] };
+      if (k === yielding) g.yields = true;
       if (this.position[k]) g.position = targets.subarray(3 * k, 3 * k + 3);
       if (this.orientation[k]) g.orientation = this.rotations.subarray(4 * k, 4 * k + 4);
       effectors.push(g);
@@ -118,6 +122,7 @@ export class EffectorGoals {
     for (let j = 0; j < this.poleBones.length; j++) poles.push({ bone: this.poleBones[j], point: this.polePoints.subarray(3 * j, 3 * j + 3) });
     this.cached = poles.length ? { effectors, poles } : { effectors };
     this.cachedFor = targets;
+    this.cachedYielding = yielding;
     return this.cached;
   }
 

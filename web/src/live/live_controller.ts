@@ -351,6 +351,8 @@ export class LiveController {
       this.needsSolve = false;
       return null;
     }
+    // The selected target (the one dragged, or last dragged) gives way; the others stay pinned.
+    session.yielding = this.handles.selected ?? -1;
     const s = this.settings, f = this.solveSettings;
     f.gradientTolerance = s.gradientTolerance;
     f.tipTolerance = s.tipTolerance;

@@ -20,6 +20,11 @@ export class IkSession {
   targets: Float64Array;
   /** Which effectors have position and orientation goals, and the orientations (a new object when the effectors change). */
   goals: EffectorGoals;
+  /**
+   * The effector that gives way first when not every target can be met (the one being dragged,
+   * or last dragged: the page's selected target), or -1. The others stay pinned: strict priority.
+   */
+  yielding = -1;
   private effectorList: Int32Array;
   private readonly solvers = new Map<string, MethodSolver>();
   private stepping: MethodSolver | null = null;
@@ -80,9 +85,13 @@ export class IkSession {
     return worst;
   }
 
-  /** What the solves aim at: the targets, or Goals when some effector has more or less than a position goal. */
-  problem(): Float64Array | Goals {
-    return this.goals.beyondPositions ? this.goals.goals(this.effectorList, this.targets) : this.targets;
+  /**
+   * What the solves aim at: the targets, or Goals when some effector has more or less than a
+   * position goal or yields to the others (never in `paperMode`, which takes plain targets only).
+   */
+  problem(paperMode = false): Float64Array | Goals {
+    const yielding = paperMode || this.yielding >= this.effectorList.length ? -1 : this.yielding;
+    return this.goals.beyondPositions || yielding >= 0 ? this.goals.goals(this.effectorList, this.targets, yielding) : this.targets;
   }
 
   /** Effector k's orientation goal on at `q` ([x, y, z, w], rig coordinates; omitted: its current frame) or off. */
@@ -139,18 +148,18 @@ export class IkSession {
 
   /** One solve from the current pose; the pose becomes the solver's result (outcome.angles is `angles`). */
   solve(method: string, settings: SolveSettings): SolveOutcome {
-    return this.solver(method).solve(this.angles, this.problem(), settings, this.angles);
+    return this.solver(method).solve(this.angles, this.problem(settings.paperMode), settings, this.angles);
   }
 
   /** Solves from `start` (default: the current pose) without changing the pose (for the compare table). */
   trySolve(method: string, settings: SolveSettings, start: Float64Array = this.angles): SolveOutcome {
-    return this.solver(method).solve(start, this.problem(), settings);
+    return this.solver(method).solve(start, this.problem(settings.paperMode), settings);
   }
 
   /** Starts step mode with `method` from the current pose. */
   beginSteps(method: string, settings: SolveSettings): SolveOutcome {
     this.stepping = this.solver(method);
-    return this.stepping.start(this.angles, this.problem(), settings);
+    return this.stepping.start(this.angles, this.problem(settings.paperMode), settings);
   }
 
   /** One iteration of the step-mode solve; the pose becomes the iterate. */

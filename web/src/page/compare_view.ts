@@ -107,7 +107,7 @@ export class CompareView {
     for (const c of cells) tr.insertCell().textContent = c;
     const outcome = tr.insertCell();
     if (o) {
-      const words = statusWords(o.reached, o.stopReason, paperMode);
+      const words = statusWords(o, paperMode);
       outcome.textContent = words.text;
       outcome.title = words.title;
       outcome.dataset.reason = o.stopReason;

@@ -28,7 +28,7 @@ export class SolveReport {
   slowest: SlowestSolve | null = null;
   /** The stats of the last solve (one record, rewritten by each). */
   private readonly values: StatsValues = {
-    method: '', iterations: 0, E: 0, gradNorm: 0, reached: false, tipDistance: 0, orientationErrorDeg: NaN, pixelsPerUnit: NaN, stopReason: '', paperMode: false, ms: 0, pinnedDrift: 0,
+    method: '', iterations: 0, E: 0, gradNorm: 0, reached: false, tipDistance: 0, orientationErrorDeg: NaN, pixelsPerUnit: NaN, stopReason: '', outOfReach: false, orientationOutOfReach: false, paperMode: false, ms: 0, pinnedDrift: 0,
   };
 
   /** The stats and the plot go into `side`; `controller` shows the rig, `settings` name the method. */
@@ -91,6 +91,8 @@ export class SolveReport {
     s.orientationErrorDeg = this.controller.live?.session.orientationErrorDeg() ?? NaN;
     s.pixelsPerUnit = k < 0 ? NaN : this.controller.stage.pixelsPerUnit(v.fromArray(targets, 3 * k));
     s.stopReason = outcome.stopReason;
+    s.outOfReach = outcome.outOfReach;
+    s.orientationOutOfReach = outcome.orientationOutOfReach;
     s.paperMode = this.settings.paperMode;
     s.ms = ms;
     s.pinnedDrift = largestTipDistance(tips, targets, this.controller.handles.selected ?? -1);

@@ -22,6 +22,10 @@ export interface StatsValues {
   /** Screen pixels per rig unit near the targets (for the tip error in pixels); NaN: unknown. */
   pixelsPerUnit: number;
   stopReason: string;
+  /** A position goal could not be met (the core's outOfReach): the words say out of reach. */
+  outOfReach: boolean;
+  /** Only an orientation goal could not be met (the core's orientationOutOfReach). */
+  orientationOutOfReach: boolean;
   /** The report's algorithms (no escape from stationary points): changes the words of converged_grad. */
   paperMode: boolean;
   ms: number;
@@ -76,7 +80,7 @@ export class StatsPanel {
   private readonly cells = new Map<string, HTMLElement>();
   /** The last solve's values, written out by writeNumbers(). */
   private readonly latest: StatsValues = {
-    method: '', iterations: 0, E: 0, gradNorm: 0, reached: false, tipDistance: 0, orientationErrorDeg: NaN, pixelsPerUnit: NaN, stopReason: '', paperMode: false, ms: 0, pinnedDrift: 0,
+    method: '', iterations: 0, E: 0, gradNorm: 0, reached: false, tipDistance: 0, orientationErrorDeg: NaN, pixelsPerUnit: NaN, stopReason: '', outOfReach: false, orientationOutOfReach: false, paperMode: false, ms: 0, pinnedDrift: 0,
   };
   /** The words the status cell shows, or null. */
   private words: StatusWords | null = null;
@@ -152,7 +156,7 @@ export class StatsPanel {
 
   /** Shows the status of `v` if it differs from the one shown; true if it did. */
   private showStatus(v: StatsValues): boolean {
-    const words = statusWords(v.reached, v.stopReason, v.paperMode);
+    const words = statusWords(v, v.paperMode);
     const cell = this.cells.get('status');
     if (!cell || words === this.words) return false;
     this.words = words;

@@ -55,7 +55,7 @@ function takeStep(session: IkSession, method: string, label: string, settings: P
   const stepLength = Math.sqrt(len);
   const state = isRunning(outcome.stopReason)
     ? 'running'
-    : `stopped: ${statusWords(outcome.reached, outcome.stopReason, settings.paperMode).text} [${outcome.stopReason}]`;
+    : `stopped: ${statusWords(outcome, settings.paperMode).text} [${outcome.stopReason}]`;
   const text =
     `${label}${settings.paperMode ? ' (paper mode)' : ''}, iteration ${outcome.iterations}: E ${E0.toExponential(2)} → ${outcome.E.toExponential(2)}; ` +
     `|ΔA| = ${stepLength.toPrecision(3)}° (${state}). Faint bones: the previous iterate.`;

@@ -38,7 +38,7 @@ export class StatusLine {
     l.tipDistance = outcome.tipDistance;
     l.orientationDeg = orientationDeg;
     l.ms = ms;
-    const words = statusWords(outcome.reached, outcome.stopReason);
+    const words = statusWords(outcome);
     if (words === this.words) {
       this.text.request();
       return;
