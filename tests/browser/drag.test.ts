@@ -144,7 +144,8 @@ describe('dragging from the rest pose', () => {
     const len = Math.hypot(away.x, away.y);
     await dragBy(page, hand, (away.x / len) * 400, (away.y / len) * 400, 20);
     const reason = await waitForSettled(page);
-    expect(reason).toBe('converged_grad');
+    // A stationary point, or a run settled at the closest point with the others held (strict priority).
+    expect(['converged_grad', 'zero_step']).toContain(reason);
     expect(await statText(page, 'status')).toBe('out of reach (closest point)');
     expect(await page.getAttribute('[data-stat="status"]', 'data-reached')).toBe('false');
     const tolerance = await tipTolerance(page);

@@ -35,6 +35,8 @@ export interface FrameSettings {
   timeBudgetMs: number;
   /** The report's algorithms. */
   paperMode: boolean;
+  /** Strict priority between targets (SolveSettings.strictPriority); default true. */
+  strictPriority?: boolean;
 }
 
 /** What the controller tells its front end. Only `failed` is required. */
@@ -359,6 +361,7 @@ export class LiveController {
     f.maxIterations = s.maxIterations;
     f.timeBudgetMs = s.timeBudgetMs;
     f.paperMode = s.paperMode;
+    f.strictPriority = s.strictPriority ?? true;
     this.needsRedraw = true;
     let outcome: SolveOutcome;
     try {

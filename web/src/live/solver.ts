@@ -20,6 +20,12 @@ export interface SolveSettings {
   restarts: number;
   /** The report's original algorithms (finite-difference Jacobian, its line searches). */
   paperMode: boolean;
+  /**
+   * When not every target can be met, hold the ones that can and bring the others as close as
+   * they get (the solver option strictPriority). Default true; false: the least-squares point of
+   * all, which pulls pinned effectors off their targets (the report's "wobble").
+   */
+  strictPriority?: boolean;
 }
 
 /** What a solve or a step reached (angles in degrees, distances in rig units, see SolverResult). */
@@ -90,6 +96,7 @@ export class MethodSolver {
       timeBudgetSeconds: s.timeBudgetMs / 1000,
       restarts: s.restarts,
       paperMode: s.paperMode,
+      strictPriority: s.strictPriority ?? true,
     });
     Object.assign(this.sent, s);
   }

@@ -76,6 +76,7 @@ export class Compare {
       timeBudgetMs: s.compareTimeBudgetMs,
       restarts: s.restarts,
       paperMode: s.paperMode,
+      strictPriority: s.strictPriority,
     };
     const paper = s.paperMode ? ' in paper mode (the report’s algorithms)' : '';
     this.view.begin(`${live.name}, from the ${s.compareFrom}${paper} (budget ${s.compareTimeBudgetMs} ms, restarts ${s.restarts})`, this.methods.names.length);

@@ -43,6 +43,7 @@ export function initialSettings(rig: string, method: string): PageSettings {
     timeBudgetMs: 3,
     restarts: 0,
     paperMode: false,
+    strictPriority: true,
     compareTimeBudgetMs: 1000,
     compareMaxIterations: 100000,
     compareFrom: 'current pose',

@@ -91,6 +91,11 @@ export class Panel {
     solver.add(s, 'maxIterations', 1, 1000, 1).name('iterations / frame').onChange(() => actions.settingsChanged());
     solver.add(s, 'timeBudgetMs', 0.25, 16, 0.25).name('ms budget / frame').onChange(() => actions.settingsChanged());
     solver.add(s, 'paperMode').name('paper mode (the report’s algorithms)').onChange(() => actions.settingsChanged());
+    solver
+      .add(s, 'strictPriority')
+      .name('strict priority')
+      .onChange(() => actions.settingsChanged())
+      .domElement.setAttribute('title', 'on: targets that can be met stay met, the dragged one gives way; off: the least-squares point of all targets, which pulls the pinned ones off theirs (the report’s wobble)');
 
     const teach = this.gui.addFolder('Teaching');
     this.folders = [rig, pose, solver, teach];

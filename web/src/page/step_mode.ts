@@ -42,8 +42,8 @@ function isRunning(reason: string): boolean {
  */
 function takeStep(session: IkSession, method: string, label: string, settings: PageSettings, restart: boolean): StepReport {
   if (restart || session.steppingMethod !== method) {
-    const { gradientTolerance, tipTolerance, paperMode } = settings;
-    session.beginSteps(method, { gradientTolerance, tipTolerance, paperMode, maxIterations: settings.compareMaxIterations, timeBudgetMs: Infinity, restarts: 0 });
+    const { gradientTolerance, tipTolerance, paperMode, strictPriority } = settings;
+    session.beginSteps(method, { gradientTolerance, tipTolerance, paperMode, strictPriority, maxIterations: settings.compareMaxIterations, timeBudgetMs: Infinity, restarts: 0 });
   }
   const before = session.angles.slice();
   const E0 = session.objective();
