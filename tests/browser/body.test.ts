@@ -45,12 +45,13 @@ describe('the body moves as a body', () => {
     await page.mouse.move(from.x, from.y);
     await page.mouse.down();
     let worst = 0;
-    const steps = 30;
+    const steps = 30, kinds: string[] = [];
     for (let i = 1; i <= steps; i++) {
       await page.mouse.move(from.x + ((out.x - from.x) * i) / steps, from.y + ((out.y - from.y) * i) / steps);
       await nextFrame(page);
       const e = await tipErrors(page);
       for (const k of pinned) worst = Math.max(worst, e[k]);
+      kinds.push((await page.getAttribute('[data-stat="status"]', 'data-kind')) ?? '');
     }
     await page.mouse.up();
     await waitForSettled(page);
@@ -59,6 +60,11 @@ describe('the body moves as a body', () => {
     expect(worst).toBeLessThan(tolerance);
     expect(e[left]).toBeGreaterThan(0.3); // far out of reach
     expect(await statText(page, 'status')).toBe('out of reach (closest point)');
+    // The words settle at once: "out of reach" from the frame the hand leaves its reach, not seconds of "time budget".
+    console.log(`[status] pulling the hand past its reach, per step: ${kinds.join(' ')}`);
+    const firstOut = kinds.indexOf('out-of-reach');
+    expect(firstOut).toBeGreaterThanOrEqual(0);
+    expect(kinds.slice(firstOut).filter((k) => k === 'budget').length).toBeLessThanOrEqual(3);
     await screenshot(page, 'out-of-reach.png');
     // The panel's "strict priority" off: the least-squares point of all targets pulls the others off theirs.
     await (await panelControl(page, /^strict priority$/)).locator('input').click();

@@ -52,13 +52,12 @@ bool ChainRestart::beyond_reach(const Kinematics& kin, int e, const GoalSet& goa
     if (b < 0) return false;
     target = goals.block(b).position;
   }
-  // The chain's first movable bone, and its reach: joint to joint down the chain, then the
-  // effector bone itself (rigid at any pose). (Bones shared with on-target chains count: the
-  // other effectors' own joints can make up for their move, as fingers do for a wrist.)
+  // The chain's first movable bone (held_fixed_: below the ones shared with on-target chains), and
+  // its reach: joint to joint down the chain, then the effector bone itself (rigid at any pose).
   const std::vector<int>& chain = kin.effector_chain(e);  // root first
   const int bone = kin.rig().effectors[e];
   for (size_t i = 0; i < chain.size(); ++i) {
-    if (!movable(kin, chain[i])) continue;
+    if (!movable(kin, chain[i]) || (held_fixed_ && kept_[chain[i]])) continue;
     double length = kin.rig().bones[bone].length;
     for (size_t j = i; j + 1 < chain.size(); ++j)
       length += (rest_origin(kin.rig(), chain[j + 1]) - rest_origin(kin.rig(), chain[j])).norm();

@@ -40,13 +40,21 @@ class ChainRestart {
   // what its chain reaches (beyond_reach)? No allocation.
   bool beyond_any(const Kinematics& kin, const Eigen::Ref<const Eigen::VectorXd>& r, const GoalSet& goals, double slack);
 
+  // true (strict priority with goals given up: the goals on target are held): an effector's reach
+  // counts only the part of its chain below the bones it shares with on-target chains, which the
+  // held goals keep from swinging it further; false: its whole chain (their own joints can make
+  // up for a shared bone's move, as fingers do for a wrist).
+  void set_held_fixed(bool held_fixed) { held_fixed_ = held_fixed; }
+
  private:
   // Which effectors are off target at residual `r` (off_) and which bones carry one on target (kept_).
   void mark(const Kinematics& kin, const Eigen::Ref<const Eigen::VectorXd>& r, const GoalSet& goals);
-  // Is effector e's target farther from its chain's first movable bone's joint than the chain
-  // reaches from there, plus `slack`? An effector without a position goal never is.
+  // Is effector e's target farther from its chain's first movable bone's joint (with held_fixed_,
+  // the first one not shared with an on-target chain) than the chain reaches from there, plus
+  // `slack`? An effector without a position goal never is. After mark().
   bool beyond_reach(const Kinematics& kin, int e, const GoalSet& goals, double slack) const;
 
+  bool held_fixed_ = false;
   std::vector<char> off_;           // per effector: off target (after mark())
   std::vector<char> moved_, kept_;  // per bone: on an off-target chain / on an on-target chain
   Eigen::VectorXd unit_, anywhere_;

@@ -131,7 +131,7 @@ StopReason Solver::begin(const Eigen::Ref<const Eigen::VectorXd>& angles, const 
     // Goals that yield (the dragged one) give way from the start: the others are held.
     if (!opt_.paper_mode && opt_.strict_priority && goals_.has_yielding()) priority_.give_up_yielding(goals_);
     if (!opt_.paper_mode && opt_.strict_priority && goals_.num_blocks() > 1 && !priority_.active() &&
-        chain_restart_.beyond_any(kin_, r_, goals_, goal_tolerance().tip))
+        (chain_restart_.set_held_fixed(false), chain_restart_.beyond_any(kin_, r_, goals_, goal_tolerance().tip)))
       priority_.give_up_next(goals_, r_, goal_tolerance());
     summary_.goals_given_up = priority_.count();
   }
@@ -408,7 +408,8 @@ bool Solver::settles() {
   const bool strict = opt_.strict_priority && goals_.num_blocks() > 1;
   settled_ = priority_.active()
                  ? settling_.stalled(threshold) || settling_.settled(threshold, tol.tip)
-                 : strict && ((settling_.stalled(threshold) && chain_restart_.beyond_any(kin_, r_, goals_, tol.tip)) ||
+                 : strict && ((settling_.stalled(threshold) && (chain_restart_.set_held_fixed(false),
+                                                                  chain_restart_.beyond_any(kin_, r_, goals_, tol.tip))) ||
                               settling_.settled(threshold, tol.tip));
   return settled_;
 }

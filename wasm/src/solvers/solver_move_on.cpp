@@ -100,6 +100,7 @@ bool Solver::escape() {
 bool Solver::beyond_reach() {
   if (opt_.paper_mode || !opt_.strict_priority) return false;
   evaluate(summary_.angles, r_trial_);  // poses kin_ at the best point
+  chain_restart_.set_held_fixed(false);
   return chain_restart_.beyond_any(kin_, r_trial_, goals_, goal_tolerance().tip);
 }
 
@@ -110,6 +111,7 @@ bool Solver::chain_restart() {
   // How far off a tip may be on target: the tip tolerance, or with the E test the distance at which
   // one effector alone makes E the tolerance.
   const double slack = opt_.tip_tolerance > 0 ? opt_.tip_tolerance : std::sqrt(2 * opt_.error_tolerance);
+  chain_restart_.set_held_fixed(priority_.active());
   if (!chain_restart_.propose(kin_, trial_, r_trial_, goals_, slack, restarts_.sequence(), ++chain_index_, a_))
     return false;
   restarts_.begin_run();

@@ -20,6 +20,10 @@ namespace {
 // below it or where they were.
 constexpr double kHoldShare = 0.5;
 
+// Rejected trials per priority iteration before it is stuck (each is a whole active-set solve,
+// and at a closest point every trial fails): with Nielsen's rule mu has grown by 2^45 by then.
+constexpr int kMaxRejections = 10;
+
 }  // namespace
 
 GoalTolerance Solver::goal_tolerance() const {
@@ -76,7 +80,7 @@ Solver::Progress Solver::priority_iterate() {
   const double held_before = priority_.held_share(goals_, r_, tol);
   const bool restoring = held_before > kHoldShare;
   const double held_E = priority_.held_E(goals_, r_), given_up_E = priority_.given_up_E(goals_, r_);
-  for (int attempt = 0; attempt < opt_.lm_max_rejections; ++attempt) {
+  for (int attempt = 0; attempt < std::min(opt_.lm_max_rejections, kMaxRejections); ++attempt) {
     if (attempt > 0 && time_is_up()) return Progress::stuck;
     // Bringing the held goals back: Levenberg-Marquardt on their rows (their error sets the
     // damping), the others damped 1 / kHeldDamping times as much. Holding them: the damping of
