@@ -1,7 +1,8 @@
-// Strict priority in the Solver (priority.h): when nothing else is left to try off target, the
-// goal farthest beyond its tolerance is given up (orientations before positions) and a priority
-// run starts from the solve's start angles: every step holds the other goals (Newton on their
-// rows) and brings the given-up ones as close as the freedom left allows. Every method takes
+// Strict priority in the Solver (priority.h): when nothing else is left to try off target (or at
+// once, for a goal that yields or a target beyond its chain's reach), a goal is given up in
+// priority.h's order and a priority run starts from the solve's start angles: every step holds
+// the other goals (Newton on their rows) and brings the given-up ones as close as the freedom
+// left allows. Every method takes
 // these steps once goals are given up (outside paper mode), so all of them follow one order:
 // reachable goals within their tolerance, then the closest point for the rest. The rest of the
 // Solver is in solver.cpp and solver_move_on.cpp.
@@ -35,7 +36,7 @@ GoalTolerance Solver::goal_tolerance() const {
 
 int Solver::rank() const {
   if (on_target()) return 2;
-  return priority_.active() && priority_.held_share(goals_, r_, goal_tolerance()) <= 1 ? 1 : 0;
+  return priority_.active() && held() ? 1 : 0;
 }
 
 bool Solver::held() const { return priority_.held_share(goals_, r_, goal_tolerance()) <= 1; }
