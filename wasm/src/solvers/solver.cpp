@@ -31,6 +31,10 @@ bool finite(double x) { return std::isfinite(x); }
 // A run off target has settled when its distance from the goals fell by less than this share of
 // the tip tolerance over Settling::kSteps steps.
 constexpr double kSettleShare = 0.05;
+// Without goals given up, a run settles only where it will stay this many tip tolerances off
+// target: a run nearing a local minimum close to its target goes on to it, so that the chain
+// restarts start from there.
+constexpr double kFarShare = 30;
 
 // With soft rows on and the hard goals on target, a step that lowers E by less than this share
 // of E ends the solve (converged_E): near the soft optimum gd and bfgs creep.
@@ -410,7 +414,7 @@ bool Solver::settles() {
                  ? settling_.stalled(threshold) || settling_.settled(threshold, tol.tip)
                  : strict && ((settling_.stalled(threshold) && (chain_restart_.set_held_fixed(false),
                                                                   chain_restart_.beyond_any(kin_, r_, goals_, tol.tip))) ||
-                              settling_.settled(threshold, tol.tip));
+                              settling_.settled(threshold, kFarShare * tol.tip));
   return settled_;
 }
 
