@@ -17,6 +17,20 @@ inline Eigen::Matrix4d translation(double x, double y, double z) {
   return m;
 }
 
+// Appends a bone to `rig` whose rest transform translates to `at` (rig units, no turn), of
+// `length` along its rest x axis, every angle within +-`limit` degrees. Returns its index.
+inline int add_bone(Rig& rig, int parent, const Eigen::Vector3d& at, double length, double limit, const char* name = "") {
+  Bone b;
+  b.name = name;
+  b.parent = parent;
+  b.rest.block<3, 1>(0, 3) = at;
+  b.length = length;
+  b.min_deg.setConstant(-limit);
+  b.max_deg.setConstant(limit);
+  rig.bones.push_back(b);
+  return static_cast<int>(rig.bones.size()) - 1;
+}
+
 // One bone of length 1 along +x from the origin, without limits; its tip (1, 0, 0) is the effector.
 inline Rig one_bone() {
   Rig rig;

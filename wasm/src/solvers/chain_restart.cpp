@@ -43,7 +43,7 @@ void ChainRestart::mark(const Kinematics& kin, const Eigen::Ref<const Eigen::Vec
   }
 }
 
-bool ChainRestart::beyond_reach(const Kinematics& kin, int e, const GoalSet& goals, double slack) const {
+bool ChainRestart::beyond_reach(const Kinematics& kin, int e, const GoalSet& goals, double slack, bool held_fixed) const {
   Eigen::Vector3d target;
   if (goals.plain()) {
     target = goals.plain_target().segment<3>(3 * e);
@@ -52,12 +52,12 @@ bool ChainRestart::beyond_reach(const Kinematics& kin, int e, const GoalSet& goa
     if (b < 0) return false;
     target = goals.block(b).position;
   }
-  // The chain's first movable bone (held_fixed_: below the ones shared with on-target chains), and
+  // The chain's first movable bone (held_fixed: below the ones shared with on-target chains), and
   // its reach: joint to joint down the chain, then the effector bone itself (rigid at any pose).
   const std::vector<int>& chain = kin.effector_chain(e);  // root first
   const int bone = kin.rig().effectors[e];
   for (size_t i = 0; i < chain.size(); ++i) {
-    if (!movable(kin, chain[i]) || (held_fixed_ && kept_[chain[i]])) continue;
+    if (!movable(kin, chain[i]) || (held_fixed && kept_[chain[i]])) continue;
     double length = kin.rig().bones[bone].length;
     for (size_t j = i; j + 1 < chain.size(); ++j)
       length += (rest_origin(kin.rig(), chain[j + 1]) - rest_origin(kin.rig(), chain[j])).norm();
@@ -67,21 +67,21 @@ bool ChainRestart::beyond_reach(const Kinematics& kin, int e, const GoalSet& goa
 }
 
 bool ChainRestart::beyond_any(const Kinematics& kin, const Eigen::Ref<const Eigen::VectorXd>& r, const GoalSet& goals,
-                              double slack) {
+                              double slack, bool held_fixed) {
   mark(kin, r, goals);
   for (int e = 0; e < kin.num_effectors(); ++e)
-    if (off_[e] && beyond_reach(kin, e, goals, slack)) return true;
+    if (off_[e] && beyond_reach(kin, e, goals, slack, held_fixed)) return true;
   return false;
 }
 
 bool ChainRestart::propose(const Kinematics& kin, const Eigen::Ref<const Eigen::VectorXd>& best,
-                           const Eigen::Ref<const Eigen::VectorXd>& r, const GoalSet& goals,
-                           double slack, const QuasiRandom& sequence, long attempt, Eigen::Ref<Eigen::VectorXd> start) {
+                           const Eigen::Ref<const Eigen::VectorXd>& r, const GoalSet& goals, double slack,
+                           bool held_fixed, const QuasiRandom& sequence, long attempt, Eigen::Ref<Eigen::VectorXd> start) {
   mark(kin, r, goals);
   std::fill(moved_.begin(), moved_.end(), 0);
   bool any = false;
   for (int e = 0; e < kin.num_effectors(); ++e) {
-    if (!off_[e] || beyond_reach(kin, e, goals, slack)) continue;
+    if (!off_[e] || beyond_reach(kin, e, goals, slack, held_fixed)) continue;
     for (int b : kin.effector_chain(e)) moved_[b] = 1;
     any = true;
   }

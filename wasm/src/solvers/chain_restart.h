@@ -31,30 +31,26 @@ class ChainRestart {
   // solve) to `start`, with the off-target chains moved by a point of `sequence`. Returns false
   // when no effector is off target within its reach (nothing worth restarting). `slack` (rig
   // units): how far off a tip may be and count as on target; a target that much beyond the
-  // chain's reach still counts as within it. No allocation.
+  // chain's reach still counts as within it. `held_fixed`: see beyond_reach(). No allocation.
   bool propose(const Kinematics& kin, const Eigen::Ref<const Eigen::VectorXd>& best,
-               const Eigen::Ref<const Eigen::VectorXd>& r, const GoalSet& goals,
-               double slack, const QuasiRandom& sequence, long attempt, Eigen::Ref<Eigen::VectorXd> start);
+               const Eigen::Ref<const Eigen::VectorXd>& r, const GoalSet& goals, double slack, bool held_fixed,
+               const QuasiRandom& sequence, long attempt, Eigen::Ref<Eigen::VectorXd> start);
 
   // With `kin` posed at a point with residual `r`: is some off-target effector's target beyond
   // what its chain reaches (beyond_reach)? No allocation.
-  bool beyond_any(const Kinematics& kin, const Eigen::Ref<const Eigen::VectorXd>& r, const GoalSet& goals, double slack);
-
-  // true (strict priority with goals given up: the goals on target are held): an effector's reach
-  // counts only the part of its chain below the bones it shares with on-target chains, which the
-  // held goals keep from swinging it further; false: its whole chain (their own joints can make
-  // up for a shared bone's move, as fingers do for a wrist).
-  void set_held_fixed(bool held_fixed) { held_fixed_ = held_fixed; }
+  bool beyond_any(const Kinematics& kin, const Eigen::Ref<const Eigen::VectorXd>& r, const GoalSet& goals, double slack,
+                  bool held_fixed);
 
  private:
   // Which effectors are off target at residual `r` (off_) and which bones carry one on target (kept_).
   void mark(const Kinematics& kin, const Eigen::Ref<const Eigen::VectorXd>& r, const GoalSet& goals);
-  // Is effector e's target farther from its chain's first movable bone's joint (with held_fixed_,
-  // the first one not shared with an on-target chain) than the chain reaches from there, plus
-  // `slack`? An effector without a position goal never is. After mark().
-  bool beyond_reach(const Kinematics& kin, int e, const GoalSet& goals, double slack) const;
-
-  bool held_fixed_ = false;
+  // Is effector e's target farther from its chain's first movable bone's joint than the chain
+  // reaches from there, plus `slack`? An effector without a position goal never is. After mark().
+  // `held_fixed` (strict priority with goals given up: the goals on target are held): only the
+  // part of the chain below the bones it shares with on-target chains counts, which the held
+  // goals keep from swinging it further; false: the whole chain (the other effectors' own joints
+  // can make up for a shared bone's move, as fingers do for a wrist).
+  bool beyond_reach(const Kinematics& kin, int e, const GoalSet& goals, double slack, bool held_fixed) const;
   std::vector<char> off_;           // per effector: off target (after mark())
   std::vector<char> moved_, kept_;  // per bone: on an off-target chain / on an on-target chain
   Eigen::VectorXd unit_, anywhere_;

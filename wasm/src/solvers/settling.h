@@ -13,8 +13,15 @@ class Settling {
  public:
   static constexpr int kSteps = 5;
 
-  // A new run: nothing recorded.
-  void begin_run() { count_ = 0; }
+  // A new run: nothing recorded, not ended by settling.
+  void begin_run() {
+    count_ = 0;
+    ended_ = false;
+  }
+
+  // Whether the run was ended by settling (Solver::settles() says so); false after begin_run().
+  bool ended() const { return ended_; }
+  void set_ended(bool ended) { ended_ = ended; }
 
   // After an accepted step to `distance` (rig units): records it.
   void record(double distance) { last_[count_++ % kWindow] = distance; }
@@ -42,6 +49,7 @@ class Settling {
   double at(int back) const { return last_[(count_ - 1 - back) % kWindow]; }
   double last_[kWindow] = {};
   long count_ = 0;
+  bool ended_ = false;
 };
 
 }  // namespace ik

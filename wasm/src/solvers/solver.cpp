@@ -123,19 +123,19 @@ StopReason Solver::begin(const Eigen::Ref<const Eigen::VectorXd>& angles, const 
   start_ = a_;
   soft_retried_ = false;
   settling_.begin_run();
-  settled_ = false;
   reset();
   priority_damping_.reset(opt_.lm_initial_mu);
   E_ = evaluate(a_, r_);
   if (finite(E_)) {
     priority_.note_start(goals_, r_, goal_tolerance());
-    // A target beyond what its chain reaches with the goals met at the start kept there (a hand
-    // dragged past the arm's reach, the rest pinned) is given up at once: no run towards the
-    // least-squares point of all goals, which would pull the others off theirs.
+    const bool strict = !opt_.paper_mode && opt_.strict_priority;
     // Goals that yield (the dragged one) give way from the start: the others are held.
-    if (!opt_.paper_mode && opt_.strict_priority && goals_.has_yielding()) priority_.give_up_yielding(goals_);
-    if (!opt_.paper_mode && opt_.strict_priority && goals_.num_blocks() > 1 && !priority_.active() &&
-        (chain_restart_.set_held_fixed(false), chain_restart_.beyond_any(kin_, r_, goals_, goal_tolerance().tip)))
+    if (strict && goals_.has_yielding()) priority_.give_up_yielding(goals_);
+    // A target beyond what its chain reaches (a hand dragged past the arm's reach, the rest
+    // pinned) is given up at once: no run towards the least-squares point of all goals, which
+    // would pull the others off theirs.
+    if (strict && goals_.num_blocks() > 1 && !priority_.active() &&
+        chain_restart_.beyond_any(kin_, r_, goals_, goal_tolerance().tip, false))
       priority_.give_up_next(goals_, r_, goal_tolerance());
     summary_.goals_given_up = priority_.count();
   }
@@ -410,23 +410,21 @@ bool Solver::settles() {
   // that could be given up, one that will not get nearer than the tolerance (a slow method still
   // closing on a reachable target has not; a single goal keeps the stationarity test).
   const bool strict = opt_.strict_priority && goals_.num_blocks() > 1;
-  settled_ = priority_.active()
-                 ? settling_.stalled(threshold) || settling_.settled(threshold, tol.tip)
-                 : strict && ((settling_.stalled(threshold) && (chain_restart_.set_held_fixed(false),
-                                                                  chain_restart_.beyond_any(kin_, r_, goals_, tol.tip))) ||
-                              settling_.settled(threshold, kFarShare * tol.tip));
-  return settled_;
+  settling_.set_ended(priority_.active()
+                          ? settling_.stalled(threshold) || settling_.settled(threshold, tol.tip)
+                          : strict && ((settling_.stalled(threshold) && chain_restart_.beyond_any(kin_, r_, goals_, tol.tip, false)) ||
+                                       settling_.settled(threshold, kFarShare * tol.tip)));
+  return settling_.ended();
 }
 
 void Solver::finish() {
   const bool closest = summary_.stop_reason == StopReason::converged_grad ||
-                       (summary_.stop_reason == StopReason::zero_step && settled_);
+                       (summary_.stop_reason == StopReason::zero_step && settling_.ended());
   if (!priority_.active() && !summary_.reached && closest && !opt_.paper_mode) {
     // Nothing given up: the point is the closest one for every goal.
     summary_.out_of_reach = summary_.tip_distance >= goal_tolerance().tip || !goals_.has_orientation();
     summary_.orientation_out_of_reach = !summary_.out_of_reach;
   }
 }
-
 
 }  // namespace ik

@@ -232,6 +232,8 @@ class Solver {
   // Once per solve, with the soft rows dropped and the run stopped off target: a new run from
   // the start angles without them (the plain solve), so that soft rows never lower the success rate.
   void retry_without_soft_terms();
+  // A new run from the start angles (E_, r_ there).
+  void run_from_start();
   bool soft_retried_ = false;
   Eigen::VectorXd start_;  // the solve's start angles, projected
   // Moves to the next quasi-random start inside the limits (a new run) if restarts are left.
@@ -269,8 +271,7 @@ class Solver {
   // outside paper mode): has the run settled (settling.h) on a closest point? Its distance: of
   // the given-up goals in priority mode, else sqrt(2 E).
   bool settles();
-  Settling settling_;
-  bool settled_ = false;  // the last run ended by settling, not by a stop test
+  Settling settling_;  // also: whether the last run ended by settling, not by a stop test
   // At the end of a solve: the out_of_reach flags (from the given-up goals, or without any, from
   // a run that ended at a stationary or settled point off target).
   void finish();

@@ -55,7 +55,6 @@ void Solver::lower_soft_terms() {
   goals_.set_soft_scale(scale < kSoftFloor ? 0.0 : scale);
   restarts_.begin_run();
   settling_.begin_run();
-  settled_ = false;
   reset();
   // E changed meaning: the best point's E is measured afresh (poses kin_ there), then the current one's.
   summary_.E = evaluate(summary_.angles, r_trial_);
@@ -64,10 +63,13 @@ void Solver::lower_soft_terms() {
 
 void Solver::retry_without_soft_terms() {
   soft_retried_ = true;
+  run_from_start();
+}
+
+void Solver::run_from_start() {
   a_ = start_;
   restarts_.begin_run();
   settling_.begin_run();
-  settled_ = false;
   reset();
   E_ = evaluate(a_, r_);
 }
@@ -76,7 +78,6 @@ bool Solver::restart() {
   if (!restarts_left()) return false;
   restarts_.next_start(kin_.lower(), kin_.upper(), a_);
   settling_.begin_run();
-  settled_ = false;
   reset();
   E_ = evaluate(a_, r_);
   return finite(E_);
@@ -93,15 +94,13 @@ bool Solver::escape() {
   E_ = found.E;
   reset();
   settling_.begin_run();
-  settled_ = false;
   return true;
 }
 
 bool Solver::beyond_reach() {
   if (opt_.paper_mode || !opt_.strict_priority) return false;
   evaluate(summary_.angles, r_trial_);  // poses kin_ at the best point
-  chain_restart_.set_held_fixed(false);
-  return chain_restart_.beyond_any(kin_, r_trial_, goals_, goal_tolerance().tip);
+  return chain_restart_.beyond_any(kin_, r_trial_, goals_, goal_tolerance().tip, false);
 }
 
 bool Solver::chain_restart() {
@@ -111,12 +110,11 @@ bool Solver::chain_restart() {
   // How far off a tip may be on target: the tip tolerance, or with the E test the distance at which
   // one effector alone makes E the tolerance.
   const double slack = opt_.tip_tolerance > 0 ? opt_.tip_tolerance : std::sqrt(2 * opt_.error_tolerance);
-  chain_restart_.set_held_fixed(priority_.active());
-  if (!chain_restart_.propose(kin_, trial_, r_trial_, goals_, slack, restarts_.sequence(), ++chain_index_, a_))
+  if (!chain_restart_.propose(kin_, trial_, r_trial_, goals_, slack, priority_.active(), restarts_.sequence(),
+                              ++chain_index_, a_))
     return false;
   restarts_.begin_run();
   settling_.begin_run();
-  settled_ = false;
   reset();
   chain_run_ = priority_.active();
   priority_damping_.reset(opt_.lm_initial_mu);

@@ -62,14 +62,9 @@ bool Solver::give_up_next_goal() {
   best_rank_ = priority_.held_share(goals_, r_trial_, tol) <= 1 ? 1 : 0;
   best_given_up_E_ = priority_.given_up_E(goals_, r_trial_);
   note_given_up(r_trial_);
-  a_ = start_;
   chain_run_ = false;
-  restarts_.begin_run();
-  settling_.begin_run();
-  settled_ = false;
-  reset();
   priority_damping_.reset(opt_.lm_initial_mu);
-  E_ = evaluate(a_, r_);
+  run_from_start();
   return std::isfinite(E_);
 }
 

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "objective.h"
+#include "../small_rigs.h"
 #include "solvers/solver_registry.h"
 
 namespace ik {
@@ -18,14 +19,7 @@ namespace {
 Rig branched_rig() {
   Rig rig;
   auto add = [&rig](int parent, const Eigen::Vector3d& at, double length, double limit) {
-    Bone b;
-    b.parent = parent;
-    b.rest.block<3, 1>(0, 3) = at;
-    b.length = length;
-    b.min_deg.setConstant(-limit);
-    b.max_deg.setConstant(limit);
-    rig.bones.push_back(b);
-    return static_cast<int>(rig.bones.size()) - 1;
+    return test::add_bone(rig, parent, at, length, limit);
   };
   const int hips = add(-1, {0, 0, 0}, 0.5, 180);
   const int chest = add(hips, {0.5, 0, 0}, 0.5, 30);

@@ -8,6 +8,7 @@
 
 #include "goal_residual.h"
 #include "objective.h"
+#include "../small_rigs.h"
 #include "so3.h"
 #include "solvers/solver_registry.h"
 
@@ -20,15 +21,7 @@ namespace {
 Rig upper_body() {
   Rig rig;
   auto add = [&rig](const char* name, int parent, const Eigen::Vector3d& at, double length, double limit) {
-    Bone b;
-    b.name = name;
-    b.parent = parent;
-    b.rest.block<3, 1>(0, 3) = at;
-    b.length = length;
-    b.min_deg.setConstant(-limit);
-    b.max_deg.setConstant(limit);
-    rig.bones.push_back(b);
-    return static_cast<int>(rig.bones.size()) - 1;
+    return test::add_bone(rig, parent, at, length, limit, name);
   };
   // Bones point along their rest frame's x axis: the spine and head point up (+y), the right arm
   // +x, the left arm -x.
@@ -60,6 +53,22 @@ Rig upper_body() {
 
 constexpr double kTipTolerance = 1e-3;
 
+// The effectors' tips at the rest pose (all angles 0): 3 per effector, rig units.
+Eigen::VectorXd rest_tips(Kinematics& kin) {
+  Eigen::VectorXd tips(kin.num_residuals());
+  kin.tips(Eigen::VectorXd::Zero(kin.num_angles()), tips);
+  return tips;
+}
+
+// A position goal per effector at its rest tip.
+Goals rest_goals(Kinematics& kin) {
+  const Eigen::VectorXd tips = rest_tips(kin);
+  Goals goals;
+  goals.effectors.resize(kin.num_effectors());
+  for (int e = 0; e < kin.num_effectors(); ++e) goals.effectors[e].position_target = tips.segment<3>(3 * e);
+  return goals;
+}
+
 // The page's drag settings: the tip test, no restarts, a gradient tolerance far below the
 // gradient of an effector that far off.
 SolverOptions drag_options() {
@@ -79,9 +88,7 @@ class StrictPriority : public ::testing::TestWithParam<std::string> {};
 TEST_P(StrictPriority, AnOutOfReachTargetLeavesThePinnedEffectorsOnTarget) {
   Kinematics kin(upper_body());
   const Eigen::VectorXd rest = Eigen::VectorXd::Zero(kin.num_angles());
-  kin.forward(rest);
-  Eigen::VectorXd target(kin.num_residuals());
-  for (int e = 0; e < kin.num_effectors(); ++e) target.segment<3>(3 * e) = kin.tip(kin.rig().effectors[e]);
+  Eigen::VectorXd target = rest_tips(kin);
   target.segment<3>(0) += Eigen::Vector3d(-1.0, 0.3, 0.2);  // the left hand, away from the body
 
   SolverOptions weighted = drag_options();
@@ -122,13 +129,7 @@ TEST_P(StrictPriority, ADragPastReachKeepsThePinnedEffectorsAtEveryStep) {
     if (!yields && GetParam() != "lm") continue;  // gd and bfgs crawl for seconds towards the least-squares point first
     Kinematics kin(upper_body());
     Eigen::VectorXd angles = Eigen::VectorXd::Zero(kin.num_angles());
-    kin.forward(angles);
-    Goals goals;
-    for (int e = 0; e < kin.num_effectors(); ++e) {
-      EffectorGoal g;
-      g.position_target = kin.tip(kin.rig().effectors[e]);
-      goals.effectors.push_back(g);
-    }
+    Goals goals = rest_goals(kin);
     goals.effectors[0].yields = yields;
     auto solver = make_solver(GetParam(), kin, drag_options());
     int out = 0;
@@ -153,13 +154,7 @@ TEST_P(StrictPriority, ADragPastReachKeepsThePinnedEffectorsAtEveryStep) {
 TEST_P(StrictPriority, AYieldingGoalGivesWayFromTheStart) {
   Kinematics kin(upper_body());
   const Eigen::VectorXd rest = Eigen::VectorXd::Zero(kin.num_angles());
-  kin.forward(rest);
-  Goals goals;
-  for (int e = 0; e < kin.num_effectors(); ++e) {
-    EffectorGoal g;
-    g.position_target = kin.tip(kin.rig().effectors[e]);
-    goals.effectors.push_back(g);
-  }
+  Goals goals = rest_goals(kin);
   goals.effectors[0].yields = true;
   goals.effectors[0].position_target += Eigen::Vector3d(-1.0, 0.3, 0.2);  // out of reach
   auto solver = make_solver(GetParam(), kin, drag_options());
@@ -170,9 +165,7 @@ TEST_P(StrictPriority, AYieldingGoalGivesWayFromTheStart) {
   EXPECT_TRUE(s.out_of_reach);
   EXPECT_EQ(s.goals_given_up, 1);
   // Within reach: the arm bends to it, the others stay.
-  goals.effectors[0].position_target = kin.tip(kin.rig().effectors[0]);  // where the closest point left it
-  kin.forward(rest);
-  goals.effectors[0].position_target = kin.tip(kin.rig().effectors[0]) + Eigen::Vector3d(0.15, 0.2, 0.1);
+  goals.effectors[0].position_target = rest_tips(kin).segment<3>(0) + Eigen::Vector3d(0.15, 0.2, 0.1);
   const SolverSummary& t = solver->solve(rest, goals);
   EXPECT_TRUE(t.reached) << stop_reason_name(t.stop_reason);
   EXPECT_FALSE(t.out_of_reach);
@@ -185,13 +178,7 @@ TEST_P(StrictPriority, PositionHoldsWhenTheOrientationCannot) {
   for (int k = 0; k < 3; ++k) rig.bones[rig.effectors[1]].min_deg[k] = -20, rig.bones[rig.effectors[1]].max_deg[k] = 20;
   Kinematics kin(rig);
   const Eigen::VectorXd rest = Eigen::VectorXd::Zero(kin.num_angles());
-  kin.forward(rest);
-  Goals goals;
-  for (int e = 0; e < kin.num_effectors(); ++e) {
-    EffectorGoal g;
-    g.position_target = kin.tip(kin.rig().effectors[e]);
-    goals.effectors.push_back(g);
-  }
+  Goals goals = rest_goals(kin);
   const int hand = kin.rig().effectors[1];
   goals.effectors[1].orientation = true;
   goals.effectors[1].orientation_target =
@@ -216,9 +203,7 @@ TEST_P(StrictPriority, PositionHoldsWhenTheOrientationCannot) {
 TEST_P(StrictPriority, OffInPaperModeAndWhenAskedOff) {
   Kinematics kin(upper_body());
   const Eigen::VectorXd rest = Eigen::VectorXd::Zero(kin.num_angles());
-  kin.forward(rest);
-  Eigen::VectorXd target(kin.num_residuals());
-  for (int e = 0; e < kin.num_effectors(); ++e) target.segment<3>(3 * e) = kin.tip(kin.rig().effectors[e]);
+  Eigen::VectorXd target = rest_tips(kin);
   target.segment<3>(0) += Eigen::Vector3d(-1.0, 0.3, 0.2);
   SolverOptions o = drag_options();
   o.strict_priority = false;

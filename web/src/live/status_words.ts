@@ -53,8 +53,9 @@ function wordsFor(reached: boolean, code: string, paperMode: boolean, reach: Rea
   }
 }
 
-/** Words made so far, by reached / off target / off target in paper mode, then by reach and stop reason. */
-const made = new Map<string, StatusWords>();
+const REACH: readonly Reach[] = ['none', 'position', 'orientation'];
+/** Words made so far: by [reached, off target, off target in paper mode], then by reach, then by stop reason. */
+const made = [0, 1, 2].map(() => REACH.map(() => new Map<string, StatusWords>()));
 
 /**
  * Words for an outcome: `facts` are the solver's result fields (reached, its stop reason code and
@@ -63,12 +64,12 @@ const made = new Map<string, StatusWords>();
  */
 export function statusWords(facts: StatusFacts, paperMode = false): StatusWords {
   const code = facts.stopReason || 'running';
-  const reach: Reach = facts.outOfReach ? 'position' : facts.orientationOutOfReach ? 'orientation' : 'none';
-  const key = `${facts.reached ? 1 : paperMode ? 2 : 0}${reach}${code}`;
-  let words = made.get(key);
+  const r = facts.outOfReach ? 1 : facts.orientationOutOfReach ? 2 : 0;
+  const cache = made[facts.reached ? 0 : paperMode ? 2 : 1][r];
+  let words = cache.get(code);
   if (!words) {
-    words = wordsFor(facts.reached, code, paperMode, reach);
-    made.set(key, words);
+    words = wordsFor(facts.reached, code, paperMode, REACH[r]);
+    cache.set(code, words);
   }
   return words;
 }
