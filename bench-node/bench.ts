@@ -29,7 +29,7 @@ export interface PreparedRig extends BenchRig {
   gtol: number;
   ftol: number;
   /** Drag and reach: the gradient tolerance, and the tip tolerance of the success test (0: E < ftol). */
-  drag: { gtol: number; tipTolerance: number };
+  drag: { gtol: number; tipTolerance: number; maxJointMove: number };
   /** Samples in the whole reach set. */
   reachSteps: number;
   /** Samples in the whole gestures set: 0 for a rig without a recognised humanoid (no gestures). */
@@ -102,7 +102,7 @@ async function prepareRig(entry: string, opts: BenchOptions, ik: IkCoreModule): 
     size,
     gtol: opts.gtol ?? defaults.gtol,
     ftol: opts.ftol ?? defaults.ftol,
-    drag: { gtol: opts.gtol ?? drag.gradientTolerance, tipTolerance: opts.ftol === undefined ? drag.tipTolerance : 0 },
+    drag: { gtol: opts.gtol ?? drag.gradientTolerance, tipTolerance: opts.ftol === undefined ? drag.tipTolerance : 0, maxJointMove: drag.maxJointMove },
     reachSteps,
     gestureSteps: gestures,
     limbs: flipLimbs(rig.spec, rig.humanoid),

@@ -151,6 +151,7 @@ export async function runNative(
           '--timeout', String(settings.timeoutSeconds)];
         if (settings.paper) args.push('--paper');
         if (settings.restarts !== undefined) args.push('--restarts', String(settings.restarts));
+        if (settings.maxJointMove !== undefined) args.push('--max-joint-move', String(settings.maxJointMove));
         if (settings.goals === 'pose') args.push('--goals', 'pose');
         await runProcess(args);
         results[b] = decodeResults(readFileSync(output, 'utf8'), end - begin, output);

@@ -37,6 +37,11 @@ export interface RunSettings extends OnTargetTest {
    */
   restarts?: number;
   /**
+   * Drag, reach and gestures: the farthest a joint moves in one solve (our solvers' option
+   * maxJointMove, rig units; the page's, from dragTolerances). undefined: no cap. The peers have none.
+   */
+  maxJointMove?: number;
+  /**
    * What the targets are (pose_goals.ts): 'pose' adds each effector's orientation (and then
    * orientationToleranceDeg is set); absent or 'position': tip positions only.
    */

@@ -34,6 +34,7 @@ export class WasmSolverRunner implements Runner {
       paperMode: settings.paper,
       ...(settings.orientationToleranceDeg === undefined ? {} : { orientationToleranceDeg: settings.orientationToleranceDeg }),
       ...(settings.restarts === undefined ? {} : { restarts: settings.restarts }),
+      ...(settings.maxJointMove === undefined ? {} : { maxJointMove: settings.maxJointMove }),
     };
     this.solver = new IkSolver(this.rig, settings.method, this.options);
     this.current = project(spec, new Float64Array(this.rig.numAngles));

@@ -93,3 +93,60 @@ describe('the body moves as a body', () => {
     expect(errors).toEqual([]);
   });
 });
+
+/** The angle, degrees, between two unit quaternions [x, y, z, w]. */
+function turnDeg(a: readonly number[], b: readonly number[]): number {
+  const d = Math.abs(a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + a[3] * b[3]);
+  return (2 * Math.acos(Math.min(1, d)) * 180) / Math.PI;
+}
+
+/**
+ * Drags the character's head target down and forward (a bow) in 30 steps and returns the most
+ * either hand turned from its frame at the drag's start, degrees, and its largest position error.
+ */
+async function bowWithPinnedHands(page: Page): Promise<{ turn: number; drift: number }> {
+  const head = await effectorNamed(page, /Head$/);
+  const hands = [await effectorNamed(page, /LeftHand$/), await effectorNamed(page, /RightHand$/)];
+  await selectTarget(page, head);
+  const start = await page.evaluate((k) => window.ikPage?.targetPosition(k) ?? null, head);
+  if (!start) throw new Error('no target');
+  const from = await targetScreen(page, head);
+  const to = await page.evaluate(([x, y, z]) => window.ikPage?.worldToScreen([x, y - 0.3, z + 0.3]) ?? null, start as [number, number, number]);
+  if (!to) throw new Error('no screen point');
+  const frames = async (): Promise<number[][]> =>
+    page.evaluate((ks) => ks.map((k) => window.ikPage?.tipRotation(k) ?? [0, 0, 0, 1]), hands);
+  const before = await frames();
+  await page.mouse.move(from.x, from.y);
+  await page.mouse.down();
+  let turn = 0, drift = 0;
+  for (let i = 1; i <= 30; i++) {
+    await page.mouse.move(from.x + ((to.x - from.x) * i) / 30, from.y + ((to.y - from.y) * i) / 30);
+    await nextFrame(page);
+    const now = await frames();
+    hands.forEach((_, j) => (turn = Math.max(turn, turnDeg(before[j], now[j]))));
+    const e = await tipErrors(page);
+    for (const k of hands) drift = Math.max(drift, e[k]);
+  }
+  await page.mouse.up();
+  await waitForSettled(page);
+  return { turn, drift };
+}
+
+describe('pinned means pinned', () => {
+  it("the character's head bowed: the pinned hands keep their place and their turn at every frame", async (ctx) => {
+    const { page, errors } = await openPage(env.browser, ctx);
+    await gotoRig(page, env.url, 'character');
+    const tolerance = await page.evaluate(() => window.ikPage?.tipTolerance() ?? 0);
+    const pinned = await bowWithPinnedHands(page);
+    console.log(`[pinned] head bowed, hands pinned: turned at most ${pinned.turn.toFixed(3)} deg, drift ${pinned.drift.toExponential(2)}`);
+    expect(pinned.drift).toBeLessThan(tolerance);
+    expect(pinned.turn).toBeLessThan(0.5);
+    // The panel's "pin orientations" off: only places are pinned, and the hands turn with the body.
+    await page.keyboard.press('r');
+    await (await panelControl(page, /^pin orientations$/)).locator('input').click();
+    const free = await bowWithPinnedHands(page);
+    console.log(`[pinned] the same with "pin orientations" off: turned ${free.turn.toFixed(1)} deg`);
+    expect(free.turn).toBeGreaterThan(5);
+    expect(errors).toEqual([]);
+  });
+});

@@ -57,7 +57,7 @@ export function referenceTips(spec: RigSpec, angles: ArrayLike<number>): Float64
   return effectorTips(forwardKinematics(spec, angles).tips, spec.effectors);
 }
 
-const STOP_REASONS = ['converged_E', 'converged_grad', 'zero_step', 'max_iterations', 'timeout', 'numerical_failure'];
+const STOP_REASONS = ['converged_E', 'converged_grad', 'zero_step', 'max_iterations', 'timeout', 'numerical_failure', 'joint_speed'];
 
 /** 1/2 |reference tips at `angles` - target|^2 and the largest tip distance. */
 function errorAt(spec: RigSpec, angles: ArrayLike<number>, target: Float64Array): { E: number; far: number } {

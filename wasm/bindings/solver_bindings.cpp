@@ -194,7 +194,7 @@ class SolverBinding {
   // The stop reasons' names, indexed by solve_io()'s return value.
   static val stop_reasons() {
     val names = val::array();
-    for (int i = 0; i <= static_cast<int>(StopReason::numerical_failure); ++i)
+    for (int i = 0; i <= static_cast<int>(StopReason::joint_speed); ++i)
       names.call<void>("push", std::string(stop_reason_name(static_cast<StopReason>(i))));
     return names;
   }

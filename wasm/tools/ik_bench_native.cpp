@@ -5,6 +5,7 @@
 // Usage:
 //   ik_bench_native --rig RIG.json --method NAME --input JOB.bin --output RESULTS.jsonl
 //                   [--gtol X] [--ftol Y] [--tip-tol Z] [--timeout SECONDS] [--paper] [--restarts N]
+//                   [--max-joint-move D]
 //                   [--goals position|pose]
 //   ik_bench_native --list-methods     prints the methods it knows (the core's registry, the
 //                                      default first, then "kdl" when built with Orocos KDL) as a
@@ -12,7 +13,8 @@
 // Method "kdl" (native builds with Orocos KDL only, native/kdl/kdl_solver.h) solves with KDL's
 // tree solvers under the same tolerances, time budget and restarts.
 // --tip-tol Z > 0 makes "on target" every tip within Z (rig units) of its target (SolverOptions::
-// tip_tolerance) instead of E < Y.
+// tip_tolerance) instead of E < Y. --max-joint-move D > 0 caps how far a joint moves in one solve
+// (SolverOptions::max_joint_move, rig units).
 // --goals pose: each record also carries each effector's target orientation, and every method
 // solves towards the whole poses (Goals of native/pose_goals.h: position and orientation per
 // effector, weight 1; kdl with its rotation rows weighted); on target then also needs every
@@ -79,6 +81,7 @@ struct Args {
   throw std::invalid_argument(problem +
                               "\nusage: ik_bench_native --rig RIG.json --method NAME --input JOB.bin --output "
                               "RESULTS.jsonl [--gtol X] [--ftol Y] [--tip-tol Z] [--timeout S] [--paper] [--restarts N]\n"
+                              "       [--max-joint-move D]\n"
                               "       [--goals position|pose]\n"
                               "       ik_bench_native --list-methods");
 }
@@ -111,6 +114,7 @@ Args parse_args(int argc, char** argv) {
     else if (flag == "--gtol") a.options.gradient_tolerance = number_arg(flag, value);
     else if (flag == "--ftol") a.options.error_tolerance = number_arg(flag, value);
     else if (flag == "--tip-tol") a.options.tip_tolerance = number_arg(flag, value);
+    else if (flag == "--max-joint-move") a.options.max_joint_move = number_arg(flag, value);
     else if (flag == "--timeout") a.options.time_budget_s = number_arg(flag, value);
     else if (flag == "--restarts") a.options.restarts = static_cast<int>(number_arg(flag, value));
     else if (flag == "--goals") {

@@ -33,29 +33,6 @@ class LevenbergMarquardt final : public Solver {
 
  private:
   void resize(int m, int n) override {
-    // Per angle, the residual blocks it moves (those of the effectors whose chain holds its
-    // bone), ascending: counted per bone, then filled block by block.
-    // Soft blocks (poles, rest bones) count like the goals' blocks (GoalSet::moving_bones()).
-    const int blocks = m / 3;
-    std::vector<int> per_bone(kin_.num_bones() + 1, 0), moving;
-    for (int k = 0; k < blocks; ++k) {
-      goals_.moving_bones(kin_, k, moving);
-      for (int b : moving) ++per_bone[b + 1];
-    }
-    for (int b = 0; b < kin_.num_bones(); ++b) per_bone[b + 1] += per_bone[b];
-    std::vector<int> bone_effectors(per_bone.back()), fill(per_bone.begin(), per_bone.end() - 1);
-    for (int k = 0; k < blocks; ++k) {
-      goals_.moving_bones(kin_, k, moving);
-      for (int b : moving) bone_effectors[fill[b]++] = k;
-    }
-    column_start_.assign(n + 1, 0);
-    column_effectors_.clear();
-    for (int j = 0; j < n; ++j) {
-      column_start_[j] = static_cast<int>(column_effectors_.size());
-      column_effectors_.insert(column_effectors_.end(), bone_effectors.begin() + per_bone[j / 3],
-                               bone_effectors.begin() + per_bone[j / 3 + 1]);
-    }
-    column_start_[n] = static_cast<int>(column_effectors_.size());
     normal_.resize(m, m);
     reduced_.resize(m, m);
     shifted_.resize(m, m);
@@ -70,22 +47,13 @@ class LevenbergMarquardt final : public Solver {
   Progress iterate() override {
     const int nf = num_free_;
     if (nf == 0) return Progress::stuck;
-    // Jf Jf^T from the 3x1 blocks of J that can be non-zero: column j of J moves only the tips
-    // of the effectors whose chain holds j's bone.
+    // Jf Jf^T from the 3x1 blocks of J that can be non-zero (block_pattern.h).
     normal_.setZero();
     for (int c = 0; c < nf; ++c) {
       if (c % 64 == 63 && time_is_up()) return Progress::stuck;
-      const int j = free_[c];
-      for (int p = column_start_[j]; p < column_start_[j + 1]; ++p) {
-        const int e = column_effectors_[p];
-        for (int q = p; q < column_start_[j + 1]; ++q) {
-          const int f = column_effectors_[q];
-          normal_.block<3, 3>(3 * e, 3 * f).noalias() += block(e, j) * block(f, j).transpose();
-        }
-      }
+      pattern_.accumulate(J_, free_[c], normal_);
     }
-    for (int e = 0; e < m_ / 3; ++e)
-      for (int f = e + 1; f < m_ / 3; ++f) normal_.block<3, 3>(3 * f, 3 * e) = normal_.block<3, 3>(3 * e, 3 * f).transpose();
+    pattern_.symmetrize(normal_);
     // The mean over the rows in use: soft rows the Solver dropped (all 0) do not count.
     const double s = normal_.trace() / (goals_.soft_on() ? m_ : goals_.hard_rows());
     if (!std::isfinite(s)) return fail("the Jacobian is not finite");
@@ -105,12 +73,7 @@ class LevenbergMarquardt final : public Solver {
       // Gain ratio: actual decrease over the decrease the linear model predicts for the
       // (projected) step taken.
       jd_.setZero();
-      for (int c = 0; c < nf; ++c) {
-        const int j = free_[c];
-        const double d = trial_[j] - a_[j];
-        for (int p = column_start_[j]; p < column_start_[j + 1]; ++p)
-          jd_.segment<3>(3 * column_effectors_[p]) += d * block(column_effectors_[p], j);
-      }
+      for (int c = 0; c < nf; ++c) pattern_.add(J_, free_[c], trial_[free_[c]] - a_[free_[c]], jd_);
       const double predicted = -r_.dot(jd_) - 0.5 * jd_.squaredNorm();
       if (damping_.accept(E_, E_trial, predicted)) {
         a_.swap(trial_);
@@ -121,9 +84,6 @@ class LevenbergMarquardt final : public Solver {
     }
     return Progress::stuck;
   }
-
-  // The 3x1 block of J: residual block e (an effector's tip, or its orientation) against angle j.
-  Eigen::Block<Eigen::MatrixXd, 3, 1> block(int e, int j) { return J_.block<3, 1>(3 * e, j); }
 
   enum class Step { ok, failed, out_of_time };
 
@@ -143,23 +103,9 @@ class LevenbergMarquardt final : public Solver {
       return true;
     };
     // Angle i's step -(Jf^T y)_i.
-    const auto proposed = [&](int i) {
-      double d = 0;
-      for (int p = column_start_[i]; p < column_start_[i + 1]; ++p)
-        d -= block(column_effectors_[p], i).dot(y_.segment<3>(3 * column_effectors_[p]));
-      return d;
-    };
+    const auto proposed = [&](int i) { return -pattern_.dot(J_, i, y_); };
     // Angle i moves by a known d: its column leaves the system.
-    const auto take_out = [&](int i, double d) {
-      for (int p = column_start_[i]; p < column_start_[i + 1]; ++p) {
-        const int e = column_effectors_[p];
-        rhs_.segment<3>(3 * e) += d * block(e, i);
-        for (int q = column_start_[i]; q < column_start_[i + 1]; ++q) {
-          const int f = column_effectors_[q];
-          reduced_.block<3, 3>(3 * e, 3 * f).noalias() -= block(e, i) * block(f, i).transpose();
-        }
-      }
-    };
+    const auto take_out = [&](int i, double d) { pattern_.take_out(J_, i, d, rhs_, reduced_); };
     switch (active_set_.run(a_, kin_.lower(), kin_.upper(), free_, num_free_, ActiveSet::Fix::past_limit, deadline(),
                             solve_system, proposed, take_out)) {
       case ActiveSet::Status::solve_failed: return Step::failed;
@@ -172,8 +118,6 @@ class LevenbergMarquardt final : public Solver {
     return Step::ok;
   }
 
-  // Per angle j: the residual blocks it moves, column_effectors_[start[j]..start[j+1]).
-  std::vector<int> column_start_, column_effectors_;
   Eigen::MatrixXd normal_, reduced_, shifted_;
   Eigen::VectorXd y_, rhs_, jd_;
   ActiveSet active_set_;

@@ -117,14 +117,15 @@ bool Priority::orientation_given_up(const GoalSet& goals, const Eigen::Ref<const
   return false;
 }
 
-bool Priority::prepare(const Kinematics& kin, const Eigen::MatrixXd& J) {
+bool Priority::prepare(const Kinematics& kin, const Eigen::MatrixXd& J, const BlockPattern& pattern) {
   int count = 0;
   movable_.resize(kin.num_angles());  // within the capacity resize() gave
   for (int j = 0; j < kin.num_angles(); ++j)
     if (kin.lower()[j] < kin.upper()[j]) movable_[count++] = j;
   movable_.resize(count);
   normal_.setZero();
-  for (int c = 0; c < count; ++c) normal_.noalias() += J.col(movable_[c]) * J.col(movable_[c]).transpose();
+  for (int c = 0; c < count; ++c) pattern.accumulate(J, movable_[c], normal_);
+  pattern.symmetrize(normal_);
   // The mean diagonal over the rows in use: soft rows the Solver dropped (all 0) do not count.
   int rows = 0;
   for (int i = 0; i < normal_.rows(); ++i) rows += normal_(i, i) > 0 || i < held_rows_;
@@ -132,7 +133,7 @@ bool Priority::prepare(const Kinematics& kin, const Eigen::MatrixXd& J) {
   return std::isfinite(scale_);
 }
 
-Priority::Status Priority::step(const Kinematics& kin, const Eigen::MatrixXd& J, const Eigen::Ref<const Eigen::VectorXd>& a,
+Priority::Status Priority::step(const Kinematics& kin, const Eigen::MatrixXd& J, const BlockPattern& pattern, const Eigen::Ref<const Eigen::VectorXd>& a,
                                 const Eigen::Ref<const Eigen::VectorXd>& r, double lambda, double floor,
                                 const Deadline& deadline, Eigen::Ref<Eigen::VectorXd> trial) {
   const int m = static_cast<int>(normal_.rows());
@@ -146,11 +147,8 @@ Priority::Status Priority::step(const Kinematics& kin, const Eigen::MatrixXd& J,
     small_cholesky_solve(shifted_, m, y_);
     return true;
   };
-  const auto proposed = [&](int i) { return -J.col(i).dot(y_); };
-  const auto take_out = [&](int i, double d) {
-    rhs_.noalias() += d * J.col(i);
-    reduced_.noalias() -= J.col(i) * J.col(i).transpose();
-  };
+  const auto proposed = [&](int i) { return -pattern.dot(J, i, y_); };
+  const auto take_out = [&](int i, double d) { pattern.take_out(J, i, d, rhs_, reduced_); };
   switch (active_set_.run(a, kin.lower(), kin.upper(), movable_, static_cast<int>(movable_.size()),
                           ActiveSet::Fix::past_limit, deadline, solve_system, proposed, take_out)) {
     case ActiveSet::Status::solve_failed: return Status::failed;
@@ -163,7 +161,7 @@ Priority::Status Priority::step(const Kinematics& kin, const Eigen::MatrixXd& J,
     const double d = active_set_.step()[j];
     if (d == 0) continue;
     trial[j] += d;
-    jd_.noalias() += d * J.col(j);
+    pattern.add(J, j, d, jd_);
   }
   kin.project(trial);
   return Status::ok;
@@ -176,7 +174,7 @@ double Priority::predicted_decrease(const Eigen::Ref<const Eigen::VectorXd>& r, 
   return sum;
 }
 
-double Priority::reduced_gradient_norm(const Kinematics& kin, const Eigen::MatrixXd& J,
+double Priority::reduced_gradient_norm(const Kinematics& kin, const Eigen::MatrixXd& J, const BlockPattern& pattern,
                                        const Eigen::Ref<const Eigen::VectorXd>& a,
                                        const Eigen::Ref<const Eigen::VectorXd>& r) {
   const int m = static_cast<int>(normal_.rows());
@@ -185,7 +183,7 @@ double Priority::reduced_gradient_norm(const Kinematics& kin, const Eigen::Matri
   for (int i = 0; i < m; ++i)
     if (held_row(i)) y_[i] = 0;
   gradient_.setZero();
-  for (int j : movable_) gradient_[j] = J.col(j).dot(y_);
+  for (int j : movable_) gradient_[j] = pattern.dot(J, j, y_);
   // Less its part in the held rows' row space: g - Jh^T (Jh Jh^T)^-1 Jh g.
   held_normal_ = normal_;
   for (int i = 0; i < m; ++i) {
@@ -198,14 +196,12 @@ double Priority::reduced_gradient_norm(const Kinematics& kin, const Eigen::Matri
     held_normal_(i, i) = 1;
   }
   held_y_.setZero();
-  for (int j : movable_)
-    for (int i = 0; i < m; ++i)
-      if (held_row(i)) held_y_[i] += J(i, j) * gradient_[j];
+  for (int j : movable_) pattern.add(J, j, gradient_[j], held_y_);
+  for (int i = 0; i < m; ++i)
+    if (!held_row(i)) held_y_[i] = 0;
   if (small_cholesky(held_normal_, m)) {
-    small_cholesky_solve(held_normal_, m, held_y_);
-    for (int j : movable_)
-      for (int i = 0; i < m; ++i)
-        if (held_row(i)) gradient_[j] -= J(i, j) * held_y_[i];
+    small_cholesky_solve(held_normal_, m, held_y_);  // 0 stays 0 on the rows not held
+    for (int j : movable_) gradient_[j] -= pattern.dot(J, j, held_y_);
   }
   // An angle on a limit that the descent direction -g pushes outward cannot move.
   double sum = 0;

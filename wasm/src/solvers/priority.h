@@ -27,6 +27,7 @@
 #include <vector>
 
 #include "active_set.h"
+#include "block_pattern.h"
 #include "deadline.h"
 #include "goals.h"
 #include "kinematics.h"
@@ -79,15 +80,15 @@ class Priority {
   bool orientation_given_up(const GoalSet& goals, const Eigen::Ref<const Eigen::VectorXd>& r, const GoalTolerance& tol) const;
 
   // Jf Jf^T over the movable angles of `kin` (lower < upper) with the Jacobian `J` (rows x
-  // angles, rig units per degree). Returns false if it is not finite.
-  bool prepare(const Kinematics& kin, const Eigen::MatrixXd& J);
+  // angles, rig units per degree) of sparsity `pattern`. Returns false if it is not finite.
+  bool prepare(const Kinematics& kin, const Eigen::MatrixXd& J, const BlockPattern& pattern);
   // The mean diagonal of Jf Jf^T over the rows in use (after prepare()).
   double scale() const { return scale_; }
 
   enum class Status { ok, failed, out_of_time };
   // Writes `trial` = P(a + d) for the priority step from `a` (degrees) with residual `r`, damping
   // `lambda` on the given-up rows (rig units^2, like Jf Jf^T) and `floor` added on the held ones.
-  Status step(const Kinematics& kin, const Eigen::MatrixXd& J, const Eigen::Ref<const Eigen::VectorXd>& a,
+  Status step(const Kinematics& kin, const Eigen::MatrixXd& J, const BlockPattern& pattern, const Eigen::Ref<const Eigen::VectorXd>& a,
               const Eigen::Ref<const Eigen::VectorXd>& r, double lambda, double floor, const Deadline& deadline,
               Eigen::Ref<Eigen::VectorXd> trial);
   // The decrease of 1/2 |r|^2 over the held rows (`held`) or the others that the linear model
@@ -97,7 +98,8 @@ class Priority {
   // |g| of the given-up rows' gradient Jf^T r within the null space of the held rows' Jacobian,
   // leaving out the angles on a limit that it pushes outward (rig units^2 per degree): 0 at the
   // lexicographic closest point. After prepare() at the same point.
-  double reduced_gradient_norm(const Kinematics& kin, const Eigen::MatrixXd& J, const Eigen::Ref<const Eigen::VectorXd>& a,
+  double reduced_gradient_norm(const Kinematics& kin, const Eigen::MatrixXd& J, const BlockPattern& pattern,
+                               const Eigen::Ref<const Eigen::VectorXd>& a,
                                const Eigen::Ref<const Eigen::VectorXd>& r);
 
  private:

@@ -52,6 +52,7 @@ const char* stop_reason_name(StopReason reason) {
     case StopReason::timeout: return "timeout";
     case StopReason::invalid_input: return "invalid_input";
     case StopReason::numerical_failure: return "numerical_failure";
+    case StopReason::joint_speed: return "joint_speed";
   }
   return "unknown";
 }
@@ -120,12 +121,30 @@ StopReason Solver::begin(const Eigen::Ref<const Eigen::VectorXd>& angles, const 
 
   a_ = angles;
   kin_.project(a_);
-  start_ = a_;
+  // A solve that starts where the last one stopped partway to its answer (joint_speed) goes on
+  // towards it: its run starts from that answer, the joints' move is measured from here.
+  const bool resume =
+      heading_ && opt_.max_joint_move > 0 && !opt_.paper_mode && partway_.size() == a_.size() && a_ == partway_;
+  heading_ = false;
+  resumed_ = resume;
+  start_ = moved_from_ = a_;
   soft_retried_ = false;
   settling_.begin_run();
   reset();
   priority_damping_.reset(opt_.lm_initial_mu);
   E_ = evaluate(a_, r_);
+  if (opt_.max_joint_move > 0) motion_.note_start(kin_);  // kin_ is posed at the start
+  if (resume) {
+    a_ = start_ = heading_to_;
+    E_ = evaluate(a_, r_);
+  }
+  if (opt_.max_joint_move > 0) {
+    // The joints may move as far as the goals moved (from the tips at the start, or resuming,
+    // from the answer the last solve was heading to), and the bound more.
+    double moved = 0;
+    for (int b = 0; b < goals_.num_blocks(); ++b) moved = std::max(moved, r_.segment<3>(3 * b).norm());
+    allowed_move_ = opt_.max_joint_move + moved;
+  }
   if (finite(E_)) {
     priority_.note_start(goals_, r_, goal_tolerance());
     const bool strict = !opt_.paper_mode && opt_.strict_priority;
@@ -168,7 +187,10 @@ StopReason Solver::begin(const Eigen::Ref<const Eigen::VectorXd>& angles, const 
   }
   if (close || !running()) clock_.close();  // otherwise the first step's time runs from this call's start
   summary_.elapsed_s = clock_.spent();
-  if (!running()) finish();
+  if (!running()) {
+    finish();
+    bound_motion();
+  }
   return summary_.stop_reason;
 }
 
@@ -193,6 +215,12 @@ void Solver::resize_workspace() {
   reach_ = rig_reach(kin_);
   escape_.resize(kin_, m_);
   chain_restart_.resize(kin_);
+  motion_.resize(kin_);
+  moved_from_.resize(n_);
+  heading_to_.resize(n_);
+  partway_.resize(n_);
+  heading_ = false;
+  pattern_.build(kin_, goals_);
   priority_.resize(goals_, n_);
   resize(m_, n_);
 }
@@ -250,7 +278,10 @@ bool Solver::advance(Clock::time_point begin) {
   }
   summary_.stop_reason = settle(reason);
   summary_.elapsed_s = clock_.spent();
-  if (reason != StopReason::running) finish();
+  if (reason != StopReason::running) {
+    finish();
+    bound_motion();
+  }
   return reason == StopReason::running;
 }
 
@@ -311,8 +342,8 @@ bool Solver::update_derivatives(bool posed) {
   num_free_ = found.count;
   gradient_norm_ = opt_.paper_mode ? g_.norm() : found.gradient_norm;
   if (priority_.active()) {
-    if (!priority_.prepare(kin_, J_)) return false;
-    gradient_norm_ = priority_.reduced_gradient_norm(kin_, J_, a_, r_);
+    if (!priority_.prepare(kin_, J_, pattern_)) return false;
+    gradient_norm_ = priority_.reduced_gradient_norm(kin_, J_, pattern_, a_, r_);
   }
   return finite(gradient_norm_);
 }
@@ -415,6 +446,30 @@ bool Solver::settles() {
                           : strict && ((settling_.stalled(threshold) && chain_restart_.beyond_any(kin_, r_, goals_, tol.tip, false)) ||
                                        settling_.settled(threshold, kFarShare * tol.tip)));
   return settling_.ended();
+}
+
+void Solver::bound_motion() {
+  const double bound = allowed_move_;
+  const StopReason stop = summary_.stop_reason;
+  if (!(opt_.max_joint_move > 0) || opt_.paper_mode || stop == StopReason::numerical_failure || stop == StopReason::invalid_input) return;
+  // A run from the start follows E down from there: it moves the body as the target moved (a
+  // straight limb starting to bend included). Only a chain restart can land on another branch.
+  if (summary_.chain_restarts == 0 && !resumed_) return;
+  kin_.forward(summary_.angles);
+  if (motion_.largest_move(kin_) <= bound) return;
+  heading_to_ = summary_.angles;
+  motion_.limit(kin_, moved_from_, summary_.angles, bound, a_);
+  E_ = evaluate(a_, r_);
+  if (!finite(E_) || !update_derivatives(true)) return;  // the best point stands (it was finite)
+  summary_.angles = a_;
+  summary_.E = E_;
+  summary_.gradient_norm = gradient_norm_;
+  summary_.tip_distance = largest_tip_distance(goals_, r_);
+  summary_.reached = on_target();
+  summary_.out_of_reach = summary_.orientation_out_of_reach = false;
+  summary_.stop_reason = summary_.reached ? StopReason::converged_E : StopReason::joint_speed;
+  partway_ = a_;
+  heading_ = true;
 }
 
 void Solver::finish() {

@@ -16,10 +16,12 @@
 #include <string>
 #include <vector>
 
+#include "block_pattern.h"
 #include "chain_restart.h"
 #include "damping.h"
 #include "deadline.h"
 #include "goals.h"
+#include "joint_motion.h"
 #include "kinematics.h"
 #include "priority.h"
 #include "restarts.h"
@@ -52,6 +54,9 @@ enum class StopReason {
                       // plain positions in paper mode), or a bad option; or the rig's
                       // effector list changed between start() and step() (see message)
   numerical_failure,  // E or a derivative became non-finite, or a factorisation failed at every damping
+  joint_speed,        // a chain restart's answer lay farther than max_joint_move from the start
+                      // (joint_motion.h): the angles are the pose partway there, not on target; the
+                      // next solve from them resumes the move
 };
 
 // "running", "converged_E", ... exactly the enumerator names.
@@ -202,6 +207,7 @@ class Solver {
   Eigen::VectorXd free_mask_;     // 1 for a free angle, 0 otherwise
   int num_free_ = 0;
   double reach_ = 1;              // longest effector chain (sum of bone lengths), rig units
+  BlockPattern pattern_;          // which residual blocks each angle moves (sized with the workspace)
   // The largest #angles the method takes with `residuals` residuals (its dense matrices grow
   // with #angles squared); the base class applies kMaxDenseAngles in paper mode.
   virtual int angle_limit(int /*residuals*/) const { return kNoAngleLimit; }
@@ -272,6 +278,20 @@ class Solver {
   // the given-up goals in priority mode, else sqrt(2 E).
   bool settles();
   Settling settling_;  // also: whether the last run ended by settling, not by a stop test
+  // At the end of a solve that used a chain restart or resumed a move, with max_joint_move > 0
+  // outside paper mode: a best point farther than allowed_move_ from the start is replaced by the pose partway there (JointMotion::limit), stopped with
+  // joint_speed, E, the gradient norm and the tip distance measured there.
+  void bound_motion();
+  JointMotion motion_;
+  // How far a joint may move in this solve: max_joint_move plus the largest goal residual block
+  // at the start (how far the targets moved from the tips), rig units.
+  double allowed_move_ = 0;
+  Eigen::VectorXd moved_from_;  // the solve's start angles (start_ is the run's start, which a resumed move replaces)
+  // After a joint_speed stop: the answer it was heading to, and the pose it returned. A solve
+  // starting at that pose resumes the move: its run starts from the answer.
+  Eigen::VectorXd heading_to_, partway_;
+  bool heading_ = false;
+  bool resumed_ = false;  // this solve resumed such a move
   // At the end of a solve: the out_of_reach flags (from the given-up goals, or without any, from
   // a run that ended at a stationary or settled point off target).
   void finish();

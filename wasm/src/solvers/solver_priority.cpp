@@ -85,7 +85,7 @@ Solver::Progress Solver::priority_iterate() {
                                           Priority::kHeldDamping
                                     : priority_damping_.shift(2 * given_up_E / (reach_ * reach_), opt_.lm_damping_floor, s);
     const double floor = restoring ? 0 : opt_.lm_damping_floor * s;
-    switch (priority_.step(kin_, J_, a_, r_, lambda, floor, deadline(), trial_)) {
+    switch (priority_.step(kin_, J_, pattern_, a_, r_, lambda, floor, deadline(), trial_)) {
       case Priority::Status::failed: return fail("the priority step's matrix could not be factorised");
       case Priority::Status::out_of_time: gave_up_for_time(); return Progress::stuck;
       case Priority::Status::ok: break;

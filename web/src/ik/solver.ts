@@ -24,7 +24,8 @@ export type StopReason =
   | 'max_iterations' // iterations reached maxIterations
   | 'timeout' // the time budget ran out
   | 'invalid_input' // the last start() or solve() was refused (it threw an Error); only result() shows it
-  | 'numerical_failure'; // E or a derivative became non-finite
+  | 'numerical_failure' // E or a derivative became non-finite
+  | 'joint_speed'; // a chain restart's answer lay farther than maxJointMove: the pose moved partway there; solve again to go on
 
 /**
  * Solver options; every field is optional and defaults to the core's default (the list
@@ -120,6 +121,15 @@ export interface SolverOptions {
    * outOfReach, orientationOutOfReach). false: the least-squares point of all goals. Default true.
    */
   strictPriority?: boolean;
+  /**
+   * Bounded joint speed, rig units: > 0 caps how far any joint (a bone's head or tip) moves in a
+   * solve that lands on another branch of solutions (after a chain restart), beyond how far the
+   * targets moved. Such an answer comes back as the pose partway there, with stopReason
+   * 'joint_speed'; solving again from that pose resumes the move. A run that follows E down from
+   * the start is never cut. The page and the bench's dragging experiments use 4% of the rig size.
+   * Default 0 (no cap).
+   */
+  maxJointMove?: number;
 }
 
 export interface SolverResult {

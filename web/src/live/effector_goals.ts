@@ -20,6 +20,12 @@ export class EffectorGoals {
   poleBones = new Int32Array(0);
   /** The poles, 3 per limb [x, y, z], rig units (moving a pole rewrites them in place). */
   polePoints = new Float64Array(0);
+  /**
+   * Pinned orientations while a target is dragged (pin()): 4 per effector [x, y, z, w], the
+   * frames the effectors had when the drag began; null: none. An effector without an orientation
+   * goal of its own keeps its pinned one, unless it is the one dragged (the yielding effector).
+   */
+  pinned: Float64Array | null = null;
   private cached: Goals | null = null;
   private cachedFor: Float64Array | null = null;
   private cachedYielding = -1;
@@ -39,7 +45,7 @@ export class EffectorGoals {
 
   /** True when some effector has an orientation goal or lacks a position goal, or a limb has a pole (the solve needs Goals). */
   get beyondPositions(): boolean {
-    if (this.poleBones.length > 0) return true;
+    if (this.poleBones.length > 0 || this.pinned) return true;
     for (let k = 0; k < this.count; k++) if (this.orientation[k] || !this.position[k]) return true;
     return false;
   }
@@ -64,6 +70,16 @@ export class EffectorGoals {
     if (points.length !== 3 * bones.length) throw new Error(`${bones.length} poles need ${3 * bones.length} numbers, not ${points.length}`);
     this.poleBones = Int32Array.from(bones);
     this.polePoints = Float64Array.from(points);
+    this.changed();
+  }
+
+  /**
+   * Pins every effector's orientation at `rotations` (4 per effector [x, y, z, w], rig
+   * coordinates: the frames at the drag's start; copied), or with null unpins them.
+   */
+  pin(rotations: ArrayLike<number> | null): void {
+    if (rotations && rotations.length !== 4 * this.count) throw new Error(`${this.count} effectors need ${4 * this.count} numbers, not ${rotations.length}`);
+    this.pinned = rotations ? Float64Array.from(rotations) : null;
     this.changed();
   }
 
@@ -104,7 +120,9 @@ export class EffectorGoals {
   /**
    * The Goals for the solver: effector k (bone `bones[k]`) aims at `targets` (3 per effector, rig
    * units) and, where on, at its orientation; effector `yielding` (-1: none) gives way first when
-   * not every goal can be met (EffectorGoal.yields); the poles, if any. The same object until a
+   * not every goal can be met (EffectorGoal.yields); while pinned, every other effector without an
+   * orientation goal keeps its pinned orientation (a held goal like its position: strict priority
+   * gives it up before the position when its chain cannot keep both); the poles, if any. The same object until a
    * flag, the yielding effector or the poles' limbs change or `targets` is another array (its
    * numbers are read at each solve).
    */
@@ -116,6 +134,7 @@ export class EffectorGoals {
       if (k === yielding) g.yields = true;
       if (this.position[k]) g.position = targets.subarray(3 * k, 3 * k + 3);
       if (this.orientation[k]) g.orientation = this.rotations.subarray(4 * k, 4 * k + 4);
+      else if (this.pinned && k !== yielding) g.orientation = this.pinned.subarray(4 * k, 4 * k + 4);
       effectors.push(g);
     }
     const poles: PoleGoal[] = [];

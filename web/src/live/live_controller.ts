@@ -37,6 +37,13 @@ export interface FrameSettings {
   paperMode: boolean;
   /** Strict priority between targets (SolveSettings.strictPriority); default true. */
   strictPriority?: boolean;
+  /**
+   * While a target is dragged, the other effectors keep the orientation they had when the drag
+   * began, as well as their position (IkSession.pinOrientations); default true. Not in paper mode.
+   */
+  pinOrientations?: boolean;
+  /** The farthest a joint moves in one frame, rig units (SolveSettings.maxJointMove; the rig's drag tolerances give it). Default 0: no cap. */
+  maxJointMove?: number;
 }
 
 /** What the controller tells its front end. Only `failed` is required. */
@@ -73,6 +80,8 @@ export class LiveController {
   paused = false;
   private current: LiveRig | null = null;
   private needsSolve = false;
+  /** The last solve was of a drag (its first frame pinned the orientations). */
+  private pinnedDrag = false;
   private needsRedraw = false;
   private readonly timing: FrameTiming = { ms: 0, again: false };
   private readonly solveSettings: SolveSettings = { gradientTolerance: 0, tipTolerance: 0, maxIterations: 0, timeBudgetMs: 0, restarts: 0, paperMode: false };
@@ -335,6 +344,7 @@ export class LiveController {
     const live = this.current;
     if (!live || this.paused) return;
     this.events.tick?.();
+    this.pinOrientations(live.session);
     let tips: Float64Array | null = null;
     if (this.solving && (this.needsSolve || this.handles.dragging)) tips = this.solve(live.session);
     if (this.needsRedraw) {
@@ -345,6 +355,19 @@ export class LiveController {
       if (this.handles.poles.count > 0) this.syncPoles(live);
       this.events.redrawn?.();
     }
+  }
+
+  /**
+   * A target drag's first frame pins the other effectors' frames at the pose it starts from
+   * (FrameSettings.pinOrientations); they are freed once the drag and the solves that finish it
+   * are over. A pole's drag pins nothing: the limb turns, its hand free to turn with it.
+   */
+  private pinOrientations(session: IkSession): void {
+    const pin = (this.settings.pinOrientations ?? true) && !this.settings.paperMode;
+    const targetDrag = this.handles.dragging && this.handles.selected !== null;
+    if (pin && targetDrag && !this.pinnedDrag) session.pinOrientations(true);
+    else if (!pin || (!targetDrag && !this.needsSolve)) session.pinOrientations(false);
+    this.pinnedDrag = targetDrag;
   }
 
   /** One per-frame solve; returns the tips at the new pose, or null when nothing was solved. */
@@ -362,6 +385,7 @@ export class LiveController {
     f.timeBudgetMs = s.timeBudgetMs;
     f.paperMode = s.paperMode;
     f.strictPriority = s.strictPriority ?? true;
+    f.maxJointMove = s.paperMode ? 0 : (s.maxJointMove ?? 0);
     this.needsRedraw = true;
     let outcome: SolveOutcome;
     try {

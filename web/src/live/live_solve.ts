@@ -4,9 +4,12 @@
 import type { IkSession } from './session.js';
 import type { SolveOutcome, SolveSettings } from './solver.js';
 
-/** Stop reasons after which the next frame goes on solving: the budget ran out, not the problem. */
+/**
+ * Stop reasons after which the next frame goes on solving: the budget ran out, not the problem,
+ * or the joints' speed bound (maxJointMove) stopped the body partway to its answer.
+ */
 export function budgetStop(reason: string): boolean {
-  return reason === 'max_iterations' || reason === 'timeout';
+  return reason === 'max_iterations' || reason === 'timeout' || reason === 'joint_speed';
 }
 
 /** How one per-frame solve went; one record is rewritten by every solve (no garbage per frame). */

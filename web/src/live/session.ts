@@ -94,6 +94,15 @@ export class IkSession {
     return this.goals.beyondPositions || yielding >= 0 ? this.goals.goals(this.effectorList, this.targets, yielding) : this.targets;
   }
 
+  /**
+   * Pins every effector's orientation at the current pose (a drag begins: the effectors not
+   * dragged keep their frames as well as their positions, EffectorGoals.pin), or with `on`
+   * false unpins them (the drag and its solves are over).
+   */
+  pinOrientations(on: boolean): void {
+    if (on || this.goals.pinned) this.goals.pin(on ? this.tipRotations() : null);
+  }
+
   /** Effector k's orientation goal on at `q` ([x, y, z, w], rig coordinates; omitted: its current frame) or off. */
   setOrientationGoal(k: number, on: boolean, q?: ArrayLike<number>): void {
     if (on && !q) q = this.tipRotations().subarray(4 * k, 4 * k + 4);

@@ -26,6 +26,8 @@ export interface SolveSettings {
    * all, which pulls pinned effectors off their targets (the report's "wobble").
    */
   strictPriority?: boolean;
+  /** The farthest a joint moves in one solve, rig units (the solver option maxJointMove). Default 0: no cap. */
+  maxJointMove?: number;
 }
 
 /** What a solve or a step reached (angles in degrees, distances in rig units, see SolverResult). */
@@ -97,6 +99,7 @@ export class MethodSolver {
       restarts: s.restarts,
       paperMode: s.paperMode,
       strictPriority: s.strictPriority ?? true,
+      maxJointMove: s.maxJointMove ?? 0,
     });
     Object.assign(this.sent, s);
   }

@@ -39,6 +39,8 @@ function wordsFor(reached: boolean, code: string, paperMode: boolean, reach: Rea
   switch (code) {
     case 'running':
       return words('solving', 'solving', 'the solve has not stopped yet');
+    case 'joint_speed':
+      return words('catching up', 'solving', 'the nearest pose on target is farther than the joints may move in one frame: the body moves there over a few frames');
     case 'max_iterations':
     case 'timeout':
       return words('time budget', 'budget', 'the per-solve iteration or time budget ran out; the next frame goes on');

@@ -247,6 +247,7 @@ export class PageApp {
     const t = live.tolerances();
     this.settings.tipTolerance = Number(t.tipTolerance.toPrecision(3));
     this.settings.gradientTolerance = Number(t.gradientTolerance.toPrecision(3));
+    this.settings.maxJointMove = t.maxJointMove;
     this.panel.refresh();
     writeUrlState({ rig: key, method: this.settings.method });
     this.showRigName();

@@ -44,6 +44,7 @@ export function initialSettings(rig: string, method: string): PageSettings {
     restarts: 0,
     paperMode: false,
     strictPriority: true,
+    pinOrientations: true,
     compareTimeBudgetMs: 1000,
     compareMaxIterations: 100000,
     compareFrom: 'current pose',

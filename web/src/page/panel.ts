@@ -96,6 +96,11 @@ export class Panel {
       .name('strict priority')
       .onChange(() => actions.settingsChanged())
       .domElement.setAttribute('title', 'on: targets that can be met stay met, the dragged one gives way; off: the least-squares point of all targets, which pulls the pinned ones off theirs (the report’s wobble)');
+    solver
+      .add(s, 'pinOrientations')
+      .name('pin orientations')
+      .onChange(() => actions.settingsChanged())
+      .domElement.setAttribute('title', 'on: while a target is dragged, the other end effectors keep their turn as well as their place (given up before the place when their chain cannot keep both); off: only their places are pinned');
 
     const teach = this.gui.addFolder('Teaching');
     this.folders = [rig, pose, solver, teach];

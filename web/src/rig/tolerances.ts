@@ -40,17 +40,27 @@ export const DRAG_TIP_SHARE = 1e-3;
 /** The drag gradient tolerance over the gradient of an effector one tip tolerance off with the whole rig as lever. */
 export const DRAG_GRADIENT_SHARE = 1e-3;
 
+/**
+ * Share of the rig size that a joint may move in one frame while dragging beyond how far the
+ * target moved (the solver option maxJointMove): with a target moved less than 1% this stays below
+ * the 5% that makes a step a jump (bench-node/jumps.ts), so a change of branch shows as a quick
+ * move over a few frames, never a one-frame snap.
+ */
+export const DRAG_JOINT_MOVE_SHARE = 0.04;
+
 export interface DragTolerances {
   /** Largest tip-to-target distance that counts as on target, rig units. */
   tipTolerance: number;
   /** |grad E| threshold, rig units^2 per degree. */
   gradientTolerance: number;
+  /** The farthest a joint moves in one frame (solver option maxJointMove), rig units. */
+  maxJointMove: number;
 }
 
 /** The drag tolerances of a rig of size `size` (rig units, see rigSize). */
 export function dragTolerances(size: number): DragTolerances {
   const tipTolerance = DRAG_TIP_SHARE * size;
-  return { tipTolerance, gradientTolerance: DRAG_GRADIENT_SHARE * tipTolerance * size * (Math.PI / 180) };
+  return { tipTolerance, gradientTolerance: DRAG_GRADIENT_SHARE * tipTolerance * size * (Math.PI / 180), maxJointMove: DRAG_JOINT_MOVE_SHARE * size };
 }
 
 /** Rig size: the diagonal of the bounding box of the bone tips (3 numbers per bone), rig units. */

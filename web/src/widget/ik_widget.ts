@@ -185,6 +185,7 @@ export class IkWidget extends HTMLElement {
     const tolerances = live.tolerances();
     this.settings.tipTolerance = tolerances.tipTolerance;
     this.settings.gradientTolerance = tolerances.gradientTolerance;
+    this.settings.maxJointMove = tolerances.maxJointMove;
     this.settings.method = this.methodSelect.value = this.method;
     const controller = new LiveController(this.view, this.settings, {
       solved: (outcome, ms) => this.status.show(this.settings.method, outcome, ms, controller.live?.session.orientationErrorDeg() ?? NaN),
