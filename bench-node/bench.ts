@@ -163,12 +163,12 @@ export function totalSolves(opts: BenchOptions, rigs: readonly PreparedRig[]): n
 
 /**
  * The settings of `method` on `rig` for `experiment`: the report's tolerances for random and
- * incremental; for drag and reach a user's drag (the rig's drag tolerances, and no restarts: a
- * restart jumps the whole pose).
+ * incremental; for drag, reach and gestures a user's drag in the page (the rig's drag tolerances
+ * and joint speed, the page's goals, and no restarts: a restart jumps the whole pose).
  */
 export function runSettings(rig: PreparedRig, experiment: Experiment, method: string, opts: BenchOptions): RunSettings {
   const common = { method, ftol: rig.ftol, timeoutSeconds: opts.timeoutSeconds, paper: opts.paper, rigSize: rig.size };
-  if (isDragging(experiment)) return { ...common, ...rig.drag, restarts: 0 };
+  if (isDragging(experiment)) return { ...common, ...rig.drag, restarts: 0, pageGoals: true, pinFrames: rig.humanoid !== null };
   const pose = opts.goals === 'pose' ? { goals: opts.goals, orientationToleranceDeg: ORIENTATION_TOLERANCE_DEG } : {};
   return { ...common, gtol: rig.gtol, tipTolerance: 0, ...(opts.restarts === undefined ? {} : { restarts: opts.restarts }), ...pose };
 }

@@ -13,7 +13,10 @@ import type { TargetSet } from './targets.js';
 export const REFERENCE_METHOD = 'lm';
 export const REFERENCE_BUDGET_S = 1;
 
-/** The reference's settings: the run's drag settings (on-target test, gtol) with lm's defaults otherwise. */
+/**
+ * The reference's settings: the run's drag settings (on-target test, gtol, the page's goals) with
+ * lm's defaults otherwise (restarts; no joint speed bound: it decides what can be reached).
+ */
 export function referenceSettings(drag: RunSettings): RunSettings {
   return {
     method: REFERENCE_METHOD,
@@ -23,6 +26,8 @@ export function referenceSettings(drag: RunSettings): RunSettings {
     timeoutSeconds: REFERENCE_BUDGET_S,
     paper: false,
     rigSize: drag.rigSize,
+    pageGoals: drag.pageGoals,
+    pinFrames: drag.pinFrames,
   };
 }
 

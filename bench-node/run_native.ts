@@ -10,6 +10,7 @@ import { fileURLToPath } from 'node:url';
 
 import type { RigSpec } from '../web/src/ik/rig_spec.js';
 import { writeA7Rig } from './a7_writer.js';
+import { pinnedFramesArgument } from './drag_goals.js';
 import { BenchError, quote } from './errors.js';
 import type { SolveResult } from './metrics.js';
 import { batchesOf } from './run_wasm.js';
@@ -152,6 +153,7 @@ export async function runNative(
         if (settings.paper) args.push('--paper');
         if (settings.restarts !== undefined) args.push('--restarts', String(settings.restarts));
         if (settings.maxJointMove !== undefined) args.push('--max-joint-move', String(settings.maxJointMove));
+        if (settings.pageGoals) args.push('--page-goals', pinnedFramesArgument(spec, spec.effectors, settings.pinFrames ?? false));
         if (settings.goals === 'pose') args.push('--goals', 'pose');
         await runProcess(args);
         results[b] = decodeResults(readFileSync(output, 'utf8'), end - begin, output);

@@ -42,6 +42,14 @@ export interface RunSettings extends OnTargetTest {
    */
   maxJointMove?: number;
   /**
+   * Drag, reach and gestures: our solvers get the page's goals (drag_goals.ts: the dragged
+   * effector yields, the others keep their positions and their frames from the path's start)
+   * instead of plain positions. The peers take the positions alone.
+   */
+  pageGoals?: boolean;
+  /** With pageGoals: the rig is a recognised humanoid, whose pinned effectors keep their frames too. */
+  pinFrames?: boolean;
+  /**
    * What the targets are (pose_goals.ts): 'pose' adds each effector's orientation (and then
    * orientationToleranceDeg is set); absent or 'position': tip positions only.
    */

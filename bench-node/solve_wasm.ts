@@ -4,6 +4,8 @@ import type { IkCoreModule } from '../web/src/ik/module.js';
 import { IkRig } from '../web/src/ik/rig.js';
 import type { RigSpec } from '../web/src/ik/rig_spec.js';
 import { IkSolver, type SolverOptions } from '../web/src/ik/solver.js';
+import type { Goals } from '../web/src/ik/goals.js';
+import { DragGoals } from './drag_goals.js';
 import { errorOf, largestChange, pinnedDeviation, tipDistance } from './evaluate.js';
 import type { SolveResult } from './metrics.js';
 import { largestRotationErrorDeg, poseGoals } from './pose_goals.js';
@@ -22,6 +24,8 @@ export class WasmSolverRunner implements Runner {
   private readonly buffers: [Float64Array, Float64Array];
   /** --goals pose: the effectors' bone indices (goals name them); null for position targets. */
   private readonly poseEffectors: number[] | null;
+  /** Drag, reach, gestures: the page's goals (RunSettings.pageGoals); null for plain targets. */
+  private readonly dragGoals: DragGoals | null;
 
   constructor(ik: IkCoreModule, spec: RigSpec, settings: RunSettings) {
     this.rig = new IkRig(ik, spec);
@@ -40,18 +44,28 @@ export class WasmSolverRunner implements Runner {
     this.current = project(spec, new Float64Array(this.rig.numAngles));
     this.buffers = [new Float64Array(this.rig.numAngles), new Float64Array(this.rig.numAngles)];
     this.poseEffectors = settings.goals === 'pose' ? Array.from(this.rig.effectors()) : null;
+    this.dragGoals = settings.pageGoals && !settings.paper ? new DragGoals(spec, Array.from(this.rig.effectors()), settings.pinFrames ?? false) : null;
+  }
+
+  /** What the solver aims at for `input` (from `start`): pose goals, the page's drag goals, or the plain targets. */
+  private problem(input: SolveInput, start: Float64Array): Float64Array | Goals {
+    const pose = this.poseEffectors !== null && input.orientations ? input.orientations : null;
+    if (pose) return poseGoals(this.poseEffectors!, input.target, pose);
+    if (!this.dragGoals || input.dragged < 0) return input.target;
+    if (input.start) this.dragGoals.pin(this.observer.tipRotations(start), input.dragged); // a path begins
+    return this.dragGoals.goals(input.target, input.dragged);
   }
 
   solve(input: SolveInput): SolveResult {
     const start = input.start ?? this.current;
     const pose = this.poseEffectors !== null && input.orientations ? input.orientations : null;
-    let result;
+    let result, problem: Float64Array | Goals = input.target;
     const t0 = performance.now();
     try {
       // Into one of two buffers of our own, never the start's (the replay below reads the start):
-      // no new array per solve. Pose goals go in as a user passes them: a Goals object.
-      const target = pose ? poseGoals(this.poseEffectors!, input.target, pose) : input.target;
-      result = this.solver.solve(start, target, start === this.buffers[0] ? this.buffers[1] : this.buffers[0]);
+      // no new array per solve. Pose and drag goals go in as a user passes them: a Goals object.
+      problem = this.problem(input, start);
+      result = this.solver.solve(start, problem, start === this.buffers[0] ? this.buffers[1] : this.buffers[0]);
     } catch {
       // The API throws for invalid input instead of returning invalid_input.
       const seconds = (performance.now() - t0) / 1000;
@@ -61,7 +75,7 @@ export class WasmSolverRunner implements Runner {
     this.current = result.angles;
     const tips = this.observer.tips(result.angles);
     const after = pinnedDeviation(tips, input.target, input.dragged);
-    const during = Number.isNaN(after) ? NaN : this.replayWobble(start, input, result.iterations, after);
+    const during = Number.isNaN(after) ? NaN : this.replayWobble(start, input, problem, result.iterations, after);
     // With pose goals the solver's E holds the orientation rows too: judge the pose by its own
     // forward kinematics, E of the positions and the orientation error of the frames.
     const judged = pose ? { E: errorOf(tips, input.target), rotErrDeg: largestRotationErrorDeg(this.observer.tipRotations(result.angles), pose) } : {};
@@ -83,11 +97,11 @@ export class WasmSolverRunner implements Runner {
    * The largest pinned deviation over the iterates of the same solve, replayed step by step with
    * the timed solve's iteration count and no time budget (deterministic, so the same iterates).
    */
-  private replayWobble(start: Float64Array, input: SolveInput, iterations: number, after: number): number {
+  private replayWobble(start: Float64Array, input: SolveInput, problem: Float64Array | Goals, iterations: number, after: number): number {
     if (iterations === 0) return after;
     this.replayer ??= new IkSolver(this.rig, this.solver.method, this.options);
     this.replayer.setOptions({ ...this.options, maxIterations: iterations, timeBudgetSeconds: 0 });
-    this.replayer.start(start, input.target);
+    this.replayer.start(start, problem);
     let worst = 0, seen = 0;
     while (this.replayer.running) {
       this.replayer.step();

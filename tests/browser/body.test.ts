@@ -2,7 +2,8 @@
 // a hand pulled past its reach leaves the head and the other hand on their targets at every
 // frame and says "out of reach"; the knight's hand turned 88 degrees keeps its position and names
 // the orientation when that cannot be met. With the panel's "strict priority" off, the pinned
-// effectors are pulled off their targets again. Writes docs/out-of-reach.png when UPDATE_SCREENSHOT=1.
+// effectors are pulled off their targets again. The head bowed leaves the pinned hands' places and
+// frames as they were. Writes docs/out-of-reach.png when UPDATE_SCREENSHOT=1.
 import { mkdirSync } from 'node:fs';
 import { join } from 'node:path';
 

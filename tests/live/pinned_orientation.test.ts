@@ -34,6 +34,7 @@ function bow(r: PoleRig, pin: boolean): { turn: number; drift: number } {
   expect(hands.length).toBe(2);
   const size = r.settings.tipTolerance / 1e-3;
   session.yielding = head;
+  session.pinsFrames = true; // a recognised humanoid (LiveRig sets it from the importer)
   if (pin) session.pinOrientations(true);
   const before = session.tipRotations();
   const t = session.targets.subarray(3 * head, 3 * head + 3);

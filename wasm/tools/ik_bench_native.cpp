@@ -5,7 +5,7 @@
 // Usage:
 //   ik_bench_native --rig RIG.json --method NAME --input JOB.bin --output RESULTS.jsonl
 //                   [--gtol X] [--ftol Y] [--tip-tol Z] [--timeout SECONDS] [--paper] [--restarts N]
-//                   [--max-joint-move D]
+//                   [--max-joint-move D] [--page-goals ROWS]
 //                   [--goals position|pose]
 //   ik_bench_native --list-methods     prints the methods it knows (the core's registry, the
 //                                      default first, then "kdl" when built with Orocos KDL) as a
@@ -14,7 +14,11 @@
 // tree solvers under the same tolerances, time budget and restarts.
 // --tip-tol Z > 0 makes "on target" every tip within Z (rig units) of its target (SolverOptions::
 // tip_tolerance) instead of E < Y. --max-joint-move D > 0 caps how far a joint moves in one solve
-// (SolverOptions::max_joint_move, rig units).
+// (SolverOptions::max_joint_move, rig units). --page-goals ROWS: records with a dragged effector
+// are solved towards the page's goals (bench-node/drag_goals.ts): the dragged effector yields,
+// the others keep their positions and, where row d (d the dragged effector; comma-separated, one
+// digit per effector) has a 1, the frames they had at the start of the record's path (the last
+// record that was not chained).
 // --goals pose: each record also carries each effector's target orientation, and every method
 // solves towards the whole poses (Goals of native/pose_goals.h: position and orientation per
 // effector, weight 1; kdl with its rotation rows weighted); on target then also needs every
@@ -75,13 +79,16 @@ struct Args {
   ik::SolverOptions options;
   bool list_methods = false;
   bool pose = false;  // --goals pose
+  // --page-goals ROWS: per dragged effector d, one digit per effector, 1 where it keeps its frame
+  // (bench-node/drag_goals.ts); empty: plain targets.
+  std::vector<std::string> page_goals;
 };
 
 [[noreturn]] void usage(const std::string& problem) {
   throw std::invalid_argument(problem +
                               "\nusage: ik_bench_native --rig RIG.json --method NAME --input JOB.bin --output "
                               "RESULTS.jsonl [--gtol X] [--ftol Y] [--tip-tol Z] [--timeout S] [--paper] [--restarts N]\n"
-                              "       [--max-joint-move D]\n"
+                              "       [--max-joint-move D] [--page-goals ROWS]\n"
                               "       [--goals position|pose]\n"
                               "       ik_bench_native --list-methods");
 }
@@ -115,6 +122,14 @@ Args parse_args(int argc, char** argv) {
     else if (flag == "--ftol") a.options.error_tolerance = number_arg(flag, value);
     else if (flag == "--tip-tol") a.options.tip_tolerance = number_arg(flag, value);
     else if (flag == "--max-joint-move") a.options.max_joint_move = number_arg(flag, value);
+    else if (flag == "--page-goals") {
+      std::string rows = value;
+      for (size_t at = 0; at <= rows.size();) {
+        const size_t comma = std::min(rows.find(',', at), rows.size());
+        a.page_goals.push_back(rows.substr(at, comma - at));
+        at = comma + 1;
+      }
+    }
     else if (flag == "--timeout") a.options.time_budget_s = number_arg(flag, value);
     else if (flag == "--restarts") a.options.restarts = static_cast<int>(number_arg(flag, value));
     else if (flag == "--goals") {
@@ -172,12 +187,16 @@ double largest_distance(ik::Kinematics& kin, const Eigen::VectorXd& angles, cons
 // target over the iterates of a replay of the same solve, stepped one iteration at a time with
 // max_iterations = `iterations` and no time budget (deterministic, so the same iterates).
 double replay_wobble(const Args& args, ik::Kinematics& kin, ik::Kinematics& observer, const Eigen::VectorXd& start,
-                     const Eigen::VectorXd& target, int dragged, int iterations, double after, Eigen::VectorXd& tips) {
+                     const Eigen::VectorXd& target, const ik::Goals* goals, int dragged, int iterations, double after,
+                     Eigen::VectorXd& tips) {
   ik::SolverOptions options = args.options;
   options.max_iterations = iterations;
   options.time_budget_s = 0;
   std::unique_ptr<ik::Solver> replay = ik::make_solver(args.method, kin, options);
-  replay->start(start, target);
+  if (goals)
+    replay->start(start, *goals);
+  else
+    replay->start(start, target);
   double during = 0;
   int seen = 0;
   while (replay->running()) {
@@ -262,9 +281,11 @@ class Method {
   // steady_clock around the solver's call alone (making the goals and copying the outcome out
   // are not timed).
   Outcome solve(const Eigen::VectorXd& start, const Eigen::VectorXd& target, const Eigen::VectorXd& orientations,
-                double& seconds) {
-    const bool pose = orientations.size() > 0;
-    if (pose) {
+                const ik::Goals* drag_goals, double& seconds) {
+    const bool pose = orientations.size() > 0 || (drag_goals && !kdl_active());
+    if (drag_goals) {
+      goals_ = *drag_goals;
+    } else if (pose) {
       goals_ = ik::bench::pose_goals(kin_, target, orientations);
       rotations_.clear();
       for (const ik::EffectorGoal& g : goals_.effectors) rotations_.push_back(g.orientation_target);
@@ -279,6 +300,7 @@ class Method {
     }
 #endif
     const ik::SolverSummary& s = pose ? solver_->solve(start, goals_) : solver_->solve(start, target);
+    last_goals_ = pose ? &goals_ : nullptr;
     seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     return {s.angles, s.E, s.gradient_norm, s.iterations, s.function_evaluations, s.jacobian_evaluations,
             ik::stop_reason_name(s.stop_reason), s.stop_reason != ik::StopReason::invalid_input};
@@ -301,10 +323,18 @@ class Method {
       return iterations == 0 ? after : during;
     }
 #endif
-    return replay_wobble(args_, kin_, observer, start, target, dragged, iterations, after, tips);
+    return replay_wobble(args_, kin_, observer, start, target, last_goals_, dragged, iterations, after, tips);
   }
 
  private:
+  bool kdl_active() const {
+#ifdef IK_HAVE_KDL
+    return kdl_ != nullptr;
+#else
+    return false;
+#endif
+  }
+  const ik::Goals* last_goals_ = nullptr;  // the goals of the last solve (null: plain targets)
   const Args& args_;
   ik::Kinematics& kin_;
   std::unique_ptr<ik::Solver> solver_;
@@ -332,6 +362,10 @@ void run(const Args& args) {
   Eigen::VectorXd start(kin.num_angles()), target(kin.num_residuals()), previous(kin.num_angles()),
       tips(kin.num_residuals()), orientations(num_orientations), joints_from, joints_to;
   const double nan = std::numeric_limits<double>::quiet_NaN();
+  // --page-goals: the frames pinned at the start of the current path, per effector.
+  std::vector<Eigen::Matrix3d> pins(kin.num_effectors(), Eigen::Matrix3d::Identity());
+  ik::Goals page;
+  page.effectors.resize(kin.num_effectors());
   for (int k = 0; k < job.count; ++k) {
     const double* rec = job.records.data() + static_cast<size_t>(k) * job.stride();
     const bool chained = rec[0] != 0 && k > 0;
@@ -340,8 +374,25 @@ void run(const Args& args) {
     target = Eigen::Map<const Eigen::VectorXd>(rec + 2 + job.num_angles, job.num_residuals);
     orientations = Eigen::Map<const Eigen::VectorXd>(rec + 2 + job.num_angles + job.num_residuals, num_orientations);
 
+    const bool paged = !args.page_goals.empty() && !args.options.paper_mode && dragged >= 0;
+    if (paged && (dragged >= static_cast<int>(args.page_goals.size()) ||
+                  static_cast<int>(args.page_goals[dragged].size()) != kin.num_effectors()))
+      throw std::invalid_argument("--page-goals: no row of " + std::to_string(kin.num_effectors()) +
+                                  " digits for dragged effector " + std::to_string(dragged));
+    if (paged && !chained) {  // a path begins: pin the effectors' frames at its start
+      observer.forward(start);
+      for (int e = 0; e < kin.num_effectors(); ++e) pins[e] = observer.tip_rotation(kin.rig().effectors[e]);
+    }
+    if (paged)
+      for (int e = 0; e < kin.num_effectors(); ++e) {
+        ik::EffectorGoal& g = page.effectors[e];
+        g.position_target = target.segment<3>(3 * e);
+        g.yields = e == dragged;
+        g.orientation = e != dragged && args.page_goals[dragged][e] == '1';
+        g.orientation_target = pins[e];
+      }
     double seconds = 0;
-    const Outcome s = method.solve(start, target, orientations, seconds);
+    const Outcome s = method.solve(start, target, orientations, paged ? &page : nullptr, seconds);
     previous = s.angles;
     double E = s.E;
     const double gradient_norm = s.gradient_norm;

@@ -127,6 +127,8 @@ StopReason Solver::begin(const Eigen::Ref<const Eigen::VectorXd>& angles, const 
       heading_ && opt_.max_joint_move > 0 && !opt_.paper_mode && partway_.size() == a_.size() && a_ == partway_;
   heading_ = false;
   resumed_ = resume;
+  nearer_tries_ = 0;
+  nearest_move_ = std::numeric_limits<double>::infinity();
   start_ = moved_from_ = a_;
   soft_retried_ = false;
   settling_.begin_run();
@@ -220,6 +222,8 @@ void Solver::resize_workspace() {
   heading_to_.resize(n_);
   partway_.resize(n_);
   heading_ = false;
+  nearest_.resize(n_);
+  stuck_.resize(n_);
   pattern_.build(kin_, goals_);
   priority_.resize(goals_, n_);
   resize(m_, n_);
@@ -267,6 +271,8 @@ bool Solver::advance(Clock::time_point begin) {
       reason = StopReason::zero_step;  // judged as a stop: an escape, a chain restart or a give-up, else the end
     while ((reason == StopReason::zero_step || reason == StopReason::converged_grad) && move_on(reason)) {
     }
+    while (reason == StopReason::converged_E && seek_nearer(reason)) {
+    }
   }
   // One clock read per step (in WebAssembly a read is a call out to JavaScript, ~65 ns in Node).
   clock_.close();
@@ -279,6 +285,7 @@ bool Solver::advance(Clock::time_point begin) {
   summary_.stop_reason = settle(reason);
   summary_.elapsed_s = clock_.spent();
   if (reason != StopReason::running) {
+    take_nearest();
     finish();
     bound_motion();
   }
@@ -446,30 +453,6 @@ bool Solver::settles() {
                           : strict && ((settling_.stalled(threshold) && chain_restart_.beyond_any(kin_, r_, goals_, tol.tip, false)) ||
                                        settling_.settled(threshold, kFarShare * tol.tip)));
   return settling_.ended();
-}
-
-void Solver::bound_motion() {
-  const double bound = allowed_move_;
-  const StopReason stop = summary_.stop_reason;
-  if (!(opt_.max_joint_move > 0) || opt_.paper_mode || stop == StopReason::numerical_failure || stop == StopReason::invalid_input) return;
-  // A run from the start follows E down from there: it moves the body as the target moved (a
-  // straight limb starting to bend included). Only a chain restart can land on another branch.
-  if (summary_.chain_restarts == 0 && !resumed_) return;
-  kin_.forward(summary_.angles);
-  if (motion_.largest_move(kin_) <= bound) return;
-  heading_to_ = summary_.angles;
-  motion_.limit(kin_, moved_from_, summary_.angles, bound, a_);
-  E_ = evaluate(a_, r_);
-  if (!finite(E_) || !update_derivatives(true)) return;  // the best point stands (it was finite)
-  summary_.angles = a_;
-  summary_.E = E_;
-  summary_.gradient_norm = gradient_norm_;
-  summary_.tip_distance = largest_tip_distance(goals_, r_);
-  summary_.reached = on_target();
-  summary_.out_of_reach = summary_.orientation_out_of_reach = false;
-  summary_.stop_reason = summary_.reached ? StopReason::converged_E : StopReason::joint_speed;
-  partway_ = a_;
-  heading_ = true;
 }
 
 void Solver::finish() {

@@ -282,6 +282,24 @@ class Solver {
   // outside paper mode: a best point farther than allowed_move_ from the start is replaced by the pose partway there (JointMotion::limit), stopped with
   // joint_speed, E, the gradient norm and the tip distance measured there.
   void bound_motion();
+  // With max_joint_move > 0, a chain restart's answer on target that moved the joints farther
+  // than allowed_move_ is kept as a candidate and the next chain restart tried from where the
+  // first one started (stuck_), up to kNearerTries answers and kSeekRestarts chain restarts
+  // (those that end off target included): the nearest answer is the solve's
+  // (take_nearest(), at the end), which bound_motion() may still cut partway. Returns true when
+  // a chain restart began (`reason`: the stop test at its start).
+  bool seek_nearer(StopReason& reason);
+  // Makes a_ the solve's answer: E, the gradient norm and the tip distance measured there, the
+  // stop reason converged_E on target, else `otherwise`. False (the answer unchanged) when E or
+  // its gradient is not finite there.
+  bool answer_here(StopReason otherwise);
+  void take_nearest();
+  static constexpr int kNearerTries = 4;
+  static constexpr int kSeekRestarts = 16;
+  int nearer_tries_ = 0;
+  int seek_limit_ = 0;  // summary_.chain_restarts at which the search ends
+  double nearest_move_ = 0;
+  Eigen::VectorXd nearest_, stuck_;
   JointMotion motion_;
   // How far a joint may move in this solve: max_joint_move plus the largest goal residual block
   // at the start (how far the targets moved from the tips), rig units.

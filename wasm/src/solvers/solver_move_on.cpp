@@ -3,7 +3,8 @@
 // (restarts.h), an escape along negative curvature (saddle_escape.h) or a restart of the
 // off-target chains only (chain_restart.h), in that order of preference, and when none is left
 // giving up the goals that cannot be met (solver_priority.cpp), within the iteration and time
-// budgets. The rest of the Solver is in solver.cpp.
+// budgets. The rest of the Solver is in solver.cpp, solver_priority.cpp and
+// solver_continuity.cpp.
 #include <cmath>
 
 #include "solver.h"
@@ -105,7 +106,10 @@ bool Solver::beyond_reach() {
 
 bool Solver::chain_restart() {
   if (!chain_restarts_left()) return false;
-  trial_ = summary_.angles;
+  // The first one in a solve notes where the run was stuck; seeking a nearer answer
+  // (seek_nearer()) goes on from there, not from the answer found.
+  if (summary_.chain_restarts == 0) stuck_ = summary_.angles;
+  trial_ = nearer_tries_ > 0 ? stuck_ : summary_.angles;
   evaluate(trial_, r_trial_);  // poses kin_ at the best point
   // How far off a tip may be on target: the tip tolerance, or with the E test the distance at which
   // one effector alone makes E the tolerance.
@@ -130,7 +134,10 @@ bool Solver::move_on(StopReason& reason) {
   // alone converge slowly (a rest pose of straight limbs is a singular pose); the plain solve
   // from the start angles comes next, before any escape or restart.
   const bool retry = !goals_.soft_on() && goals_.has_soft() && !soft_retried_;
-  if (summary_.reached && !soften) return false;
+  // An answer on target is in hand and a nearer one sought (seek_nearer()): a run that stops
+  // off target moves on to the next chain restart, while any of the search's are left.
+  const bool seeking = nearer_tries_ > 0;
+  if (summary_.reached && !soften && !seeking) return false;
   const bool out_of_iterations = summary_.iterations >= opt_.max_iterations;
   if (out_of_iterations || out_of_time()) {
     // The budget, not the problem, ends the solve while restarts of either kind are left.
@@ -148,7 +155,10 @@ bool Solver::move_on(StopReason& reason) {
   const bool last_resort = stationary && !restarts_left();
   const bool prioritised = priority_.active();
   const bool beyond = !prioritised && last_resort && beyond_reach();
-  if (soften)
+  if (seeking) {
+    if (!stationary || summary_.chain_restarts >= seek_limit_ || !chain_restart()) return false;
+    ++summary_.chain_restarts;
+  } else if (soften)
     lower_soft_terms();  // counted below as a step, like a restart
   else if (retry)
     retry_without_soft_terms();

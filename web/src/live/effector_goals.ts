@@ -9,6 +9,7 @@
 // allocates nothing here.
 import type { EffectorGoal, Goals, PoleGoal } from '../ik/goals.js';
 
+
 export class EffectorGoals {
   /** 1 where effector k has a position goal (its target), per effector. */
   position: Uint8Array;
@@ -26,6 +27,8 @@ export class EffectorGoals {
    * goal of its own keeps its pinned one, unless it is the one dragged (the yielding effector).
    */
   pinned: Float64Array | null = null;
+  /** While pinned: 1 where effector k keeps its frame as well as its place (pinned_frames.ts). */
+  keepsFrame = new Uint8Array(0);
   private cached: Goals | null = null;
   private cachedFor: Float64Array | null = null;
   private cachedYielding = -1;
@@ -74,12 +77,14 @@ export class EffectorGoals {
   }
 
   /**
-   * Pins every effector's orientation at `rotations` (4 per effector [x, y, z, w], rig
-   * coordinates: the frames at the drag's start; copied), or with null unpins them.
+   * Pins the orientation of each effector k with `keep[k]` = 1 at `rotations` (4 per effector
+   * [x, y, z, w], rig coordinates: the frames at the drag's start; both copied), or with null
+   * unpins them all.
    */
-  pin(rotations: ArrayLike<number> | null): void {
+  pin(rotations: ArrayLike<number> | null, keep: ArrayLike<number> = new Uint8Array(this.count).fill(1)): void {
     if (rotations && rotations.length !== 4 * this.count) throw new Error(`${this.count} effectors need ${4 * this.count} numbers, not ${rotations.length}`);
     this.pinned = rotations ? Float64Array.from(rotations) : null;
+    this.keepsFrame = rotations ? Uint8Array.from(keep) : new Uint8Array(0);
     this.changed();
   }
 
@@ -121,8 +126,8 @@ export class EffectorGoals {
    * The Goals for the solver: effector k (bone `bones[k]`) aims at `targets` (3 per effector, rig
    * units) and, where on, at its orientation; effector `yielding` (-1: none) gives way first when
    * not every goal can be met (EffectorGoal.yields); while pinned, every other effector without an
-   * orientation goal keeps its pinned orientation (a held goal like its position: strict priority
-   * gives it up before the position when its chain cannot keep both); the poles, if any. The same object until a
+   * orientation goal that keeps its frame (pin()) holds its pinned orientation as it holds its
+   * position (strict priority gives the orientation up first); the poles, if any. The same object until a
    * flag, the yielding effector or the poles' limbs change or `targets` is another array (its
    * numbers are read at each solve).
    */
@@ -134,7 +139,7 @@ export class EffectorGoals {
       if (k === yielding) g.yields = true;
       if (this.position[k]) g.position = targets.subarray(3 * k, 3 * k + 3);
       if (this.orientation[k]) g.orientation = this.rotations.subarray(4 * k, 4 * k + 4);
-      else if (this.pinned && k !== yielding) g.orientation = this.pinned.subarray(4 * k, 4 * k + 4);
+      else if (this.pinned && this.keepsFrame[k] && k !== yielding) g.orientation = this.pinned.subarray(4 * k, 4 * k + 4);
       effectors.push(g);
     }
     const poles: PoleGoal[] = [];

@@ -365,7 +365,10 @@ export class LiveController {
   private pinOrientations(session: IkSession): void {
     const pin = (this.settings.pinOrientations ?? true) && !this.settings.paperMode;
     const targetDrag = this.handles.dragging && this.handles.selected !== null;
-    if (pin && targetDrag && !this.pinnedDrag) session.pinOrientations(true);
+    if (pin && targetDrag && !this.pinnedDrag) {
+      session.yielding = this.handles.selected ?? -1; // the dragged target: solve() sets the same
+      session.pinOrientations(true);
+    }
     else if (!pin || (!targetDrag && !this.needsSolve)) session.pinOrientations(false);
     this.pinnedDrag = targetDrag;
   }

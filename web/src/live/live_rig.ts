@@ -39,6 +39,7 @@ export class LiveRig {
     const made: { dispose(): void }[] = [];
     try {
       const session = new IkSession(module, limitedSpec(source, humanoid));
+      session.pinsFrames = source.humanoidLimits !== undefined;
       made.push(session);
       const poses = session.poses();
       const view = new RigView(source.spec, poses);

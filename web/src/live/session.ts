@@ -7,6 +7,7 @@ import type { IkCoreModule } from '../ik/module.js';
 import { IkRig } from '../ik/rig.js';
 import type { RigSpec } from '../ik/rig_spec.js';
 import { EffectorGoals } from './effector_goals.js';
+import { framesKept } from './pinned_frames.js';
 import { MethodSolver, type SolveOutcome, type SolveSettings } from './solver.js';
 
 export class IkSession {
@@ -25,6 +26,11 @@ export class IkSession {
    * or last dragged: the page's selected target), or -1. The others stay pinned: strict priority.
    */
   yielding = -1;
+  /**
+   * Whether a drag pins the other effectors' frames (pinOrientations) as well as their places: on
+   * a recognised humanoid (LiveRig sets it), where pinned_frames.ts tells which chains can keep both.
+   */
+  pinsFrames = false;
   private effectorList: Int32Array;
   private readonly solvers = new Map<string, MethodSolver>();
   private stepping: MethodSolver | null = null;
@@ -95,12 +101,14 @@ export class IkSession {
   }
 
   /**
-   * Pins every effector's orientation at the current pose (a drag begins: the effectors not
-   * dragged keep their frames as well as their positions, EffectorGoals.pin), or with `on`
-   * false unpins them (the drag and its solves are over).
+   * Pins the orientations at the current pose (a drag of the `yielding` effector begins: on a
+   * humanoid, pinsFrames, the effectors not dragged keep their frames as well as their positions
+   * where their chains can keep both, pinned_frames.ts), or with `on` false unpins them (the drag
+   * and its solves are over).
    */
   pinOrientations(on: boolean): void {
-    if (on || this.goals.pinned) this.goals.pin(on ? this.tipRotations() : null);
+    if (on && this.pinsFrames) this.goals.pin(this.tipRotations(), framesKept(this.spec, this.effectorList, this.yielding));
+    else if (this.goals.pinned) this.goals.pin(null);
   }
 
   /** Effector k's orientation goal on at `q` ([x, y, z, w], rig coordinates; omitted: its current frame) or off. */
@@ -144,6 +152,7 @@ export class IkSession {
     next.angles.set(next.rig.project(this.angles));
     next.targets = this.targets.slice();
     next.goals = this.goals.clone();
+    next.pinsFrames = this.pinsFrames;
     return next;
   }
 

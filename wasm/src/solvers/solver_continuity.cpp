@@ -1,0 +1,78 @@
+// The Solver's continuity while a user drags (option max_joint_move > 0, outside paper mode):
+// a chain restart that lands on another branch of solutions far from the start looks for a
+// nearer answer (seek_nearer(), take_nearest()), and an answer still too far comes back partway,
+// the next solve resuming the move (bound_motion(), joint_motion.h). The rest of the Solver is in
+// solver.cpp, solver_move_on.cpp and solver_priority.cpp.
+#include <cmath>
+
+#include "goal_residual.h"
+#include "solver.h"
+
+namespace ik {
+
+bool Solver::answer_here(StopReason otherwise) {
+  E_ = evaluate(a_, r_);
+  if (!std::isfinite(E_) || !update_derivatives(true)) return false;
+  summary_.angles = a_;
+  summary_.E = E_;
+  summary_.gradient_norm = gradient_norm_;
+  summary_.tip_distance = largest_tip_distance(goals_, r_);
+  summary_.reached = on_target();
+  summary_.out_of_reach = summary_.orientation_out_of_reach = false;
+  summary_.stop_reason = summary_.reached ? StopReason::converged_E : otherwise;
+  return true;
+}
+
+bool Solver::seek_nearer(StopReason& reason) {
+  if (!(opt_.max_joint_move > 0) || opt_.paper_mode || summary_.chain_restarts == 0 || nearer_tries_ >= kNearerTries ||
+      out_of_time() || summary_.iterations >= opt_.max_iterations)
+    return false;
+  kin_.forward(a_);
+  const double move = motion_.largest_move(kin_);
+  if (move <= allowed_move_) return false;  // near enough
+  if (move < nearest_move_) {
+    nearest_ = a_;
+    nearest_move_ = move;
+  }
+  if (nearer_tries_++ == 0) seek_limit_ = summary_.chain_restarts + kSeekRestarts;
+  if (summary_.chain_restarts >= seek_limit_ || !chain_restart()) return false;
+  ++summary_.chain_restarts;
+  ++summary_.iterations;
+  if (!std::isfinite(E_) || !update_derivatives(false)) {
+    reason = StopReason::numerical_failure;
+    summary_.message = "E or its gradient is not finite after a chain restart";
+    return false;
+  }
+  record();
+  note_best();
+  reason = check_stop();
+  return true;
+}
+
+void Solver::take_nearest() {
+  if (nearer_tries_ == 0 || summary_.stop_reason == StopReason::numerical_failure) return;
+  if (summary_.reached) {
+    kin_.forward(summary_.angles);
+    if (motion_.largest_move(kin_) <= nearest_move_) return;
+  }
+  a_ = nearest_;
+  answer_here(summary_.stop_reason);
+}
+
+void Solver::bound_motion() {
+  const double bound = allowed_move_;
+  const StopReason stop = summary_.stop_reason;
+  if (!(opt_.max_joint_move > 0) || opt_.paper_mode || stop == StopReason::numerical_failure || stop == StopReason::invalid_input) return;
+  // A run from the start follows E down from there: it moves the body as the target moved (a
+  // straight limb starting to bend included). Only a chain restart can land on another branch.
+  if (summary_.chain_restarts == 0 && !resumed_) return;
+  kin_.forward(summary_.angles);
+  if (motion_.largest_move(kin_) <= bound) return;
+  heading_to_ = summary_.angles;
+  motion_.limit(kin_, moved_from_, summary_.angles, bound, a_);
+  if (!answer_here(StopReason::joint_speed)) return;
+  partway_ = a_;
+  heading_ = true;
+}
+
+}  // namespace ik
