@@ -277,19 +277,20 @@ class Method {
   }
 
   // Solves from `start` (degrees) towards `target` (rig units), or with `orientations` (4 per
-  // effector, quaternions x, y, z, w; empty: none) towards the whole poses; `seconds` is
+  // effector, quaternions x, y, z, w; empty: none) towards the whole poses, or with `drag_goals`
+  // (--page-goals; null: none) towards those (kdl: the positions alone); `seconds` is
   // steady_clock around the solver's call alone (making the goals and copying the outcome out
   // are not timed).
   Outcome solve(const Eigen::VectorXd& start, const Eigen::VectorXd& target, const Eigen::VectorXd& orientations,
                 const ik::Goals* drag_goals, double& seconds) {
-    const bool pose = orientations.size() > 0 || (drag_goals && !kdl_active());
-    if (drag_goals) {
-      goals_ = *drag_goals;
-    } else if (pose) {
+    const bool pose = orientations.size() > 0;
+    if (pose) {
       goals_ = ik::bench::pose_goals(kin_, target, orientations);
       rotations_.clear();
       for (const ik::EffectorGoal& g : goals_.effectors) rotations_.push_back(g.orientation_target);
     }
+    // kdl takes the positions alone (as the peers do).
+    const ik::Goals* goals = drag_goals && !kdl_active() ? drag_goals : pose ? &goals_ : nullptr;
     const auto t0 = std::chrono::steady_clock::now();
 #ifdef IK_HAVE_KDL
     if (kdl_) {
@@ -299,8 +300,8 @@ class Method {
               s.stop_reason != "invalid_input"};
     }
 #endif
-    const ik::SolverSummary& s = pose ? solver_->solve(start, goals_) : solver_->solve(start, target);
-    last_goals_ = pose ? &goals_ : nullptr;
+    const ik::SolverSummary& s = goals ? solver_->solve(start, *goals) : solver_->solve(start, target);
+    last_goals_ = goals;
     seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     return {s.angles, s.E, s.gradient_norm, s.iterations, s.function_evaluations, s.jacobian_evaluations,
             ik::stop_reason_name(s.stop_reason), s.stop_reason != ik::StopReason::invalid_input};
@@ -334,7 +335,7 @@ class Method {
     return false;
 #endif
   }
-  const ik::Goals* last_goals_ = nullptr;  // the goals of the last solve (null: plain targets)
+  const ik::Goals* last_goals_ = nullptr;  // the goals of the last solve (null: plain targets), until the next
   const Args& args_;
   ik::Kinematics& kin_;
   std::unique_ptr<ik::Solver> solver_;

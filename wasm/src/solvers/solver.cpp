@@ -123,8 +123,7 @@ StopReason Solver::begin(const Eigen::Ref<const Eigen::VectorXd>& angles, const 
   kin_.project(a_);
   // A solve that starts where the last one stopped partway to its answer (joint_speed) goes on
   // towards it: its run starts from that answer, the joints' move is measured from here.
-  const bool resume =
-      heading_ && opt_.max_joint_move > 0 && !opt_.paper_mode && partway_.size() == a_.size() && a_ == partway_;
+  const bool resume = heading_ && bounds_joints() && a_ == partway_;  // sized alike by resize_workspace()
   heading_ = false;
   resumed_ = resume;
   nearer_tries_ = 0;
@@ -135,12 +134,12 @@ StopReason Solver::begin(const Eigen::Ref<const Eigen::VectorXd>& angles, const 
   reset();
   priority_damping_.reset(opt_.lm_initial_mu);
   E_ = evaluate(a_, r_);
-  if (opt_.max_joint_move > 0) motion_.note_start(kin_);  // kin_ is posed at the start
+  if (bounds_joints()) motion_.note_start(kin_);  // kin_ is posed at the start
   if (resume) {
     a_ = start_ = heading_to_;
     E_ = evaluate(a_, r_);
   }
-  if (opt_.max_joint_move > 0) {
+  if (bounds_joints()) {
     // The joints may move as far as the goals moved (from the tips at the start, or resuming,
     // from the answer the last solve was heading to), and the bound more.
     double moved = 0;

@@ -325,6 +325,12 @@ class Solver {
   // Returns false when neither applies; `reason` is then unchanged, or max_iterations / timeout
   // when the budget is spent while restarts (whole or chain) are left.
   bool move_on(StopReason& reason);
+  // After a move to a new point (a softened run, a restart, an escape, a chain restart), counted
+  // as an iteration: its derivatives, history and best-point bookkeeping; returns the stop test
+  // there, or numerical_failure (with the message) when E or its gradient is not finite.
+  StopReason measure_new_start();
+  // Joint speed is bounded: max_joint_move > 0, outside paper mode.
+  bool bounds_joints() const { return opt_.max_joint_move > 0 && !opt_.paper_mode; }
 
   // The stop reason reported for the best point when the solve ends with `reason` (describing
   // the current iterate): see SolverSummary::stop_reason.

@@ -24,7 +24,7 @@ bool Solver::answer_here(StopReason otherwise) {
 }
 
 bool Solver::seek_nearer(StopReason& reason) {
-  if (!(opt_.max_joint_move > 0) || opt_.paper_mode || summary_.chain_restarts == 0 || nearer_tries_ >= kNearerTries ||
+  if (!bounds_joints() || summary_.chain_restarts == 0 || nearer_tries_ >= kNearerTries ||
       out_of_time() || summary_.iterations >= opt_.max_iterations)
     return false;
   kin_.forward(a_);
@@ -37,15 +37,7 @@ bool Solver::seek_nearer(StopReason& reason) {
   if (nearer_tries_++ == 0) seek_limit_ = summary_.chain_restarts + kSeekRestarts;
   if (summary_.chain_restarts >= seek_limit_ || !chain_restart()) return false;
   ++summary_.chain_restarts;
-  ++summary_.iterations;
-  if (!std::isfinite(E_) || !update_derivatives(false)) {
-    reason = StopReason::numerical_failure;
-    summary_.message = "E or its gradient is not finite after a chain restart";
-    return false;
-  }
-  record();
-  note_best();
-  reason = check_stop();
+  reason = measure_new_start();
   return true;
 }
 
@@ -62,7 +54,7 @@ void Solver::take_nearest() {
 void Solver::bound_motion() {
   const double bound = allowed_move_;
   const StopReason stop = summary_.stop_reason;
-  if (!(opt_.max_joint_move > 0) || opt_.paper_mode || stop == StopReason::numerical_failure || stop == StopReason::invalid_input) return;
+  if (!bounds_joints() || stop == StopReason::numerical_failure || stop == StopReason::invalid_input) return;
   // A run from the start follows E down from there: it moves the body as the target moved (a
   // straight limb starting to bend included). Only a chain restart can land on another branch.
   if (summary_.chain_restarts == 0 && !resumed_) return;

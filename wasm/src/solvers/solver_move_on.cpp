@@ -175,16 +175,19 @@ bool Solver::move_on(StopReason& reason) {
                                 // fails to keep them is not a reason to give up more)
   else
     return false;
+  reason = measure_new_start();
+  return true;
+}
+
+StopReason Solver::measure_new_start() {
   ++summary_.iterations;
   if (!finite(E_) || !update_derivatives(false)) {
-    reason = StopReason::numerical_failure;
     summary_.message = "E or its gradient is not finite after an escape or a restart";
-    return true;
+    return StopReason::numerical_failure;
   }
   record();
   note_best();
-  reason = check_stop();
-  return true;
+  return check_stop();
 }
 
 }  // namespace ik

@@ -9,7 +9,6 @@
 // allocates nothing here.
 import type { EffectorGoal, Goals, PoleGoal } from '../ik/goals.js';
 
-
 export class EffectorGoals {
   /** 1 where effector k has a position goal (its target), per effector. */
   position: Uint8Array;
@@ -24,7 +23,8 @@ export class EffectorGoals {
   /**
    * Pinned orientations while a target is dragged (pin()): 4 per effector [x, y, z, w], the
    * frames the effectors had when the drag began; null: none. An effector without an orientation
-   * goal of its own keeps its pinned one, unless it is the one dragged (the yielding effector).
+   * goal of its own keeps its pinned one where keepsFrame says so, unless it is the one dragged
+   * (the yielding effector).
    */
   pinned: Float64Array | null = null;
   /** While pinned: 1 where effector k keeps its frame as well as its place (pinned_frames.ts). */
@@ -78,13 +78,19 @@ export class EffectorGoals {
 
   /**
    * Pins the orientation of each effector k with `keep[k]` = 1 at `rotations` (4 per effector
-   * [x, y, z, w], rig coordinates: the frames at the drag's start; both copied), or with null
-   * unpins them all.
+   * [x, y, z, w], rig coordinates: the frames at the drag's start; both copied).
    */
-  pin(rotations: ArrayLike<number> | null, keep: ArrayLike<number> = new Uint8Array(this.count).fill(1)): void {
-    if (rotations && rotations.length !== 4 * this.count) throw new Error(`${this.count} effectors need ${4 * this.count} numbers, not ${rotations.length}`);
-    this.pinned = rotations ? Float64Array.from(rotations) : null;
-    this.keepsFrame = rotations ? Uint8Array.from(keep) : new Uint8Array(0);
+  pin(rotations: ArrayLike<number>, keep: ArrayLike<number>): void {
+    if (rotations.length !== 4 * this.count) throw new Error(`${this.count} effectors need ${4 * this.count} numbers, not ${rotations.length}`);
+    this.pinned = Float64Array.from(rotations);
+    this.keepsFrame = Uint8Array.from(keep);
+    this.changed();
+  }
+
+  /** Frees the pinned orientations (pin()). */
+  unpin(): void {
+    this.pinned = null;
+    this.keepsFrame = new Uint8Array(0);
     this.changed();
   }
 

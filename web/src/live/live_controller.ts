@@ -80,7 +80,7 @@ export class LiveController {
   paused = false;
   private current: LiveRig | null = null;
   private needsSolve = false;
-  /** The last solve was of a drag (its first frame pinned the orientations). */
+  /** The last frame had a target dragged (the drag's first frame pinned the orientations). */
   private pinnedDrag = false;
   private needsRedraw = false;
   private readonly timing: FrameTiming = { ms: 0, again: false };
@@ -368,8 +368,7 @@ export class LiveController {
     if (pin && targetDrag && !this.pinnedDrag) {
       session.yielding = this.handles.selected ?? -1; // the dragged target: solve() sets the same
       session.pinOrientations(true);
-    }
-    else if (!pin || (!targetDrag && !this.needsSolve)) session.pinOrientations(false);
+    } else if (!pin || (!targetDrag && !this.needsSolve)) session.pinOrientations(false);
     this.pinnedDrag = targetDrag;
   }
 

@@ -108,7 +108,7 @@ export class IkSession {
    */
   pinOrientations(on: boolean): void {
     if (on && this.pinsFrames) this.goals.pin(this.tipRotations(), framesKept(this.spec, this.effectorList, this.yielding));
-    else if (this.goals.pinned) this.goals.pin(null);
+    else if (this.goals.pinned) this.goals.unpin();
   }
 
   /** Effector k's orientation goal on at `q` ([x, y, z, w], rig coordinates; omitted: its current frame) or off. */
