@@ -106,6 +106,8 @@ class GoalSet {
   int hard_rows() const { return 3 * num_blocks(); }
   int num_blocks() const { return static_cast<int>(blocks_.size()); }
   const Block& block(int b) const { return blocks_[b]; }
+  // Sets block b's scale (w_p, or w_o * L): the solver's reweighting within one solve.
+  void set_block_scale(int b, double scale) { blocks_[b].scale = scale; }
   bool has_orientation() const { return has_orientation_; }
   // Does some block yield (EffectorGoal::yields) while another does not?
   bool has_yielding() const { return has_yielding_; }

@@ -6,17 +6,13 @@
 
 namespace ik {
 
-namespace {
-
-// Block b's error as a share of its tolerance: a position block's distance over the tip
-// tolerance, an orientation block's angle over the orientation tolerance.
+// A position block's distance over the tip tolerance, an orientation block's angle over the
+// orientation tolerance.
 double block_share(const GoalSet& goals, const Eigen::Ref<const Eigen::VectorXd>& r, int b, const GoalTolerance& tol) {
   const GoalSet::Block& g = goals.block(b);
   const double size = r.segment<3>(3 * b).norm() / g.scale;  // rig units, or radians
   return g.orientation ? size / (kRadPerDeg * tol.orientation_deg) : size / tol.tip;
 }
-
-}  // namespace
 
 void Priority::resize(const GoalSet& goals, int angles) {
   const int m = goals.rows();
@@ -49,7 +45,17 @@ bool Priority::effector_off_at_start(const GoalSet& goals, int e) const {
 
 void Priority::clear() {
   std::fill(given_up_.begin(), given_up_.end(), 0);
+  given_up_count_ = suspended_count_ = 0;
+}
+
+void Priority::suspend() {
+  suspended_count_ = given_up_count_;
   given_up_count_ = 0;
+}
+
+void Priority::resume() {
+  given_up_count_ = suspended_count_;
+  suspended_count_ = 0;
 }
 
 void Priority::give_up_yielding(const GoalSet& goals) {

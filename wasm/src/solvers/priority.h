@@ -40,6 +40,9 @@ struct GoalTolerance {
   double orientation_deg = 0;  // degrees: an orientation block's angle
 };
 
+// Block b's error at residual `r` as a share of its tolerance (<= 1: met).
+double block_share(const GoalSet& goals, const Eigen::Ref<const Eigen::VectorXd>& r, int b, const GoalTolerance& tol);
+
 class Priority {
  public:
   // The held rows' damping as a share of the given-up rows' lambda.
@@ -53,6 +56,10 @@ class Priority {
   void clear();
   // Some goal is given up (the solve is in priority mode).
   bool active() const { return given_up_count_ > 0; }
+  // Every goal as an equal for a while (active() false), then the same goals given up again.
+  void suspend();
+  void resume();
+  bool suspended() const { return suspended_count_ > 0; }
   // How many goals (blocks) are given up.
   int count() const { return given_up_count_; }
   // Per hard block: 1 if given up. Same size as the goals' blocks.
@@ -111,6 +118,7 @@ class Priority {
   std::vector<char> given_up_;
   std::vector<char> off_at_start_;  // per hard block: beyond its tolerance at the solve's start
   int given_up_count_ = 0;
+  int suspended_count_ = 0;  // given_up_count_ while suspended
   int held_rows_ = 0;  // hard rows: the blocks' rows; rows past them (soft) are never held
   std::vector<int> movable_;
   double scale_ = 1;

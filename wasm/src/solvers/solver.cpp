@@ -127,6 +127,8 @@ StopReason Solver::begin(const Eigen::Ref<const Eigen::VectorXd>& angles, const 
   heading_ = false;
   resumed_ = resume;
   nearer_tries_ = 0;
+  together_ = together_tried_ = false;
+  discarded_chain_restarts_ = 0;
   nearest_move_ = std::numeric_limits<double>::infinity();
   start_ = moved_from_ = a_;
   soft_retried_ = false;
@@ -189,6 +191,7 @@ StopReason Solver::begin(const Eigen::Ref<const Eigen::VectorXd>& angles, const 
   if (close || !running()) clock_.close();  // otherwise the first step's time runs from this call's start
   summary_.elapsed_s = clock_.spent();
   if (!running()) {
+    end_together();
     finish();
     bound_motion();
   }
@@ -223,6 +226,7 @@ void Solver::resize_workspace() {
   heading_ = false;
   nearest_.resize(n_);
   stuck_.resize(n_);
+  together_best_.resize(n_);
   pattern_.build(kin_, goals_);
   priority_.resize(goals_, n_);
   resize(m_, n_);
@@ -270,6 +274,7 @@ bool Solver::advance(Clock::time_point begin) {
       reason = StopReason::zero_step;  // judged as a stop: an escape, a chain restart or a give-up, else the end
     while ((reason == StopReason::zero_step || reason == StopReason::converged_grad) && move_on(reason)) {
     }
+    if (reason == StopReason::converged_E) end_together();
     while (reason == StopReason::converged_E && seek_nearer(reason)) {
     }
   }
@@ -284,6 +289,7 @@ bool Solver::advance(Clock::time_point begin) {
   summary_.stop_reason = settle(reason);
   summary_.elapsed_s = clock_.spent();
   if (reason != StopReason::running) {
+    end_together();
     take_nearest();
     finish();
     bound_motion();
@@ -413,6 +419,10 @@ void Solver::record() {
 }
 
 void Solver::note_best() {
+  if (together_ && E_ < together_best_E_) {
+    together_best_ = a_;
+    together_best_E_ = E_;
+  }
   // A point on target beats any point off it (the tip test is not the E order); with goals given
   // up, one that meets the held goals beats one that does not, and among those the lower E of
   // the given-up rows wins; otherwise lower E.

@@ -295,6 +295,7 @@ class Solver {
   bool answer_here(StopReason otherwise);
   void take_nearest();
   static constexpr int kNearerTries = 4;
+  static constexpr int kRestoreSteps = 8;  // priority steps that bring a partway pose's held goals back
   static constexpr int kSeekRestarts = 16;
   int nearer_tries_ = 0;
   int seek_limit_ = 0;  // summary_.chain_restarts at which the search ends
@@ -318,6 +319,35 @@ class Solver {
   int best_rank_ = 0;
   double best_given_up_E_ = 0;
   bool chain_run_ = false;      // the priority run began at a chain restart, not at the start angles
+  // A priority run with a yielding goal (the dragged one) stopped off target, the held goals
+  // met, the target not beyond its chain's reach: once per solve, a run of every goal as an
+  // equal from the start angles (priority_ suspended), which moves on as a plain solve does
+  // (escapes, chain restarts: the priority run keeps those left) and by reweight_together().
+  // Where holding the others exactly leaves the yielding goal no way on, letting them move
+  // within their tolerance finds the pose that meets every goal. Only an answer on target counts (rank 2 beats the
+  // priority run's); when nothing is left to try, end_together() goes back to the priority run's
+  // best point. Returns false (nothing begun) when it does not apply.
+  bool begin_together();
+  // When the chain restarts are spent, from the run's best point: every goal within
+  // kReweightNear times its tolerance, some beyond (the least-squares point shares the error
+  // out, the tip test asks each goal to be within its tolerance), those beyond weigh more
+  // (goals_'s block scales) and the run goes on, up to kReweights times. After that, or when
+  // the point is not near, the goals' own weights come back (restore_weights()) and it returns
+  // false.
+  bool reweight_together();
+  void restore_weights();
+  void end_together();
+  static constexpr int kReweights = 4;
+  static constexpr double kReweightNear = 10;
+  bool together_ = false;  // that run is under way
+  bool together_tried_ = false;
+  // Its lowest-E point (where its chain restarts start from; summary_ keeps the priority run's).
+  Eigen::VectorXd together_best_;
+  double together_best_E_ = 0;
+  int reweights_ = 0;      // so far; -1: no more
+  // Chain restarts of a run of the goals as equals that ended off target: the priority run from
+  // the start that follows it follows E down from there (no branch change to bound).
+  int discarded_chain_restarts_ = 0;
 
   // After a run stopped off target with `reason` (zero_step, converged_grad, or running for a
   // stall): leaves the point by an escape (not for a stall) or a restart, counting it as an

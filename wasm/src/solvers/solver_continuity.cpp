@@ -24,7 +24,7 @@ bool Solver::answer_here(StopReason otherwise) {
 }
 
 bool Solver::seek_nearer(StopReason& reason) {
-  if (!bounds_joints() || summary_.chain_restarts == 0 || nearer_tries_ >= kNearerTries ||
+  if (!bounds_joints() || summary_.chain_restarts == discarded_chain_restarts_ || nearer_tries_ >= kNearerTries ||
       out_of_time() || summary_.iterations >= opt_.max_iterations)
     return false;
   kin_.forward(a_);
@@ -57,12 +57,22 @@ void Solver::bound_motion() {
   if (!bounds_joints() || stop == StopReason::numerical_failure || stop == StopReason::invalid_input) return;
   // A run from the start follows E down from there: it moves the body as the target moved (a
   // straight limb starting to bend included). Only a chain restart can land on another branch.
-  if (summary_.chain_restarts == 0 && !resumed_) return;
+  if (summary_.chain_restarts == discarded_chain_restarts_ && !resumed_) return;
   kin_.forward(summary_.angles);
   if (motion_.largest_move(kin_) <= bound) return;
   heading_to_ = summary_.angles;
   motion_.limit(kin_, moved_from_, summary_.angles, bound, a_);
   if (!answer_here(StopReason::joint_speed)) return;
+  // Partway in angles is not partway on target: the held goals (the pinned effectors) are
+  // brought back within their tolerance by a few priority steps from there.
+  if (priority_.active() && !held()) {
+    priority_damping_.reset(opt_.lm_initial_mu);
+    for (int i = 0; i < kRestoreSteps && !held(); ++i) {
+      const Progress p = priority_iterate();
+      if (p != Progress::moved || !update_derivatives(true)) break;
+    }
+    if (!answer_here(StopReason::joint_speed)) return;
+  }
   partway_ = a_;
   heading_ = true;
 }

@@ -108,8 +108,8 @@ bool Solver::chain_restart() {
   if (!chain_restarts_left()) return false;
   // The first one in a solve notes where the run was stuck; seeking a nearer answer
   // (seek_nearer()) goes on from there, not from the answer found.
-  if (summary_.chain_restarts == 0) stuck_ = summary_.angles;
-  trial_ = nearer_tries_ > 0 ? stuck_ : summary_.angles;
+  if (summary_.chain_restarts == discarded_chain_restarts_) stuck_ = summary_.angles;
+  trial_ = nearer_tries_ > 0 ? stuck_ : together_ ? together_best_ : summary_.angles;
   evaluate(trial_, r_trial_);  // poses kin_ at the best point
   // How far off a tip may be on target: the tip tolerance, or with the E test the distance at which
   // one effector alone makes E the tolerance.
@@ -148,6 +148,19 @@ bool Solver::move_on(StopReason& reason) {
   // Restarts come first while any are left: on random targets escaping first cost more than it
   // saved (native, lm, 1000 restarts: knight 96 -> 184 us mean, beast 75 -> 137 us).
   const bool stationary = reason == StopReason::zero_step || reason == StopReason::converged_grad;
+  // Every goal as an equal (solver.h, begin_together()): an escape, a chain restart, then heavier
+  // weights on the goals beyond their tolerance; when none is left, back to the priority run.
+  if (together_) {
+    if (stationary && escape())
+      ++summary_.escapes;
+    else if (stationary && chain_restart())
+      ++summary_.chain_restarts;
+    else if (stationary && reweight_together()) {
+    } else
+      end_together();
+    reason = measure_new_start();
+    return true;
+  }
   // Without restarts: an escape along negative curvature first (a straight limb), then chain
   // restarts (the other chains follow the moved ones: a hand's fingers around a moved wrist),
   // unless a target lies beyond its chain's reach; then the goals that cannot be met are given
@@ -170,6 +183,7 @@ bool Solver::move_on(StopReason& reason) {
   } else if (!prioritised && restart())
     ++summary_.restarts;
   else if (prioritised && !held() && !chain_run_ && give_up_next_goal()) {
+  } else if (prioritised && stationary && begin_together()) {
   } else if (prioritised && stationary && chain_restart())
     ++summary_.chain_restarts;  // the given-up chains moved, the held ones kept (a run that
                                 // fails to keep them is not a reason to give up more)

@@ -4,8 +4,10 @@
 // the other goals (Newton on their rows) and brings the given-up ones as close as the freedom
 // left allows. Every method takes
 // these steps once goals are given up (outside paper mode), so all of them follow one order:
-// reachable goals within their tolerance, then the closest point for the rest. The rest of the
-// Solver is in solver.cpp and solver_move_on.cpp.
+// reachable goals within their tolerance, then the closest point for the rest. A yielding goal
+// within its chain's reach that the priority run leaves off target is tried with every goal as
+// an equal too (begin_together()): what the goals reach together, the yielding one reaches. The
+// rest of the Solver is in solver.cpp and solver_move_on.cpp.
 #include <algorithm>
 #include <cmath>
 
@@ -66,6 +68,78 @@ bool Solver::give_up_next_goal() {
   priority_damping_.reset(opt_.lm_initial_mu);
   run_from_start();
   return std::isfinite(E_);
+}
+
+bool Solver::begin_together() {
+  if (together_tried_ || opt_.paper_mode || !goals_.has_yielding() || !held()) return false;
+  evaluate(start_, r_trial_);  // poses kin_ at the start angles, where the goals were set
+  if (chain_restart_.beyond_any(kin_, r_trial_, goals_, goal_tolerance().tip, false)) return false;
+  together_tried_ = together_ = true;
+  reweights_ = 0;
+  priority_.suspend();
+  run_from_start();
+  together_best_ = a_;
+  together_best_E_ = E_;
+  return std::isfinite(E_);
+}
+
+bool Solver::reweight_together() {
+  if (reweights_ == 0) {  // the first from the run's best point
+    a_ = together_best_;
+    E_ = evaluate(a_, r_);
+  }
+  const GoalTolerance tol = goal_tolerance();
+  bool near = true, off = false;
+  for (int b = 0; b < goals_.num_blocks(); ++b) {
+    const double share = block_share(goals_, r_, b, tol);
+    near = near && share < kReweightNear;
+    off = off || share > 1;
+  }
+  if (reweights_ >= 0 && reweights_ < kReweights && near && off) {
+    for (int b = 0; b < goals_.num_blocks(); ++b) {
+      const double share = block_share(goals_, r_, b, tol);
+      if (share > 1) goals_.set_block_scale(b, goals_.block(b).scale * 2 * share);
+    }
+    ++reweights_;
+    settling_.begin_run();
+    reset();
+    E_ = evaluate(a_, r_);
+    together_best_ = a_;  // E has a new meaning: the best point from here on
+    together_best_E_ = E_;
+    return std::isfinite(E_);
+  }
+  // None (more): the goals' own weights back, E measured with them again.
+  if (reweights_ > 0) {
+    restore_weights();
+    together_best_E_ = evaluate(together_best_, r_trial_);
+    E_ = evaluate(a_, r_);
+  }
+  reweights_ = -1;
+  return false;
+}
+
+void Solver::restore_weights() {
+  for (int b = 0; b < goals_.num_blocks(); ++b) goals_.set_block_scale(b, incoming_.block(b).scale);
+}
+
+void Solver::end_together() {
+  if (!together_) return;
+  together_ = false;
+  priority_.resume();
+  if (reweights_ > 0) restore_weights();
+  // On target: its answer, measured with the goals' own weights. Off: the priority run goes on
+  // from its best point (its chain restarts next). Either was finite there, and so were its
+  // derivatives.
+  if (!summary_.reached) discarded_chain_restarts_ = summary_.chain_restarts;
+  a_ = summary_.angles;
+  settling_.begin_run();
+  reset();
+  if (summary_.reached) {
+    answer_here(StopReason::converged_E);
+  } else {
+    E_ = evaluate(a_, r_);
+    update_derivatives(true);
+  }
 }
 
 Solver::Progress Solver::priority_iterate() {
