@@ -1,6 +1,7 @@
 // The command line as a function: options -> checks -> run -> tables and files, and every error
 // as one line `bench: ...` (cli.ts is the entry point that calls it on process.argv).
 import { spawnSync } from 'node:child_process';
+import { closeSync, existsSync, openSync, unlinkSync } from 'node:fs';
 import { availableParallelism, cpus } from 'node:os';
 import { fileURLToPath } from 'node:url';
 
@@ -8,7 +9,7 @@ import { loadIkNode } from '../web/src/ik/node.js';
 import { IkSolver } from '../web/src/ik/solver.js';
 import { noGesturesNote, prepareRigs, runBench, totalSolves } from './bench.js';
 import { compareTable, readReferenceCsv } from './compare.js';
-import { BenchError } from './errors.js';
+import { BenchError, errorLine } from './errors.js';
 import type { Row } from './metrics.js';
 import { parseOptions } from './options.js';
 import { checkOutputs, writeCsv, writeJson, writeMarkdown, type RunInfo } from './outputs.js';
@@ -52,15 +53,34 @@ function gitCommit(): string {
   return r.status === 0 ? r.stdout.trim() : '';
 }
 
+/**
+ * Opens each output file for appending (which changes no byte of an existing file) and removes
+ * the ones this made, so that a file the system will not let us create (/proc/x.json, a
+ * read-only mount, where root passes every permission check) is a usage error before the run
+ * rather than an error after it. Runs after checkOutputs(), which refuses FIFOs (opening one
+ * would wait for a reader).
+ */
+function tryOutputs(outputs: ReadonlyArray<readonly [flag: string, file: string | undefined]>): void {
+  for (const [flag, file] of outputs) {
+    if (file === undefined) continue;
+    const existed = existsSync(file);
+    try {
+      closeSync(openSync(file, 'a'));
+    } catch (e) {
+      throw new BenchError(`${flag} ${file}: cannot be written: ${errorLine(e)}`, 2);
+    }
+    if (!existed) unlinkSync(file);
+  }
+}
+
 async function main(argv: string[], io: CommandIo): Promise<number> {
   // The core's methods are the ones --methods knows: its module comes first.
   const ik = await loadIkNode();
   const opts = parseOptions(argv, io.isTTY, IkSolver.methods(ik));
   if (!opts) return 0;
-  checkOutputs(
-    [['--json', opts.json], ['--csv', opts.csv], ['--markdown', opts.markdown]],
-    [...resolveRigPaths(opts.rigs), ...(opts.compare ? [opts.compare] : [])],
-  );
+  const outputs = [['--json', opts.json], ['--csv', opts.csv], ['--markdown', opts.markdown]] as const;
+  checkOutputs(outputs, [...resolveRigPaths(opts.rigs), ...(opts.compare ? [opts.compare] : [])]);
+  tryOutputs(outputs);
   const reference = opts.compare ? readReferenceCsv(opts.compare) : undefined;
   const rigs = await prepareRigs(opts, ik);
   if (opts.experiments.includes('gestures'))

@@ -1,5 +1,7 @@
 // The command line's options: parsing, defaults and checks. Every problem is a BenchError with
 // one line of text (exit code 2), so `npm run bench -- --bad` fails the same way as a bad value.
+// The list options --rig, --experiment and --methods add up when repeated; any other option given
+// twice is refused rather than the last one silently winning.
 // Our methods are the core's (its registry, `IkSolver.methods`), given by the caller; the peers
 // are the bench's own.
 import { availableParallelism } from 'node:os';
@@ -94,6 +96,27 @@ function list(flag: string, value: string): string[] {
   return items;
 }
 
+/** The items of every value a list option was given (it may be repeated: --rig a --rig b is --rig a,b). */
+function lists(flag: string, values: string | string[]): string[] {
+  return (Array.isArray(values) ? values : [values]).flatMap((v) => list(flag, v));
+}
+
+/**
+ * Commander's parsers for options given more than once: a list option collects its values (the
+ * first one replaces the default), any other option is refused the second time.
+ */
+function repeats(): { collect: (value: string, previous: string | string[]) => string[]; once: (flag: string) => (value: string) => string } {
+  const seen = new Set<string>();
+  return {
+    collect: (value, previous) => (Array.isArray(previous) ? [...previous, value] : [value]),
+    once: (flag) => (value) => {
+      if (seen.has(flag)) throw usage(`${flag} given twice (${quote(value)} the second time); give it once`);
+      seen.add(flag);
+      return value;
+    },
+  };
+}
+
 /** A finite number above 0 and at most `max`. */
 function positiveNumber(flag: string, value: string, max = Infinity): number {
   const x = Number(present(flag, value));
@@ -102,16 +125,19 @@ function positiveNumber(flag: string, value: string, max = Infinity): number {
   return x;
 }
 
-/** An integer in min..max; `why` follows the range in the message. */
+/**
+ * An integer in min..max written in plain decimal digits (no 0x10, 1e3, 1.0 or blanks, which
+ * Number() would take); `why` follows the range in the message.
+ */
 function integerIn(flag: string, value: string, min: number, max: number, why = ''): number {
-  const x = Number(present(flag, value));
-  if (!Number.isInteger(x) || x < min || x > max) throw usage(`${flag}: ${quote(value)} is not an integer in ${min}..${max}${why}`);
+  const x = /^-?\d+$/.test(present(flag, value)) ? Number(value) : NaN;
+  if (!Number.isSafeInteger(x) || x < min || x > max) throw usage(`${flag}: ${quote(value)} is not an integer in ${min}..${max}${why}`);
   return x;
 }
 
 /** The items of `value`, each one of `known`, without repeats. */
-function pick<T extends string>(flag: string, value: string, known: readonly T[], what: string): T[] {
-  const values = list(flag, value);
+function pick<T extends string>(flag: string, value: string | string[], known: readonly T[], what: string): T[] {
+  const values = lists(flag, value);
   for (const v of values)
     if (!(known as readonly string[]).includes(v)) throw usage(`${flag}: unknown ${what} ${quote(v)} (known: ${known.join(', ')})`);
   return [...new Set(values)] as T[];
@@ -149,37 +175,44 @@ function fileName(flag: string, value: string | undefined): string | undefined {
 }
 
 function program(allMethods: readonly string[], defaultMethods: readonly string[]): Command {
+  const { collect, once } = repeats();
+  const single = (flags: string, description: string, fallback?: string): Option => {
+    const option = new Option(flags, description).argParser(once(flags.split(' ')[0]));
+    return fallback === undefined ? option : option.default(fallback);
+  };
+  const merged = ' (repeatable: --rig a --rig b is --rig a,b)';
   return new Command('bench')
     .description("Benchmarks the IK solvers on the report's target sets and more (see bench-node/README.md).")
-    .addOption(new Option('--rig <paths>', 'rig files (.glb, .gltf, A7 .json) or project rig names, comma-separated').makeOptionMandatory())
-    .option('--experiment <list>', `experiments: ${experiments.join(', ')}`, 'random,incremental')
-    .option('--methods <list>', `methods: ${allMethods.join(', ')} (kdl: --engine native only)`, defaultMethods.join(','))
-    .option('--samples <n>', `samples per experiment (at most ${MAX_SAMPLES}); per-method overrides like 1000,gd=100`, String(DEFAULT_SAMPLES))
-    .option('--seed <s>', 'seed of the target sets', '1')
-    .option('--gtol <x>', 'gradient tolerance (default: per rig, see README)')
-    .option('--ftol <y>', 'E tolerance, also the success threshold (default: per rig; drag and reach: a tip distance, see README)')
-    .option('--timeout <seconds>', `time budget per solve (at most ${MAX_TIMEOUT_SECONDS})`, '1')
-    .option('--restarts <n>', `restarts per solve for every method, peers included, within the time budget (random and incremental; default: the solvers' default; at most ${MAX_RESTARTS})`)
+    .addOption(new Option('--rig <paths>', `rig files (.glb, .gltf, A7 .json) or project rig names, comma-separated${merged}`).argParser(collect).makeOptionMandatory())
+    .addOption(new Option('--experiment <list>', `experiments: ${experiments.join(', ')}${merged}`).argParser(collect).default('random,incremental'))
+    .addOption(new Option('--methods <list>', `methods: ${allMethods.join(', ')} (kdl: --engine native only)${merged}`).argParser(collect).default(defaultMethods.join(',')))
+    .addOption(single('--samples <n>', `samples per experiment (at most ${MAX_SAMPLES}); per-method overrides like 1000,gd=100`, String(DEFAULT_SAMPLES)))
+    .addOption(single('--seed <s>', 'seed of the target sets', '1'))
+    .addOption(single('--gtol <x>', 'gradient tolerance (default: per rig, see README)'))
+    .addOption(single('--ftol <y>', 'E tolerance, also the success threshold (default: per rig; drag and reach: a tip distance, see README)'))
+    .addOption(single('--timeout <seconds>', `time budget per solve (at most ${MAX_TIMEOUT_SECONDS})`, '1'))
+    .addOption(single('--restarts <n>', `restarts per solve for every method, peers included, within the time budget (random and incremental; default: the solvers' default; at most ${MAX_RESTARTS})`))
     .option('--paper', "the report's original algorithms (solver paper mode)", false)
-    .option('--goals <kind>', `targets per end effector: position (the protocol's tip positions) or pose (tip position and frame orientation)`, 'position')
+    .addOption(single('--goals <kind>', `targets per end effector: position (the protocol's tip positions) or pose (tip position and frame orientation)`, 'position'))
     .option('--no-humanoid-limits', "a recognised humanoid keeps the file's own limits (extras.ik or +-180) instead of anatomical ones")
-    .option('--engine <list>', 'wasm, native, or both (prints the ratio)', 'wasm')
-    .option('--workers <n>', `worker threads (native: processes), at most ${MAX_WORKERS}`, String(Math.min(availableParallelism(), MAX_WORKERS)))
-    .option('--json <file>', 'write the rows as JSON')
-    .option('--csv <file>', 'write the rows as CSV')
-    .option('--markdown <file>', 'write the tables as Markdown')
-    .option('--compare <file>', "a results CSV of the report (results.csv, original-measured.csv) to print beside ours")
+    .addOption(single('--engine <list>', 'wasm, native, or both (prints the ratio)', 'wasm'))
+    .addOption(single('--workers <n>', `worker threads (native: processes), at most ${MAX_WORKERS}`, String(Math.min(availableParallelism(), MAX_WORKERS))))
+    .addOption(single('--json <file>', 'write the rows as JSON (checked writable before the run)'))
+    .addOption(single('--csv <file>', 'write the rows as CSV (checked writable before the run)'))
+    .addOption(single('--markdown <file>', 'write the tables as Markdown (checked writable before the run)'))
+    .addOption(single('--compare <file>', "a results CSV of the report (results.csv, original-measured.csv) to print beside ours"))
     .option('--no-progress', 'no progress bar even on a terminal')
-    .option('--warm-up <ms>', 'untimed solving per worker and method before timing (0: a single solve; times then include V8 compiling)', String(WARM_UP_MS))
+    .addOption(single('--warm-up <ms>', 'untimed solving per worker and method before timing (0: a single solve; times then include V8 compiling)', String(WARM_UP_MS)))
     .helpOption('-h, --help')
     .allowExcessArguments(false)
     .showSuggestionAfterError(true);
 }
 
 interface RawOptions {
-  rig: string;
-  experiment: string;
-  methods: string;
+  /** The list options: the default as a string, the values given as an array. */
+  rig: string[];
+  experiment: string | string[];
+  methods: string | string[];
   samples: string;
   seed: string;
   gtol?: string;
@@ -224,7 +257,7 @@ export function parseOptions(argv: string[], isTTY: boolean, ownMethods: readonl
   }
   const raw = cmd.opts<RawOptions>();
   const opts: BenchOptions = {
-    rigs: list('--rig', raw.rig),
+    rigs: lists('--rig', raw.rig),
     experiments: pick('--experiment', raw.experiment, experiments, 'experiment'),
     methods: pick('--methods', raw.methods, allMethods, 'method'),
     samples: parseSamples(raw.samples, allMethods),

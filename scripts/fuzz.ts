@@ -2,21 +2,22 @@
 // and the solver API careless and hostile input (tests/fuzz/), prints the outcome counts per kind,
 // the time budget's worst ratio, the stack-leak check, the time to load a 10,000-bone chain, and
 // every failing case with the command that replays it.
-// Exit code 1 on any crash, hang, silent wrong result or read outside the model folder.
+// Exit code 1 on any crash, hang, silent wrong result or read outside the model folder, a stack
+// leak, or a promise line (time budget, deep chain) that says BROKEN.
 import { Command, InvalidArgumentError, Option } from 'commander';
 import { SingleBar } from 'cli-progress';
 
 import { loadIkNode } from '../web/src/ik/node.js';
 import { FUZZ_KINDS, type FuzzKind } from '../tests/fuzz/case_id.js';
 import { deepChainSummary } from '../tests/fuzz/deep_chain.js';
-import { budgetSummary, countTable, failureList, severeCount } from '../tests/fuzz/report.js';
+import { budgetSummary, countTable, exitCode, failureList } from '../tests/fuzz/report.js';
 import { runFuzz } from '../tests/fuzz/run_fuzz.js';
 import { stackLeakCheck } from '../tests/fuzz/stack_leak.js';
 
 function integer(min: number): (text: string) => number {
   return (text) => {
-    const v = Number(text);
-    if (!Number.isInteger(v) || v < min) throw new InvalidArgumentError(`expected an integer >= ${min}`);
+    const v = /^\d+$/.test(text) ? Number(text) : NaN;
+    if (!Number.isSafeInteger(v) || v < min) throw new InvalidArgumentError(`expected an integer >= ${min}`);
     return v;
   };
 }
@@ -63,7 +64,8 @@ async function main(): Promise<number> {
   });
   bar?.stop();
 
-  process.stdout.write(`\n${countTable(reports)}\n\n${budgetSummary(reports)}\n`);
+  const budget = budgetSummary(reports);
+  process.stdout.write(`\n${countTable(reports)}\n\n${budget}\n`);
   let leak = false;
   if (o.stackThrows > 0 && o.case === undefined) {
     const r = stackLeakCheck(await loadIkNode(), o.stackThrows);
@@ -73,10 +75,11 @@ async function main(): Promise<number> {
         `${leak ? `FAILED: ${r.problem}` : 'then a valid solve works'}\n`,
     );
   }
-  if (o.case === undefined) process.stdout.write(`${await deepChainSummary(await loadIkNode())}\n`);
+  const deepChain = o.case === undefined ? await deepChainSummary(await loadIkNode()) : '';
+  if (deepChain) process.stdout.write(`${deepChain}\n`);
   const failures = failureList(reports);
   if (failures) process.stdout.write(`\n${failures}\n`);
-  return severeCount(reports) > 0 || leak ? 1 : 0;
+  return exitCode(reports, leak, [budget, deepChain]);
 }
 
 process.exitCode = await main();

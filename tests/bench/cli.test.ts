@@ -119,6 +119,7 @@ describe('careless values: a usage error naming the option and the value', () =>
     [['--seed', '4294967296'], /--seed: "4294967296" is not an integer/],
     [['--seed', '1.5'], /--seed: "1.5" is not an integer/],
     [['--seed', 'NaN'], /--seed: "NaN" is not an integer/],
+    [['--seed', ' 5'], /--seed: " 5" is not an integer/],
     [['--workers', '1000'], /--workers: "1000" is not an integer in 1\.\.\d+ \(4 per core, 64 at most\)/],
     [['--workers', '65'], /--workers: "65" is not an integer in 1\.\.\d+/],
     [['--timeout', 'NaN'], /--timeout: "NaN" is not a positive number of at most 3600/],
@@ -134,6 +135,32 @@ describe('careless values: a usage error naming the option and the value', () =>
     [['--methods', `lm,${'y'.repeat(500)}`], /--methods: unknown method "y{57}\.\.\." \(known:/],
   ] as Array<[string[], RegExp]>)('%j', async (args, pattern) => {
     expectOneLineError(await benchHere('--rig', knight, ...args), 2, pattern);
+  });
+
+  it.each(['0x10', '1e3', '1.0', '+5', '0b11', '5_000', '١٢'])('--seed, --samples, --restarts, --workers and --warm-up take only decimal digits, not %j', async (value) => {
+    for (const flag of ['--seed', '--samples', '--restarts', '--workers', '--warm-up'])
+      expectOneLineError(await benchHere('--rig', knight, flag, value), 2, new RegExp(`^bench: ${flag}: ${JSON.stringify(value).replace(/[.+]/g, '\\$&')} is not an integer in `));
+  });
+
+  it('takes plain decimal integers, leading zeros included', () => {
+    const o = parseOptions(['--rig', knight, '--seed', '016', '--samples', '40,gd=07', '--restarts', '0', '--warm-up', '250'], false, methods)!;
+    expect([o.seed, o.samples.lm, o.samples.gd, o.restarts, o.warmUpMs]).toEqual([16, 40, 7, 0, 250]);
+  });
+
+  it('merges a repeated --rig, --experiment or --methods into one list, the first replacing the default', () => {
+    const o = parseOptions(['--rig', 'lamp', '--rig', `${knight},hand`, '--experiment', 'drag', '--experiment', 'reach,drag', '--methods', 'lm', '--methods', 'gn'],
+      false, methods)!;
+    expect(o.rigs).toEqual(['lamp', knight, 'hand']);
+    expect(o.experiments).toEqual(['drag', 'reach']);
+    expect(o.methods).toEqual(['lm', 'gn']);
+  });
+
+  it.each([
+    ['--seed', '5', '6'], ['--samples', '10', '20'], ['--timeout', '1', '2'], ['--workers', '1', '2'], ['--engine', 'wasm', 'native'],
+    ['--json', 'a.json', 'b.json'], ['--goals', 'pose', 'position'], ['--warm-up', '0', '10'],
+  ])('refuses %s given twice instead of keeping the last', async (flag, first, second) => {
+    expectOneLineError(await benchHere('--rig', knight, flag, first, `${flag}=${second}`), 2,
+      new RegExp(`^bench: ${flag} given twice \\("${second.replace('.', '\\.')}" the second time\\); give it once$`));
   });
 
   it('refuses a rig given twice, by any name', async () => {
@@ -182,8 +209,25 @@ describe('output files: checked before the run', () => {
     [['--json', join(dir, 'out', 'a'), '--csv', join(dir, 'out', 'a')], /--csv .*a: is the file of --json$/],
     [['--csv', csv, '--compare', csv], /--csv .*compare\.csv: is an input of this run$/],
     [['--json', knight], /--json .*knight\.json: is an input of this run$/],
+    // Root passes every permission check, yet nothing can be created in /proc: only opening tells.
+    [['--json', '/proc/x.json'], /^bench: --json \/proc\/x\.json: cannot be written: ENOENT/],
+    [['--csv', join(dir, 'x.csv'), '--markdown', '/sys/x.md'], /^bench: --markdown \/sys\/x\.md: cannot be written: EACCES/],
   ] as Array<[string[], RegExp]>)('%j', async (args, pattern) => {
     expectOneLineError(await benchHere('--rig', knight, ...args), 2, pattern);
+  });
+
+  it('leaves no trace of the check: a new file is removed, an existing one keeps its bytes', async () => {
+    const fresh = join(dir, 'fresh.csv'), kept = join(dir, 'kept.md');
+    writeFileSync(kept, 'old results\n');
+    expectOneLineError(await benchHere('--rig', knight, '--csv', fresh, '--markdown', kept, '--json', '/proc/x.json'), 2, /--json \/proc\/x\.json/);
+    expect(existsSync(fresh)).toBe(false);
+    expect(readFileSync(kept, 'utf8')).toBe('old results\n');
+  });
+
+  it.skipIf(process.getuid?.() === 0)('refuses a folder without write permission', async () => {
+    const locked = join(dir, 'locked');
+    mkdirSync(locked, { mode: 0o555 });
+    expectOneLineError(await benchHere('--rig', knight, '--json', join(locked, 'x.json')), 2, /--json .*locked\/x\.json: folder .*locked is not writable$/);
   });
 
   it.skipIf(!existsSync(fifo))('refuses a FIFO (writing it would wait for a reader)', async () => {

@@ -77,6 +77,50 @@ describe('the body moves as a body', () => {
     expect(errors).toEqual([]);
   });
 
+  it("the character's right hand across the chest towards the left shoulder in 40 steps: no frame moves a joint more than 5% of the height", async (ctx) => {
+    const { page, errors } = await openPage(env.browser, ctx);
+    await gotoRig(page, env.url, 'character');
+    const hand = await selectTarget(page, await effectorNamed(page, /RightHand$/));
+    const tolerance = await page.evaluate(() => window.ikPage?.tipTolerance() ?? 0);
+    const { shoulder, height } = await page.evaluate(() => {
+      const p = window.ikPage!;
+      const names = p.boneNames();
+      const b = p.bounds()!;
+      return { shoulder: p.boneTip(names.findIndex((n) => /LeftShoulder$/.test(n)))!, height: b.max[1] - b.min[1] };
+    });
+    const joints = async (): Promise<number[][]> =>
+      page.evaluate(() => {
+        const p = window.ikPage!;
+        return p.boneNames().map((_, i) => p.boneTip(i) ?? [NaN, NaN, NaN]);
+      });
+    // 144 px towards the left shoulder on screen (the issue's gesture: 24 steps of 6 px), in 40 steps.
+    const from = await targetScreen(page, hand);
+    const aim = await page.evaluate((q) => window.ikPage?.worldToScreen(q) ?? null, shoulder);
+    if (!aim) throw new Error('no screen point');
+    const length = Math.hypot(aim.x - from.x, aim.y - from.y);
+    const to = { x: from.x + ((aim.x - from.x) * Math.min(144, length)) / length, y: from.y + ((aim.y - from.y) * Math.min(144, length)) / length };
+    await page.mouse.move(from.x, from.y);
+    await page.mouse.down();
+    let before = await joints(), worst = 0, worstStep = 0;
+    for (let i = 1; i <= 40; i++) {
+      await page.mouse.move(from.x + ((to.x - from.x) * i) / 40, from.y + ((to.y - from.y) * i) / 40);
+      await nextFrame(page);
+      const now = await joints();
+      now.forEach((q, j) => {
+        const d = Math.hypot(q[0] - before[j][0], q[1] - before[j][1], q[2] - before[j][2]);
+        if (d > worst) (worst = d), (worstStep = i);
+      });
+      before = now;
+    }
+    await page.mouse.up();
+    await waitForSettled(page);
+    console.log(`[across] ${Math.min(144, length).toFixed(0)} px of ${length.toFixed(0)}: largest joint move in one frame ${((100 * worst) / height).toFixed(2)}% of the height (step ${worstStep}); ${await statText(page, 'status')}`);
+    expect(worst / height).toBeLessThan(0.05);
+    expect((await tipErrors(page))[hand]).toBeLessThan(tolerance);
+    await screenshot(page, 'hand-across-chest.png');
+    expect(errors).toEqual([]);
+  });
+
   it("the knight's hand turned 88 degrees with the rotate ring keeps its position; the status names the orientation", async (ctx) => {
     const { page, errors } = await openPage(env.browser, ctx);
     await gotoRig(page, env.url, 'knight');

@@ -1,10 +1,11 @@
 // The calls an API case strings together, each with careless or hostile arguments, and what a
 // correct result of each must satisfy.
 import type { Numbers } from '../../web/src/ik/rig.js';
-import { IkSolver, type SolverOptions } from '../../web/src/ik/solver.js';
+import { IkSolver, type SolverOptions, type SolverResult } from '../../web/src/ik/solver.js';
 import { changeEffectors, type ApiState } from './api_state.js';
 import { attempt, both } from './attempt.js';
 import { forwardKinematics } from './forward_kinematics.js';
+import { goalsArg } from './hostile_goals.js';
 import { numbersArg, type Acceptance, type Arg } from './hostile_args.js';
 import { judgeSolve } from './judge_solve.js';
 import { methodArg, optionsArg } from './hostile_options.js';
@@ -25,9 +26,16 @@ function anglesArg(r: Rand, s: ApiState): Arg {
   return numbersArg(r, s, randomAngles(r, s.spec), 'angles');
 }
 
+/** Targets of effectors this far out: finite, and their squares still fit a double. */
+const FAR_TARGET = 1e150;
+
 function targetArg(r: Rand, s: ApiState): Arg {
   const reachable = referenceTips(s.spec, randomAngles(r, s.spec));
-  const valid = r.chance(0.8) ? reachable : reachable.map(() => r.range(-5, 5));
+  const valid = r.weighted<() => Float64Array>([
+    [16, () => reachable],
+    [4, () => reachable.map(() => r.range(-5, 5))],
+    [1, () => reachable.map(() => (r.chance(0.5) ? FAR_TARGET : -FAR_TARGET))],
+  ])();
   return numbersArg(r, s, valid, 'target');
 }
 
@@ -210,6 +218,13 @@ function solveBudget(s: ApiState): number | undefined {
   return budget > 0 && Number.isFinite(budget) ? budget : undefined;
 }
 
+/** Records a finished solve against its time budget, unless the caller's code ran inside it. */
+function recordBudget(s: ApiState, result: SolverResult, wallStart: number, callerCodeRan: boolean): void {
+  const wallSeconds = (performance.now() - wallStart) / 1000;
+  const budgetSeconds = solveBudget(s);
+  if (budgetSeconds && !callerCodeRan) s.budgets.push({ budgetSeconds, elapsedSeconds: result.elapsedSeconds, wallSeconds });
+}
+
 const solve: Op = (r, s) => {
   const a = anglesArg(r, s), t = targetArg(r, s);
   const n = 3 * s.spec.parents.length;
@@ -224,14 +239,41 @@ const solve: Op = (r, s) => {
       let outcome: Outcome = OK;
       const wall = performance.now();
       const check = attempt(accept, () => s.solver.solve(a.value as Numbers, t.value as Numbers, out as Float64Array), (result) => {
-        const wallSeconds = (performance.now() - wall) / 1000;
+        recordBudget(s, result, wall, a.sideEffect === true || t.sideEffect === true);
         s.started = true;
-        const budgetSeconds = solveBudget(s);
-        if (budgetSeconds && !a.sideEffect && !t.sideEffect) s.budgets.push({ budgetSeconds, elapsedSeconds: result.elapsedSeconds, wallSeconds });
         const ka = known(a), kt = known(t);
         const given = ka && kt && accept === 'must' ? { start: ka, target: kt } : undefined;
         outcome = judgeSolve(result, s.spec, given);
         if (out instanceof Float64Array && out.length === n && result.angles !== out) return 'the result is not in `out`';
+        return undefined;
+      });
+      return worse(check, outcome);
+    },
+  };
+};
+
+/**
+ * solve() with goals past sane (hostile_goals.ts), after setting their rest pull if they have one
+ * (on top of the options of the current solve, which replace any out-of-range ones pending).
+ */
+const solveGoals: Op = (r, s) => {
+  const angles = randomAngles(r, s.spec);
+  const g = goalsArg(r, s);
+  return {
+    text: `solver.solve(angles, goals with ${g.text})`,
+    run: () => {
+      if (g.restWeight !== undefined) {
+        const restWeight = g.restWeight;
+        const set = attempt('either', () => s.solver.setOptions({ ...s.solver.options(), restWeight }), () => undefined);
+        if (set.kind !== 'ok') return set;
+        s.optionsOutOfRange = false;
+      }
+      let outcome: Outcome = OK;
+      const wall = performance.now();
+      const check = attempt(both(g.accept, s.optionsOutOfRange ? 'mustNot' : 'must'), () => s.solver.solve(angles, g.value), (result) => {
+        recordBudget(s, result, wall, false);
+        s.started = true;
+        outcome = judgeSolve(result, s.spec);
         return undefined;
       });
       return worse(check, outcome);
@@ -296,6 +338,6 @@ const describe: Op = (r, s) => {
 /** The calls with their weights. */
 export const API_OPS: readonly (readonly [number, Op])[] = [
   [4, tips], [2, boneTips], [2, poses], [2, jacobian], [1, finiteDifferenceJacobian], [2, objective], [2, gradient], [3, project],
-  [4, setEffectors], [4, newSolver], [3, setOptions], [1, options], [8, solve], [3, startAndStep], [1, step], [1, result],
+  [4, setEffectors], [4, newSolver], [3, setOptions], [1, options], [8, solve], [4, solveGoals], [3, startAndStep], [1, step], [1, result],
   [1, currentAngles], [1, errorHistory], [1, disposeRig], [1, disposeSolver], [1, describe],
 ];

@@ -1,7 +1,7 @@
 // Naming a case and what the worker reports about it.
 import type { Outcome } from './outcome.js';
 
-export const FUZZ_KINDS = ['a7', 'gltf', 'api'] as const;
+export const FUZZ_KINDS = ['a7', 'gltf', 'api', 'pose'] as const;
 export type FuzzKind = (typeof FUZZ_KINDS)[number];
 
 /** One case: replayed alone by `npm run fuzz -- --seed <seed> --kind <kind> --case <index>`. */

@@ -11,6 +11,7 @@ import type { Fixture } from './fixture.js';
 import type { GltfBase } from './gltf_bases.js';
 import { gltfCase } from './gltf_case.js';
 import { worse, type Outcome } from './outcome.js';
+import { runPoseCase } from './pose_case.js';
 import { Rand } from './random.js';
 
 /** What a worker keeps between cases. */
@@ -27,6 +28,7 @@ export interface CaseEnv {
 async function runKind(env: CaseEnv, id: CaseId, note: (text: string) => void, drawn: () => void, budgets: BudgetSample[]): Promise<Outcome> {
   const r = Rand.forCase(id.seed, id.kind, id.index);
   if (id.kind === 'api') return runApiCase(r, env.ik, note, budgets);
+  if (id.kind === 'pose') return runPoseCase(r, note);
   const fc = id.kind === 'a7' ? a7Case(r, env.seeds) : gltfCase(r, env.bases, env.fixture);
   note(fc.description);
   drawn();

@@ -5,6 +5,7 @@ import type { IkCoreModule } from '../../web/src/ik/module.js';
 import { IkRig } from '../../web/src/ik/rig.js';
 import { loadRig } from '../../web/src/rig/load_rig.js';
 import { chainParents, treeA7, treeGlb } from '../rig/synthetic_rigs.js';
+import { BROKEN } from './report.js';
 
 const BONES = 10_000;
 const RUNS = 5;
@@ -27,6 +28,6 @@ export async function deepChainSummary(ik: IkCoreModule): Promise<string> {
   const parents = chainParents(BONES);
   const glb = await medianLoadMs(ik, treeGlb(parents), 'chain.glb');
   const a7 = await medianLoadMs(ik, new TextEncoder().encode(treeA7(parents)), 'chain.json');
-  const holds = Math.max(glb, a7) < 1000 ? 'holds' : 'BROKEN';
+  const holds = Math.max(glb, a7) < 1000 ? 'holds' : BROKEN;
   return `${BONES}-bone chain, file bytes to a rig in WebAssembly (median of ${RUNS}): .glb ${glb.toFixed(0)} ms, A7 .json ${a7.toFixed(0)} ms; promised under 1 s: ${holds}`;
 }

@@ -1,8 +1,10 @@
 // glTF file cases: a base model as .glb, as .gltf with a side .bin, or with its buffer embedded
-// as a data: uri; then glTF-specific and generic JSON mutations, byte damage, a buffer uri
-// leading outside the folder or to a hostile side file, or a hostile path instead of the file.
+// as a data: uri; then glTF-specific and generic JSON mutations, a size bomb, byte damage, a
+// buffer uri leading outside the folder or to a hostile side file, or a hostile path instead of
+// the file.
 import { packGlbText } from '../helpers/glb.js';
 import { mutateBytes } from './byte_mutators.js';
+import { plantBomb } from './gltf_bombs.js';
 import type { FileCase } from './file_case.js';
 import type { Entry } from './folder.js';
 import type { Fixture } from './fixture.js';
@@ -48,6 +50,9 @@ export function gltfCase(r: Rand, bases: readonly GltfBase[], fixture: Fixture):
   const count = side && r.chance(0.7) ? 0 : r.weighted([[1, 0], [5, 1], [2, 2], [1, 3]]);
   for (let k = count; k > 0; k--)
     changes.push(...(r.chance(0.55) ? [mutateGltf(r, json)] : mutateJson(r, json, 1)));
+  // Bombs only where no uri is on trial (a uri case must stand or fall by its uri); few, as a node bomb can cost a hang.
+  const bomb = side ? undefined : r.chance(0.03) ? plantBomb(r, json) : undefined;
+  if (bomb) changes.push(bomb.description);
   const sideSet = side !== undefined && setBufferUri(json, side.file.uri);
   if (side) changes.push(sideSet ? `buffers[0].uri = ${side.file.text}` : 'buffers[0] is no object: no uri set');
   let bytes: Uint8Array = form === 'glb' ? packGlbText(jsonText(json), bin) : new TextEncoder().encode(jsonText(json));
@@ -65,6 +70,6 @@ export function gltfCase(r: Rand, bases: readonly GltfBase[], fixture: Fixture):
     entries,
     main,
     outsideUri: sideSet && side.outside ? side.file.uri : undefined,
-    mustFail: sideSet && !side.outside ? `its buffer is ${side.file.text}` : undefined,
+    mustFail: sideSet && !side.outside ? `its buffer is ${side.file.text}` : bomb?.mustFail,
   };
 }

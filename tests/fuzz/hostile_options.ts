@@ -55,6 +55,7 @@ const EDGE_VALUES: [string, unknown][] = [
   ['lmDampingFloor', 0], ['lmDampingFloor', 1e300], ['errorTolerance', 0], ['gradientTolerance', 0], ['tipTolerance', 1e300],
   ['gnSingularCutoff', 0], ['gnMaxStepDeg', 1e300], ['newtonMaxStepDeg', 1e-300], ['gdInitialStep', 1e-300], ['gdInitialStep', 1e300],
   ['backtrackFactor', 1e-300], ['armijoC1', 0], ['fdStepDeg', 1e-300], ['fdStepDeg', 1e300], ['seed', 2 ** 32 - 1], ['paperMode', true],
+  ['restWeight', 1e10], ['restWeight', 1e150], ['restWeight', 1e308],
 ];
 
 /** A bounded options object with `name` set to `value`: a time budget bounds an iteration cap and the other way round. */

@@ -18,6 +18,19 @@ export function countOutcomes(reports: readonly CaseReport[]): Record<OutcomeKin
   return counts;
 }
 
+/** The word a promise line (the time budget, the deep chain) ends with when the run broke the promise. */
+export const BROKEN = 'BROKEN';
+
+/** The lines of `summaries` that report a broken promise. */
+export function brokenPromises(...summaries: string[]): string[] {
+  return summaries.flatMap((s) => s.split('\n')).filter((line) => line.endsWith(`: ${BROKEN}`));
+}
+
+/** The run's exit code: 1 on any severe outcome, stack leak or broken promise line, else 0. */
+export function exitCode(reports: readonly CaseReport[], leak: boolean, summaries: readonly string[]): number {
+  return severeCount(reports) > 0 || leak || brokenPromises(...summaries).length > 0 ? 1 : 0;
+}
+
 /** Cases with a severe outcome (crash, hang, silent wrong, read outside). */
 export function severeCount(reports: readonly CaseReport[]): number {
   return reports.filter((r) => SEVERE.includes(r.outcome.kind)).length;
@@ -66,7 +79,7 @@ export function budgetSummary(reports: readonly CaseReport[]): string {
     const holds = e.value <= BUDGET_PROMISE && w.value <= BUDGET_PROMISE;
     lines.push(
       `time budget, ${long.length} solves with a budget >= ${RATIO_MIN_BUDGET_SECONDS * 1000} ms: worst elapsedSeconds/budget ${e.value.toFixed(2)}x (${caseName(e.id)}), ` +
-        `worst wall time/budget ${w.value.toFixed(2)}x (${caseName(w.id)}); promised within ${BUDGET_PROMISE}x: ${holds ? 'holds' : 'BROKEN'}`,
+        `worst wall time/budget ${w.value.toFixed(2)}x (${caseName(w.id)}); promised within ${BUDGET_PROMISE}x: ${holds ? 'holds' : BROKEN}`,
     );
   }
   const eo = worst(short, (s) => s.elapsedSeconds - s.budgetSeconds), wo = worst(short, (s) => s.wallSeconds - s.budgetSeconds);
@@ -91,12 +104,19 @@ function entry(r: CaseReport): string {
   ].join('\n');
 }
 
-/** Every failing case: the severe ones, then the unclear errors. */
+/** Whether a solve of `r` with a budget >= 10 ms took more than the promise (elapsedSeconds or wall time). */
+function overBudget(r: CaseReport): boolean {
+  return r.budgets.some((b) => b.budgetSeconds >= RATIO_MIN_BUDGET_SECONDS && Math.max(b.elapsedSeconds, b.wallSeconds) > BUDGET_PROMISE * b.budgetSeconds);
+}
+
+/** Every failing case: the severe ones, those that broke the time budget's promise, then the unclear errors. */
 export function failureList(reports: readonly CaseReport[]): string {
   const severe = reports.filter((r) => SEVERE.includes(r.outcome.kind));
+  const slow = reports.filter(overBudget);
   const unclear = reports.filter((r) => r.outcome.kind === 'unclear');
   const parts: string[] = [];
   if (severe.length) parts.push(`${severe.length} failing cases (crash, hang, silent wrong, read outside):`, ...severe.map(entry));
+  if (slow.length) parts.push(`${slow.length} cases with a solve over ${BUDGET_PROMISE}x its time budget:`, ...slow.map(entry));
   if (unclear.length) parts.push(`${unclear.length} unclear errors:`, ...unclear.map(entry));
   return parts.join('\n');
 }

@@ -145,7 +145,7 @@ describe('the Solver binding', () => {
     expect(() => solver.solve(a, t.map((x, i) => (i === 1 ? NaN : x)))).toThrow(/target\[1\] is NaN, not a finite number/);
     expect(() => solver.start(a.map((x, i) => (i === 2 ? Infinity : x)), t)).toThrow(/angles\[2\] is Infinity, not a finite number/);
     solver.setOptions({ errorTolerance: -1 });
-    expect(() => solver.solve(a, t)).toThrow(/solver option errorTolerance must be a number >= 0/);
+    expect(() => solver.solve(a, t)).toThrow(/solver option errorTolerance must be a number > 0 \(0 can never be met/);
     solver.setOptions({});
     expect(solver.solve(a, t).stopReason).toBe('converged_E');
   });

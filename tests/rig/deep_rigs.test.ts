@@ -5,7 +5,7 @@
 import { describe, expect, it } from 'vitest';
 
 import { deepestBones } from '../../web/src/rig/effector_defaults.js';
-import { jsonBudgetProblem, MAX_JSON_DEPTH, MAX_JSON_VALUES } from '../../web/src/rig/json_budget.js';
+import { jsonBudgetProblem, MAX_JSON_CONTAINERS, MAX_JSON_DEPTH, MAX_JSON_VALUES } from '../../web/src/rig/json_budget.js';
 import { loadRig } from '../../web/src/rig/load_rig.js';
 import { effectorCountProblem, MAX_BONES, MAX_EFFECTORS, maxEffectors } from '../../web/src/rig/rig_limits.js';
 import { packGlb } from '../helpers/glb.js';
@@ -78,7 +78,8 @@ describe('deep and big rigs', () => {
     const deep = `{"bones": ${'['.repeat(10_000)}${']'.repeat(10_000)}}`;
     expect(await loadError(deep, 'deep.json')).toBe(`deep.json: the JSON nests deeper than ${MAX_JSON_DEPTH} levels (at character 73)`);
     expect(await loadError(deep.replace('"bones"', '"asset": {"version": "2.0"}, "nodes"'), 'deep.gltf')).toMatch(/^deep\.gltf: the JSON nests deeper than 64 levels/);
-    expect(jsonBudgetProblem(`[${'[],'.repeat(MAX_JSON_VALUES / 2)}0]`)).toBe(`the JSON holds more than ${MAX_JSON_VALUES} values`);
+    expect(jsonBudgetProblem(`[${'0,'.repeat(MAX_JSON_VALUES)}0]`)).toBe(`the JSON holds more than ${MAX_JSON_VALUES} values`);
+    expect(jsonBudgetProblem(`[${'[],'.repeat(MAX_JSON_CONTAINERS)}0]`)).toBe(`the JSON holds more than ${MAX_JSON_CONTAINERS} arrays and objects`);
     expect(jsonBudgetProblem('{"a": "[[[[,,,,"}')).toBeUndefined(); // brackets and commas in strings do not count
   });
 

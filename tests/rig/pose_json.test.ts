@@ -1,5 +1,7 @@
-// The pose file (web/src/rig/pose_json.ts): round trip, bones keyed by name, every malformed
-// file refused with its field named, clamping to the rig's limits.
+// The pose file (web/src/rig/pose_json.ts): round trip, bones keyed by name (or "#index" for bones
+// without a name of their own, as in every A7 rig), every malformed file refused with its field
+// named and the writer refusing the same, every angle clamped into the rig's limits, and the page
+// refusing an oversized pose file before reading it.
 import { readFileSync } from 'node:fs';
 import { resolve } from 'node:path';
 
@@ -8,7 +10,7 @@ import { beforeAll, describe, expect, it } from 'vitest';
 import type { RigSpec } from '../../web/src/ik/rig_spec.js';
 import { loadRig } from '../../web/src/rig/load_rig.js';
 import { MAX_POSE_CHARS, PoseFormatError, poseFromJson, poseToJson, type PoseInput } from '../../web/src/rig/pose_json.js';
-import { randomAngles, seeded } from '../helpers/a7.js';
+import { loadA7, needsA7, randomAngles, seeded } from '../helpers/a7.js';
 
 const modelsDir = resolve(import.meta.dirname, '../../web/public/models');
 
@@ -20,7 +22,7 @@ beforeAll(async () => {
 /** A pose of the knight at random angles, its own effectors with random targets, every other one with an orientation. */
 function knightPose(seed: number): PoseInput {
   const rand = seeded(seed);
-  const effectors = Array.from(knight.effectors, (b) => knight.names[b]);
+  const effectors = Array.from(knight.effectors);
   return {
     rigName: 'knight',
     boneNames: knight.names,
@@ -97,13 +99,13 @@ describe('poseToJson / poseFromJson', () => {
     perm.forEach((old, i) => {
       expect(Array.from(read.angles.subarray(3 * i, 3 * i + 3)), permuted.names[i]).toEqual(Array.from(pose.angles).slice(3 * old, 3 * old + 3));
     });
-    expect(read.effectors.map((b) => permuted.names[b])).toEqual(pose.effectors);
+    expect(read.effectors.map((b) => permuted.names[b])).toEqual(Array.from(pose.effectors, (b) => knight.names[b]));
   });
 
   it('a bone called "__proto__" is an ordinary bone', () => {
     const read = poseFromJson(text(smallFile()), small);
     expect(Array.from(read.angles.subarray(9, 12))).toEqual([7, 8, 9]);
-    const json = poseToJson({ rigName: 's', boneNames: small.names, angles: read.angles, effectors: ['__proto__'], targets: [1, 2, 3] });
+    const json = poseToJson({ rigName: 's', boneNames: small.names, angles: read.angles, effectors: [3], targets: [1, 2, 3] });
     expect(Array.from(poseFromJson(json, small).angles)).toEqual(Array.from(read.angles));
     expect(poseFromJson(json, small).effectors).toEqual([3]);
   });
@@ -126,13 +128,13 @@ describe('poseToJson / poseFromJson', () => {
     expect(Array.from(free.angles.subarray(3, 6))).toEqual([100, -5, 45]);
   });
 
-  it('bones the file lacks stay at 0 with a warning naming them', () => {
+  it('bones the file lacks get 0 with a warning naming them', () => {
     const file = smallFile();
     delete (file.bones as Record<string, unknown>).arm;
     const read = poseFromJson(text(file), small);
     expect(Array.from(read.angles.subarray(3, 6))).toEqual([0, 0, 0]);
     expect(Array.from(read.angles.subarray(0, 3))).toEqual([1, 2, 3]);
-    expect(read.warnings).toEqual([expect.stringMatching(/no angles for 1 bone\(s\), left at 0: "arm"/)]);
+    expect(read.warnings).toEqual([expect.stringMatching(/no angles for 1 bone\(s\), set to 0 or the nearest limit: "arm"$/)]);
   });
 
   const broken: [string, (f: Record<string, unknown>) => unknown, RegExp][] = [
@@ -177,23 +179,109 @@ describe('poseToJson / poseFromJson', () => {
     expect(() => poseFromJson(text(file), small)).toThrow(/MB of text, more than a pose file holds/);
   });
 
-  it('refuses a bone name the rig gives two bones', () => {
+  it('refuses a bone name the rig gives two bones, which the file keys by index', () => {
     const twin = { names: ['a', 'a', 'b'], lower: new Float64Array(9).fill(-180), upper: new Float64Array(9).fill(180) };
     const file = { format: 'ik-pose', version: 1, bones: { a: [0, 0, 0], b: [0, 0, 0] }, effectors: [] };
-    expect(() => poseFromJson(text(file), twin)).toThrow(/"bones" names "a", which more than one bone/);
-    expect(() => poseFromJson(text({ ...file, bones: { b: [1, 1, 1] }, effectors: [{ bone: 'a', target: [0, 0, 0] }] }), twin)).toThrow(/"effectors"\[0\]\.bone "a" names more than one bone/);
+    expect(() => poseFromJson(text(file), twin)).toThrow(/"bones" names "a", which is not the key of one bone: .* is keyed "#index"$/);
+    expect(() => poseFromJson(text({ ...file, bones: { b: [1, 1, 1] }, effectors: [{ bone: 'a', target: [0, 0, 0] }] }), twin)).toThrow(/"effectors"\[0\]\.bone "a", which is not the key of one bone/);
+    const read = poseFromJson(text({ ...file, bones: { '#0': [1, 2, 3], '#1': [4, 5, 6], b: [7, 8, 9] }, effectors: [{ bone: '#1', target: [0, 0, 0] }] }), twin);
+    expect(Array.from(read.angles)).toEqual([1, 2, 3, 4, 5, 6, 7, 8, 9]);
+    expect(read.effectors).toEqual([1]);
   });
 
-  it('poseToJson refuses inconsistent input', () => {
-    const ok: PoseInput = { rigName: 'r', boneNames: ['a', 'b'], angles: [1, 2, 3, 4, 5, 6], effectors: ['b'], targets: [1, 2, 3] };
+  it('keys bones without a name of their own by index, and reads those keys back', () => {
+    // '' twice, a name two bones share, a name that looks like an index key, and two usable names.
+    const names = ['', 'arm', '', 'arm', '#7', 'hand'];
+    const limits = { lower: new Float64Array(18).fill(-90), upper: new Float64Array(18).fill(90) };
+    // -0 too: JSON.stringify would write it as 0.
+    const pose: PoseInput = { rigName: 'r', boneNames: names, angles: Array.from({ length: 18 }, (_, k) => (k ? k : -0)), effectors: [2, 5], targets: [1, -0, 3, 4, 5, 6] };
+    const json = poseToJson(pose);
+    const doc = JSON.parse(json);
+    expect(Object.keys(doc.bones)).toEqual(['#0', '#1', '#2', '#3', '#4', 'hand']);
+    expect(doc.effectors.map((e: { bone: string }) => e.bone)).toEqual(['#2', 'hand']);
+    const read = poseFromJson(json, { names, ...limits });
+    expect(read.warnings).toEqual([]);
+    expect(sameBits(read.angles, pose.angles)).toBe(true);
+    expect(sameBits(read.targets, pose.targets)).toBe(true);
+    expect(read.effectors).toEqual([2, 5]);
+  });
+
+  it('saves and loads a pose of an A7 rig, whose bones have no names', needsA7, () => {
+    const spec = loadA7('knight');
+    expect(spec.names.every((n) => n === '')).toBe(true);
+    const angles = randomAngles(spec, seeded(5));
+    const effectors = Array.from(spec.effectors);
+    const json = poseToJson({ rigName: 'knight', boneNames: spec.names, angles, effectors, targets: new Float64Array(3 * effectors.length).fill(0.5) });
+    const read = poseFromJson(json, spec);
+    expect(read.warnings).toEqual([]);
+    expect(sameBits(read.angles, angles)).toBe(true);
+    expect(read.effectors).toEqual(effectors);
+  });
+
+  it('clamps every angle into the limits, also those of bones the file lacks', async () => {
+    const character = (await loadRig(new Uint8Array(readFileSync(resolve(modelsDir, 'character.glb'))), 'character.glb')).spec;
+    const { lower, upper } = character;
+    const outside = Array.from(lower, (lo, k) => lo > 0 || upper[k] < 0).filter(Boolean).length;
+    expect(outside, 'angles whose range leaves out 0').toBeGreaterThan(0);
+    const read = poseFromJson(text({ format: 'ik-pose', version: 1, bones: {}, effectors: [] }), character);
+    read.angles.forEach((v, k) => expect(v >= lower[k] && v <= upper[k], `angle ${k} = ${v} in [${lower[k]}, ${upper[k]}]`).toBe(true));
+    expect(Array.from(read.angles).filter((v) => v !== 0)).toHaveLength(outside);
+  });
+
+  it('poseToJson refuses inconsistent input, naming the field', () => {
+    const ok: PoseInput = { rigName: 'r', boneNames: ['a', 'b'], angles: [1, 2, 3, 4, 5, 6], effectors: [1], targets: [1, 2, 3] };
     expect(() => poseToJson(ok)).not.toThrow();
     expect(() => poseToJson({ ...ok, angles: [1, 2, 3] })).toThrow(/angles has 3 values for 2 bones/);
-    expect(() => poseToJson({ ...ok, angles: [1, 2, 3, 4, NaN, 6] })).toThrow(/angles of bone "b" has a non-finite value/);
-    expect(() => poseToJson({ ...ok, boneNames: ['a', 'a'] })).toThrow(/bone names "a" are used by more than one bone/);
-    expect(() => poseToJson({ ...ok, effectors: ['c'] })).toThrow(/effector 0 names the bone "c"/);
+    expect(() => poseToJson({ ...ok, angles: [1, 2, 3, 4, NaN, 6] })).toThrow(/^poseToJson: "bones"\["b"\]\[1\] is NaN, not a finite number$/);
+    expect(() => poseToJson({ ...ok, effectors: [2] })).toThrow(/^poseToJson: "effectors"\[0\] is bone 2, not a bone index in 0\.\.1$/);
+    expect(() => poseToJson({ ...ok, effectors: [1, 1], targets: [1, 2, 3, 1, 2, 3] })).toThrow(/^poseToJson: "effectors"\[1\]\.bone "b" is listed twice$/);
     expect(() => poseToJson({ ...ok, targets: [1, 2] })).toThrow(/targets has 2 values for 1 effectors/);
-    expect(() => poseToJson({ ...ok, targets: [1, Infinity, 3] })).toThrow(/target of effector "b" has a non-finite value/);
     expect(() => poseToJson({ ...ok, orientations: [] })).toThrow(/orientations has 0 entries for 1 effectors/);
-    expect(() => poseToJson({ ...ok, orientations: [[0, 0, 1]] })).toThrow(/orientation of effector "b" has 3 values/);
+  });
+
+  // Values the reader refuses: the writer refuses them too, with the same words for the same field.
+  const unreadable: [string, Partial<PoseInput>][] = [
+    ['a non-unit quaternion', { orientations: [[0, 0, 0, 2]] }],
+    ['an orientation of 3 numbers', { orientations: [[0, 0, 1]] }],
+    ['a 1e10 target', { targets: [0, 1e10, 0] }],
+    ['an infinite target', { targets: [1, Infinity, 3] }],
+    ['65 effectors', { effectors: Array.from({ length: 65 }, (_, k) => k), targets: new Float64Array(195) }],
+  ];
+  it.each(unreadable)('poseToJson refuses %s as poseFromJson does', (_, change) => {
+    const names = Array.from({ length: 70 }, (_, k) => `bone ${k}`);
+    const rig = { names, lower: new Float64Array(210).fill(-180), upper: new Float64Array(210).fill(180) };
+    const pose: PoseInput = { rigName: 'r', boneNames: names, angles: new Float64Array(210), effectors: [3], targets: [1, 2, 3], ...change };
+    const written = (() => {
+      try {
+        poseToJson(pose);
+      } catch (e) {
+        return (e as Error).message;
+      }
+      throw new Error('poseToJson wrote it');
+    })();
+    const effectors = Array.from(pose.effectors, (b, e) => ({
+      bone: names[b],
+      target: Array.from(pose.targets).slice(3 * e, 3 * e + 3),
+      ...(pose.orientations?.[e] ? { orientation: Array.from(pose.orientations[e]!) } : {}),
+    }));
+    // JSON cannot hold Infinity: 1e999 reads back as it.
+    const file = text({ format: 'ik-pose', version: 1, bones: {}, effectors }).replace('null', '1e999');
+    expect(() => poseFromJson(file, rig)).toThrow(PoseFormatError);
+    const read = (() => {
+      try {
+        poseFromJson(file, rig);
+      } catch (e) {
+        return (e as Error).message;
+      }
+    })();
+    expect(written.replace(/^poseToJson: /, '')).toBe(read!.replace(/^pose file: /, ''));
+  });
+
+  it('the page refuses a pose file over the size bound without reading it', async () => {
+    const { readPoseFile } = await import('../../web/src/page/pose_files.js');
+    let read = false;
+    const big = { name: 'big.json', size: 200 * 1024 * 1024, text: async () => ((read = true), '') } as unknown as File;
+    await expect(readPoseFile(big, {} as never)).rejects.toThrow(/^pose file big\.json: 200\.0 MB, more than a pose file holds \(at most 8 MB\)$/);
+    expect(read).toBe(false);
   });
 });

@@ -14,6 +14,7 @@
 #include "kinematics.h"
 #include "objective.h"
 #include "rig_binding.h"
+#include "size_limits.h"
 #include "solvers/restarts.h"
 
 namespace ik::js {
@@ -173,7 +174,8 @@ val RigBinding::project(const val& angles) {
 
 val RigBinding::restart_start(double k, double seed) {
   return guarded([&] {
-    if (!(k >= 1 && k <= 1e15 && k == std::floor(k))) throw RigError("a restart index is an integer >= 1");
+    if (!(k >= 1 && k <= kMaxRestartIndex && k == std::floor(k)))
+      throw RigError("a restart index is an integer in 1.." + std::to_string(kMaxRestartIndex));
     if (!(seed >= 0 && seed <= 4294967295.0 && seed == std::floor(seed)))
       throw RigError("a seed is an integer in [0, 2^32)");
     const int n = kin_.num_angles();

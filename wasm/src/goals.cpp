@@ -3,11 +3,21 @@
 #include <algorithm>
 #include <cmath>
 
+#include "size_limits.h"
+
 namespace ik {
 
 namespace {
 
-bool finite3(const Eigen::Vector3d& v) { return v.allFinite(); }
+static_assert(kMaxCoordinate == 1e9 && kMaxSoftWeight == 1000, "the messages below say 1e9 and 1000");
+
+// What is wrong with a point (rig units), or nullptr: every coordinate finite, within +-kMaxCoordinate.
+const char* point_problem(const Eigen::Vector3d& v) {
+  if (!v.allFinite()) return " is not finite";
+  if (v.cwiseAbs().maxCoeff() > kMaxCoordinate)
+    return " has a coordinate past +-1e9 rig units (the largest coordinate the core takes)";
+  return nullptr;
+}
 
 bool is_rotation(const Eigen::Matrix3d& R) {
   return R.allFinite() && (R.transpose() * R - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff() < 1e-6 &&
@@ -15,6 +25,19 @@ bool is_rotation(const Eigen::Matrix3d& R) {
 }
 
 bool valid_weight(double w) { return std::isfinite(w) && w >= 0; }
+bool valid_soft_weight(double w) { return w >= 0 && w <= kMaxSoftWeight; }
+const char* const kSoftWeightRule = " must be a number in 0..1000 (a soft pull's largest weight)";
+
+// The largest weight of `goals`' position and orientation goals (0 if none is on): the goals'
+// weights are relative, each block's weight is divided by it.
+double largest_goal_weight(const Goals& goals) {
+  double largest = 0;
+  for (const EffectorGoal& g : goals.effectors) {
+    if (g.position) largest = std::max(largest, g.position_weight);
+    if (g.orientation) largest = std::max(largest, g.orientation_weight);
+  }
+  return largest;
+}
 
 // Layout codes of the soft blocks (hard blocks use 2 e + kind >= 0).
 int pole_code(int bone) { return -1 - 2 * bone; }
@@ -127,8 +150,8 @@ std::string GoalSet::set(const Kinematics& kin, const Goals& goals) {
   if (static_cast<int>(goals.effectors.size()) != m)
     return "goals has " + std::to_string(goals.effectors.size()) + " entries, expected " + std::to_string(m) +
            " (one per end effector)";
-  if (!std::isfinite(goals.length_scale) || goals.length_scale < 0)
-    return "the goals' length scale must be a finite number >= 0";
+  if (!(goals.length_scale >= 0 && goals.length_scale <= kMaxCoordinate))
+    return "the goals' length scale must be a number in 0..1e9 (rig units per radian; 0: the rig's reach)";
   const double length = goals.length_scale > 0 ? goals.length_scale : rig_reach(kin);
   length_ = length;
   for (int e = 0; e < m; ++e) {
@@ -139,28 +162,35 @@ std::string GoalSet::set(const Kinematics& kin, const Goals& goals) {
     };
     if (g.position && !valid_weight(g.position_weight))
       return which("position weight") + " must be a finite number >= 0";
-    if (g.position && !finite3(g.position_target)) return which("position target") + " is not finite";
+    if (g.position && point_problem(g.position_target)) return which("position target") + point_problem(g.position_target);
     if (g.orientation && !valid_weight(g.orientation_weight))
       return which("orientation weight") + " must be a finite number >= 0";
     if (g.orientation && !is_rotation(g.orientation_target)) return which("orientation target") + " is not a rotation";
-    if (g.position && g.position_weight > 0) {
+  }
+  // Relative weights: the largest becomes 1, so that neither huge nor tiny weights (all alike)
+  // move the E test's scale or the steps' conditioning.
+  const double largest = largest_goal_weight(goals);
+  for (int e = 0; e < m && largest > 0; ++e) {
+    const EffectorGoal& g = goals.effectors[e];
+    const double position_weight = g.position_weight / largest, orientation_weight = g.orientation_weight / largest;
+    if (g.position && position_weight > 0) {
       Block b;
       b.effector = e;
-      b.scale = g.position_weight;
+      b.scale = position_weight;
       b.position = g.position_target;
       b.yields = g.yields;
       add(b);
     }
-    if (g.orientation && g.orientation_weight > 0) {
+    if (g.orientation && orientation_weight > 0) {
       Block b;
       b.effector = e;
       b.orientation = true;
-      b.scale = g.orientation_weight * length;
+      b.scale = orientation_weight * length;
       b.rotation = g.orientation_target;
       b.yields = g.yields;
       add(b);
     }
-    plain_ = plain_ && g.position && g.position_weight == 1 && !g.yields;
+    plain_ = plain_ && g.position && position_weight == 1 && !g.yields;
     if (!blocks_.empty() && blocks_.back().effector == e) mark_chain(kin, kin.rig().effectors[e]);
   }
   if (blocks_.empty()) return "no goal: every end effector's goals are off or of weight 0";
@@ -168,6 +198,9 @@ std::string GoalSet::set(const Kinematics& kin, const Goals& goals) {
   for (const Block& b : blocks_) yielding += b.yields;
   has_yielding_ = yielding > 0 && yielding < num_blocks();
   const int bones = kin.num_bones();
+  if (goals.poles.size() > static_cast<size_t>(kMaxPoles))
+    return "goals has " + std::to_string(goals.poles.size()) + " poles, more than " + std::to_string(kMaxPoles) +
+           " (one per two-bone limb is what a body needs)";
   for (size_t i = 0; i < goals.poles.size(); ++i) {
     const PoleGoal& p = goals.poles[i];
     const auto which = [i](const char* what) { return std::string("the ") + what + " of pole " + std::to_string(i); };
@@ -177,8 +210,8 @@ std::string GoalSet::set(const Kinematics& kin, const Goals& goals) {
     if (parent < 0)
       return which("bone") + " (" + std::to_string(p.bone) +
              ") has no parent: a bend hint needs the second bone of a two-bone limb";
-    if (!finite3(p.point)) return which("point") + " is not finite";
-    if (!valid_weight(p.weight)) return which("weight") + " must be a finite number >= 0";
+    if (point_problem(p.point)) return which("point") + point_problem(p.point);
+    if (!valid_soft_weight(p.weight)) return which("weight") + kSoftWeightRule;
     if (p.weight == 0) continue;
     Pole pole;
     pole.bone = p.bone;
@@ -197,8 +230,7 @@ std::string GoalSet::set(const Kinematics& kin, const Goals& goals) {
     return "goals has " + std::to_string(goals.stiffness.size()) + " stiffness values, expected " +
            std::to_string(bones) + " (one per bone) or none";
   for (int b = 0; b < static_cast<int>(goals.stiffness.size()); ++b)
-    if (!valid_weight(goals.stiffness[b]))
-      return "the stiffness of bone " + std::to_string(b) + " must be a finite number >= 0";
+    if (!valid_soft_weight(goals.stiffness[b])) return "the stiffness of " + bone_label(kin.rig(), b) + kSoftWeightRule;
   stiffness_ = goals.stiffness;
   plain_ = plain_ && !has_orientation_;
   if (plain_) {

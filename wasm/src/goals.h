@@ -5,6 +5,7 @@
 // counts as no goal and has no rows):
 //   position rows     w_p (x - x_b)                               rig units
 //   orientation rows  w_o L log(R_target^T R_tip)                 rig units (L in rig units per radian)
+// with w_p and w_o the weights divided by the largest weight of any goal (they are relative),
 // R_tip is Kinematics::tip_rotation() of the effector's bone, log the rotation vector (so3.h) and
 // L the length scale (Goals::length_scale; default the rig's reach: the longest sum of bone
 // lengths from a root to an effector), so E = 1/2 |r|^2 stays in rig units^2.
@@ -29,10 +30,10 @@ namespace ik {
 struct EffectorGoal {
   bool position = true;
   Eigen::Vector3d position_target = Eigen::Vector3d::Zero();  // x_b, rig units
-  double position_weight = 1;                                  // w_p >= 0
+  double position_weight = 1;                                  // w_p >= 0, relative (see Goals)
   bool orientation = false;
   Eigen::Matrix3d orientation_target = Eigen::Matrix3d::Identity();  // R_target, a rotation (world)
-  double orientation_weight = 1;                                      // w_o >= 0
+  double orientation_weight = 1;                                      // w_o >= 0, relative (see Goals)
   // Strict priority (solver option strict_priority): this effector's goals give way first when
   // not every goal can be met (the one a user drags, while the others stay pinned). The solve
   // holds the other goals from its start and brings these as close as their freedom allows.
@@ -46,14 +47,19 @@ struct EffectorGoal {
 struct PoleGoal {
   int bone = 0;                                      // a bone with a parent
   Eigen::Vector3d point = Eigen::Vector3d::Zero();  // the pole, rig units (world)
-  double weight = 1;                                 // >= 0; 0: no pole
+  double weight = 1;                                 // 0..kMaxSoftWeight; 0: no pole
 };
 
+// Limits (size_limits.h, checked by GoalSet::set()): points within +-kMaxCoordinate, the length
+// scale at most kMaxCoordinate, pole weights and stiffness at most kMaxSoftWeight. The goals'
+// weights are relative: each is divided by the largest, so that the same weight on every goal,
+// however large or small, is the plain objective, and E's scale (the E test) stays that of the
+// distances. The soft weights count against a goal of weight 1.
 struct Goals {
   std::vector<EffectorGoal> effectors;  // one per end effector, in the rig's effector order
   double length_scale = 0;              // L, rig units per radian; 0: the rig's reach
   std::vector<PoleGoal> poles;          // bend hints, soft
-  // Per bone, the factor of its rest rows (finite >= 0; 0: the bone feels no rest pull). Empty:
+  // Per bone, the factor of its rest rows (0..kMaxSoftWeight; 0: the bone feels no rest pull). Empty:
   // all 1. Read only with the solver option rest_weight > 0.
   std::vector<double> stiffness;
 };

@@ -22,6 +22,8 @@ std::string bone_label(const Rig& rig, int index) {
 
 namespace {
 
+static_assert(kMaxCoordinate == 1e9, "the messages below say 1e9");
+
 [[noreturn]] void fail(const Rig& rig, int bone, const std::string& what) {
   throw RigError(bone_label(rig, bone) + ": " + what);
 }
@@ -35,6 +37,13 @@ void check_rest(const Rig& rig, int i) {
   if ((r.transpose() * r - Eigen::Matrix3d::Identity()).norm() > 1e-6)
     fail(rig, i, "rest_T is not rigid (its rotation part is not orthonormal)");
   if (r.determinant() < 0) fail(rig, i, "rest_T is not rigid (it mirrors: determinant < 0)");
+  for (int k = 0; k < 3; ++k)
+    if (std::abs(m(k, 3)) > kMaxCoordinate) {
+      std::ostringstream out;
+      out << "rest_T translation[" << k << "] is " << m(k, 3)
+          << ", past +-1e9 rig units (the largest coordinate the core takes)";
+      fail(rig, i, out.str());
+    }
 }
 
 void check_limits(const Rig& rig, int i) {
@@ -77,6 +86,11 @@ void validate_rig(const Rig& rig) {
     if (b.parent == i) fail(rig, i, "parent is the bone itself");
     if (!std::isfinite(b.length)) fail(rig, i, "length is not finite");
     if (b.length < 0) fail(rig, i, "length is negative");
+    if (b.length > kMaxCoordinate) {
+      std::ostringstream out;
+      out << "length is " << b.length << ", more than 1e9 rig units (the largest size the core takes)";
+      fail(rig, i, out.str());
+    }
     check_rest(rig, i);
     check_limits(rig, i);
   }

@@ -34,8 +34,9 @@ class RigError : public std::runtime_error {
 
 // Checks a rig and throws RigError naming the first problem found:
 // parent out of range, a parent cycle, a non-finite number, a rest transform that is not rigid,
-// a limit with min > max or with no angle within +-kMaxLimitDeg, a negative length, an end effector
-// that is not a bone, or a rig past the limits of size_limits.h. Linear in the number of bones.
+// a limit with min > max or with no angle within +-kMaxLimitDeg, a negative length, a length or
+// rest translation past kMaxCoordinate, an end effector that is not a bone, or a rig past the
+// limits of size_limits.h. Linear in the number of bones.
 void validate_rig(const Rig& rig);
 
 // Checks `effectors` as an end-effector list of `rig` (bone indices, none twice, at least one,

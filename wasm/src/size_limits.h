@@ -27,4 +27,28 @@ constexpr int kMaxHistory = 1000000;
 // Backtracking trials of one line search (outside paper mode).
 constexpr int kMaxBacktracks = 1000;
 
+// Largest magnitude of a coordinate, rig units: a bone length, a rest translation, a target, a
+// pole, the goals' length scale. The importers' cap (web/src/rig/rig_limits.ts MAX_COORDINATE):
+// far past any model in any unit, far below where squared distances (E) overflow.
+constexpr double kMaxCoordinate = 1e9;
+
+// Bend hints (poles) of one solve: each adds 3 rows to every iteration, and a pole per limb is
+// what a body needs (a character has 4); at this count one iteration on a 150-bone rig stays
+// about a millisecond, so a time budget holds.
+constexpr int kMaxPoles = 256;
+
+// Largest soft weight: option rest_weight, a bone's stiffness, a pole's weight. A pull that
+// strong already swamps the goals (one degree off rest costs like 17 rig lengths); past it the
+// soft rows' scale ruins the conditioning of the steps the hard goals need.
+constexpr double kMaxSoftWeight = 1e3;
+
+// Option fd_step_deg (paper mode's central difference), degrees. Below the low end a step is
+// lost to rounding at angles of 36,000 degrees (ulp 7e-12), and the differences read 0; past
+// the high end they no longer tell the slope (at 180 degrees both sides are one pose).
+constexpr double kMinFdStepDeg = 1e-9;
+constexpr double kMaxFdStepDeg = 1;
+
+// Largest restart index of Rig.restartStart() (a solve uses at most option restarts, an int).
+constexpr long long kMaxRestartIndex = 2147483647;
+
 }  // namespace ik

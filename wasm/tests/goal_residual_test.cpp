@@ -22,8 +22,9 @@ TEST(GoalResidual, DistancesAndAnglesComeFromTheirOwnRows) {
   Goals goals;
   goals.effectors.resize(kin.num_effectors());
   goals.effectors[0].position_target = kin.tip(bone) + Eigen::Vector3d(0.3, 0, 0);
-  goals.effectors[0].position_weight = 2;
+  goals.effectors[0].position_weight = 2;  // relative: divided by the largest, 4
   goals.effectors[0].orientation = true;
+  goals.effectors[0].orientation_weight = 4;
   goals.effectors[0].orientation_target =
       kin.tip_rotation(bone) * Eigen::AngleAxisd(10 * kRadPerDeg, Eigen::Vector3d::UnitZ()).toRotationMatrix();
   goals.length_scale = 5;
@@ -33,8 +34,8 @@ TEST(GoalResidual, DistancesAndAnglesComeFromTheirOwnRows) {
   const double E = goal_objective(kin, set, a, r);
   EXPECT_NEAR(largest_tip_distance(set, r), 0.3, 1e-12);
   EXPECT_NEAR(largest_orientation_error_deg(set, r), 10, 1e-9);
-  EXPECT_NEAR(position_error(set, r), 0.5 * 0.6 * 0.6, 1e-12);
-  EXPECT_NEAR(E, 0.5 * (0.6 * 0.6 + std::pow(5 * 10 * kRadPerDeg, 2)), 1e-12);
+  EXPECT_NEAR(position_error(set, r), 0.5 * 0.15 * 0.15, 1e-12);
+  EXPECT_NEAR(E, 0.5 * (0.15 * 0.15 + std::pow(5 * 10 * kRadPerDeg, 2)), 1e-12);
   EXPECT_NEAR(largest_goal_distance(set, r), 5 * 10 * kRadPerDeg, 1e-12);
   EXPECT_TRUE(goal_off_target(set, r, 0, largest_goal_distance(set, r)));
 }
@@ -62,6 +63,10 @@ Eigen::MatrixXd hessian_difference(Kinematics& kin, const GoalSet& set, const Ei
 TEST(GoalResidual, TipHessianWeightsGiveTheExactHessianOfWeightedPositions) {
   for (const test::TestRig& r : test::rigs_like("ikea-lamp")) {
     Kinematics kin(r.rig);
+    // Two effectors: weights are relative, one goal's alone is the plain objective.
+    std::vector<int> effectors = kin.rig().effectors;
+    if (effectors.size() == 1) effectors.push_back(kin.num_bones() / 2);
+    kin.set_effectors(effectors);
     std::mt19937_64 rng(4);
     const Eigen::VectorXd a = test::random_angles(kin, rng);
     Eigen::VectorXd target(kin.num_residuals());

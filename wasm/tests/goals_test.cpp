@@ -51,7 +51,8 @@ TEST(Goals, BlocksArePositionThenOrientationPerEffector) {
   EXPECT_TRUE(set.has_orientation());
   ASSERT_EQ(set.num_blocks(), 3);
   EXPECT_EQ(set.layout(), (std::vector<int>{0, 1, 3}));
-  EXPECT_DOUBLE_EQ(set.block(1).scale, 6);  // w_o L
+  EXPECT_DOUBLE_EQ(set.block(0).scale, 0.5);  // w_p / the largest weight (2)
+  EXPECT_DOUBLE_EQ(set.block(1).scale, 3);    // w_o / the largest weight, times L
   EXPECT_EQ(set.position_block(0), 0);
   EXPECT_EQ(set.position_block(1), -1);
 }

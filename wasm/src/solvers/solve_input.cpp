@@ -1,6 +1,9 @@
 #include "solve_input.h"
 
 #include <cmath>
+#include <sstream>
+
+#include "size_limits.h"
 
 namespace ik {
 
@@ -10,6 +13,19 @@ namespace {
 std::string check_finite(const Eigen::Ref<const Eigen::VectorXd>& v, const char* what) {
   for (Eigen::Index i = 0; i < v.size(); ++i)
     if (!std::isfinite(v[i])) return std::string(what) + "[" + std::to_string(i) + "] is not a finite number";
+  return {};
+}
+
+static_assert(kMaxCoordinate == 1e9, "check_coordinates' message says 1e9");
+
+// The first entry of `v` named `what` past +-kMaxCoordinate, or an empty string.
+std::string check_coordinates(const Eigen::Ref<const Eigen::VectorXd>& v, const char* what) {
+  for (Eigen::Index i = 0; i < v.size(); ++i)
+    if (std::abs(v[i]) > kMaxCoordinate) {
+      std::ostringstream out;
+      out << what << "[" << i << "] is " << v[i] << ", past +-1e9 rig units (the largest coordinate the core takes)";
+      return out.str();
+    }
   return {};
 }
 
@@ -32,6 +48,7 @@ std::string check_solve_input(const Kinematics& kin, const SolverOptions& option
            std::to_string(kin.num_angles()) + (options.paper_mode ? ": turn paper mode off" : ": use lm or gd");
   problem = check_finite(angles, "angles");
   if (problem.empty() && has_target) problem = check_finite(target, "target");
+  if (problem.empty() && has_target) problem = check_coordinates(target, "target");
   return problem;
 }
 

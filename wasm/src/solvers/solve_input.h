@@ -13,8 +13,8 @@ namespace ik {
 // (#angles, degrees) towards `target` (#residuals, rig units), as the summary's message; an
 // empty string if there is none. In order: an option out of range (check_options), a wrong
 // length, a rig with more than `angle_limit` angles (the method's size limit), a non-finite
-// angle or target. `has_target` false: there is no target vector (goals, checked by GoalSet::set)
-// and `target` is ignored. No allocation when there is no problem.
+// angle or target, a target coordinate past +-kMaxCoordinate. `has_target` false: there is no
+// target vector (goals, checked by GoalSet::set) and `target` is ignored. No allocation when there is no problem.
 std::string check_solve_input(const Kinematics& kin, const SolverOptions& options, const char* method, int angle_limit,
                               const Eigen::Ref<const Eigen::VectorXd>& angles,
                               const Eigen::Ref<const Eigen::VectorXd>& target, bool has_target = true);

@@ -194,6 +194,7 @@ StopReason Solver::begin(const Eigen::Ref<const Eigen::VectorXd>& angles, const 
     end_together();
     finish();
     bound_motion();
+    keep_contract();
   }
   return summary_.stop_reason;
 }
@@ -293,6 +294,7 @@ bool Solver::advance(Clock::time_point begin) {
     take_nearest();
     finish();
     bound_motion();
+    keep_contract();
   }
   return reason == StopReason::running;
 }

@@ -84,7 +84,8 @@ struct SolverSummary {
   bool orientation_out_of_reach = false;
   int goals_given_up = 0;       // goals (3-row blocks) given up in this solve; 0: none (the
                                 // history then falls at every step of a run)
-  // Describes `angles`: converged_E if and only if `reached`; converged_grad only with
+  // Describes `angles`: converged_E if and only if `reached` (keep_contract() holds it at the end
+  // of every solve, as it holds the numbers above free of NaN); converged_grad only with
   // gradient_norm < gradient_tolerance; with restarts, taken from the best point, not the last run.
   // With goals given up (out_of_reach or orientation_out_of_reach), gradient_norm is that of the
   // given-up rows within what leaves the held ones alone (Priority::reduced_gradient_norm).
@@ -314,6 +315,10 @@ class Solver {
   // At the end of a solve: the out_of_reach flags (from the given-up goals, or without any, from
   // a run that ended at a stationary or settled point off target).
   void finish();
+  // Last of all when a solve stops (solver_contract.cpp): the summary obeys SolverSummary's rules
+  // whatever happened on the way: no NaN among its numbers (one that overflowed reads +infinity,
+  // with numerical_failure), and stop_reason converged_E exactly when reached.
+  void keep_contract();
   Priority priority_;
   NielsenDamping priority_damping_;
   int best_rank_ = 0;

@@ -40,9 +40,13 @@ constexpr OptionRange finite_at_least(double low, const char* note = nullptr) {
   return {low, std::numeric_limits<double>::infinity(), true, false, note};
 }
 // A finite x > low.
-constexpr OptionRange finite_above(double low) { return {low, std::numeric_limits<double>::infinity(), false, false}; }
+constexpr OptionRange finite_above(double low, const char* note = nullptr) {
+  return {low, std::numeric_limits<double>::infinity(), false, false, note};
+}
 // low <= x <= high.
-constexpr OptionRange in_range(double low, double high) { return {low, high, true, true}; }
+constexpr OptionRange in_range(double low, double high, const char* note = nullptr) {
+  return {low, high, true, true, note};
+}
 // low <= x < high.
 constexpr OptionRange half_open(double low, double high) { return {low, high, true, false}; }
 // low < x < high.

@@ -152,10 +152,17 @@ TEST(PoseGoals, PaperModeRefusesOrientationGoalsAndWeights) {
     EXPECT_EQ(solver->start(c.start, goals), StopReason::invalid_input);
     EXPECT_NE(solver->summary().message.find("paper mode"), std::string::npos) << solver->summary().message;
     for (EffectorGoal& g : goals.effectors) g.orientation = false;
+    // Weights are relative: a goal's weight alone (or the same on every goal) is the original
+    // objective, unequal ones are not.
     goals.effectors[0].position_weight = 2;
+    EXPECT_NE(solver->start(c.start, goals), StopReason::invalid_input) << solver->summary().message;
+    goals.effectors.push_back(goals.effectors[0]);
+    goals.effectors[1].position_weight = 1;
+    kin.set_effectors({kin.rig().effectors[0], kin.num_bones() / 2});
     EXPECT_EQ(solver->start(c.start, goals), StopReason::invalid_input);
+    EXPECT_NE(solver->summary().message.find("paper mode"), std::string::npos) << solver->summary().message;
     goals.effectors[0].position_weight = 1;
-    EXPECT_NE(solver->start(c.start, goals), StopReason::invalid_input);
+    EXPECT_NE(solver->start(c.start, goals), StopReason::invalid_input) << solver->summary().message;
   }
 }
 

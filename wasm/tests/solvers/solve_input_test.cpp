@@ -40,7 +40,8 @@ TEST(SolveInput, NamesTheFirstProblem) {
   // A bad option comes first.
   options.error_tolerance = -1;
   EXPECT_EQ(check_solve_input(kin, options, "lm", kNoLimit, short_angles, target),
-            "option error_tolerance must be a number >= 0");
+            "option error_tolerance must be a number > 0 (0 can never be met: on target means E < it, and E is "
+            "never below 0)");
 }
 
 TEST(SolveInput, RefusesRigsOverTheMethodsSizeLimit) {

@@ -76,16 +76,33 @@ std::string with_double(const char* name, double value) {
 
 TEST(SolverOptions, RangesRefuseWhatTheirMessagesSay) {
   // finite_at_least(0): 0 in, below 0, infinity and NaN out.
-  EXPECT_EQ(with_double("error_tolerance", 0), "");
-  EXPECT_EQ(with_double("error_tolerance", -1e-300), "option error_tolerance must be a number >= 0");
+  EXPECT_EQ(with_double("gradient_tolerance", 0), "");
+  EXPECT_EQ(with_double("gradient_tolerance", -1e-300), "option gradient_tolerance must be a number >= 0");
+  EXPECT_NE(with_double("gradient_tolerance", kInf), "");
+  EXPECT_NE(with_double("gradient_tolerance", kNaN), "");
+  // finite_above(0) with a note: error_tolerance 0 can never be met (E < 0 never holds).
+  EXPECT_EQ(with_double("error_tolerance", 5e-324), "");
+  EXPECT_EQ(with_double("error_tolerance", 0),
+            "option error_tolerance must be a number > 0 (0 can never be met: on target means E < it, and E is "
+            "never below 0)");
   EXPECT_NE(with_double("error_tolerance", kInf), "");
-  EXPECT_NE(with_double("error_tolerance", kNaN), "");
   // at_least(0) with a note: infinity in (no limit).
   EXPECT_EQ(with_double("time_budget_s", kInf), "");
   EXPECT_EQ(with_double("time_budget_s", -1), "option time_budget_s must be >= 0 (0 or infinity: no limit)");
   EXPECT_NE(with_double("time_budget_s", kNaN), "");
   // finite_above(0): 0 out.
-  EXPECT_EQ(with_double("fd_step_deg", 0), "option fd_step_deg must be a number > 0");
+  EXPECT_EQ(with_double("gd_initial_step", 0), "option gd_initial_step must be a number > 0");
+  // in_range with a note: paper mode's difference step within kMinFdStepDeg..kMaxFdStepDeg.
+  EXPECT_EQ(with_double("fd_step_deg", 1e-9), "");
+  EXPECT_EQ(with_double("fd_step_deg", 1), "");
+  for (const double step : {0.0, 1e-300, 9e-10, 1.5, 1e308})
+    EXPECT_EQ(with_double("fd_step_deg", step),
+              "option fd_step_deg must be in 1e-09..1 (degrees: smaller steps are lost to rounding, larger ones miss "
+              "the slope)")
+        << step;
+  // A soft pull's weight: at most kMaxSoftWeight.
+  EXPECT_EQ(with_double("rest_weight", 1000), "");
+  EXPECT_EQ(with_double("rest_weight", 1e80), "option rest_weight must be in 0..1000 (a soft pull's largest weight)");
   // above(0): infinity in (no cap), 0 out.
   EXPECT_EQ(with_double("gn_max_step_deg", kInf), "");
   EXPECT_EQ(with_double("gn_max_step_deg", 0), "option gn_max_step_deg must be > 0");

@@ -14,11 +14,14 @@ import type { IkRig, Numbers } from './rig.js';
 export interface EffectorGoal {
   /** The effector: its bone's name or index. It must be one of the rig's end effectors. */
   bone: string | number;
-  /** Where its tip should be: 3 numbers, rig units. Omitted: no position goal. */
+  /** Where its tip should be: 3 numbers within +-1e9, rig units. Omitted: no position goal. */
   position?: Numbers;
   /** Its bone frame's orientation: a quaternion [x, y, z, w] (any nonzero length). Omitted: none. */
   orientation?: Numbers;
-  /** Weight of both goals, >= 0. Default 1. */
+  /**
+   * Weight of both goals, >= 0. Default 1. Weights are relative: the core divides every goal's
+   * weight by the largest one, so weights of 1e10 on every goal solve as weights of 1.
+   */
   weight?: number;
   /** Weight of the position goal; overrides `weight`. */
   positionWeight?: number;
@@ -43,20 +46,20 @@ export interface PoleGoal {
   bone: string | number;
   /** The pole: 3 numbers, rig units. */
   point: Numbers;
-  /** >= 0. Default 1; 0: no hint. */
+  /** In 0..1000 (a soft pull's largest weight). Default 1; 0: no hint. */
   weight?: number;
 }
 
 /** What a solve should reach. Effectors not listed have no goal (their chains move freely). */
 export interface Goals {
   effectors: readonly EffectorGoal[];
-  /** Rig units per radian of orientation error. Default 0: the rig's reach (its longest chain). */
+  /** Rig units per radian of orientation error, at most 1e9. Default 0: the rig's reach (its longest chain). */
   lengthScale?: number;
   /** Bend hints, soft. */
   poles?: readonly PoleGoal[];
   /**
    * Per bone (by name or index), how strongly it keeps to its rest pose under the solver option
-   * restWeight (> 0): a factor >= 0 on its rest pull, default 1; 0 lets it move freely.
+   * restWeight (> 0): a factor in 0..1000 on its rest pull, default 1; 0 lets it move freely.
    * Without restWeight it has no effect.
    */
   stiffness?: Readonly<Record<string, number>>;

@@ -80,6 +80,16 @@ export function toInt32(values: unknown, what: string, expected?: number): Int32
 }
 
 /**
+ * `value` if it is an integer number in low..high (no string, no fraction, nothing past the range
+ * to be wrapped); throws an Error naming `what` otherwise.
+ */
+export function checkedInteger(value: unknown, what: string, low: number, high: number): number {
+  if (typeof value !== 'number' || !Number.isInteger(value) || value < low || value > high)
+    throw new Error(`${what} must be an integer in ${low}..${high}, not ${describe(value)}`);
+  return value;
+}
+
+/**
  * A fresh plain object with the own enumerable fields of `options` whose names are in `known`,
  * each a number or a boolean, read once. Throws an Error for a non-object (arrays and Maps
  * included), an unknown name (listing the known ones) or a value of another type.

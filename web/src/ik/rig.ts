@@ -5,10 +5,13 @@
 // Every method checks and copies its inputs first (inputs.ts) and throws an Error naming the
 // problem; the core reports its own refusals through takeError() (see wasm/bindings/js_arrays.h).
 import type { EmbindRig, IkCoreModule, RigSpecArrays } from './generated/ik_core.mjs';
-import { coreError, toFloat64, toInt32 } from './inputs.js';
+import { checkedInteger, coreError, toFloat64, toInt32 } from './inputs.js';
 import type { RigSpec } from './rig_spec.js';
 
 export type Numbers = ArrayLike<number>;
+
+/** Largest restart index (wasm/src/size_limits.h kMaxRestartIndex: a solve's restarts are an int). */
+const MAX_RESTART_INDEX = 2 ** 31 - 1;
 
 /** The spec as the core takes it: typed arrays of the lengths its parents imply, string names. */
 function specArrays(spec: RigSpec): RigSpecArrays {
@@ -71,18 +74,21 @@ export class IkRig {
    * error the old list stays.
    */
   setEffectors(bones: Numbers): void {
+    this.live();
     const list = toInt32(bones, 'effectors');
     if (!this.live().setEffectors(list)) throw coreError(this.module, 'setEffectors');
   }
 
   /** End-effector tips (3 per effector) at `angles`. */
   tips(angles: Numbers): Float64Array {
+    this.live();
     const a = this.angles(angles);
     return this.checked(this.live().tips(a), 'tips');
   }
 
   /** Every bone's tip (3 per bone) at `angles`. */
   boneTips(angles: Numbers): Float64Array {
+    this.live();
     const a = this.angles(angles);
     return this.checked(this.live().boneTips(a), 'boneTips');
   }
@@ -92,24 +98,28 @@ export class IkRig {
    * effector in effector order: what an orientation goal (goals.ts) compares with.
    */
   tipRotations(angles: Numbers): Float64Array {
+    this.live();
     const a = this.angles(angles);
     return this.checked(this.live().tipRotations(a), 'tipRotations');
   }
 
   /** Every bone's pose transform T_i (16 per bone, row-major, rest space -> posed world). */
   poses(angles: Numbers): Float64Array {
+    this.live();
     const a = this.angles(angles);
     return this.checked(this.live().poses(a), 'poses');
   }
 
   /** Analytic Jacobian d tips / d angles, row-major (3n rows x 3m columns), rig units per degree. */
   jacobian(angles: Numbers): Float64Array {
+    this.live();
     const a = this.angles(angles);
     return this.checked(this.live().jacobian(a), 'jacobian');
   }
 
   /** Central-difference Jacobian with step hDeg degrees, clamped to the limits as the original did. */
   finiteDifferenceJacobian(angles: Numbers, hDeg = 1e-7, clampToLimits = true): Float64Array {
+    this.live();
     const a = this.angles(angles);
     if (typeof hDeg !== 'number' || !(hDeg > 0) || !Number.isFinite(hDeg))
       throw new Error(`finite difference step is ${String(hDeg)}, not a number of degrees > 0`);
@@ -118,6 +128,7 @@ export class IkRig {
 
   /** E = 1/2 |tips(angles) - target|^2. */
   objective(angles: Numbers, target: Numbers): number {
+    this.live();
     const a = this.angles(angles), t = this.target(target);
     const E = this.live().objective(a, t);
     if (Number.isNaN(E)) throw coreError(this.module, 'objective');
@@ -126,22 +137,27 @@ export class IkRig {
 
   /** grad E = J^T (tips - target), 3 per bone, per degree. */
   gradient(angles: Numbers, target: Numbers): Float64Array {
+    this.live();
     const a = this.angles(angles), t = this.target(target);
     return this.checked(this.live().gradient(a, t), 'gradient');
   }
 
   /** `angles` (degrees) clamped into the limits (a new array). Throws for a non-finite angle. */
   project(angles: Numbers): Float64Array {
+    this.live();
     const a = this.angles(angles);
     return this.checked(this.live().project(a), 'project');
   }
 
   /**
-   * The start of the solvers' k-th restart (k >= 1, an integer) for the option `seed` (default
-   * 1, the solvers' default): degrees, inside the limits. The same point a solver restarts from,
+   * The start of the solvers' k-th restart (k an integer in 1..2^31 - 1) for the option `seed` (an
+   * integer in [0, 2^32), default 1, the solvers' default): degrees, inside the limits. The same point a solver restarts from,
    * for harnesses that restart other solvers alike. A new array.
    */
   restartStart(k: number, seed = 1): Float64Array {
+    this.live();
+    checkedInteger(k, 'restartStart: the restart index k', 1, MAX_RESTART_INDEX);
+    checkedInteger(seed, 'restartStart: the seed', 0, 2 ** 32 - 1);
     return this.checked(this.live().restartStart(k, seed), 'restartStart');
   }
 

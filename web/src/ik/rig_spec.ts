@@ -6,9 +6,9 @@ export interface RigSpec {
   names: string[];
   /** Parent bone index per bone, -1 for a root. */
   parents: Int32Array;
-  /** 16 numbers per bone: the row-major 4x4 rest transform, canonical bone -> rest bone. */
+  /** 16 numbers per bone: the row-major 4x4 rest transform, canonical bone -> rest bone (translation within +-1e9). */
   rest: Float64Array;
-  /** Bone length per bone: the canonical bone runs from (0,0,0) to (length,0,0). */
+  /** Bone length per bone, 0..1e9: the canonical bone runs from (0,0,0) to (length,0,0). */
   lengths: Float64Array;
   /** 3 XZX lower limits per bone, degrees; -Infinity for unbounded. */
   lower: Float64Array;

@@ -35,7 +35,7 @@ export type StopReason =
 export interface SolverOptions {
   /** Stop when |grad E| < this (rig units^2 per degree). Default 1e-4. */
   gradientTolerance?: number;
-  /** Stop when E < this (rig units^2). Default 2e-4. Unused when tipTolerance > 0. */
+  /** Stop when E < this (rig units^2), > 0 (0 could never be met). Default 2e-4. Unused when tipTolerance > 0. */
   errorTolerance?: number;
   /**
    * Rig units. > 0: on target means every end effector's tip lies within this distance of its
@@ -55,7 +55,7 @@ export interface SolverOptions {
   historyCapacity?: number;
   /** Reproduce the original program (finite differences, its line searches). Default false. */
   paperMode?: boolean;
-  /** Finite-difference step in paper mode, degrees. Default 1e-7. */
+  /** Finite-difference step in paper mode, degrees, in 1e-9..1 (smaller is lost to rounding, larger misses the slope). Default 1e-7. */
   fdStepDeg?: number;
   /**
    * Gradient descent's first trial step length: at every iteration in paper mode; outside it only
@@ -92,7 +92,7 @@ export interface SolverOptions {
    * with restFromStart towards the solve's start angles: rows restWeight * stiffness * L * (pi/180)
    * * (angle - reference), rig units (Goals.stiffness per bone; L the goals' length scale). Never at
    * the cost of the goals: on target reads only them, and a run that stops off target drops the
-   * pull. Not in paper mode. Default 0 (none).
+   * pull. At most 1000, like a stiffness and a pole's weight. Not in paper mode. Default 0 (none).
    */
   restWeight?: number;
   /** The rest pull's reference is the solve's start angles instead of the rest pose. Default false. */
@@ -143,7 +143,10 @@ export interface SolverResult {
   gradNorm: number;
   /** The largest distance of an end effector's tip from its target at `angles`, rig units. */
   tipDistance: number;
-  /** `angles` is on target (the test of converged_E); stopReason is converged_E exactly when this is true. */
+  /**
+   * `angles` is on target (the test of converged_E); stopReason is converged_E exactly when this is
+   * true. No number of a result is NaN: one that overflowed reads Infinity, with numerical_failure.
+   */
   reached: boolean;
   iterations: number;
   functionEvaluations: number;
@@ -261,6 +264,7 @@ export class IkSolver {
 
   /** Options for the next start() or solve(); the solve in progress keeps its own. */
   setOptions(options: SolverOptions): void {
+    this.live();
     const plain = coreOptions(this.rig.module, options);
     if (!this.live().setOptions(plain)) throw coreError(this.rig.module, 'setOptions');
   }
@@ -276,6 +280,7 @@ export class IkSolver {
    * Throws an Error for wrong lengths, non-finite numbers, bad goals or out-of-range options.
    */
   start(angles: Numbers, target: Numbers | Goals): StopReason {
+    this.live();
     const a = toFloat64(angles, 'angles', this.rig.numAngles);
     const t = Float64Array.from(this.useGoals(target)); // a copy: the core reads it after user code ran
     const reason = this.live().start(a, t);
@@ -363,14 +368,15 @@ export class IkSolver {
 
   /**
    * Hands `target`'s goals to the core (only when they changed since the last call), or clears
-   * them for a plain target. Returns the target positions (3 per effector), checked.
+   * them for a plain target. Returns the target positions (3 per effector), checked. Reading
+   * `target` may run user code (a getter, a Proxy), so the handle is asked for at each use.
    */
   private useGoals(target: Numbers | Goals): ArrayLike<number> {
-    const handle = this.live();
+    this.live();
     if (!isGoals(target)) {
       const t = checkedNumbers(target, 'target', 3 * this.rig.numEffectors);
       if (this.goals) {
-        handle.clearGoals();
+        this.live().clearGoals(); // reading a Proxy may have disposed it
         this.goals = undefined;
       }
       return t;
@@ -381,7 +387,7 @@ export class IkSolver {
     const same = last !== undefined && last.effectors === effectors && last.packed.lengthScale === packed.lengthScale &&
       equal(last.packed.packed, packed.packed) && equal(last.packed.poles, packed.poles) && equal(last.packed.stiffness, packed.stiffness);
     if (!same) {
-      if (!handle.setGoals(packed.packed, packed.poles, packed.stiffness, packed.lengthScale)) throw coreError(this.rig.module, 'setGoals');
+      if (!this.live().setGoals(packed.packed, packed.poles, packed.stiffness, packed.lengthScale)) throw coreError(this.rig.module, 'setGoals');
       this.goals = { packed, effectors };
     }
     return packed.target;

@@ -18,7 +18,7 @@ import { Keyboard } from './keyboard.js';
 import { initialSettings, type PageSettings } from './page_settings.js';
 import { Panel } from './panel.js';
 import { DEFAULT_RIG, FILE_CHOICE, loadProjectRig, loadUserFile, projectRig, rigMenu } from './project_rigs.js';
-import { download, fileStem, glbExportProblem, looksLikePoseFile, poseJsonText, posedGlbBytes, readPoseText } from './pose_files.js';
+import { download, fileStem, glbExportProblem, looksLikePoseFile, poseJsonText, posedGlbBytes, readPoseFile } from './pose_files.js';
 import { showSelection, toggleEffector } from './selection.js';
 import { SolveReport } from './solve_report.js';
 import type { StatsPanel } from './stats.js';
@@ -166,7 +166,7 @@ export class PageApp {
     const live = this.controller.live;
     if (!live) return this.showMessage(`Could not load ${file.name}: no rig is loaded`, 'error');
     try {
-      const { state, warnings } = readPoseText(await file.text(), live);
+      const { state, warnings } = await readPoseFile(file, live);
       this.history.edit(() => this.controller.restore(state));
       this.report.showIdle();
       this.stepMode.clearInfo();

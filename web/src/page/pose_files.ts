@@ -1,9 +1,10 @@
 // Saving and loading poses from the page: the posed character as .glb (the rig's own file with the
 // solved joints written into its nodes, pose_glb.ts), the pose as JSON (angles and targets keyed by
-// bone name, pose_json.ts), and a JSON pose read back as a PoseState for the rig shown.
+// bone name, or "#index" for bones without a name of their own such as an A7 rig's, pose_json.ts),
+// and a JSON pose file read back as a PoseState for the rig shown (its size checked before reading).
 import type { LiveRig } from '../live/live_rig.js';
 import { poseWithOrientations, type PoseState } from '../live/pose_state.js';
-import { poseFromJson, poseToJson } from '../rig/pose_json.js';
+import { MAX_POSE_CHARS, PoseFormatError, poseFromJson, poseToJson } from '../rig/pose_json.js';
 
 /** Why the rig shown cannot be saved as a posed .glb, or null when it can. */
 export function glbExportProblem(live: LiveRig | null): string | null {
@@ -33,14 +34,14 @@ export function poseJsonText(live: LiveRig): string {
   const { session } = live;
   const names = session.spec.names;
   const goals = session.goals;
-  const effectors = Array.from(session.effectors(), (b) => names[b]);
+  const effectors = session.effectors();
   return poseToJson({
     rigName: live.name,
     boneNames: names,
     angles: session.angles,
     effectors,
     targets: session.targets,
-    orientations: effectors.map((_, k) => (goals.orientation[k] ? goals.rotations.subarray(4 * k, 4 * k + 4) : null)),
+    orientations: Array.from(effectors, (_, k) => (goals.orientation[k] ? goals.rotations.subarray(4 * k, 4 * k + 4) : null)),
   });
 }
 
@@ -58,6 +59,16 @@ export function readPoseText(text: string, live: LiveRig): { state: PoseState; w
     return { state: poseWithOrientations(read.angles, effectors, targets, []), warnings: read.warnings };
   }
   return { state: poseWithOrientations(read.angles, read.effectors, read.targets, read.orientations), warnings: read.warnings };
+}
+
+/**
+ * The pose file `file` read for the rig shown (readPoseText). A file over MAX_POSE_CHARS bytes is
+ * refused before it is read. Throws a PoseFormatError naming the file and the field or limit.
+ */
+export async function readPoseFile(file: File, live: LiveRig): Promise<{ state: PoseState; warnings: string[] }> {
+  if (file.size > MAX_POSE_CHARS)
+    throw new PoseFormatError(`pose file ${file.name}: ${(file.size / 1048576).toFixed(1)} MB, more than a pose file holds (at most ${MAX_POSE_CHARS / 1048576} MB)`);
+  return readPoseText(await file.text(), live);
 }
 
 /** Offers `data` to the user as a download called `name`. */

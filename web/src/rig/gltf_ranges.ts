@@ -2,6 +2,8 @@
 // sparse accessor) inside its buffer view and aligned to its components, every size a whole number.
 // Checked against the lengths the JSON declares (a buffer's bytes are compared with its declared
 // length when it is loaded), so that no reader, ours or three.js's, ever indexes past a buffer.
+// The bytes of all accessors together are capped, those without a buffer view (zeros that a loader
+// allocates: forty of 512 MiB in a 9 KB file made three.js ask for 20 GiB) included.
 // Run after checkReferences (gltf_references.ts): every index here is already in range.
 import { failIn, type GltfContainer } from './gltf_file.js';
 import { asIndex, asInteger, asObject, badValue, type JsonObject } from './gltf_json.js';
@@ -19,8 +21,12 @@ const TYPE_COMPONENTS: ReadonlyMap<unknown, number> = new Map([['SCALAR', 1], ['
 /** Largest byte count or element count the checks accept (2^53: exact in a double). */
 const MAX_SIZE = Number.MAX_SAFE_INTEGER;
 
-/** Largest accessor without a buffer view (all zeros, or decoded by an extension), bytes (512 MiB). */
-const MAX_ZERO_ACCESSOR_BYTES = 512 * 1024 * 1024;
+/**
+ * Most bytes of accessor data in one file, all accessors summed (count x element size, with or
+ * without a buffer view), 256 MiB: a character of 100,000 vertices with its animations holds a
+ * few MB.
+ */
+export const MAX_ACCESSOR_BYTES = 256 * 1024 * 1024;
 
 /** Bytes of one element: matrix columns start on 4-byte boundaries (glTF 2.0, "Data Alignment"). */
 function elementBytes(type: string, components: number, componentBytes: number): number {
@@ -50,6 +56,7 @@ export function checkRanges(container: GltfContainer, lists: GltfLists, file: st
       failIn(file, `${where} (bytes ${offset} to ${offset + length}) lies outside buffers[${buffer}] (${bufferLengths[buffer]} bytes)`);
     return { offset, length, stride };
   });
+  let accessorBytes = 0;
   lists.accessors.forEach((a, i) => {
     const where = `accessors[${i}]`;
     const componentBytes = COMPONENT_BYTES.get(a.componentType);
@@ -64,10 +71,10 @@ export function checkRanges(container: GltfContainer, lists: GltfLists, file: st
       if (v !== undefined && (!Array.isArray(v) || v.length !== components || !v.every((x) => typeof x === 'number' && Number.isFinite(x))))
         failIn(file, `${where}.${key} must be ${components} finite numbers`);
     }
-    if (a.bufferView === undefined) {
-      if (count * element > MAX_ZERO_ACCESSOR_BYTES)
-        failIn(file, `${where} has no bufferView and ${count} elements (${count * element} bytes); at most ${MAX_ZERO_ACCESSOR_BYTES} bytes`);
-    } else {
+    accessorBytes += count * element;
+    if (accessorBytes > MAX_ACCESSOR_BYTES)
+      failIn(file, `${accessorBytes} bytes of accessor data in ${i === 0 ? where : `accessors[0..${i}]`} (${where}: ${count} elements of ${element} bytes${a.bufferView === undefined ? ' without a bufferView, zeros to allocate' : ''}); at most ${MAX_ACCESSOR_BYTES} bytes (256 MiB) in one file`);
+    if (a.bufferView !== undefined) {
       const offset = asInteger(a.byteOffset, 0, MAX_SIZE, `${where}.byteOffset`, file, 0);
       checkSpan(a.bufferView as number, offset, count, element, componentBytes, where);
     }

@@ -8,6 +8,7 @@ import { boneRestFrame } from './bone_frame.js';
 import { chooseChainChild } from './chain_child.js';
 import { DEFAULT_LIMIT_DEG, defaultEffectors, rootChainEffectors } from './effector_defaults.js';
 import { BufferCache, readMat4Accessor } from './gltf_accessor.js';
+import { checkGltfBudget } from './gltf_budget.js';
 import { failIn, parseGltfContainer, type SiblingReader } from './gltf_file.js';
 import { listed, shown } from './gltf_json.js';
 import { nodeLabel, readNodes, readSkins, worldMatrices, type GltfNode } from './gltf_nodes.js';
@@ -63,12 +64,15 @@ const norm = (a: Vec3): number => Math.hypot(a[0], a[1], a[2]);
  * Imports the skeleton of a .glb or .gltf. `file` names the source in errors; `readSibling`
  * reads side buffers of a .gltf (URI-decoded relative path). Throws RigFormatError for a malformed
  * file (truncated GLB, bad JSON, no skin, node cycle, missing buffer, non-finite matrix, more
- * bones or end effectors than the core takes...), in time linear in the file's size. Lengths and
- * positions are in glTF scene units; limits in degrees.
+ * bones or end effectors than the core takes, more nodes, accessors or accessor bytes than
+ * gltf_budget.ts and gltf_ranges.ts allow...), in time linear in the file's size; a file past
+ * those caps is refused before anything is built from it. Lengths and positions are in glTF
+ * scene units; limits in degrees.
  */
 export async function importGltfRig(bytes: Uint8Array, file: string, readSibling?: SiblingReader): Promise<GltfRig> {
   const container = parseGltfContainer(bytes, file);
   const json = container.json;
+  checkGltfBudget(json, file);
   const lists = readLists(json, file);
   checkReferences(json, lists, file);
   checkRanges(container, lists, file);

@@ -1,5 +1,6 @@
 // The pose file: a rig's joint angles and end-effector targets as JSON, keyed by bone name so a
-// pose survives a rig whose bones come in another order.
+// pose survives a rig whose bones come in another order; a bone without a name of its own (none,
+// or one another bone has) is keyed by its index, "#12" (pose_keys.ts).
 //
 //   {
 //     "format": "ik-pose",
@@ -16,12 +17,14 @@
 //   }
 //
 // Reading checks everything and names the field of the first problem: unknown bones are an error,
-// bones the file lacks stay at 0 (a warning), angles past the rig's limits are clamped (a warning
-// naming the bone). Numbers are written in JavaScript's shortest round-trip form, so a pose
+// bones the file lacks get 0 (a warning), every angle is clamped into the rig's limits (a warning
+// naming the bone when one changes). Writing refuses what reading would refuse (the checks are
+// shared: pose_checks.ts). Numbers are written in JavaScript's shortest round-trip form, so a pose
 // written and read back gives the same angles bit for bit.
 import type { RigSpec } from '../ik/rig_spec.js';
 import { jsonBudgetProblem } from './json_budget.js';
-import { effectorCountProblem, MAX_COORDINATE } from './rig_limits.js';
+import { effectorsProblem, numbersProblem, orientationProblem, shown, targetProblem } from './pose_checks.js';
+import { poseBoneKeys } from './pose_keys.js';
 
 /** The "format" of a pose file. */
 export const POSE_FORMAT = 'ik-pose';
@@ -29,8 +32,6 @@ export const POSE_FORMAT = 'ik-pose';
 export const POSE_VERSION = 1;
 /** Largest pose file read, characters (a pose of 65,536 bones is about 3 MB). */
 export const MAX_POSE_CHARS = 8 * 1024 * 1024;
-/** Largest deviation of an orientation quaternion's length from 1. */
-const UNIT_TOLERANCE = 1e-6;
 /** Bone names listed in one message before "and N more". */
 const NAMES_SHOWN = 8;
 
@@ -38,12 +39,12 @@ const NAMES_SHOWN = 8;
 export interface PoseInput {
   /** The rig's name (its file's base name), for the reader's information. */
   rigName: string;
-  /** Every bone's name, in the order of `angles`; names must be distinct. */
+  /** Every bone's name, in the order of `angles` ('' or a repeated name: the bone is keyed "#index"). */
   boneNames: readonly string[];
   /** XZX joint angles, 3 per bone, degrees. */
   angles: ArrayLike<number>;
-  /** Bone name of each end effector. */
-  effectors: readonly string[];
+  /** Bone index of each end effector. */
+  effectors: ArrayLike<number>;
   /** Each effector's target position, 3 per effector, rig units. */
   targets: ArrayLike<number>;
   /** Per effector, an orientation goal as a unit quaternion (x, y, z, w), or null for none. */
@@ -54,7 +55,7 @@ export interface PoseInput {
 export interface PoseRead {
   /** The rig name the file gives ('' when it gives none). */
   rigName: string;
-  /** XZX angles, 3 per bone of the rig (rig order), degrees, within the limits. */
+  /** XZX angles, 3 per bone of the rig (rig order), degrees, within the limits (also those the file lacks). */
   angles: Float64Array;
   /** Bone index of each end effector. */
   effectors: number[];
@@ -81,69 +82,66 @@ const fail = (what: string): never => {
 };
 
 const listed = (names: readonly string[]): string => {
-  const shown = names.slice(0, NAMES_SHOWN).map((n) => JSON.stringify(n)).join(', ');
-  return names.length > NAMES_SHOWN ? `${shown} and ${names.length - NAMES_SHOWN} more` : shown;
+  const shownNames = names.slice(0, NAMES_SHOWN).map((n) => JSON.stringify(n)).join(', ');
+  return names.length > NAMES_SHOWN ? `${shownNames} and ${names.length - NAMES_SHOWN} more` : shownNames;
 };
-
-const shown = (v: unknown): string => {
-  if (typeof v === 'number' || typeof v === 'boolean' || v === null) return String(v);
-  if (typeof v === 'string') return JSON.stringify(v.length > 40 ? `${v.slice(0, 40)}...` : v);
-  return Array.isArray(v) ? 'an array' : typeof v;
-};
-
-function duplicates(names: readonly string[]): string[] {
-  const seen = new Set<string>(), twice = new Set<string>();
-  for (const n of names) (seen.has(n) ? twice : seen).add(n);
-  return [...twice];
-}
 
 /** `v` as an array of `n` finite numbers, else a PoseFormatError naming `field`. */
 function finiteArray(v: unknown, n: number, field: string, what: string): number[] {
-  if (!Array.isArray(v)) return fail(`${field} is ${shown(v)}, not an array of ${n} numbers (${what})`);
-  if (v.length !== n) return fail(`${field} has ${v.length} values, expected ${n} (${what})`);
-  v.forEach((x, k) => {
-    if (typeof x !== 'number' || !Number.isFinite(x)) fail(`${field}[${k}] is ${shown(x)}, not a finite number`);
-  });
+  const bad = numbersProblem(v, n, field, what);
+  if (bad) fail(bad);
   return v as number[];
 }
 
+/** Finite numbers as a JSON array in their shortest round-trip form, -0 kept (JSON.stringify writes 0). */
+const numberList = (a: readonly number[]): string => `[${a.map((v) => (Object.is(v, -0) ? '-0' : String(v))).join(',')}]`;
+
+/** Why a bone name the rig has is no key: the message's end. */
+const KEYED_BY_INDEX = 'which is not the key of one bone: a bone without a name of its own (none, or one another bone has) is keyed "#index"';
+
 /**
- * Writes a pose as pose-file JSON text (format above): angles in degrees keyed by bone name,
- * targets in rig units, orientations as unit quaternions (x, y, z, w). Throws an Error for
- * inconsistent input: wrong lengths, non-finite numbers, duplicate bone names, an effector that
- * names no bone.
+ * Writes a pose as pose-file JSON text (format above): angles in degrees keyed by bone (pose_keys.ts),
+ * targets in rig units, orientations as unit quaternions (x, y, z, w). Throws an Error naming the
+ * field for input the reader would refuse: wrong lengths, non-finite numbers, an effector that is no
+ * bone or is listed twice, more effectors than the core takes, a target beyond MAX_COORDINATE, a
+ * non-unit orientation, more than MAX_POSE_CHARS of text.
  */
 export function poseToJson(pose: PoseInput): string {
   const { rigName, boneNames, angles, effectors, targets, orientations } = pose;
-  const problem = (what: string): never => {
-    throw new Error(`poseToJson: ${what}`);
+  const check = (problem: string | undefined): void => {
+    if (problem) throw new Error(`poseToJson: ${problem}`);
   };
-  if (typeof rigName !== 'string') problem('rigName is not a string');
-  if (angles.length !== 3 * boneNames.length) problem(`angles has ${angles.length} values for ${boneNames.length} bones (3 per bone)`);
-  const twice = duplicates(boneNames);
-  if (twice.length) problem(`bone names ${listed(twice)} are used by more than one bone; a pose file keys angles by name`);
-  if (targets.length !== 3 * effectors.length) problem(`targets has ${targets.length} values for ${effectors.length} effectors (3 per effector)`);
+  const n = boneNames.length;
+  if (typeof rigName !== 'string') check('rigName is not a string');
+  if (angles.length !== 3 * n) check(`angles has ${angles.length} values for ${n} bones (3 per bone)`);
+  check(effectorsProblem(effectors.length, n));
+  if (targets.length !== 3 * effectors.length) check(`targets has ${targets.length} values for ${effectors.length} effectors (3 per effector)`);
   if (orientations !== undefined && orientations.length !== effectors.length)
-    problem(`orientations has ${orientations.length} entries for ${effectors.length} effectors`);
-  const known = new Set(boneNames);
-  const row = (a: ArrayLike<number>, at: number, n: number, what: string): number[] => {
-    const out = Array.from({ length: n }, (_, k) => a[at + k]);
-    if (!out.every(Number.isFinite)) problem(`${what} has a non-finite value`);
-    return out;
-  };
-  const bones = boneNames.map((name, i) => `    ${JSON.stringify(name)}: ${JSON.stringify(row(angles, 3 * i, 3, `angles of bone ${JSON.stringify(name)}`))}`);
-  const effectorLines = effectors.map((bone, e) => {
-    if (!known.has(bone)) problem(`effector ${e} names the bone ${JSON.stringify(bone)}, which is not in boneNames`);
+    check(`orientations has ${orientations.length} entries for ${effectors.length} effectors`);
+  const keys = poseBoneKeys(boneNames);
+  const row = (a: ArrayLike<number>, at: number, length: number): number[] => Array.from({ length }, (_, k) => a[at + k]);
+  const bones = keys.map((key, i) => {
+    const a = row(angles, 3 * i, 3);
+    check(numbersProblem(a, 3, `"bones"[${JSON.stringify(key)}]`, 'XZX angles in degrees'));
+    return `    ${JSON.stringify(key)}: ${numberList(a)}`;
+  });
+  const listedBones = new Set<number>();
+  const effectorLines = Array.from(effectors, (b, e) => {
+    const at = `"effectors"[${e}]`;
+    if (!Number.isInteger(b) || b < 0 || b >= n) check(`${at} is bone ${shown(b)}, not a bone index in 0..${n - 1}`);
+    if (listedBones.has(b)) check(`${at}.bone ${JSON.stringify(keys[b])} is listed twice`);
+    listedBones.add(b);
+    const target = row(targets, 3 * e, 3);
+    check(targetProblem(target, `${at}.target`));
     const q = orientations?.[e];
-    const entry: Record<string, unknown> = { bone, target: row(targets, 3 * e, 3, `target of effector ${JSON.stringify(bone)}`) };
-    if (q !== null && q !== undefined) {
-      if (q.length !== 4) problem(`orientation of effector ${JSON.stringify(bone)} has ${q.length} values, expected 4`);
-      entry.orientation = row(q, 0, 4, `orientation of effector ${JSON.stringify(bone)}`);
-    }
-    return `    ${JSON.stringify(entry)}`;
+    const orientation = q === null || q === undefined ? undefined : row(q, 0, q.length);
+    if (orientation) check(orientationProblem(orientation, `${at}.orientation`));
+    const fields = [`"bone":${JSON.stringify(keys[b])}`, `"target":${numberList(target)}`];
+    if (orientation) fields.push(`"orientation":${numberList(orientation)}`);
+    return `    {${fields.join(',')}}`;
   });
   const block = (open: string, lines: string[], close: string): string => (lines.length ? `${open}\n${lines.join(',\n')}\n  ${close}` : `${open}${close}`);
-  return [
+  const text = [
     '{',
     `  "format": ${JSON.stringify(POSE_FORMAT)},`,
     `  "version": ${POSE_VERSION},`,
@@ -153,15 +151,18 @@ export function poseToJson(pose: PoseInput): string {
     '}',
     '',
   ].join('\n');
+  if (text.length > MAX_POSE_CHARS) check(`${text.length} characters, more than a pose file holds (at most ${MAX_POSE_CHARS})`);
+  return text;
 }
 
 /**
- * Reads pose-file JSON `text` for the rig `spec` (its `names` identify the bones). Angles outside
- * `limits` (3 per bone, degrees; default the spec's lower/upper) are clamped with a warning naming
- * the bone; bones the file lacks get 0 with a warning. Throws a PoseFormatError naming the field
- * for anything malformed: more than MAX_POSE_CHARS, not JSON, another format or version, a bone
- * the rig lacks, wrong lengths, non-finite numbers, an effector listed twice, a non-unit
- * orientation, a target beyond MAX_COORDINATE.
+ * Reads pose-file JSON `text` for the rig `spec` (its `names` give the bones' keys, pose_keys.ts).
+ * Every angle is clamped into `limits` (3 per bone, degrees; default the spec's lower/upper), with
+ * a warning naming the bones whose angles changed; bones the file lacks get 0, clamped, with a
+ * warning. Throws a PoseFormatError naming the field for anything malformed: more than
+ * MAX_POSE_CHARS, not JSON, another format or version, a bone the rig lacks, wrong lengths,
+ * non-finite numbers, an effector listed twice, a non-unit orientation, a target beyond
+ * MAX_COORDINATE.
  */
 export function poseFromJson(text: string, spec: Pick<RigSpec, 'names' | 'lower' | 'upper'>, limits?: PoseLimits): PoseRead {
   if (typeof text !== 'string') fail(`expected text, got ${shown(text)}`);
@@ -187,42 +188,39 @@ export function poseFromJson(text: string, spec: Pick<RigSpec, 'names' | 'lower'
   const n = names.length;
   const lower = limits?.lower ?? spec.lower, upper = limits?.upper ?? spec.upper;
   if (lower.length !== 3 * n || upper.length !== 3 * n) throw new Error(`poseFromJson: limits have ${lower.length} and ${upper.length} values for ${n} bones (3 per bone)`);
-  const index = new Map<string, number>();
-  names.forEach((name, i) => index.set(name, index.has(name) ? -1 : i)); // -1: a name two bones share
+  const keys = poseBoneKeys(names);
+  const index = new Map(keys.map((key, i) => [key, i]));
+  const unusable = new Set(names.filter((name, i) => keys[i] !== name)); // names the file cannot key by
   const warnings: string[] = [];
 
   const bones = field('bones');
   if (typeof bones !== 'object' || bones === null || Array.isArray(bones)) return fail(`"bones" is ${shown(bones)}, not an object of bone name -> [3 angles in degrees]`);
   const entries = Object.entries(bones as Record<string, unknown>);
-  const unknown = entries.filter(([name]) => !index.has(name)).map(([name]) => name);
+  const ambiguous = entries.filter(([key]) => !index.has(key) && unusable.has(key)).map(([key]) => key);
+  if (ambiguous.length)
+    fail(`"bones" names ${listed(ambiguous)}, ${KEYED_BY_INDEX}`);
+  const unknown = entries.filter(([key]) => !index.has(key)).map(([key]) => key);
   if (unknown.length) fail(`"bones" names ${unknown.length} bone(s) the rig lacks: ${listed(unknown)}`);
-  const ambiguous = entries.filter(([name]) => index.get(name) === -1).map(([name]) => name);
-  if (ambiguous.length) fail(`"bones" names ${listed(ambiguous)}, which more than one bone of the rig is called`);
+  const given = new Array<number[] | undefined>(n);
+  for (const [key, value] of entries) given[index.get(key)!] = finiteArray(value, 3, `"bones"[${JSON.stringify(key)}]`, 'XZX angles in degrees');
+  // Every angle, also those of bones the file lacks (0), is clamped into the limits.
   const angles = new Float64Array(3 * n);
-  const given = new Uint8Array(n);
   const clamped: string[] = [];
-  for (const [name, value] of entries) {
-    const i = index.get(name)!;
-    const a = finiteArray(value, 3, `"bones"[${JSON.stringify(name)}]`, 'XZX angles in degrees');
-    given[i] = 1;
-    let changed = false;
-    for (let k = 0; k < 3; k++) {
-      const lo = lower[3 * i + k], hi = upper[3 * i + k];
-      const v = Math.min(Math.max(a[k], lo), hi);
-      if (v !== a[k]) changed = true;
-      angles[3 * i + k] = v;
-    }
-    if (changed) clamped.push(`${JSON.stringify(name)} [${a.join(', ')}] -> [${Array.from(angles.subarray(3 * i, 3 * i + 3)).join(', ')}]`);
+  for (let i = 0; i < n; i++) {
+    const a = given[i] ?? [0, 0, 0];
+    for (let k = 0; k < 3; k++) angles[3 * i + k] = Math.min(Math.max(a[k], lower[3 * i + k]), upper[3 * i + k]);
+    const now = Array.from(angles.subarray(3 * i, 3 * i + 3));
+    if (given[i] && now.some((v, k) => v !== a[k])) clamped.push(`${JSON.stringify(keys[i])} [${a.join(', ')}] -> [${now.join(', ')}]`);
   }
   if (clamped.length)
     warnings.push(`angles outside the rig's limits were clamped for ${clamped.length} bone(s): ${clamped.slice(0, NAMES_SHOWN).join('; ')}${clamped.length > NAMES_SHOWN ? `; and ${clamped.length - NAMES_SHOWN} more` : ''}`);
-  const missing = names.filter((_, i) => !given[i]);
-  if (missing.length) warnings.push(`the pose gives no angles for ${missing.length} bone(s), left at 0: ${listed(missing)}`);
+  const missing = keys.filter((_, i) => !given[i]);
+  if (missing.length) warnings.push(`the pose gives no angles for ${missing.length} bone(s), set to 0 or the nearest limit: ${listed(missing)}`);
 
   const list = field('effectors');
   if (!Array.isArray(list)) return fail(`"effectors" is ${shown(list)}, not an array of { "bone", "target", "orientation"? }`);
-  const countProblem = effectorCountProblem(list.length, n);
-  if (countProblem) fail(`"effectors": ${countProblem}`);
+  const countProblem = effectorsProblem(list.length, n);
+  if (countProblem) fail(countProblem);
   const effectors: number[] = [];
   const targets = new Float64Array(3 * list.length);
   const orientations: (Float64Array | null)[] = [];
@@ -234,23 +232,22 @@ export function poseFromJson(text: string, spec: Pick<RigSpec, 'names' | 'lower'
     const bone = get('bone');
     if (typeof bone !== 'string') return fail(`${at}.bone is ${shown(bone)}, not a bone name`);
     const b = index.get(bone);
-    if (b === undefined) fail(`${at}.bone ${JSON.stringify(bone)} is no bone of the rig`);
-    if (b === -1) fail(`${at}.bone ${JSON.stringify(bone)} names more than one bone of the rig`);
-    if (effectors.includes(b!)) fail(`${at}.bone ${JSON.stringify(bone)} is listed twice`);
-    const t = finiteArray(get('target'), 3, `${at}.target`, 'a position in rig units');
-    t.forEach((v, k) => {
-      if (Math.abs(v) > MAX_COORDINATE) fail(`${at}.target[${k}] = ${v} lies beyond +-${MAX_COORDINATE} rig units`);
-    });
+    if (b === undefined && unusable.has(bone))
+      fail(`${at}.bone ${JSON.stringify(bone)}, ${KEYED_BY_INDEX}`);
+    if (b === undefined) return fail(`${at}.bone ${JSON.stringify(bone)} is no bone of the rig`);
+    if (effectors.includes(b)) fail(`${at}.bone ${JSON.stringify(bone)} is listed twice`);
+    const t = get('target');
+    const badTarget = targetProblem(t, `${at}.target`);
+    if (badTarget) fail(badTarget);
     const q = get('orientation');
     if (q === undefined || q === null) orientations.push(null);
     else {
-      const quat = finiteArray(q, 4, `${at}.orientation`, 'a unit quaternion x, y, z, w');
-      const len = Math.hypot(...quat);
-      if (Math.abs(len - 1) > UNIT_TOLERANCE) fail(`${at}.orientation has length ${len}, not a unit quaternion`);
-      orientations.push(Float64Array.from(quat));
+      const badOrientation = orientationProblem(q, `${at}.orientation`);
+      if (badOrientation) fail(badOrientation);
+      orientations.push(Float64Array.from(q as number[]));
     }
-    effectors.push(b!);
-    targets.set(t, 3 * e);
+    effectors.push(b);
+    targets.set(t as number[], 3 * e);
   });
   return { rigName: typeof rig === 'string' ? rig : '', angles, effectors, targets, orientations, warnings };
 }

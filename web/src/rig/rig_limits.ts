@@ -1,6 +1,10 @@
-// The largest rig the loaders hand to the core, and the largest coordinate they accept, so that a
-// file past them gets an error naming the file before it reaches WebAssembly. The counts mirror
+// The largest rig file the loaders read, the largest rig they hand to the core, and the largest
+// coordinate they accept, so that a file past them gets an error naming the file before it is
+// read whole or reaches WebAssembly. The counts mirror
 // wasm/src/size_limits.h (kMaxBones, kMaxEffectors, kMaxMatrixEntries); keep them in step.
+
+/** The largest rig file (or .gltf side buffer) read, bytes (512 MiB): from disk and on the page, checked before reading. */
+export const MAX_RIG_FILE_BYTES = 512 * 1024 * 1024;
 
 /** Bones of one rig. */
 export const MAX_BONES = 65536;

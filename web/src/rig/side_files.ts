@@ -8,8 +8,7 @@ import { constants } from 'node:fs';
 import { open, realpath } from 'node:fs/promises';
 import { isAbsolute, relative, resolve, sep, win32 } from 'node:path';
 
-/** The largest rig or side-buffer file read from disk, bytes (512 MiB). */
-export const MAX_RIG_FILE_BYTES = 512 * 1024 * 1024;
+import { MAX_RIG_FILE_BYTES } from './rig_limits.js';
 
 /** Why a side file was refused or could not be read; the message names the uri, never the resolved path. */
 export class SideFileError extends Error {}
