@@ -59,7 +59,6 @@ class Priority {
   // Every goal as an equal for a while (active() false), then the same goals given up again.
   void suspend();
   void resume();
-  bool suspended() const { return suspended_count_ > 0; }
   // How many goals (blocks) are given up.
   int count() const { return given_up_count_; }
   // Per hard block: 1 if given up. Same size as the goals' blocks.
