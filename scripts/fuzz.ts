@@ -2,7 +2,7 @@
 // and the solver API careless and hostile input (tests/fuzz/), prints the outcome counts per kind,
 // the time budget's worst ratio, the stack-leak check, the time to load a 10,000-bone chain, and
 // every failing case with the command that replays it.
-// Exit code 1 on any crash, hang, silent wrong result or read outside the model folder, a stack
+// Exit code 1 on any crash, hang, unclear error, silent wrong result or read outside the model folder, a stack
 // leak, or a promise line (time budget, deep chain) that says BROKEN.
 import { Command, InvalidArgumentError, Option } from 'commander';
 import { SingleBar } from 'cli-progress';

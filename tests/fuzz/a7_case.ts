@@ -4,6 +4,7 @@ import { existsSync, readdirSync, readFileSync } from 'node:fs';
 import { join } from 'node:path';
 
 import { writeA7Rig } from '../../bench-node/a7_writer.js';
+import { MAX_BONES } from '../../web/src/rig/rig_limits.js';
 import { a7Dir } from '../helpers/a7.js';
 import { mutateA7, type A7Doc } from './a7_mutators.js';
 import { mutateBytes } from './byte_mutators.js';
@@ -33,7 +34,7 @@ function baseDoc(r: Rand, seeds: readonly A7Seed[]): { doc: A7Doc; text: string 
     const seed = r.pick(seeds);
     return { doc: JSON.parse(seed.text) as A7Doc, text: seed.name };
   }
-  const bones = r.weighted<() => number>([[8, () => r.intIn(1, 12)], [2, () => r.intIn(20, 300)], [0.3, () => r.intIn(2000, 5000)], [0.1, () => r.pick([65536, 65537])]])();
+  const bones = r.weighted<() => number>([[8, () => r.intIn(1, 12)], [2, () => r.intIn(20, 300)], [0.3, () => r.intIn(2000, 5000)], [0.1, () => r.pick([MAX_BONES, MAX_BONES + 1])]])();
   const rotated = bones <= 5000;
   const spec = randomRig(r, bones, bones > 300 ? 20 : 4, rotated);
   return { doc: JSON.parse(writeA7Rig(spec)) as A7Doc, text: `a generated ${bones}-bone rig${rotated ? '' : ' (unrotated frames)'}` };

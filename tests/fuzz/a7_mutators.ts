@@ -19,8 +19,8 @@ export function mutateA7(r: Rand, doc: A7Doc): string {
   return r.weighted<() => string>([
     [2, () => {
       const p = bone.parent_id;
-      if (typeof p === 'number' && p >= 0 && p < n) {
-        doc.bones[p].parent_id = i;
+      if (Number.isInteger(p) && (p as number) >= 0 && (p as number) < n && typeof doc.bones[p as number] === 'object') {
+        doc.bones[p as number].parent_id = i;
         return `bones[${p}].parent_id = ${i} (a cycle with its child)`;
       }
       bone.parent_id = i;

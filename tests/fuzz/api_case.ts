@@ -2,6 +2,7 @@
 import type { IkCoreModule } from '../../web/src/ik/module.js';
 import { IkRig } from '../../web/src/ik/rig.js';
 import { IkSolver, type SolverOptions } from '../../web/src/ik/solver.js';
+import { MAX_BONES, MAX_EFFECTORS, MAX_JACOBIAN_ENTRIES, maxEffectors } from '../../web/src/rig/rig_limits.js';
 import { API_OPS } from './api_ops.js';
 import type { ApiState } from './api_state.js';
 import type { BudgetSample } from './case_id.js';
@@ -11,13 +12,18 @@ import { OK, worse, type Outcome } from './outcome.js';
 import type { Rand } from './random.js';
 import { randomRig } from './random_rig.js';
 
+/** The most bones a rig with MAX_EFFECTORS end effectors may have (the Jacobian cap). */
+const LARGEST_WITH_64_EFFECTORS = Math.floor(MAX_JACOBIAN_ENTRIES / (9 * MAX_EFFECTORS));
+
 /**
  * Runs one API case drawn from `r` on module `ik`. `note` gets each part of the description as
  * it is drawn (so a hang still says how far the case got); `budgets` gets the budgeted solves.
  */
 export function runApiCase(r: Rand, ik: IkCoreModule, note: (text: string) => void, budgets: BudgetSample[]): Outcome {
-  const bones = r.weighted<() => number>([[6, () => r.intIn(1, 8)], [2, () => r.intIn(20, 200)], [1, () => r.intIn(500, 3000)]])();
-  const spec = randomRig(r, bones, bones > 300 ? 20 : 4);
+  // The largest rigs the core takes are drawn too: MAX_BONES bones, and 64 effectors on the most
+  // bones the Jacobian cap allows them (the time budget's promise covers them).
+  const bones = r.weighted<() => number>([[6, () => r.intIn(1, 8)], [2, () => r.intIn(20, 200)], [1, () => r.intIn(500, 3000)], [0.3, () => r.pick([MAX_BONES, LARGEST_WITH_64_EFFECTORS])]])();
+  const spec = randomRig(r, bones, bones > 300 ? Math.min(maxEffectors(bones), bones >= 1800 ? 64 : 20) : 4);
   const method = 3 * bones <= 1024 ? r.pick(['lm', 'gn', 'bfgs', 'newton', 'gd']) : r.pick(['lm', 'gn', 'gd']);
   const options = saneOptions(r);
   if (bones > 300) options.timeBudgetSeconds = r.pick([1e-6, 1e-3, 0.01, 0.03]);

@@ -12,7 +12,7 @@ export interface Bomb {
   mustFail?: string;
 }
 
-/** Nodes a loader must refuse: no rig has this many (the core takes 65,536 bones). */
+/** Nodes a loader must refuse: no rig has this many (the core takes 16,384 bones). */
 const NODE_BOMB = 2_000_000;
 /** Large counts a loader may take or refuse, that a run still loads in well under a second. */
 const NODES_MODERATE = [50_000, 200_000];

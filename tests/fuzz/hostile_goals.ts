@@ -62,7 +62,7 @@ export function goalsArg(r: Rand, s: ApiState): GoalsArg {
       return { value: { effectors }, text: `orientation goals of weight ${w}`, accept: 'must' };
     }],
     [3, () => {
-      const count = r.pick([1000, 5000, 20_000]);
+      const count = r.pick([64, 65, 1000, 20_000]); // the core takes 64 (kMaxPoles)
       const poles = randomPoles(r, s, count, () => 1);
       // A pole cap may refuse them with a clear error; a solve that runs must be clean and in budget.
       return { value: { effectors: positionGoals(s, reachable(r, s)), poles }, text: `${poles.length} poles`, accept: 'either' };

@@ -1,7 +1,7 @@
 // Generic mutations of a JSON document: a random place in the tree gets deleted, nulled, a value
 // of the wrong type, an extreme number, many copies or a deep nesting. Each returns one line
 // describing what it did.
-import { deepMark, INFINITY_MARK, NEG_INFINITY_MARK } from './json_text.js';
+import { deepMark, INFINITY_MARK, jsonText, NEG_INFINITY_MARK } from './json_text.js';
 import type { Rand } from './random.js';
 
 export type JsonContainer = Record<string, unknown> | unknown[];
@@ -78,8 +78,11 @@ function mutateAt(r: Rand, p: Place): string {
       return `${p.path} = ${v} (was ${old})`;
     }],
     [1, () => {
-      const small = (JSON.stringify(old) ?? '').length < 1000;
-      const copies = small ? r.pick([2, 100, 10_000]) : 2;
+      const size = old === undefined ? 0 : jsonText(old).length; // with nesting markers written out
+      const copies = size < 1000 ? r.pick([2, 100, 10_000]) : 2;
+      // Past 16 MB of text, copies (copied again by the next mutation) would outgrow what a
+      // JavaScript string can hold before the loader ever sees them: the copy is left out.
+      if (size * copies > 16_000_000) return `${p.path} = ${copies} copies of it in an array (left out: ${size} characters each)`;
       set(p, Array.from({ length: copies }, () => structuredClone(old)));
       return `${p.path} = ${copies} copies of it in an array`;
     }],

@@ -26,9 +26,10 @@ export function brokenPromises(...summaries: string[]): string[] {
   return summaries.flatMap((s) => s.split('\n')).filter((line) => line.endsWith(`: ${BROKEN}`));
 }
 
-/** The run's exit code: 1 on any severe outcome, stack leak or broken promise line, else 0. */
+/** The run's exit code: 1 on any severe outcome, unclear error, stack leak or broken promise line, else 0. */
 export function exitCode(reports: readonly CaseReport[], leak: boolean, summaries: readonly string[]): number {
-  return severeCount(reports) > 0 || leak || brokenPromises(...summaries).length > 0 ? 1 : 0;
+  const unclear = reports.some((r) => r.outcome.kind === 'unclear');
+  return severeCount(reports) > 0 || unclear || leak || brokenPromises(...summaries).length > 0 ? 1 : 0;
 }
 
 /** Cases with a severe outcome (crash, hang, silent wrong, read outside). */

@@ -17,6 +17,6 @@ export type FromWorker =
   | { type: 'ready' }
   /** A part of the running case's description (sent before the part runs). */
   | { type: 'note'; text: string }
-  /** The running case's input is drawn (a 65537-bone rig takes seconds of test code): its hang limit starts again. */
+  /** The running case's input is drawn (a 16,385-bone rig takes seconds of test code): its hang limit starts again. */
   | { type: 'drawn' }
   | { type: 'done'; report: CaseReport };

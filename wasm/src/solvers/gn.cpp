@@ -34,7 +34,7 @@ class GaussNewton final : public Solver {
  private:
   // The SVD of the whole Jacobian (paper mode, or more than kMaxResiduals residuals) grows with
   // #angles times #residuals squared.
-  int angle_limit(int residuals) const override { return residuals > kMaxResiduals ? kMaxDenseAngles : kNoAngleLimit; }
+  int angle_limit(int residuals) const override { return residuals > kMaxResiduals ? dense_angle_limit(residuals) : kNoAngleLimit; }
 
   void resize(int residuals, int angles) override {
     jac_.resize(residuals, angles);
@@ -66,23 +66,32 @@ class GaussNewton final : public Solver {
     // angles it would push out of a limit they sit on held there; if no point of that path is
     // lower, with every angle the full step would take past a limit fixed on the limit and the
     // others re-solved for the residual that remains (the step then stays inside the box).
-    if (!free_direction(ActiveSet::Fix::on_limit_only)) return fail("the SVD of the Jacobian is not finite");
+    switch (free_direction(ActiveSet::Fix::on_limit_only)) {
+      case ActiveSet::Status::solve_failed: return fail("the SVD of the Jacobian is not finite");
+      case ActiveSet::Status::out_of_time: gave_up_for_time(); return Progress::stuck;
+      case ActiveSet::Status::done: break;
+    }
     Eigen::VectorXd& step = active_set_.step();
     cap_largest_change(step, opt_.gn_max_step_deg);
     if (backtrack(step, 1, opt_.armijo_c1)) return Progress::moved;
-    if (!free_direction(ActiveSet::Fix::past_limit)) return fail("the SVD of the Jacobian is not finite");
+    switch (free_direction(ActiveSet::Fix::past_limit)) {
+      case ActiveSet::Status::solve_failed: return fail("the SVD of the Jacobian is not finite");
+      case ActiveSet::Status::out_of_time: gave_up_for_time(); return Progress::stuck;
+      case ActiveSet::Status::done: break;
+    }
     cap_largest_change(step, opt_.gn_max_step_deg);
     return backtrack(step, 1, opt_.armijo_c1) ? Progress::moved : Progress::stuck;
   }
 
-  // active_set_.step() on the free angles, fixing the angles `fix` says on their limits.
-  bool free_direction(ActiveSet::Fix fix) {
+  // active_set_.step() on the free angles, fixing the angles `fix` says on their limits; each
+  // round solves a system of the rig's size, and the rounds stop when the time budget runs out.
+  ActiveSet::Status free_direction(ActiveSet::Fix fix) {
     rhs_ = r_;
     const auto solve_system = [&] { return gauss_newton_direction(active_set_.mask(), rhs_); };
     const auto proposed = [&](int i) { return direction_[i]; };
     const auto take_out = [&](int i, double step) { rhs_.noalias() += step * J_.col(i); };
-    return active_set_.run(a_, kin_.lower(), kin_.upper(), free_, num_free_, fix, Deadline(), solve_system, proposed,
-                           take_out) == ActiveSet::Status::done;
+    return active_set_.run(a_, kin_.lower(), kin_.upper(), free_, num_free_, fix, deadline(), solve_system, proposed,
+                           take_out);
   }
 
   // direction_ = -pinv(J) rhs with the columns of the angles with `mask` 0 zeroed.

@@ -43,7 +43,7 @@ class ProjectedNewton final : public Solver {
   const char* name() const override { return "newton"; }
 
  private:
-  int angle_limit(int /*residuals*/) const override { return kMaxDenseAngles; }
+  int angle_limit(int residuals) const override { return dense_angle_limit(residuals); }
   void resize(int m, int n) override {
     H_.resize(n, n);
     modified_.resize(n, n);
@@ -89,6 +89,8 @@ class ProjectedNewton final : public Solver {
           continue;
         case Step::not_finite:
           return fail("the Newton step is not finite");
+        case Step::out_of_time:
+          return Progress::stuck;
         case Step::ok:
           break;
       }
@@ -133,10 +135,11 @@ class ProjectedNewton final : public Solver {
     return true;
   }
 
-  enum class Step { ok, indefinite, not_finite };
+  enum class Step { ok, indefinite, not_finite, out_of_time };
 
   // trial_ = P(a_ + p) with (modified H + mu I) p = -g on the free angles; angles that would leave
-  // their limits are fixed there and the rest re-solved.
+  // their limits are fixed there and the rest re-solved (each round a factorisation of the size
+  // of the rig: the rounds stop when the time budget runs out).
   Step newton_step(double mu) {
     rhs_ = -g_.cwiseProduct(free_mask_);
     Step failure = Step::ok;
@@ -159,9 +162,12 @@ class ProjectedNewton final : public Solver {
     };
     const auto proposed = [&](int i) { return work_[i]; };
     const auto take_out = [&](int i, double step) { rhs_.noalias() -= step * H_.col(i); };
-    if (active_set_.run(a_, kin_.lower(), kin_.upper(), free_, num_free_, ActiveSet::Fix::past_limit, Deadline(),
-                        solve_system, proposed, take_out) != ActiveSet::Status::done)
-      return failure;  // no deadline: only the solve can stop the active set
+    switch (active_set_.run(a_, kin_.lower(), kin_.upper(), free_, num_free_, ActiveSet::Fix::past_limit, deadline(),
+                            solve_system, proposed, take_out)) {
+      case ActiveSet::Status::solve_failed: return failure;
+      case ActiveSet::Status::out_of_time: gave_up_for_time(); return Step::out_of_time;
+      case ActiveSet::Status::done: break;
+    }
     Eigen::VectorXd& step = active_set_.step();
     if (!std::isfinite(cap_largest_change(step, opt_.newton_max_step_deg))) return Step::not_finite;
     trial_ = a_ + step;

@@ -88,11 +88,11 @@ StopReason Solver::begin(const Eigen::Ref<const Eigen::VectorXd>& angles, const 
   history_size_ = 0;
   failure_ = nullptr;
   const int rows = incoming_.plain() ? kin_.num_residuals() : incoming_.rows();
-  const int limit = std::min(angle_limit(rows), opt_.paper_mode ? kMaxDenseAngles : kNoAngleLimit);
+  const int limit = std::min(angle_limit(rows), opt_.paper_mode ? kMaxPaperAngles : kNoAngleLimit);
   summary_.message = goals_problem;
   if (summary_.message.empty())
     summary_.message =
-        check_solve_input(kin_, opt_, name(), limit, angles, incoming_.plain_target(), incoming_.plain_positions());
+        check_solve_input(kin_, opt_, name(), limit, rows, angles, incoming_.plain_target(), incoming_.plain_positions());
   if (summary_.message.empty() && opt_.paper_mode && (opt_.rest_weight > 0 || incoming_.num_poles() > 0))
     summary_.message = "paper mode takes no bend hints (poles) and no rest pull (restWeight > 0): the original "
                        "program's objective has neither; turn paper mode off for them";

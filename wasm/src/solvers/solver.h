@@ -210,7 +210,7 @@ class Solver {
   double reach_ = 1;              // longest effector chain (sum of bone lengths), rig units
   BlockPattern pattern_;          // which residual blocks each angle moves (sized with the workspace)
   // The largest #angles the method takes with `residuals` residuals (its dense matrices grow
-  // with #angles squared); the base class applies kMaxDenseAngles in paper mode.
+  // with #angles squared); the base class applies kMaxPaperAngles in paper mode.
   virtual int angle_limit(int /*residuals*/) const { return kNoAngleLimit; }
   static constexpr int kNoAngleLimit = 1 << 30;
 

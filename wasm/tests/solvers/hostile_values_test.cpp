@@ -80,7 +80,7 @@ TEST(HostileValues, GoalValuesPastTheirCapsAreRefusedNamingTheField) {
   goals.poles.assign(kMaxPoles, goals.poles[0]);
   EXPECT_EQ(set.set(kin, goals), "");
   goals.poles.push_back(goals.poles[0]);
-  EXPECT_EQ(set.set(kin, goals), "goals has 257 poles, more than 256 (one per two-bone limb is what a body needs)");
+  EXPECT_EQ(set.set(kin, goals), "goals has 65 poles, more than 64 (one per two-bone limb is what a body needs)");
   goals.poles.resize(1);
   goals.stiffness = {1, 1e308};
   EXPECT_EQ(set.set(kin, goals),

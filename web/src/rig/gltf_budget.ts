@@ -4,7 +4,7 @@
 // the importer take 3 GB at about 1 KB per node, and three.js builds an object per node, mesh,
 // material and animation track. The bytes of accessor data are capped in gltf_ranges.ts.
 // A real character has about 100 nodes, a few meshes and skins and a few dozen animation clips;
-// the project's rigs have at most 67 nodes and 21 accessors. Every cap is past the 65,536 bones
+// the project's rigs have at most 67 nodes and 21 accessors. Every cap is past the 16,384 bones
 // the core takes (rig_limits.ts) where the list grows with the bones.
 import { failIn } from './gltf_file.js';
 import type { JsonObject } from './gltf_json.js';

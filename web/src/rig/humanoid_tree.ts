@@ -1,5 +1,5 @@
 // The tree questions humanoid recognition asks of a rig's bones, each in constant or linear time
-// so that a hostile 65,536-bone file costs no more than a real one: is one bone below another,
+// so that a hostile 16,384-bone file costs no more than a real one: is one bone below another,
 // how deep is a bone, which bones lie between two bones, does a subtree hold a marked bone.
 
 /**

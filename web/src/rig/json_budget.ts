@@ -1,7 +1,7 @@
 // A linear scan of a rig file's JSON text before JSON.parse builds it, so that a hostile file
 // cannot make the parser allocate without bound: a 200 MB A7 file of arrays nested 10,000 deep
 // made 100 million arrays and ran Node out of memory. Real rigs are far inside both budgets: an A7
-// rig nests 4 levels with about 35 values per bone (2.3 million at the 65,536 bones the core takes),
+// rig nests 4 levels with about 35 values per bone (570,000 at the 16,384 bones the core takes),
 // a glTF's JSON holds a few values per node, accessor and mesh (its bulk data sits in binary
 // buffers or in long base64 strings): the project's rigs hold at most 1,300. JSON.parse of the
 // largest document accepted builds at most a few hundred MB.

@@ -30,7 +30,7 @@ import { poseBoneKeys } from './pose_keys.js';
 export const POSE_FORMAT = 'ik-pose';
 /** The version this module writes and reads. */
 export const POSE_VERSION = 1;
-/** Largest pose file read, characters (a pose of 65,536 bones is about 3 MB). */
+/** Largest pose file read, characters (a pose of 16,384 bones is under 1 MB). */
 export const MAX_POSE_CHARS = 8 * 1024 * 1024;
 /** Bone names listed in one message before "and N more". */
 const NAMES_SHOWN = 8;

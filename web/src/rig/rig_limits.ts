@@ -7,13 +7,13 @@
 export const MAX_RIG_FILE_BYTES = 512 * 1024 * 1024;
 
 /** Bones of one rig. */
-export const MAX_BONES = 65536;
+export const MAX_BONES = 16384;
 
 /** End effectors of one rig. */
 export const MAX_EFFECTORS = 64;
 
 /** Entries of the Jacobian: (3 x effectors) rows times (3 x bones) columns. */
-export const MAX_JACOBIAN_ENTRIES = 2 ** 22;
+export const MAX_JACOBIAN_ENTRIES = 2 ** 20;
 
 /**
  * Largest magnitude of a bone length or joint position, rig units. Far past any real model in any
