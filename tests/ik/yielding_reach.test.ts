@@ -34,7 +34,7 @@ describe('a yielding goal', () => {
     const set = generateTargets(spec, 'reach', 1e5, 1, (a) => rig.tips(a));
     const goals = new DragGoals(spec, Array.from(rig.effectors()), false);
     const r = set.numResiduals, m = set.numAngles;
-    let current: Float64Array = new Float64Array(m), both = 0, equalsOnly = 0;
+    let current: Float64Array = new Float64Array(m), both = 0, equalsOnly = 0, partway = 0, resumes = false;
     // Paths 0-9: the first effector's, and the second's.
     for (let k = 0; k < 10 * 40; k++) {
       const start = set.chained[k] ? current : set.starts.slice(k * m, (k + 1) * m);
@@ -42,7 +42,13 @@ describe('a yielding goal', () => {
       if (!set.chained[k]) goals.pin(rig.tipRotations(start), set.dragged[k]);
       const asEquals = equals.solve(start, target);
       const yielding = dragged.solve(start, goals.goals(target, set.dragged[k]));
-      if (asEquals.reached) (yielding.reached ? both++ : equalsOnly++);
+      // A step the yielding solve ends partway to another branch (joint_speed: the joints may move
+      // as far as the targets moved since the last frame, and 4% of the size more), and the step
+      // after it (which resumes that move from the answer it was heading to, not from the start),
+      // are the speed bound at work, not the priority: counted apart.
+      if (asEquals.reached && (yielding.stopReason === 'joint_speed' || resumes)) partway++;
+      else if (asEquals.reached) (yielding.reached ? both++ : equalsOnly++);
+      resumes = yielding.stopReason === 'joint_speed';
       // Whatever it reached, the pinned tips stay within the tolerance.
       const tips = rig.tips(yielding.angles);
       for (let e = 0; e < r / 3; e++) {
@@ -54,5 +60,6 @@ describe('a yielding goal', () => {
     }
     expect(both).toBeGreaterThan(100);
     expect(equalsOnly, `reached by both ${both}`).toBe(0);
+    expect(partway).toBeLessThanOrEqual(4);
   });
 });

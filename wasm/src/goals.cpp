@@ -254,4 +254,17 @@ bool GoalSet::operator==(const GoalSet& other) const {
   return true;
 }
 
+double GoalSet::largest_change_from(const GoalSet& before) const {
+  if (before.layout_ != layout_) return -1;
+  double largest = 0;
+  for (int b = 0; b < num_blocks(); ++b) {
+    const Block& now = blocks_[b];
+    const Block& then = before.blocks_[b];
+    const double change = now.orientation ? Eigen::AngleAxisd(then.rotation.transpose() * now.rotation).angle()
+                                          : (now.position - then.position).norm();
+    largest = std::max(largest, now.scale * change);
+  }
+  return largest;
+}
+
 }  // namespace ik

@@ -135,6 +135,10 @@ class GoalSet {
   // The bones whose angles move the rows of 3-row block k (hard blocks, then poles, then rest
   // bones), parents first; written to `bones` (allocates: for set-up only).
   void moving_bones(const Kinematics& kin, int k, std::vector<int>& bones) const;
+  // How far the targets moved from `before` to this set: the largest over the blocks of a
+  // position's scale times its move (rig units), an orientation's scale times the angle between
+  // its rotations (radians); -1 when the layouts differ. No allocation.
+  double largest_change_from(const GoalSet& before) const;
   // Effector e's position block, or -1.
   int position_block(int e) const { return position_block_[e]; }
   // The blocks' (effector, kind) in order: equal layouts give equal residual structure.

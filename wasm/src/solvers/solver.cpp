@@ -111,6 +111,10 @@ StopReason Solver::begin(const Eigen::Ref<const Eigen::VectorXd>& angles, const 
     summary_.elapsed_s = clock_.spent();
     return summary_.stop_reason;
   }
+  // A drag's next frame starts where the last solve ended: how far its targets moved since (-1:
+  // not such a frame). Read before the new goals replace the last ones.
+  const double target_change =
+      angles.size() == summary_.angles.size() && angles == summary_.angles ? incoming_.largest_change_from(goals_) : -1;
   // Workspace: sized here only, so that step() never allocates.
   goals_ = incoming_;
   if (m_ != goals_.rows() || n_ != kin_.num_angles() || effectors_ != kin_.rig().effectors || layout_ != goals_.layout())
@@ -142,11 +146,15 @@ StopReason Solver::begin(const Eigen::Ref<const Eigen::VectorXd>& angles, const 
     E_ = evaluate(a_, r_);
   }
   if (bounds_joints()) {
-    // The joints may move as far as the goals moved (from the tips at the start, or resuming,
-    // from the answer the last solve was heading to), and the bound more.
-    double moved = 0;
-    for (int b = 0; b < goals_.num_blocks(); ++b) moved = std::max(moved, r_.segment<3>(3 * b).norm());
-    allowed_move_ = opt_.max_joint_move + moved;
+    // The joints may move as far as the goals moved, and the bound more: on a drag's next frame
+    // as far as its targets moved since the last one (a target out of reach keeps a residual
+    // that is no move, and the closest point on another branch was a snap of up to 9.5% of the
+    // rig); else as far as the goals are from the tips at the start (or resuming, from the
+    // answer the last solve was heading to).
+    double moved = target_change;
+    if (moved < 0)
+      for (int b = 0; b < goals_.num_blocks(); ++b) moved = std::max(moved, r_.segment<3>(3 * b).norm());
+    allowed_move_ = opt_.max_joint_move + std::max(moved, 0.0);
   }
   if (finite(E_)) {
     priority_.note_start(goals_, r_, goal_tolerance());

@@ -110,6 +110,31 @@ TEST_P(JointSpeed, ABranchChangeTakesSeveralSolvesEachWithinTheBound) {
   EXPECT_GE(partway, 2);
 }
 
+// A target out of reach that the chain's length does not rule out (behind the arm, which its
+// limits cannot turn to), dragged by 2 degrees across the line where the closest point changes
+// sides: the next frame's chain restart finds the other side a little nearer, 1.7 away. On a
+// frame that goes on from where the last solve ended, the joints move as far as the target moved
+// and the bound more; the target's residual (1.2, out of reach) is no move.
+TEST(JointSpeedOutOfReach, AChainedFrameMovesNoMoreThanItsTargetMovedAndTheBound) {
+  Kinematics kin(planar_arm());
+  const auto behind = [](double phi_deg) {
+    return Eigen::Vector3d(1.5 * std::cos(phi_deg * kRadPerDeg), 1.5 * std::sin(phi_deg * kRadPerDeg), 0);
+  };
+  Eigen::VectorXd lower_side = Eigen::VectorXd::Zero(kin.num_angles());
+  lower_side[1] = -60, lower_side[4] = -150;  // the tip at 225 degrees, 0.52 from the shoulder
+  auto solver = make_solver("lm", kin, drag_options(kBound));
+  const SolverSummary& first = solver->solve(lower_side, behind(181));
+  EXPECT_FALSE(first.reached);
+  const Eigen::VectorXd there = first.angles;
+  kin.forward(there);
+  EXPECT_LT(kin.tip(1).y(), 0);  // the closest point on this side
+  const SolverSummary& next = solver->solve(there, behind(179));
+  const double target_move = (behind(179) - behind(181)).norm();  // 0.052
+  EXPECT_FALSE(next.reached);
+  EXPECT_LE(largest_move(kin, there, next.angles), kBound + target_move + 1e-9);
+  EXPECT_GT(largest_move(kin, there, next.angles), 0.1);  // it does head for the other side
+}
+
 // Paper mode is the report's algorithm: no bound.
 TEST(JointSpeedPaperMode, IgnoresTheBound) {
   Kinematics kin(planar_arm());
