@@ -44,6 +44,7 @@ const OUT_OF_RANGE: [string, unknown][] = [
   ['lmInitialMu', -1], ['lmInitialMu', NaN], ['lmDampingFloor', -1], ['lmMaxRejections', -5],
   ['restarts', -1], ['stallIterations', -1], ['chainRestarts', -1],
   ['gnSingularCutoff', -1], ['gnSingularCutoff', NaN], ['gnMaxStepDeg', 0], ['newtonMaxStepDeg', -1],
+  ['errorTolerance', 0], ['fdStepDeg', 1e-300], ['fdStepDeg', 1e300], ['restWeight', 1e10], ['restWeight', 1e150], ['restWeight', 1e308],
 ];
 
 /** [name, value] pairs in range but at an edge: accepted, and the solve must still end and be clean. */
@@ -52,10 +53,10 @@ const EDGE_VALUES: [string, unknown][] = [
   ['maxIterations', 0], ['maxIterations', 2 ** 31 - 1], ['historyCapacity', 0], ['historyCapacity', 1_000_000],
   ['maxBacktracks', 0], ['maxBacktracks', 1000], ['restarts', 2 ** 31 - 1], ['stallIterations', 0], ['stallIterations', 1],
   ['chainRestarts', 2 ** 31 - 1], ['lmMaxRejections', 2 ** 31 - 1], ['lmInitialMu', 1e300], ['lmInitialMu', 0],
-  ['lmDampingFloor', 0], ['lmDampingFloor', 1e300], ['errorTolerance', 0], ['gradientTolerance', 0], ['tipTolerance', 1e300],
+  ['lmDampingFloor', 0], ['lmDampingFloor', 1e300], ['errorTolerance', 5e-324], ['gradientTolerance', 0], ['tipTolerance', 1e300],
   ['gnSingularCutoff', 0], ['gnMaxStepDeg', 1e300], ['newtonMaxStepDeg', 1e-300], ['gdInitialStep', 1e-300], ['gdInitialStep', 1e300],
-  ['backtrackFactor', 1e-300], ['armijoC1', 0], ['fdStepDeg', 1e-300], ['fdStepDeg', 1e300], ['seed', 2 ** 32 - 1], ['paperMode', true],
-  ['restWeight', 1e10], ['restWeight', 1e150], ['restWeight', 1e308],
+  ['backtrackFactor', 1e-300], ['armijoC1', 0], ['fdStepDeg', 1e-9], ['fdStepDeg', 1], ['seed', 2 ** 32 - 1], ['paperMode', true],
+  ['restWeight', 1000],
 ];
 
 /** A bounded options object with `name` set to `value`: a time budget bounds an iteration cap and the other way round. */
