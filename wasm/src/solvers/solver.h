@@ -297,6 +297,7 @@ class Solver {
   void take_nearest();
   static constexpr int kNearerTries = 4;
   static constexpr int kRestoreSteps = 8;  // priority steps that bring a partway pose's held goals back
+  static constexpr int kRestoreRounds = 3;  // partway poses sought, each towards the last one restored
   static constexpr int kSeekRestarts = 16;
   int nearer_tries_ = 0;
   int seek_limit_ = 0;  // summary_.chain_restarts at which the search ends

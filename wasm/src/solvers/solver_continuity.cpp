@@ -61,17 +61,32 @@ void Solver::bound_motion() {
   kin_.forward(summary_.angles);
   if (motion_.largest_move(kin_) <= bound) return;
   heading_to_ = summary_.angles;
-  motion_.limit(kin_, moved_from_, summary_.angles, bound, a_);
-  if (!answer_here(StopReason::joint_speed)) return;
   // Partway in angles is not partway on target: the held goals (the pinned effectors) are
-  // brought back within their tolerance by a few priority steps from there.
-  if (priority_.active() && !held()) {
+  // brought back within their tolerance by a few priority steps from there. Those steps move the
+  // joints too (8% of the character's height in one frame, seen): past the bound, the partway
+  // pose is sought again towards the restored one, whose held goals are met. When no round
+  // gives a pose within the bound that holds them, the solve stays at its start (the held goals
+  // met there): no snap and no pinned limb pulled away; the next solve starts afresh.
+  const bool restore = priority_.active();
+  trial_ = summary_.angles;  // where the partway pose heads
+  for (int round = 0; round < kRestoreRounds; ++round) {
+    motion_.limit(kin_, moved_from_, trial_, bound, a_);
+    if (!answer_here(StopReason::joint_speed)) return;
+    if (!restore || held()) break;
+    if (round + 1 == kRestoreRounds) {
+      a_ = moved_from_;
+      answer_here(StopReason::joint_speed);
+      return;
+    }
     priority_damping_.reset(opt_.lm_initial_mu);
     for (int i = 0; i < kRestoreSteps && !held(); ++i) {
       const Progress p = priority_iterate();
       if (p != Progress::moved || !update_derivatives(true)) break;
     }
     if (!answer_here(StopReason::joint_speed)) return;
+    kin_.forward(a_);
+    if (held() && motion_.largest_move(kin_) <= bound) break;
+    trial_ = a_;
   }
   partway_ = a_;
   heading_ = true;
