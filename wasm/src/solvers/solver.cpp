@@ -198,13 +198,16 @@ StopReason Solver::begin(const Eigen::Ref<const Eigen::VectorXd>& angles, const 
   }
   if (close || !running()) clock_.close();  // otherwise the first step's time runs from this call's start
   summary_.elapsed_s = clock_.spent();
-  if (!running()) {
-    end_together();
-    finish();
-    bound_motion();
-    keep_contract();
-  }
+  if (!running()) conclude();
   return summary_.stop_reason;
+}
+
+void Solver::conclude() {
+  end_together();
+  take_nearest();
+  finish();
+  bound_motion();
+  keep_contract();
 }
 
 void Solver::resize_workspace() {
@@ -297,13 +300,7 @@ bool Solver::advance(Clock::time_point begin) {
   }
   summary_.stop_reason = settle(reason);
   summary_.elapsed_s = clock_.spent();
-  if (reason != StopReason::running) {
-    end_together();
-    take_nearest();
-    finish();
-    bound_motion();
-    keep_contract();
-  }
+  if (reason != StopReason::running) conclude();
   return reason == StopReason::running;
 }
 

@@ -313,6 +313,10 @@ class Solver {
   Eigen::VectorXd heading_to_, partway_;
   bool heading_ = false;
   bool resumed_ = false;  // this solve resumed such a move
+  // Everything a solve does when it stops, in order: back from a run of the goals as equals
+  // (end_together()), the nearest answer a search found (take_nearest()), the out_of_reach flags
+  // (finish()), the speed bound (bound_motion()), the summary's rules (keep_contract()).
+  void conclude();
   // At the end of a solve: the out_of_reach flags (from the given-up goals, or without any, from
   // a run that ended at a stationary or settled point off target).
   void finish();
