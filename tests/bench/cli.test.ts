@@ -15,6 +15,7 @@ import { prepareRigs } from '../../bench-node/bench.js';
 import { runCommand } from '../../bench-node/command.js';
 import { parseOptions } from '../../bench-node/options.js';
 import { checkOutputs } from '../../bench-node/outputs.js';
+import { REACH_MARGIN } from '../../bench-node/reachability.js';
 import { loadBenchRig } from '../../bench-node/rigs.js';
 import { checkNativeTool } from '../../bench-node/run_native.js';
 import type { IkCoreModule } from '../../web/src/ik/module.js';
@@ -369,11 +370,12 @@ describe('the reach experiment', () => {
   it('counts steps out of reach as unreachable and leaves them out of success, on both engines', async () => {
     // A straight limb of length 2 from the origin (size 1, tip tolerance 0.001): the path towards
     // its root can be reached by bending. Step t of either path sideways puts the target
-    // hypot(2, 0.02 t) from the root, out of reach by more than the tip tolerance from t = 4 on.
+    // hypot(2, 0.02 t) from the root, out of reach by more than the reference's margin (half the
+    // tip tolerance) from t = 3 on.
     const limb = join(dir, 'limb.json');
     writeFileSync(limb, writeA7Rig(straightLimb()));
-    const outOfReach = Array.from({ length: 40 }, (_, i) => Math.hypot(2, 0.02 * (i + 1)) - 2 >= 0.001).filter(Boolean).length;
-    expect(outOfReach).toBe(37);
+    const outOfReach = Array.from({ length: 40 }, (_, i) => Math.hypot(2, 0.02 * (i + 1)) - 2 >= REACH_MARGIN * 0.001).filter(Boolean).length;
+    expect(outOfReach).toBe(38);
     const rows = await runJson(['--rig', limb, '--experiment', 'reach', '--methods', 'lm', '--engine', 'wasm,native', '--timeout', '0.2']);
     expect(rows.map((row) => row.engine)).toEqual(['wasm', 'native']);
     for (const row of rows) {

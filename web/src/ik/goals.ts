@@ -90,6 +90,11 @@ export function isGoals(value: unknown): value is Goals {
   return typeof value === 'object' && value !== null && !Array.isArray(value) && !ArrayBuffer.isView(value);
 }
 
+/** Is `value` goals packed already (PackedGoals) rather than a Goals object or a target array? */
+export function isPackedGoals(value: unknown): value is PackedGoals {
+  return isGoals(value) && (value as Partial<PackedGoals>).packed instanceof Float64Array;
+}
+
 /** The index of bone `bone` (a name or an index) in `rig`, or an Error naming `what`. */
 export function boneIndex(rig: IkRig, bone: unknown, what: string): number {
   if (typeof bone === 'number') {

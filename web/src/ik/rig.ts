@@ -43,6 +43,8 @@ export class IkRig {
   readonly lower: Float64Array;
   readonly upper: Float64Array;
   private disposed = false;
+  /** Counts setEffectors() calls that changed the list: solvers hand their goals again after one. */
+  effectorsVersion = 0;
 
   /** Builds the rig in WebAssembly. Throws an Error naming the bone and field of a bad spec. */
   constructor(
@@ -77,6 +79,7 @@ export class IkRig {
     this.live();
     const list = toInt32(bones, 'effectors');
     if (!this.live().setEffectors(list)) throw coreError(this.module, 'setEffectors');
+    this.effectorsVersion++;
   }
 
   /** End-effector tips (3 per effector) at `angles`. */

@@ -174,7 +174,16 @@ export interface SolverResult {
 }
 
 function equal(a: Float64Array, b: Float64Array): boolean {
-  return a.length === b.length && a.every((x, i) => x === b[i]);
+  if (a.length !== b.length) return false;
+  for (let i = 0; i < a.length; i++) if (a[i] !== b[i]) return false;
+  return true;
+}
+
+/** Copies `from` into `to` when it has the same length, else returns a copy of `from`. */
+function keepCopy(to: Float64Array, from: Float64Array): Float64Array {
+  if (to.length !== from.length) return from.slice();
+  to.set(from);
+  return to;
 }
 
 function toResult(r: EmbindSolverResult): SolverResult {
@@ -220,8 +229,8 @@ export class IkSolver {
   private disposed = false;
   /** solve()'s buffer in WebAssembly memory: angles | target | the result numbers (ModuleFacts.io). */
   private io: Float64Array<ArrayBufferLike> = new Float64Array(0);
-  /** The goals last handed to the core (undefined: plain targets), to skip handing them again. */
-  private goals?: { packed: PackedGoals; effectors: string };
+  /** Copies of the goals last handed to the core (undefined: plain targets), to skip handing them again. */
+  private goals?: { packed: Float64Array; poles: Float64Array; stiffness: Float64Array; lengthScale: number; effectors: number };
 
   /** The methods this build registers, in display order (lm, the default, first). */
   static methods(module: IkCoreModule): SolverMethod[] {
@@ -311,8 +320,31 @@ export class IkSolver {
       throw new Error(`out must be a Float64Array of ${n} numbers (the angles)`);
     const a = checkedNumbers(angles, 'angles', n);
     const t = this.useGoals(target);
-    const handle = this.live(); // reading a Proxy may have disposed it
+    this.live(); // reading a Proxy may have disposed it
     if (3 * this.rig.numEffectors !== m) throw new Error('the end effectors changed while the target was being read');
+    return this.run(a, t, out);
+  }
+
+  /**
+   * solve() for goals packed already (packGoals, or a caller that keeps its own PackedGoals in the
+   * rig's effector order, as the live session does every frame): TypeScript checks the lengths
+   * only, not each number (the core refuses non-finite angles and targets, and checks the goals
+   * when they change, with the same errors). `angles`: degrees, 3 per bone.
+   */
+  solvePacked(angles: Float64Array, goals: PackedGoals, out?: Float64Array): SolverResult {
+    const n = this.rig.numAngles, m = 3 * this.rig.numEffectors;
+    if (!(angles instanceof Float64Array) || angles.length !== n) throw new Error(`angles must be a Float64Array of ${n} numbers`);
+    if (out !== undefined && !(out instanceof Float64Array && out.length === n))
+      throw new Error(`out must be a Float64Array of ${n} numbers (the angles)`);
+    if (goals.target.length !== m) throw new Error(`the goals' target has ${goals.target.length} values, expected ${m}`);
+    this.sendGoals(goals);
+    return this.run(angles, goals.target, out);
+  }
+
+  /** Solves from angles `a` towards target `t` (checked) through the shared buffer; see solve(). */
+  private run(a: ArrayLike<number>, t: ArrayLike<number>, out?: Float64Array): SolverResult {
+    const handle = this.live();
+    const n = this.rig.numAngles, m = t.length;
     const facts = moduleFacts(this.rig.module);
     let io = this.buffer(n, m, facts.ioCount);
     io.set(a, 0);
@@ -382,15 +414,26 @@ export class IkSolver {
       return t;
     }
     const packed = packGoals(this.rig, target);
-    const effectors = this.rig.effectors().join();
-    const last = this.goals;
-    const same = last !== undefined && last.effectors === effectors && last.packed.lengthScale === packed.lengthScale &&
-      equal(last.packed.packed, packed.packed) && equal(last.packed.poles, packed.poles) && equal(last.packed.stiffness, packed.stiffness);
-    if (!same) {
-      if (!this.live().setGoals(packed.packed, packed.poles, packed.stiffness, packed.lengthScale)) throw coreError(this.rig.module, 'setGoals');
-      this.goals = { packed, effectors };
-    }
+    this.sendGoals(packed);
     return packed.target;
+  }
+
+  /** Hands `goals` to the core unless they are those it has (for the rig's current effectors). */
+  private sendGoals(goals: PackedGoals): void {
+    const last = this.goals, effectors = this.rig.effectorsVersion;
+    if (last !== undefined && last.effectors === effectors && last.lengthScale === goals.lengthScale &&
+      equal(last.packed, goals.packed) && equal(last.poles, goals.poles) && equal(last.stiffness, goals.stiffness))
+      return;
+    this.goals = undefined;
+    if (!this.live().setGoals(goals.packed, goals.poles, goals.stiffness, goals.lengthScale)) throw coreError(this.rig.module, 'setGoals');
+    const none = new Float64Array(0);
+    this.goals = {
+      packed: keepCopy(last?.packed ?? none, goals.packed),
+      poles: keepCopy(last?.poles ?? none, goals.poles),
+      stiffness: keepCopy(last?.stiffness ?? none, goals.stiffness),
+      lengthScale: goals.lengthScale,
+      effectors,
+    };
   }
 
   /** The solve buffer for n angles, m target numbers and `stats` result numbers (asked anew when stale or resized). */

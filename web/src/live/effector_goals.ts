@@ -7,7 +7,7 @@
 // change; its positions, orientations and pole points are views into the session's arrays, so
 // moving or turning a target or moving a pole rewrites numbers in place and the per-frame solve
 // allocates nothing here.
-import type { EffectorGoal, Goals, PoleGoal } from '../ik/goals.js';
+import { GOAL_STRIDE, POLE_STRIDE, type EffectorGoal, type Goals, type PackedGoals, type PoleGoal } from '../ik/goals.js';
 
 export class EffectorGoals {
   /** 1 where effector k has a position goal (its target), per effector. */
@@ -30,6 +30,7 @@ export class EffectorGoals {
   /** While pinned: 1 where effector k keeps its frame as well as its place (pinned_frames.ts). */
   keepsFrame = new Uint8Array(0);
   private cached: Goals | null = null;
+  private pack: PackedGoals | null = null;
   private cachedFor: Float64Array | null = null;
   private cachedYielding = -1;
 
@@ -154,6 +155,37 @@ export class EffectorGoals {
     this.cachedFor = targets;
     this.cachedYielding = yielding;
     return this.cached;
+  }
+
+  /**
+   * The same goals as goals(), packed as the core takes them (PackedGoals, in the effectors'
+   * order): one record whose numbers are rewritten at each call from `targets` (3 per effector,
+   * rig units), the orientations and the poles, so the per-frame solve allocates nothing and
+   * skips checking a Goals object (the session's goals are well formed by construction).
+   */
+  packed(targets: Float64Array, yielding = -1): PackedGoals {
+    const m = this.count, poles = this.poleBones.length;
+    let p = this.pack;
+    if (!p || p.target.length !== 3 * m || p.poles.length !== POLE_STRIDE * poles) {
+      const none = new Float64Array(0);
+      p = this.pack = { packed: new Float64Array(GOAL_STRIDE * m), target: new Float64Array(3 * m), lengthScale: 0, poles: new Float64Array(POLE_STRIDE * poles), stiffness: none };
+    }
+    for (let k = 0; k < m; k++) {
+      const o = GOAL_STRIDE * k;
+      const turn = this.orientation[k] ? this.rotations : this.pinned && this.keepsFrame[k] && k !== yielding ? this.pinned : null;
+      p.packed[o] = this.position[k];
+      p.packed[o + 1] = turn ? 1 : 0;
+      for (let i = 0; i < 4; i++) p.packed[o + 2 + i] = turn ? turn[4 * k + i] : 0;
+      p.packed[o + 6] = k === yielding ? 1 : 0;
+      for (let i = 0; i < 3; i++) p.target[3 * k + i] = this.position[k] ? targets[3 * k + i] : 0;
+    }
+    for (let j = 0; j < poles; j++) {
+      const o = POLE_STRIDE * j;
+      p.poles[o] = this.poleBones[j];
+      for (let i = 0; i < 3; i++) p.poles[o + 1 + i] = this.polePoints[3 * j + i];
+      p.poles[o + 4] = 1;
+    }
+    return p;
   }
 
   private changed(): void {

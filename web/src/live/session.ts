@@ -2,7 +2,7 @@
 // positions (orientation goals, effector_goals.ts) and one solver per method (made on first use).
 // No three.js and no DOM: the page and the widget both drive it. dispose() frees every
 // WebAssembly object it made.
-import { type Goals, orientationErrorsDeg } from '../ik/goals.js';
+import { type Goals, orientationErrorsDeg, type PackedGoals } from '../ik/goals.js';
 import type { IkCoreModule } from '../ik/module.js';
 import { IkRig } from '../ik/rig.js';
 import type { RigSpec } from '../ik/rig_spec.js';
@@ -96,8 +96,18 @@ export class IkSession {
    * position goal or yields to the others (never in `paperMode`, which takes plain targets only).
    */
   problem(paperMode = false): Float64Array | Goals {
-    const yielding = paperMode || this.yielding >= this.effectorList.length ? -1 : this.yielding;
+    const yielding = this.yieldingIn(paperMode);
     return this.goals.beyondPositions || yielding >= 0 ? this.goals.goals(this.effectorList, this.targets, yielding) : this.targets;
+  }
+
+  /** problem(), its goals packed as the core takes them (the per-frame solve's fast path). */
+  private packedProblem(paperMode: boolean): Float64Array | PackedGoals {
+    const yielding = this.yieldingIn(paperMode);
+    return this.goals.beyondPositions || yielding >= 0 ? this.goals.packed(this.targets, yielding) : this.targets;
+  }
+
+  private yieldingIn(paperMode: boolean): number {
+    return paperMode || this.yielding >= this.effectorList.length ? -1 : this.yielding;
   }
 
   /**
@@ -166,7 +176,7 @@ export class IkSession {
 
   /** One solve from the current pose; the pose becomes the solver's result (outcome.angles is `angles`). */
   solve(method: string, settings: SolveSettings): SolveOutcome {
-    return this.solver(method).solve(this.angles, this.problem(settings.paperMode), settings, this.angles);
+    return this.solver(method).solve(this.angles, this.packedProblem(settings.paperMode), settings, this.angles);
   }
 
   /** Solves from `start` (default: the current pose) without changing the pose (for the compare table). */

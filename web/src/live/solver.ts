@@ -2,7 +2,7 @@
 // use it: settings in the panel's units (milliseconds), sent to WebAssembly only when they change,
 // the result's angles written into an array the caller keeps, and the E history copied out only
 // when asked for. A per-frame solve is then one call in and one result object out.
-import type { Goals } from '../ik/goals.js';
+import { type Goals, isPackedGoals, type PackedGoals } from '../ik/goals.js';
 import type { IkRig } from '../ik/rig.js';
 import { IkSolver, type SolverResult } from '../ik/solver.js';
 
@@ -53,13 +53,13 @@ export class MethodSolver {
 
   /**
    * Solves from `start` (degrees, 3 per bone) towards `target` (3 per end effector, rig units) or
-   * `goals` (positions and orientations, web/src/ik/goals.ts). The angles
-   * found are written into `out` when given (it may be `start` itself) and returned as
+   * `goals` (positions and orientations, web/src/ik/goals.ts), a Goals object or packed ones
+   * (EffectorGoals.packed: the per-frame path, checked by the core only). The angles found are written into `out` when given (it may be `start` itself) and returned as
    * `outcome.angles`; otherwise `outcome.angles` is a new array.
    */
-  solve(start: Float64Array, target: Float64Array | Goals, settings: SolveSettings, out?: Float64Array): SolveOutcome {
+  solve(start: Float64Array, target: Float64Array | Goals | PackedGoals, settings: SolveSettings, out?: Float64Array): SolveOutcome {
     this.configure(settings);
-    return this.keep(this.solver.solve(start, target, out));
+    return this.keep(isPackedGoals(target) ? this.solver.solvePacked(start, target, out) : this.solver.solve(start, target, out));
   }
 
   /** Begins an iteration-by-iteration solve; returns the state before any step. */
