@@ -11,6 +11,9 @@ export interface RigSpecArrays {
   lower: Float64Array;
   upper: Float64Array;
   effectors: Int32Array;
+  /** A floating root's bounds (x, y, z, rig units); both or neither. */
+  rootLower?: Float64Array;
+  rootUpper?: Float64Array;
 }
 
 export interface EmbindRig {

@@ -54,6 +54,15 @@ Kinematics RigBinding::build(const val& spec) {
     b.max_deg = Eigen::Map<const Eigen::Vector3d>(&upper[3 * i]);
   }
   rig.effectors = effectors;
+  const val root_lower = spec["rootLower"], root_upper = spec["rootUpper"];
+  if (!root_lower.isUndefined() || !root_upper.isUndefined()) {
+    std::vector<double> low, high;
+    copy_in(root_lower, 3, low, "rootLower (the floating root's x, y, z lower bounds, rig units)");
+    copy_in(root_upper, 3, high, "rootUpper (the floating root's x, y, z upper bounds, rig units)");
+    rig.floating_root.on = true;
+    rig.floating_root.min = Eigen::Map<const Eigen::Vector3d>(low.data());
+    rig.floating_root.max = Eigen::Map<const Eigen::Vector3d>(high.data());
+  }
   return Kinematics(std::move(rig));
 }
 

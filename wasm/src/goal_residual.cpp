@@ -57,6 +57,7 @@ void goal_jacobian(const Kinematics& kin, const GoalSet& goals, Eigen::Ref<Eigen
       for (int j : kin.effector_chain(g.effector))
         for (int a = 0; a < 3; ++a)
           jac.block<3, 1>(3 * b, 3 * j + a) = scale * kin.joint_axis(j, a).cross(p - kin.joint_origin(j));
+      if (kin.floats()) jac.block<3, 3>(3 * b, kin.root_translation()) = g.scale * Eigen::Matrix3d::Identity();
     }
   }
   if (!goals.soft_on()) return;
@@ -76,6 +77,8 @@ void goal_jacobian(const Kinematics& kin, const GoalSet& goals, Eigen::Ref<Eigen
         if (k != g.bone) column += d.shoulder * axis.cross(S - origin) + d.elbow * axis.cross(M - origin);
         jac.block<3, 1>(hard + 3 * p, 3 * k + a) = kRadPerDeg * column;
       }
+    // A floating root moves S, M and T alike.
+    if (kin.floats()) jac.block<3, 3>(hard + 3 * p, kin.root_translation()) = d.shoulder + d.elbow + d.wrist;
   }
   rest_jacobian(goals, jac.bottomRows(3 * goals.num_rest()));
 }

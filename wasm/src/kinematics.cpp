@@ -37,8 +37,12 @@ void Kinematics::precompute() {
   from_parent_.resize(n);
   frame_.assign(n, Eigen::Isometry3d::Identity());
   axes_.assign(n, Eigen::Matrix3d::Identity());
-  lower_.resize(3 * n);
-  upper_.resize(3 * n);
+  lower_.resize(num_angles());
+  upper_.resize(num_angles());
+  if (floats()) {
+    lower_.tail<3>() = rig_.floating_root.min;
+    upper_.tail<3>() = rig_.floating_root.max;
+  }
   for (int i = 0; i < n; ++i) {
     const Bone& b = rig_.bones[i];
     rest_[i].matrix() = b.rest;
@@ -68,7 +72,8 @@ void Kinematics::forward(const Eigen::Ref<const Eigen::VectorXd>& angles) {
   for (int i : order_) {
     const int p = rig_.bones[i].parent;
     // Joint frame before rotation: F = T_parent * rest_i, with T_parent = frame_p * rest_p^-1.
-    const Eigen::Isometry3d joint = (p == -1) ? from_parent_[i] : frame_[p] * from_parent_[i];
+    Eigen::Isometry3d joint = (p == -1) ? from_parent_[i] : frame_[p] * from_parent_[i];
+    if (p == -1 && floats()) joint.translation() += angles.segment<3>(3 * num_bones());
     Eigen::Matrix3d r = joint.linear();
     axes_[i].col(0) = r.col(0);                        // first x axis, before any rotation
     rotate_columns(r, 1, 2, angles[3 * i] * kRadPerDeg);
@@ -94,6 +99,7 @@ void Kinematics::current_jacobian(Eigen::Ref<Eigen::MatrixXd> jac) const {
       for (int a = 0; a < 3; ++a)
         jac.block<3, 1>(3 * k, 3 * j + a) = kRadPerDeg * axes_[j].col(a).cross(r);
     }
+    if (floats()) jac.block<3, 3>(3 * k, root_translation()).setIdentity();
   }
 }
 

@@ -3,7 +3,10 @@
 // Angles: a vector A of 3 * #bones values in DEGREES, bone i owns A[3i..3i+2] = (x, z, x).
 // The pose transform of bone i is, exactly as PROTOCOL.md composes it,
 //   T_i = T_parent * rest_i * Rx(a0) * Rz(a1) * Rx(a2) * rest_i^-1
-// and its tip is T_i * rest_i * (length, 0, 0).
+// and its tip is T_i * rest_i * (length, 0, 0). With a floating root (Rig::floating_root on) A has
+// three more values at the end, A[3 #bones..+2], in RIG UNITS: a world translation t of every
+// root, T_root = Trans(t) * rest_root * Rx Rz Rx * rest_root^-1. The solvers treat them as angles
+// with limits (the root's bounds); off, A and everything computed from it are as without it.
 // Tips: a vector of 3 * #effectors values, effector k at [3k..3k+2], in rig units.
 #pragma once
 
@@ -25,7 +28,11 @@ class Kinematics {
 
   const Rig& rig() const { return rig_; }
   int num_bones() const { return static_cast<int>(rig_.bones.size()); }
-  int num_angles() const { return 3 * num_bones(); }
+  // Unknowns: 3 per bone, plus 3 for a floating root (its translation, rig units, last).
+  int num_angles() const { return 3 * num_bones() + (floats() ? 3 : 0); }
+  bool floats() const { return rig_.floating_root.on; }
+  // Index of the floating root's x translation in the angles (3 * #bones); -1 without one.
+  int root_translation() const { return floats() ? 3 * num_bones() : -1; }
   int num_effectors() const { return static_cast<int>(rig_.effectors.size()); }
   int num_residuals() const { return 3 * num_effectors(); }
 
@@ -61,12 +68,13 @@ class Kinematics {
 
   // Writes the tips at the current pose (after forward()).
   void current_tips(Eigen::Ref<Eigen::VectorXd> tips) const;
-  // Writes the Jacobian at the current pose (after forward()).
+  // Writes the Jacobian at the current pose (after forward()). A floating root's columns are the
+  // identity in every effector's rows (rig units per rig unit).
   void current_jacobian(Eigen::Ref<Eigen::MatrixXd> jac) const;
 
-  // Clamps each angle into its [min, max] limits (degrees), in place.
+  // Clamps each angle into its [min, max] limits (degrees; a floating root's bounds, rig units), in place.
   void project(Eigen::Ref<Eigen::VectorXd> angles) const;
-  const Eigen::VectorXd& lower() const { return lower_; }  // #angles lower limits, degrees
+  const Eigen::VectorXd& lower() const { return lower_; }  // #angles lower limits, degrees (root: rig units)
   const Eigen::VectorXd& upper() const { return upper_; }  // #angles upper limits, degrees
 
  private:

@@ -68,6 +68,18 @@ void check_limits(const Rig& rig, int i) {
   }
 }
 
+void check_floating_root(const FloatingRoot& root) {
+  if (!root.on) return;
+  const char* axis[] = {"x", "y", "z"};
+  for (int k = 0; k < 3; ++k) {
+    const std::string name = std::string("floating root's ") + axis[k] + " bounds";
+    if (!std::isfinite(root.min[k]) || !std::isfinite(root.max[k])) throw RigError(name + " are not finite");
+    if (std::abs(root.min[k]) > kMaxCoordinate || std::abs(root.max[k]) > kMaxCoordinate)
+      throw RigError(name + " lie past 1e9 rig units (the largest size the core takes)");
+    if (root.min[k] > root.max[k]) throw RigError(name + " have min > max");
+  }
+}
+
 }  // namespace
 
 void validate_rig(const Rig& rig) {
@@ -95,6 +107,7 @@ void validate_rig(const Rig& rig) {
     check_limits(rig, i);
   }
   parents_first(rig);  // throws on a cycle
+  check_floating_root(rig.floating_root);
   validate_effectors(rig, rig.effectors);
 }
 
@@ -104,7 +117,8 @@ void validate_effectors(const Rig& rig, const std::vector<int>& effectors) {
   if (effectors.size() > static_cast<size_t>(kMaxEffectors))
     throw RigError(std::to_string(effectors.size()) + " end effectors; the core takes at most " +
                    std::to_string(kMaxEffectors));
-  const long long entries = 9LL * static_cast<long long>(effectors.size()) * n;
+  const long long columns = 3LL * n + (rig.floating_root.on ? 3 : 0);
+  const long long entries = 3LL * static_cast<long long>(effectors.size()) * columns;
   if (entries > kMaxMatrixEntries)
     throw RigError(std::to_string(effectors.size()) + " end effectors on " + std::to_string(n) +
                    " bones make a Jacobian of " + std::to_string(entries) + " numbers; the core takes at most " +

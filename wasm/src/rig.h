@@ -21,9 +21,20 @@ struct Bone {
   Eigen::Vector3d max_deg = Eigen::Vector3d::Constant(kUnbounded);   // XZX upper limits, degrees
 };
 
+// An optional translation of the whole rig (every root bone moves by it), solved for like the
+// angles when `on`: three more unknowns after the 3 * #bones angles, in RIG UNITS (world x, y, z,
+// added to the roots' rest translation), within [min, max]. Off (the default), the rig's roots stay
+// where their rest transforms put them and nothing else changes.
+struct FloatingRoot {
+  bool on = false;
+  Eigen::Vector3d min = Eigen::Vector3d::Zero();  // rig units, finite, each <= max
+  Eigen::Vector3d max = Eigen::Vector3d::Zero();
+};
+
 struct Rig {
   std::vector<Bone> bones;
   std::vector<int> effectors;  // bone indices; each bone's tip is an end effector
+  FloatingRoot floating_root;
 };
 
 // Thrown for any invalid rig or solver input; the message names the bone and the field.
@@ -35,8 +46,9 @@ class RigError : public std::runtime_error {
 // Checks a rig and throws RigError naming the first problem found:
 // parent out of range, a parent cycle, a non-finite number, a rest transform that is not rigid,
 // a limit with min > max or with no angle within +-kMaxLimitDeg, a negative length, a length or
-// rest translation past kMaxCoordinate, an end effector that is not a bone, or a rig past the
-// limits of size_limits.h. Linear in the number of bones.
+// rest translation past kMaxCoordinate, an end effector that is not a bone, a floating root's
+// bound that is not finite, past kMaxCoordinate or with min > max, or a rig past the limits of
+// size_limits.h. Linear in the number of bones.
 void validate_rig(const Rig& rig);
 
 // Checks `effectors` as an end-effector list of `rig` (bone indices, none twice, at least one,

@@ -29,6 +29,10 @@ void BlockPattern::build(const Kinematics& kin, const GoalSet& goals) {
   blocks_of_.clear();
   for (int j = 0; j < n; ++j) {
     start_[j] = static_cast<int>(blocks_of_.size());
+    if (j >= 3 * kin.num_bones()) {  // a floating root's translation moves every block
+      for (int k = 0; k < blocks_; ++k) blocks_of_.push_back(k);
+      continue;
+    }
     blocks_of_.insert(blocks_of_.end(), bone_blocks.begin() + per_bone[j / 3], bone_blocks.begin() + per_bone[j / 3 + 1]);
   }
   start_[n] = static_cast<int>(blocks_of_.size());

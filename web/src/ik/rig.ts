@@ -31,6 +31,12 @@ function specArrays(spec: RigSpec): RigSpecArrays {
     lower: toFloat64(spec.lower, 'lower (3 limits per bone, degrees)', 3 * n, false),
     upper: toFloat64(spec.upper, 'upper (3 limits per bone, degrees)', 3 * n, false),
     effectors: toInt32(spec.effectors, 'effectors'),
+    ...(spec.floatingRoot === undefined
+      ? {}
+      : {
+          rootLower: toFloat64(spec.floatingRoot?.lower, 'floatingRoot.lower (x, y, z, rig units)', 3),
+          rootUpper: toFloat64(spec.floatingRoot?.upper, 'floatingRoot.upper (x, y, z, rig units)', 3),
+        }),
   };
 }
 
@@ -39,7 +45,7 @@ export class IkRig {
   readonly handle: EmbindRig;
   readonly numBones: number;
   readonly numAngles: number;
-  /** Lower and upper limits, 3 per bone, degrees. */
+  /** Lower and upper limits, 3 per bone, degrees; then a floating root's 3 bounds, rig units. */
   readonly lower: Float64Array;
   readonly upper: Float64Array;
   private disposed = false;

@@ -16,6 +16,12 @@ export interface RigSpec {
   upper: Float64Array;
   /** Bone indices whose tips are end effectors. */
   effectors: Int32Array;
+  /**
+   * A floating root: the whole rig moves by a translation the solvers find, within these bounds
+   * (world x, y, z, rig units, finite, lower <= upper), as three more unknowns after the angles
+   * (IkRig.numAngles is 3 per bone + 3). Absent: the roots stay where their rest transforms put them.
+   */
+  floatingRoot?: { lower: ArrayLike<number>; upper: ArrayLike<number> };
 }
 
 /** Number of bones of a spec. */

@@ -1,0 +1,173 @@
+// A floating root (rig.h FloatingRoot): three more unknowns, the whole rig's translation in rig
+// units within bounds. Off, nothing changes (the angles, the limits, the Jacobian). On, forward
+// kinematics moves every tip by it, the analytic Jacobian (positions, orientations, poles, rest
+// rows) matches central differences, and every registered method reaches a target beyond the
+// chain's reach by moving the root, never past its bounds; a bad bound is refused by name.
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "goal_residual.h"
+#include "kinematics.h"
+#include "small_rigs.h"
+#include "solvers/solver_registry.h"
+
+namespace ik {
+namespace {
+
+// A trunk with two two-bone arms (limits +-120 degrees), effectors at both hands, and a floating
+// root within [-2, 2] x [-1, 0.5] x [-2, 2] when `floating`.
+Rig two_arms(bool floating) {
+  Rig rig;
+  const int trunk = test::add_bone(rig, -1, Eigen::Vector3d(0, 0, 0), 1, 120, "trunk");
+  const int upper_l = test::add_bone(rig, trunk, Eigen::Vector3d(1, 0.2, 0), 1, 120, "upper.L");
+  const int hand_l = test::add_bone(rig, upper_l, Eigen::Vector3d(2, 0.2, 0), 1, 120, "hand.L");
+  const int upper_r = test::add_bone(rig, trunk, Eigen::Vector3d(1, -0.2, 0), 1, 120, "upper.R");
+  const int hand_r = test::add_bone(rig, upper_r, Eigen::Vector3d(2, -0.2, 0), 1, 120, "hand.R");
+  rig.effectors = {hand_l, hand_r};
+  rig.floating_root.on = floating;
+  rig.floating_root.min = Eigen::Vector3d(-2, -1, -2);
+  rig.floating_root.max = Eigen::Vector3d(2, 0.5, 2);
+  return rig;
+}
+
+// A pose of `kin` with random angles within +-40 degrees and, when it floats, translation t.
+Eigen::VectorXd pose(const Kinematics& kin, std::mt19937_64& rng, const Eigen::Vector3d& t) {
+  std::uniform_real_distribution<double> u(-40, 40);
+  Eigen::VectorXd a(kin.num_angles());
+  for (int j = 0; j < 3 * kin.num_bones(); ++j) a[j] = u(rng);
+  if (kin.floats()) a.tail<3>() = t;
+  return a;
+}
+
+TEST(FloatingRoot, OffChangesNothing) {
+  Kinematics fixed(two_arms(false)), plain(two_arms(false));
+  EXPECT_EQ(fixed.num_angles(), 15);
+  EXPECT_EQ(fixed.root_translation(), -1);
+  EXPECT_EQ(fixed.lower().size(), 15);
+  std::mt19937_64 rng(3);
+  const Eigen::VectorXd a = pose(fixed, rng, Eigen::Vector3d::Zero());
+  Eigen::VectorXd tips(6);
+  Eigen::MatrixXd J(6, 15);
+  fixed.jacobian(a, tips, J);
+  EXPECT_EQ(J.cols(), 15);
+  EXPECT_TRUE(J.allFinite());
+}
+
+TEST(FloatingRoot, MovesEveryTipByItsTranslation) {
+  Kinematics fixed(two_arms(false)), floating(two_arms(true));
+  ASSERT_EQ(floating.num_angles(), 18);
+  ASSERT_EQ(floating.root_translation(), 15);
+  EXPECT_TRUE((floating.lower().tail<3>() == Eigen::Vector3d(-2, -1, -2)));
+  EXPECT_TRUE((floating.upper().tail<3>() == Eigen::Vector3d(2, 0.5, 2)));
+  std::mt19937_64 rng(5);
+  const Eigen::Vector3d t(0.7, -0.3, 1.1);
+  const Eigen::VectorXd a = pose(floating, rng, t);
+  Eigen::VectorXd moved(6), still(6);
+  floating.tips(a, moved);
+  fixed.tips(a.head(15), still);
+  for (int k = 0; k < 2; ++k) EXPECT_LT((moved.segment<3>(3 * k) - still.segment<3>(3 * k) - t).norm(), 1e-12);
+  for (int b = 0; b < floating.num_bones(); ++b)
+    EXPECT_LT((floating.tip_rotation(b) - fixed.tip_rotation(b)).norm(), 1e-15) << "a translation turns nothing";
+}
+
+// The largest difference between goal_jacobian() and central differences of the residual, over
+// the largest entry (step h: degrees for angles, rig units for the root).
+double jacobian_error(Kinematics& kin, const GoalSet& goals, Eigen::VectorXd a, double h = 1e-5) {
+  const int m = goals.rows(), n = kin.num_angles();
+  Eigen::MatrixXd analytic(m, n), numeric(m, n);
+  Eigen::VectorXd plus(m), minus(m);
+  goal_objective(kin, goals, a, plus);
+  goal_jacobian(kin, goals, analytic);
+  for (int j = 0; j < n; ++j) {
+    const double keep = a[j];
+    a[j] = keep + h;
+    goal_objective(kin, goals, a, plus);
+    a[j] = keep - h;
+    goal_objective(kin, goals, a, minus);
+    a[j] = keep;
+    numeric.col(j) = (plus - minus) / (2 * h);
+  }
+  return (analytic - numeric).cwiseAbs().maxCoeff() / std::max(numeric.cwiseAbs().maxCoeff(), 1e-12);
+}
+
+TEST(FloatingRoot, JacobianMatchesCentralDifferencesForEveryKindOfRow) {
+  Kinematics kin(two_arms(true));
+  std::mt19937_64 rng(11);
+  for (int trial = 0; trial < 5; ++trial) {
+    const Eigen::VectorXd a = pose(kin, rng, Eigen::Vector3d(0.3 * trial, -0.2, 0.1));
+    kin.forward(a);
+    Goals goals;
+    goals.effectors.resize(2);
+    goals.effectors[0].position_target = kin.tip(2) + Eigen::Vector3d(0.2, -0.1, 0.3);
+    goals.effectors[0].orientation = true;
+    goals.effectors[0].orientation_target =
+        kin.tip_rotation(2) * Eigen::AngleAxisd(0.4, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
+    goals.effectors[1].position_target = kin.tip(4) + Eigen::Vector3d(-0.3, 0.2, 0);
+    PoleGoal pole;
+    pole.bone = 4;
+    pole.point = kin.joint_origin(4) + Eigen::Vector3d(0.3, 0.8, -0.5);
+    goals.poles.push_back(pole);
+    GoalSet set;
+    ASSERT_EQ(set.set(kin, goals), "");
+    set.set_rest(kin, 0.5, true, a);
+    // Plain targets (Kinematics' own Jacobian) as well as goals with every kind of row.
+    Eigen::VectorXd tips(6), target(6);
+    Eigen::MatrixXd J(6, kin.num_angles());
+    kin.jacobian(a, tips, J);
+    EXPECT_TRUE((J.block<3, 3>(0, 15) == Eigen::Matrix3d::Identity()));
+    EXPECT_TRUE((J.block<3, 3>(3, 15) == Eigen::Matrix3d::Identity()));
+    EXPECT_LT(jacobian_error(kin, set, a), 1e-6) << "trial " << trial;
+  }
+}
+
+TEST(FloatingRoot, EveryMethodReachesPastTheChainByMovingTheRootWithinItsBounds) {
+  for (const std::string& method : solver_names()) {
+    Kinematics kin(two_arms(true));
+    const Eigen::VectorXd start = Eigen::VectorXd::Zero(kin.num_angles());
+    Eigen::VectorXd tips(6);
+    kin.tips(start, tips);
+    // Both hands 1.5 units along +z: out of the arms' reach from a fixed trunk, within the root's.
+    Eigen::VectorXd target = tips;
+    target[2] += 1.5;
+    target[5] += 1.5;
+    SolverOptions options;
+    options.tip_tolerance = 1e-4;
+    options.time_budget_s = 2;
+    auto solver = make_solver(method, kin, options);
+    const SolverSummary& s = solver->solve(start, target);
+    EXPECT_TRUE(s.reached) << method << ": " << stop_reason_name(s.stop_reason) << ", tip " << s.tip_distance;
+    kin.tips(s.angles, tips);
+    EXPECT_LT((tips - target).cwiseAbs().maxCoeff(), 1e-4) << method;
+    // Now below the root's lower y bound by 2: the root stops at -1.
+    target = tips;
+    target[1] -= 2;
+    target[4] -= 2;
+    const SolverSummary& low = solver->solve(s.angles, target);
+    EXPECT_GE(low.angles[16], -1) << method;
+    EXPECT_FALSE(low.reached) << method;
+  }
+}
+
+TEST(FloatingRoot, RefusesBadBoundsByName) {
+  Rig rig = two_arms(true);
+  rig.floating_root.min.y() = 1;  // above its max, 0.5
+  EXPECT_THROW(
+      {
+        try {
+          Kinematics kin(rig);
+        } catch (const RigError& e) {
+          EXPECT_STREQ(e.what(), "floating root's y bounds have min > max");
+          throw;
+        }
+      },
+      RigError);
+  rig = two_arms(true);
+  rig.floating_root.max.z() = kUnbounded;
+  EXPECT_THROW(Kinematics kin(rig), RigError);
+  rig.floating_root.on = false;  // off: its bounds are not read
+  EXPECT_NO_THROW(Kinematics kin(rig));
+}
+
+}  // namespace
+}  // namespace ik
