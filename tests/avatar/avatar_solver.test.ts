@@ -1,0 +1,138 @@
+// The avatar solver (web/src/avatar/avatar_solver.ts) on the project's 65-joint character: three
+// tracked points (head and hands, positions and frames) drive the whole body, frame after frame.
+// - An upper-body motion (the spine, neck, head, shoulders and arms swaying on sines within their
+//   limits, as a recorded clip would): the head and hands within δ (0.1% of the height) and 0.5° on
+//   every frame, the feet where they stood, the joints near the motion's own (mean per-joint
+//   error), and the same poses from the same stream twice (deterministic).
+// - A crouch (the head and hands lowered by a quarter of the height): the floating hips go down,
+//   the feet stay planted and the knees bend the anatomical way.
+import { resolve } from 'node:path';
+
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+
+import { bentAgainst, flipLimbs } from '../../bench-node/flips.js';
+import { AvatarSolver, type AvatarInput } from '../../web/src/avatar/avatar_solver.js';
+import type { IkCoreModule } from '../../web/src/ik/module.js';
+import { loadIkNode } from '../../web/src/ik/node.js';
+import { IkRig } from '../../web/src/ik/rig.js';
+import { IkSession } from '../../web/src/live/session.js';
+import type { LoadedRig } from '../../web/src/rig/load_rig.js';
+import { loadRigFromPath } from '../../web/src/rig/load_rig_node.js';
+
+let ik: IkCoreModule;
+let character: LoadedRig;
+beforeAll(async () => {
+  ik = await loadIkNode();
+  character = await loadRigFromPath(resolve(import.meta.dirname, '../../web/public/models/character.glb'));
+});
+afterAll(() => expect(IkSession.alive.sessions).toBe(0));
+
+/** The angle, degrees, between two unit quaternions [x, y, z, w]. */
+function turnDeg(a: ArrayLike<number>, b: ArrayLike<number>): number {
+  const d = Math.abs(a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + a[3] * b[3]);
+  return (2 * Math.acos(Math.min(1, d)) * 180) / Math.PI;
+}
+
+function distance(a: ArrayLike<number>, b: ArrayLike<number>, k: number): number {
+  return Math.hypot(a[3 * k] - b[3 * k], a[3 * k + 1] - b[3 * k + 1], a[3 * k + 2] - b[3 * k + 2]);
+}
+
+/** The tracked points of pose `tips`, `rotations` (effector order: head, left hand, right hand). */
+function trackedOf(tips: Float64Array, rotations: Float64Array): AvatarInput {
+  const at = (k: number) => ({ position: tips.subarray(3 * k, 3 * k + 3), orientation: rotations.subarray(4 * k, 4 * k + 4) });
+  return { head: at(0), leftHand: at(1), rightHand: at(2) };
+}
+
+const UPPER_BODY = ['spine', 'chest', 'upperChest', 'neck', 'head', 'leftShoulder', 'leftUpperArm', 'leftLowerArm', 'leftHand', 'rightShoulder', 'rightUpperArm', 'rightLowerArm', 'rightHand'] as const;
+
+/** Frame f (60 per second) of the upper-body motion: each angle of the moving bones on its own sine, within its limits. */
+function swayFrame(rig: IkRig, bones: number[], f: number, out: Float64Array): void {
+  const t = f / 60;
+  out.fill(0);
+  bones.forEach((b, i) => {
+    for (let k = 0; k < 3; k++) {
+      const j = 3 * b + k, lo = rig.lower[j], hi = rig.upper[j];
+      const mid = Math.max(lo, Math.min(hi, 0)), span = Math.min(hi - mid, mid - lo, 60);
+      out[j] = mid + 0.6 * span * Math.sin(2 * Math.PI * (0.15 + 0.05 * ((i + k) % 5)) * t + i + 2 * k);
+    }
+  });
+  rig.project(out);
+}
+
+/** Tracks `frames` of the sway; per frame the worst tracked-point distance (δ), turn (degrees), foot distance (δ), mean joint error (height). */
+function trackSway(frames: number): { tip: number[]; turn: number[]; foot: number[]; mpjpe: number[]; last: Float64Array } {
+  const avatar = new AvatarSolver(ik, character.spec, character.gltf!.humanoid!);
+  const truth = new IkRig(ik, avatar.session.spec);
+  try {
+    const humanoid = character.gltf!.humanoid!;
+    const bones = UPPER_BODY.map((role) => humanoid.bones[role]).filter((b): b is number => b !== undefined);
+    const delta = 1e-3 * avatar.height, numBones = character.spec.parents.length;
+    const planted = avatar.session.tips();
+    const a = new Float64Array(truth.numAngles);
+    const out = { tip: [] as number[], turn: [] as number[], foot: [] as number[], mpjpe: [] as number[], last: a };
+    for (let f = 0; f < frames; f++) {
+      swayFrame(truth, bones, f, a);
+      const tips = truth.tips(a), rotations = truth.tipRotations(a);
+      avatar.update(trackedOf(tips, rotations));
+      const mine = avatar.session.tips(), turned = avatar.session.tipRotations();
+      out.tip.push(Math.max(...[0, 1, 2].map((k) => distance(mine, tips, k))) / delta);
+      out.turn.push(Math.max(...[0, 1, 2].map((k) => turnDeg(turned.subarray(4 * k, 4 * k + 4), rotations.subarray(4 * k, 4 * k + 4)))));
+      out.foot.push(Math.max(distance(mine, planted, 3), distance(mine, planted, 4)) / delta);
+      const joints = truth.boneTips(a), ours = avatar.session.rig.boneTips(avatar.angles);
+      let sum = 0;
+      for (let b = 0; b < numBones; b++) sum += distance(joints, ours, b);
+      out.mpjpe.push(sum / numBones / avatar.height);
+    }
+    out.last = avatar.angles.slice();
+    return out;
+  } finally {
+    truth.dispose();
+    avatar.dispose();
+  }
+}
+
+describe('three tracked points drive the character', () => {
+  it('follows an upper-body motion: head and hands within δ and 0.5° on every frame, feet planted, joints near the motion, deterministic', () => {
+    const run = trackSway(240);
+    const mean = (xs: number[]) => xs.reduce((s, x) => s + x, 0) / xs.length;
+    expect(Math.max(...run.tip)).toBeLessThan(1);
+    expect(Math.max(...run.turn)).toBeLessThan(0.5);
+    expect(Math.max(...run.foot)).toBeLessThan(1);
+    expect(mean(run.mpjpe)).toBeLessThan(0.01); // measured 0.14% of the height
+    expect(Array.from(trackSway(240).last)).toEqual(Array.from(run.last));
+  });
+
+  it('crouches from the hips: the head and hands lowered by a quarter of the height, the feet stay, the knees bend forward', () => {
+    const humanoid = character.gltf!.humanoid!;
+    const avatar = new AvatarSolver(ik, character.spec, humanoid);
+    try {
+      const s = avatar.session, h = avatar.height, delta = 1e-3 * h;
+      const start = s.tips(), rotations = s.tipRotations();
+      const knees = flipLimbs(s.spec, humanoid).filter((l) => l.bone === humanoid.bones.leftLowerLeg || l.bone === humanoid.bones.rightLowerLeg);
+      expect(knees.length).toBe(2);
+      const lowered = new Float64Array(start);
+      let onTarget = 0;
+      const frames = 90;
+      for (let f = 1; f <= frames; f++) {
+        const down = 0.25 * h * Math.min(1, f / 60);
+        for (const k of [0, 1, 2]) lowered[3 * k + 1] = start[3 * k + 1] - down;
+        avatar.update(trackedOf(lowered, rotations));
+        const tips = s.tips();
+        if ([0, 1, 2].every((k) => distance(tips, lowered, k) < delta)) onTarget++;
+        for (const k of [3, 4]) expect(distance(tips, start, k)).toBeLessThan(delta);
+        const poses = s.poses();
+        for (const knee of knees) expect(bentAgainst(s.spec, knee, poses)).toBe(false);
+      }
+      expect(onTarget).toBe(frames);
+      const root = avatar.angles.subarray(3 * character.spec.parents.length);
+      expect(root[1]).toBeLessThan(-0.2 * h); // the hips went down (measured 0.218 of the height)
+    } finally {
+      avatar.dispose();
+    }
+  });
+
+  it('names the humanoid bones it needs when a rig lacks them', () => {
+    const humanoid = { ...character.gltf!.humanoid!, bones: { ...character.gltf!.humanoid!.bones, leftFoot: undefined } };
+    expect(() => new AvatarSolver(ik, character.spec, humanoid)).toThrow('the avatar needs these humanoid bones, not found: leftFoot');
+  });
+});

@@ -1,0 +1,128 @@
+// A whole body from three tracked points (issue 29): the head's and both hands' positions and
+// orientations in, every joint out, on any recognised humanoid. The rig floats (its hips move,
+// rig.h FloatingRoot), its feet stay planted where they stood, its elbows and knees keep poles
+// that follow the way they bend, and each update() is one solve from the last pose, as the page solves
+// a frame: Levenberg-Marquardt with strict priority, no restarts, the joints' speed bounded. No
+// three.js and no DOM: a page, a widget or a Node script drives it.
+// Not yet: the feet stepping when the body leaves them behind, the 6-point input (hips and feet),
+// the spine's rest pull; and speed (a frame takes a median 0.3 ms in Node on the 65-joint
+// character, mostly the knees' soft rows run towards their optimum).
+import type { IkCoreModule } from '../ik/module.js';
+import type { RigSpec } from '../ik/rig_spec.js';
+import { type PoleLimb, poleLimbs } from '../live/pole_limbs.js';
+import { initialPole } from '../live/pole_placement.js';
+import { IkSession } from '../live/session.js';
+import type { SolveOutcome, SolveSettings } from '../live/solver.js';
+import type { HumanoidMap, HumanoidRole } from '../rig/humanoid_roles.js';
+import { dragTolerances, rigSize } from '../rig/tolerances.js';
+
+/** A tracked pose: a position (rig units) and an orientation, a unit quaternion [x, y, z, w] of the bone's frame, rig coordinates. */
+export interface TrackedPose {
+  position: ArrayLike<number>;
+  orientation: ArrayLike<number>;
+}
+
+/** One frame of tracking: the head and both hands. */
+export interface AvatarInput {
+  head: TrackedPose;
+  leftHand: TrackedPose;
+  rightHand: TrackedPose;
+}
+
+/** The tracked bones in effector order, then the planted feet. */
+const TRACKED: readonly HumanoidRole[] = ['head', 'leftHand', 'rightHand'];
+const PLANTED: readonly HumanoidRole[] = ['leftFoot', 'rightFoot'];
+
+/** How far the hips may move from where they stand, as shares of the height: sideways and forward, down, up. */
+const ROOT_REACH = { across: 1, down: 0.6, up: 0.1 };
+
+/**
+ * Per-frame solve: at most this many iterations (the page's cap), so that a stream of inputs gives
+ * the same poses on any machine; the time budget only guards against a runaway (a solve that hits
+ * it depends on the machine's speed).
+ */
+const FRAME_ITERATIONS = 50;
+const FRAME_BUDGET_MS = 100;
+
+/** Height of a rig at rest: the vertical extent of its bone tips (rig units). */
+export function restHeight(boneTips: ArrayLike<number>): number {
+  let lo = Infinity, hi = -Infinity;
+  for (let i = 1; i < boneTips.length; i += 3) {
+    lo = Math.min(lo, boneTips[i]);
+    hi = Math.max(hi, boneTips[i]);
+  }
+  return hi > lo ? hi - lo : rigSize(boneTips);
+}
+
+export class AvatarSolver {
+  /** The live state: the rig (floating), the pose, the targets and goals. */
+  readonly session: IkSession;
+  /** The rig's height at rest, rig units; δ, the tip tolerance, is 0.1% of it. */
+  readonly height: number;
+  private readonly settings: SolveSettings;
+  private readonly limbs: PoleLimb[];
+  private readonly poleBones: number[];
+
+  /**
+   * An avatar of `spec` (a humanoid's rig, its limits in place) mapped by `humanoid`, standing in
+   * its rest pose. Throws an Error naming the roles missing for tracking.
+   */
+  constructor(module: IkCoreModule, spec: RigSpec, humanoid: HumanoidMap) {
+    const bones = [...TRACKED, ...PLANTED].map((role) => humanoid.bones[role]);
+    const missing = [...TRACKED, ...PLANTED].filter((_, i) => bones[i] === undefined);
+    if (missing.length > 0) throw new Error(`the avatar needs these humanoid bones, not found: ${missing.join(', ')}`);
+    const probe = new IkSession(module, spec);
+    const tips = probe.rig.boneTips(probe.angles);
+    probe.dispose();
+    this.height = restHeight(tips);
+    const h = this.height;
+    const floating: RigSpec = {
+      ...spec,
+      effectors: Int32Array.from(bones as number[]),
+      floatingRoot: { lower: [-ROOT_REACH.across * h, -ROOT_REACH.down * h, -ROOT_REACH.across * h], upper: [ROOT_REACH.across * h, ROOT_REACH.up * h, ROOT_REACH.across * h] },
+    };
+    this.session = new IkSession(module, floating);
+    const drag = dragTolerances(h);
+    this.settings = { ...drag, maxIterations: FRAME_ITERATIONS, timeBudgetMs: FRAME_BUDGET_MS, restarts: 0, paperMode: false, strictPriority: true };
+    const s = this.session;
+    // Every effector holds its frame: the tracked ones the tracker's, the feet where they stand.
+    const rotations = s.tipRotations();
+    for (let k = 0; k < bones.length; k++) s.setOrientationGoal(k, true, rotations.subarray(4 * k, 4 * k + 4));
+    // Poles on the knees only: they give a straight leg the way to bend when the hips go down. The
+    // arms take none: a hand's position and frame leave its elbow one turn about the shoulder-wrist
+    // line, which each frame's least change from the last keeps (a fixed pole pulled it off the
+    // tracked hand on 30% of the frames of an arm motion).
+    const knees = [humanoid.bones.leftLowerLeg, humanoid.bones.rightLowerLeg];
+    this.limbs = poleLimbs(floating, s.effectors(), humanoid).filter((l) => knees.includes(l.bone));
+    this.poleBones = this.limbs.map((l) => l.bone);
+    this.placePoles();
+  }
+
+  /** The current pose: 3 angles per bone (degrees), then the root's translation (rig units). Always this array. */
+  get angles(): Float64Array {
+    return this.session.angles;
+  }
+
+  /** Solves one frame towards `input` from the last pose; the pose is the result. */
+  update(input: AvatarInput): SolveOutcome {
+    const s = this.session;
+    const tracked = [input.head, input.leftHand, input.rightHand];
+    for (let k = 0; k < tracked.length; k++) {
+      for (let i = 0; i < 3; i++) s.targets[3 * k + i] = tracked[k].position[i];
+      for (let i = 0; i < 4; i++) s.goals.rotations[4 * k + i] = tracked[k].orientation[i];
+    }
+    this.placePoles();
+    return s.solve('lm', this.settings);
+  }
+
+  /** The knees' poles where they bend now (one leg length out the way each knee bends): they follow the body. */
+  private placePoles(): void {
+    const goals = this.session.goals, poses = this.session.poses();
+    if (goals.poleBones.length !== this.poleBones.length) goals.setPoles(this.poleBones, new Float64Array(3 * this.poleBones.length));
+    this.limbs.forEach((limb, j) => goals.polePoints.set(initialPole(this.session.spec, poses, limb), 3 * j));
+  }
+
+  dispose(): void {
+    this.session.dispose();
+  }
+}
