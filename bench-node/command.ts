@@ -17,6 +17,7 @@ import { makeProgress } from './progress.js';
 import { resolveRigPaths } from './rigs.js';
 import { engineRatioTable, groupRows, renderTable, resultsTable, type Table } from './table.js';
 import { timeToSuccessTable } from './time_to_success.js';
+import { runTrackCommand } from './track_command.js';
 
 /** Where the command writes: the tables (stdout), errors and notes (stderr). */
 export interface CommandIo {
@@ -81,6 +82,10 @@ async function main(argv: string[], io: CommandIo): Promise<number> {
   const outputs = [['--json', opts.json], ['--csv', opts.csv], ['--markdown', opts.markdown]] as const;
   checkOutputs(outputs, [...resolveRigPaths(opts.rigs), ...(opts.compare ? [opts.compare] : [])]);
   tryOutputs(outputs);
+  if (opts.track) {
+    await runTrackCommand(opts, ik, io.out, `npm run bench -- ${argv.join(' ')}`);
+    return 0;
+  }
   const reference = opts.compare ? readReferenceCsv(opts.compare) : undefined;
   const rigs = await prepareRigs(opts, ik);
   if (opts.experiments.includes('gestures'))

@@ -19,6 +19,9 @@ export const peerMethods: readonly string[] = ['three-ccd', 'closed-chain-ik'];
 export type Engine = 'wasm' | 'native';
 export const engines: readonly Engine[] = ['wasm', 'native'];
 
+/** The track experiment's name (track.ts); it runs alone. */
+const TRACK = 'track';
+
 export function isPeer(method: string): boolean {
   return (peerMethods as readonly string[]).includes(method);
 }
@@ -59,6 +62,8 @@ export interface BenchOptions {
   warmUpMs: number;
   /** What each effector's target is: its tip position (the protocol's), or its tip frame's pose (pose_goals.ts). */
   goals: GoalsKind;
+  /** The track experiment (track.ts) instead of the others: the clips to run ('all': every one) and the tracked points. */
+  track?: { clips: string[] | 'all'; points: number };
 }
 
 /** Solves of one method per experiment: the default, and the largest --samples value. */
@@ -184,7 +189,9 @@ function program(allMethods: readonly string[], defaultMethods: readonly string[
   return new Command('bench')
     .description("Benchmarks the IK solvers on the report's target sets and more (see bench-node/README.md).")
     .addOption(new Option('--rig <paths>', `rig files (.glb, .gltf, A7 .json) or project rig names, comma-separated${merged}`).argParser(collect).makeOptionMandatory())
-    .addOption(new Option('--experiment <list>', `experiments: ${experiments.join(', ')}${merged}`).argParser(collect).default('random,incremental'))
+    .addOption(new Option('--experiment <list>', `experiments: ${experiments.join(', ')}, or track alone${merged}`).argParser(collect).default('random,incremental'))
+    .addOption(single('--clips <list>', 'track: the animation clips to run, comma-separated, or all', 'all'))
+    .addOption(single('--points <n>', 'track: tracked points, 3 (head and hands)', '3'))
     .addOption(new Option('--methods <list>', `methods: ${allMethods.join(', ')} (kdl: --engine native only)${merged}`).argParser(collect).default(defaultMethods.join(',')))
     .addOption(single('--samples <n>', `samples per experiment (at most ${MAX_SAMPLES}); per-method overrides like 1000,gd=100`, String(DEFAULT_SAMPLES)))
     .addOption(single('--seed <s>', 'seed of the target sets', '1'))
@@ -230,6 +237,8 @@ interface RawOptions {
   compare?: string;
   progress: boolean;
   warmUp: string;
+  clips: string;
+  points: string;
 }
 
 /**
@@ -258,7 +267,7 @@ export function parseOptions(argv: string[], isTTY: boolean, ownMethods: readonl
   const raw = cmd.opts<RawOptions>();
   const opts: BenchOptions = {
     rigs: lists('--rig', raw.rig),
-    experiments: pick('--experiment', raw.experiment, experiments, 'experiment'),
+    experiments: pick('--experiment', raw.experiment, [...experiments, TRACK], 'experiment').filter((e): e is Experiment => e !== TRACK),
     methods: pick('--methods', raw.methods, allMethods, 'method'),
     samples: parseSamples(raw.samples, allMethods),
     samplesGiven: cmd.getOptionValueSource('samples') !== 'default',
@@ -279,6 +288,17 @@ export function parseOptions(argv: string[], isTTY: boolean, ownMethods: readonl
     warmUpMs: integerIn('--warm-up', raw.warmUp, 0, MAX_WARM_UP_MS),
     goals: pickOne('--goals', raw.goals, goalsKinds, 'goal kind'),
   };
+  const track = lists('--experiment', raw.experiment).includes(TRACK);
+  if (track) {
+    if (opts.experiments.length > 0) throw usage(`--experiment: track runs alone, not with ${opts.experiments.join(', ')}`);
+    const points = integerIn('--points', raw.points, 3, 6);
+    if (points !== 3) throw usage('--points: only 3 (head and hands) so far; hips and feet as inputs are not built yet');
+    if (opts.markdown || opts.compare) throw usage(`${opts.markdown ? '--markdown' : '--compare'} goes with the other experiments, not track`);
+    opts.track = { clips: raw.clips.trim() === 'all' ? 'all' : lists('--clips', raw.clips), points };
+    return opts;
+  }
+  for (const flag of ['--clips', '--points'] as const)
+    if (cmd.getOptionValueSource(flag.slice(2)) !== 'default') throw usage(`${flag} goes with --experiment track only`);
   opts.methods = checkGoals(opts.goals, opts.methods, cmd.getOptionValueSource('methods') !== 'default', opts.experiments, opts.paper, opts.compare !== undefined);
   const nativeOnly = opts.methods.find(isNativeOnly);
   if (nativeOnly !== undefined && !opts.engines.includes('native'))

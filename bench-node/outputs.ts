@@ -114,7 +114,8 @@ export function checkOutputs(outputs: ReadonlyArray<readonly [flag: string, file
   }
 }
 
-function write(file: string, text: string): void {
+/** Writes `text` to `file`; throws BenchError naming the file when it cannot. */
+export function writeText(file: string, text: string): void {
   try {
     writeFileSync(file, text);
   } catch (e) {
@@ -123,7 +124,7 @@ function write(file: string, text: string): void {
 }
 
 export function writeJson(file: string, rows: readonly Row[], info: RunInfo): void {
-  write(file, `${JSON.stringify({ rows, run: info }, (_, v: unknown) => (typeof v === 'number' && !Number.isFinite(v) ? null : v), 2)}\n`);
+  writeText(file, `${JSON.stringify({ rows, run: info }, (_, v: unknown) => (typeof v === 'number' && !Number.isFinite(v) ? null : v), 2)}\n`);
 }
 
 const csvColumns = [
@@ -144,7 +145,7 @@ export function csvText(rows: readonly Row[]): string {
 }
 
 export function writeCsv(file: string, rows: readonly Row[]): void {
-  write(file, csvText(rows));
+  writeText(file, csvText(rows));
 }
 
 export function markdownText(tables: readonly Table[], info: RunInfo, notes: readonly string[]): string {
@@ -172,5 +173,5 @@ export function markdownText(tables: readonly Table[], info: RunInfo, notes: rea
 }
 
 export function writeMarkdown(file: string, tables: readonly Table[], info: RunInfo, notes: readonly string[]): void {
-  write(file, markdownText(tables, info, notes));
+  writeText(file, markdownText(tables, info, notes));
 }

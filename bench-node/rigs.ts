@@ -31,6 +31,8 @@ export interface BenchRig {
   spec: RigSpec;
   /** The humanoid mapping the importer recognised (glTF; `npm run rig` shows it), or null. */
   humanoid: HumanoidMap | null;
+  /** glTF: the node index of each bone (GltfRigInfo.boneNodes); null for an A7 rig. */
+  boneNodes: Int32Array | null;
 }
 
 /** Resolves a --rig entry to a file path; throws BenchError naming the entry when it does not exist. */
@@ -67,7 +69,7 @@ export async function loadBenchRig(entry: string, humanoidLimits = true): Promis
   try {
     const loaded = await loadRigFromPath(path);
     const spec = humanoidLimits ? loaded.spec : specWithFileLimits(loaded);
-    return { name: loaded.name, path, format: loaded.format, spec, humanoid: loaded.gltf?.humanoid ?? null };
+    return { name: loaded.name, path, format: loaded.format, spec, humanoid: loaded.gltf?.humanoid ?? null, boneNodes: loaded.gltf?.boneNodes ?? null };
   } catch (e) {
     const message = errorLine(e);
     throw new BenchError(`${entry}: ${message.startsWith(`${path}: `) ? message.slice(path.length + 2) : message}`);

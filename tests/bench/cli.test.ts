@@ -132,7 +132,7 @@ describe('careless values: a usage error naming the option and the value', () =>
     [['--ftol', 'Infinity'], /--ftol: "Infinity" is not a positive number/],
     [['--ftol', '0'], /--ftol: "0" is not a positive number/],
     [['--warm-up', '-1'], /--warm-up: "-1" is not an integer in 0\.\.60000$/],
-    [['--experiment', 'random,Drag'], /--experiment: unknown experiment "Drag" \(known: random, incremental, drag, reach, gestures\)/],
+    [['--experiment', 'random,Drag'], /--experiment: unknown experiment "Drag" \(known: random, incremental, drag, reach, gestures, track\)/],
     [['--methods', `lm,${'y'.repeat(500)}`], /--methods: unknown method "y{57}\.\.\." \(known:/],
   ] as Array<[string[], RegExp]>)('%j', async (args, pattern) => {
     expectOneLineError(await benchHere('--rig', knight, ...args), 2, pattern);

@@ -1,0 +1,173 @@
+// The track experiment (issue 29): a humanoid glTF's animation clips drive the avatar solver
+// (web/src/avatar/avatar_solver.ts) through the tracked points a headset and two controllers
+// give, the head's and the hands' poses, frame by frame at the clip's own rate, each frame solved
+// from the last one's result; the whole body is compared with the clip's.
+//
+// Per clip, one row:
+// - success: frames with the head and hands within δ (0.1% of the height) and 0.5° of the clip's;
+// - mpjpe, mpjpe_upper: the mean distance of every joint (bone head), and of the spine, neck, head,
+//   shoulders and arms only, from the clip's, as fractions of the height;
+// - jitter_ratio: the joints' mean acceleration (second difference per frame) over the clip's own;
+// - flips: frames where an elbow or knee bends against its anatomical direction or its bend plane
+//   turns more than 90 degrees (flips.ts);
+// - foot_slide: the farthest a planted foot moved from where it was planted, as a fraction of the
+//   height (the feet do not step yet: planted for the whole clip);
+// - median_us, p99_us: the time of update() per frame, microseconds, WebAssembly in Node.
+import { Matrix4, Quaternion } from 'three';
+
+import { AvatarSolver, type AvatarInput } from '../web/src/avatar/avatar_solver.js';
+import type { IkCoreModule } from '../web/src/ik/module.js';
+import type { RigSpec } from '../web/src/ik/rig_spec.js';
+import type { HumanoidMap, HumanoidRole } from '../web/src/rig/humanoid_roles.js';
+import { transformPoint } from '../web/src/rig/mat4.js';
+import { ClipFrames } from './clip_frames.js';
+import { BenchError } from './errors.js';
+import { flipLimbs, isFlip } from './flips.js';
+
+export interface TrackRow {
+  rig: string;
+  experiment: 'track';
+  method: 'avatar';
+  clip: string;
+  frames: number;
+  points: number;
+  success_rate: number;
+  mpjpe: number;
+  mpjpe_upper: number;
+  jitter_ratio: number | null;
+  flips: number;
+  foot_slide: number;
+  median_us: number;
+  p99_us: number;
+}
+
+/** The bones mpjpe_upper averages over. */
+const UPPER_ROLES: readonly HumanoidRole[] = [
+  'spine', 'chest', 'upperChest', 'neck', 'head', 'leftShoulder', 'leftUpperArm', 'leftLowerArm', 'leftHand',
+  'rightShoulder', 'rightUpperArm', 'rightLowerArm', 'rightHand',
+];
+
+/** The tracked points' orientation tolerance, degrees. */
+const TRACK_TOLERANCE_DEG = 0.5;
+
+export interface TrackRig {
+  name: string;
+  path: string;
+  spec: RigSpec;
+  humanoid: HumanoidMap;
+  boneNodes: Int32Array;
+}
+
+/**
+ * Runs the clips named in `clips` ('all': every one) of `rig`'s file through the avatar solver with
+ * `points` tracked points (3: head and hands); one row per clip. Throws BenchError naming a clip
+ * the file lacks, or a file without clips.
+ */
+export async function runTrack(ik: IkCoreModule, rig: TrackRig, clips: string[] | 'all', points: number): Promise<TrackRow[]> {
+  const frames = await ClipFrames.read(rig.path, rig.boneNodes);
+  const names = frames.clips.map((c) => c.name);
+  if (names.length === 0) throw new BenchError(`track: ${rig.name} has no animation clips`, 2);
+  const chosen = clips === 'all' ? names.map((_, i) => i) : clips.map((name) => {
+    const i = names.indexOf(name);
+    if (i < 0) throw new BenchError(`track: ${rig.name} has no clip "${name}" (it has: ${names.join(', ')})`, 2);
+    return i;
+  });
+  return chosen.map((clip) => trackClip(ik, rig, frames, clip, points));
+}
+
+function trackClip(ik: IkCoreModule, rig: TrackRig, clips: ClipFrames, clip: number, points: number): TrackRow {
+  const avatar = new AvatarSolver(ik, rig.spec, rig.humanoid);
+  try {
+    const s = avatar.session, spec = s.spec, h = avatar.height, delta = 1e-3 * h;
+    const numBones = spec.parents.length;
+    const heads = Array.from({ length: numBones }, (_, i) => [spec.rest[16 * i + 3], spec.rest[16 * i + 7], spec.rest[16 * i + 11]]);
+    const restRotations = s.tipRotations();
+    const restTips = s.tips();
+    const upper = UPPER_ROLES.map((r) => rig.humanoid.bones[r]).filter((b): b is number => b !== undefined);
+    const limbs = flipLimbs(spec, rig.humanoid);
+    const effectors = Array.from(s.effectors());
+    const { frames, name } = clips.clips[clip];
+    const times: number[] = [];
+    let onTarget = 0, mpjpe = 0, mpjpeUpper = 0, flips = 0, slide = 0;
+    const ours: number[][] = [], theirs: number[][] = [];
+    let previousPoses: Float64Array | null = null;
+    const g = new Matrix4(), q = new Quaternion(), rest = new Quaternion();
+    for (let f = 0; f < frames; f++) {
+      const motion = clips.motion(clip, f);
+      const truthHeads = heads.map((p, i) => transformPoint(motion.subarray(16 * i, 16 * i + 16), p));
+      const input = {} as AvatarInput;
+      const tracked: Array<keyof AvatarInput> = ['head', 'leftHand', 'rightHand'];
+      const targets: number[][] = [], frames4: number[][] = [];
+      tracked.forEach((key, k) => {
+        const m = motion.subarray(16 * effectors[k], 16 * effectors[k] + 16);
+        const position = transformPoint(m, restTips.subarray(3 * k, 3 * k + 3));
+        g.set(m[0], m[1], m[2], 0, m[4], m[5], m[6], 0, m[8], m[9], m[10], 0, 0, 0, 0, 1);
+        rest.fromArray(restRotations, 4 * k);
+        q.setFromRotationMatrix(g).multiply(rest);
+        const orientation = q.toArray();
+        input[key] = { position, orientation };
+        targets.push(position);
+        frames4.push(orientation);
+      });
+      const t0 = performance.now();
+      avatar.update(input);
+      times.push((performance.now() - t0) * 1000);
+      const tips = s.tips(), turns = s.tipRotations(), poses = s.poses();
+      const within = targets.every((p, k) => Math.hypot(tips[3 * k] - p[0], tips[3 * k + 1] - p[1], tips[3 * k + 2] - p[2]) < delta) &&
+        frames4.every((o, k) => turnDeg(turns.subarray(4 * k, 4 * k + 4), o) < TRACK_TOLERANCE_DEG);
+      if (within) onTarget++;
+      const mine = heads.map((p, i) => transformPoint(poses.subarray(16 * i, 16 * i + 16), p));
+      const error = (b: number): number => Math.hypot(mine[b][0] - truthHeads[b][0], mine[b][1] - truthHeads[b][1], mine[b][2] - truthHeads[b][2]);
+      mpjpe += mean(heads.map((_, b) => error(b))) / h;
+      mpjpeUpper += mean(upper.map(error)) / h;
+      ours.push(mine.flat());
+      theirs.push(truthHeads.flat());
+      if (previousPoses && isFlip(spec, limbs, previousPoses, poses)) flips++;
+      previousPoses = poses;
+      for (const k of [3, 4]) slide = Math.max(slide, Math.hypot(tips[3 * k] - restTips[3 * k], tips[3 * k + 1] - restTips[3 * k + 1], tips[3 * k + 2] - restTips[3 * k + 2]) / h);
+    }
+    times.sort((a, b) => a - b);
+    const truthJitter = meanAcceleration(theirs), ourJitter = meanAcceleration(ours);
+    return {
+      rig: rig.name,
+      experiment: 'track',
+      method: 'avatar',
+      clip: name,
+      frames,
+      points,
+      success_rate: onTarget / frames,
+      mpjpe: mpjpe / frames,
+      mpjpe_upper: mpjpeUpper / frames,
+      jitter_ratio: truthJitter > 0 ? ourJitter / truthJitter : null,
+      flips,
+      foot_slide: slide,
+      median_us: times[Math.floor((times.length - 1) / 2)],
+      p99_us: times[Math.min(times.length - 1, Math.floor(0.99 * times.length))],
+    };
+  } finally {
+    avatar.dispose();
+  }
+}
+
+function mean(xs: number[]): number {
+  return xs.length === 0 ? 0 : xs.reduce((s, x) => s + x, 0) / xs.length;
+}
+
+/** The mean size of the second difference of each point over the frames (rig units per frame²); 0 with fewer than 3 frames. */
+function meanAcceleration(frames: number[][]): number {
+  let sum = 0, count = 0;
+  for (let f = 1; f + 1 < frames.length; f++)
+    for (let i = 0; i < frames[f].length; i += 3) {
+      let a2 = 0;
+      for (let c = 0; c < 3; c++) a2 += (frames[f + 1][i + c] - 2 * frames[f][i + c] + frames[f - 1][i + c]) ** 2;
+      sum += Math.sqrt(a2);
+      count++;
+    }
+  return count === 0 ? 0 : sum / count;
+}
+
+/** The angle, degrees, between two unit quaternions [x, y, z, w]. */
+function turnDeg(a: ArrayLike<number>, b: ArrayLike<number>): number {
+  const d = Math.abs(a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + a[3] * b[3]);
+  return (2 * Math.acos(Math.min(1, d)) * 180) / Math.PI;
+}
