@@ -1,6 +1,7 @@
 // A 65-joint humanoid for scale, named and shaped like a Mixamo rig ("mixamorig:LeftHandIndex1"):
 // centimeters under an Armature scaled by 0.01 (as Mixamo FBX files arrive in glTF), T-pose,
 // Y up, facing +Z, full fingers and a three-bone spine. End effectors: hands, feet, head.
+import { characterClips } from './character_clips.js';
 import { ball as ballLimits, fixed, flex, hinge } from './limits.js';
 import type { JointDef, Limits, ModelDef, Shape } from './model.js';
 import { ball, block, frustum } from './shapes.js';
@@ -131,6 +132,7 @@ export const character: ModelDef = {
   plain: true, // as a downloaded Mixamo character arrives: recognised as a humanoid, limits from anatomy
   armature: { scale: [0.01, 0.01, 0.01] },
   joints,
+  clips: characterClips(joints),
   materials: [
     { name: 'body', color: [0.78, 0.74, 0.68], metallic: 0, roughness: 0.6 },
     { name: 'dark', color: [0.2, 0.22, 0.27], metallic: 0.1, roughness: 0.6 },

@@ -6,6 +6,7 @@ import { Document, type Material, type Node } from '@gltf-transform/core';
 
 import { chooseChainChild } from '../../web/src/rig/chain_child.js';
 import { fromTRS, invertAffine, multiply, transformPoint } from '../../web/src/rig/mat4.js';
+import { addClips, type ClipDef, type ClipJoint, type Quat } from './clips.js';
 import { type Vec3, cross, dot, normalize, scale, sub } from './vec.js';
 
 /** XZX limits in degrees: [min, max], each 3 numbers; null = unbounded. */
@@ -56,6 +57,8 @@ export interface ModelDef {
    * and effector flags still shape the mesh and are kept for tests to compare against.
    */
   plain?: boolean;
+  /** Animation clips (clips.ts), written after the skeleton. */
+  clips?: ClipDef[];
 }
 
 const round = (v: number, digits: number): number => {
@@ -134,6 +137,12 @@ export function buildDocument(model: ModelDef): Document {
   });
 
   const joints = [...byName.values()];
+  if (model.clips) {
+    const clipJoints = new Map<string, ClipJoint>(
+      joints.map((j) => [j.def.name, { node: j.node, restLocal: j.node.getRotation() as Quat, restFrame: quaternionFromAxes(...jointAxes(j.def)) }]),
+    );
+    addClips(doc, buffer, model.clips, clipJoints, model.joints[0].name);
+  }
   const ibm = new Float32Array(16 * joints.length);
   joints.forEach((j, k) => {
     const inv = invertAffine(j.world)!;

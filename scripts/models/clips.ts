@@ -1,0 +1,106 @@
+// Animation clips for the generated models: a clip gives, at each time, each moving joint's turn
+// and the root's shift, and addClips() writes them as glTF animations sampled at the clip's frame
+// rate (LINEAR). A turn is a rotation in ARMATURE coordinates about the joint's own head, applied
+// after its parent's motion (the joint's world motion is its parent's times its turn), so a clip
+// can say "bend the shin back 40 degrees" without knowing the joints' local axes.
+import type { AnimationSampler, Buffer, Document, Node } from '@gltf-transform/core';
+
+import { type Vec3, cross, dot, length, normalize } from './vec.js';
+
+/** A unit quaternion [x, y, z, w]. */
+export type Quat = [number, number, number, number];
+
+export interface ClipPose {
+  /** Per joint name, its turn (armature coordinates); joints not listed keep their rest rotation. */
+  turns: Record<string, Quat>;
+  /** The root joint's shift from rest, armature units. */
+  shift?: Vec3;
+}
+
+export interface ClipDef {
+  name: string;
+  seconds: number;
+  fps: number;
+  pose(t: number): ClipPose;
+}
+
+export const IDENTITY: Quat = [0, 0, 0, 1];
+
+/** The rotation by `degrees` about `axis` (any length but 0). */
+export function turnAbout(axis: Vec3, degrees: number): Quat {
+  const [x, y, z] = normalize(axis), h = (degrees * Math.PI) / 360, s = Math.sin(h);
+  return [x * s, y * s, z * s, Math.cos(h)];
+}
+
+/** a then... the product a b (b applied first). */
+export function mul(a: Quat, b: Quat): Quat {
+  const [x1, y1, z1, w1] = a, [x2, y2, z2, w2] = b;
+  return [w1 * x2 + x1 * w2 + y1 * z2 - z1 * y2, w1 * y2 - x1 * z2 + y1 * w2 + z1 * x2, w1 * z2 + x1 * y2 - y1 * x2 + z1 * w2, w1 * w2 - x1 * x2 - y1 * y2 - z1 * z2];
+}
+
+export function inverse(q: Quat): Quat {
+  return [-q[0], -q[1], -q[2], q[3]];
+}
+
+/** `v` turned by `q`. */
+export function rotate(q: Quat, v: Vec3): Vec3 {
+  const p = mul(mul(q, [v[0], v[1], v[2], 0]), inverse(q));
+  return [p[0], p[1], p[2]];
+}
+
+/** The smallest rotation taking direction `from` to direction `to`. */
+export function between(from: Vec3, to: Vec3): Quat {
+  const a = normalize(from), b = normalize(to);
+  const axis = cross(a, b), s = length(axis), c = dot(a, b);
+  if (s < 1e-12) return IDENTITY;
+  return turnAbout(axis, (Math.atan2(s, c) * 180) / Math.PI);
+}
+
+/** A joint node with its rest local rotation and its rest frame's rotation in armature coordinates. */
+export interface ClipJoint {
+  node: Node;
+  restLocal: Quat;
+  restFrame: Quat;
+}
+
+/**
+ * Writes `clips` into `doc` as animations of `joints` (by joint name; `root`: the joint shifted).
+ * Frames 0..seconds*fps; a joint's channel holds its rest local rotation times its turn, brought
+ * into its own frame.
+ */
+export function addClips(doc: Document, buffer: Buffer, clips: readonly ClipDef[], joints: ReadonlyMap<string, ClipJoint>, root: string): void {
+  for (const clip of clips) {
+    const frames = Math.round(clip.seconds * clip.fps) + 1;
+    const times = Float32Array.from({ length: frames }, (_, k) => k / clip.fps);
+    const poses = Array.from(times, (t) => clip.pose(t));
+    const animation = doc.createAnimation(clip.name);
+    const input = doc.createAccessor().setType('SCALAR').setArray(times).setBuffer(buffer);
+    const channel = (node: Node, path: 'rotation' | 'translation', values: Float32Array, type: 'VEC3' | 'VEC4'): void => {
+      const sampler: AnimationSampler = doc
+        .createAnimationSampler()
+        .setInput(input)
+        .setOutput(doc.createAccessor().setType(type).setArray(values).setBuffer(buffer))
+        .setInterpolation('LINEAR');
+      animation.addSampler(sampler).addChannel(doc.createAnimationChannel().setTargetNode(node).setTargetPath(path).setSampler(sampler));
+    };
+    const moving = [...new Set(poses.flatMap((p) => Object.keys(p.turns)))];
+    for (const name of moving) {
+      const joint = joints.get(name);
+      if (!joint) throw new Error(`clip ${clip.name}: no joint ${name}`);
+      const values = new Float32Array(4 * frames);
+      poses.forEach((p, k) => {
+        const turn = p.turns[name] ?? IDENTITY;
+        // World motion G = W0 D W0^-1 for a local delta D: D = W0^-1 G W0.
+        const local = mul(joint.restLocal, mul(mul(inverse(joint.restFrame), turn), joint.restFrame));
+        values.set(local[3] < 0 ? local.map((v) => -v) : local, 4 * k);
+      });
+      channel(joint.node, 'rotation', values, 'VEC4');
+    }
+    if (poses.some((p) => p.shift)) {
+      const node = joints.get(root)!.node, rest = node.getTranslation();
+      const values = new Float32Array(3 * frames);
+      poses.forEach((p, k) => values.set(rest.map((x, i) => x + (p.shift?.[i] ?? 0)), 3 * k));
+      channel(node, 'translation', values, 'VEC3');
+    }
+  }
+}
