@@ -7,6 +7,7 @@
 
 #include <random>
 
+#include "goal_jacobian_check.h"
 #include "goal_residual.h"
 #include "kinematics.h"
 #include "small_rigs.h"
@@ -71,26 +72,6 @@ TEST(FloatingRoot, MovesEveryTipByItsTranslation) {
     EXPECT_LT((floating.tip_rotation(b) - fixed.tip_rotation(b)).norm(), 1e-15) << "a translation turns nothing";
 }
 
-// The largest difference between goal_jacobian() and central differences of the residual, over
-// the largest entry (step h: degrees for angles, rig units for the root).
-double jacobian_error(Kinematics& kin, const GoalSet& goals, Eigen::VectorXd a, double h = 1e-5) {
-  const int m = goals.rows(), n = kin.num_angles();
-  Eigen::MatrixXd analytic(m, n), numeric(m, n);
-  Eigen::VectorXd plus(m), minus(m);
-  goal_objective(kin, goals, a, plus);
-  goal_jacobian(kin, goals, analytic);
-  for (int j = 0; j < n; ++j) {
-    const double keep = a[j];
-    a[j] = keep + h;
-    goal_objective(kin, goals, a, plus);
-    a[j] = keep - h;
-    goal_objective(kin, goals, a, minus);
-    a[j] = keep;
-    numeric.col(j) = (plus - minus) / (2 * h);
-  }
-  return (analytic - numeric).cwiseAbs().maxCoeff() / std::max(numeric.cwiseAbs().maxCoeff(), 1e-12);
-}
-
 TEST(FloatingRoot, JacobianMatchesCentralDifferencesForEveryKindOfRow) {
   Kinematics kin(two_arms(true));
   std::mt19937_64 rng(11);
@@ -117,7 +98,7 @@ TEST(FloatingRoot, JacobianMatchesCentralDifferencesForEveryKindOfRow) {
     kin.jacobian(a, tips, J);
     EXPECT_TRUE((J.block<3, 3>(0, 15) == Eigen::Matrix3d::Identity()));
     EXPECT_TRUE((J.block<3, 3>(3, 15) == Eigen::Matrix3d::Identity()));
-    EXPECT_LT(jacobian_error(kin, set, a), 1e-6) << "trial " << trial;
+    EXPECT_LT(test::goal_jacobian_error(kin, set, a, 1e-5), 1e-6) << "trial " << trial;
   }
 }
 

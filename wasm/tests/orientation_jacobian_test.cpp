@@ -7,6 +7,7 @@
 #include <random>
 
 #include "a7_fixtures.h"
+#include "goal_jacobian_check.h"
 #include "goal_residual.h"
 
 namespace ik {
@@ -50,22 +51,7 @@ TEST(OrientationJacobian, MatchesCentralDifferencesOnEveryRig) {
       GoalSet goals;
       ASSERT_EQ(goals.set(kin, mixed_goals(kin, a, rng)), "");
       ASSERT_TRUE(goals.has_orientation());
-      const int m = goals.rows(), n = kin.num_angles();
-      Eigen::MatrixXd analytic(m, n), numeric(m, n);
-      Eigen::VectorXd plus(m), minus(m);
-      goal_objective(kin, goals, a, plus);
-      goal_jacobian(kin, goals, analytic);
-      for (int j = 0; j < n; ++j) {
-        const double keep = a[j];
-        a[j] = keep + h;
-        goal_objective(kin, goals, a, plus);
-        a[j] = keep - h;
-        goal_objective(kin, goals, a, minus);
-        a[j] = keep;
-        numeric.col(j) = (plus - minus) / (2 * h);
-      }
-      const double scale = std::max(numeric.cwiseAbs().maxCoeff(), 1e-12);
-      const double worst = (analytic - numeric).cwiseAbs().maxCoeff() / scale;
+      const double worst = test::goal_jacobian_error(kin, goals, a, h);
       worst_overall = std::max(worst_overall, worst);
       EXPECT_LT(worst, 1e-6) << "sample " << sample;
     }

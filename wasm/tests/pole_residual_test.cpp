@@ -7,34 +7,13 @@
 #include <random>
 
 #include "a7_fixtures.h"
+#include "goal_jacobian_check.h"
 #include "goal_residual.h"
 #include "pole_residual.h"
 #include "small_rigs.h"
 
 namespace ik {
 namespace {
-
-// Central differences of the residual (step h degrees) against goal_jacobian(); returns the
-// largest error relative to the largest entry.
-double jacobian_error(Kinematics& kin, const GoalSet& goals, Eigen::VectorXd a, double h = 1e-4) {
-  const int m = goals.rows(), n = kin.num_angles();
-  Eigen::MatrixXd analytic(m, n), numeric(m, n);
-  Eigen::VectorXd plus(m), minus(m);
-  goal_objective(kin, goals, a, plus);
-  goal_jacobian(kin, goals, analytic);
-  for (int j = 0; j < n; ++j) {
-    const double keep = a[j];
-    a[j] = keep + h;
-    goal_objective(kin, goals, a, plus);
-    a[j] = keep - h;
-    goal_objective(kin, goals, a, minus);
-    a[j] = keep;
-    numeric.col(j) = (plus - minus) / (2 * h);
-  }
-  EXPECT_TRUE(analytic.allFinite());
-  const double scale = std::max(numeric.cwiseAbs().maxCoeff(), 1e-12);
-  return (analytic - numeric).cwiseAbs().maxCoeff() / scale;
-}
 
 // Position goals at the tips of `a`, a pole on every effector bone that has a parent (at its
 // elbow moved by `offset` rig units in a random direction), random stiffness.
@@ -76,7 +55,7 @@ TEST(PoleResidual, JacobianMatchesCentralDifferencesOnEveryRig) {
       ASSERT_EQ(goals.set(kin, soft_goals(kin, a, rng, offset)), "");
       goals.set_rest(kin, 0.3, sample % 2 == 1, test::random_angles(kin, rng));
       ASSERT_GT(goals.num_rest(), 0);
-      const double error = jacobian_error(kin, goals, a);
+      const double error = test::goal_jacobian_error(kin, goals, a, 1e-4);
       worst = std::max(worst, error);
       EXPECT_LT(error, 1e-6) << "sample " << sample;
     }
@@ -111,7 +90,7 @@ TEST(PoleResidual, StraightLimbHasAFiniteResidualThatBendsTowardsThePole) {
   kin.forward(b);
   const Eigen::Vector3d u = (kin.tip(1) - kin.joint_origin(0)).normalized(), d = kin.joint_origin(1) - kin.joint_origin(0);
   EXPECT_GT((d - d.dot(u) * u).y(), 1e-6);
-  EXPECT_LT(jacobian_error(kin, set, a), 1e-6);
+  EXPECT_LT(test::goal_jacobian_error(kin, set, a, 1e-4), 1e-6);
 }
 
 // The swivel rows (across the shoulder-wrist axis u; the reach row lies along it) vanish however
