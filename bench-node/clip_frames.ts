@@ -35,20 +35,23 @@ export class ClipFrames {
   private readonly nodes: Node[];
   private readonly parents: Int32Array;
   private readonly restInverse: Float64Array[];
+  /** Per clip, its channels with their keyframes (read once). */
+  private readonly tracks: Track[][];
 
   private constructor(
-    private readonly animations: Animation[],
+    animations: Animation[],
     nodes: Node[],
     private readonly boneNodes: Int32Array,
   ) {
     this.nodes = nodes;
+    this.tracks = animations.map((a) => tracksOf(a, nodes));
     const index = new Map(nodes.map((n, i) => [n, i]));
     this.parents = Int32Array.from(nodes, (n) => {
       const p = n.getParentNode();
       return p ? (index.get(p) ?? -1) : -1;
     });
     this.clips = animations.map((a, i) => clipInfo(a, i));
-    const rest = this.world(null, 0);
+    const rest = this.world([], 0);
     this.restInverse = Array.from(boneNodes, (node) => {
       const inv = invertAffine(rest[node]);
       if (!inv) throw new BenchError(`track: the rest transform of node ${node} cannot be inverted`);
@@ -66,16 +69,16 @@ export class ClipFrames {
   /** Each bone's motion from rest at frame `frame` of clip `clip` (16 row-major numbers per bone). */
   motion(clip: number, frame: number): Float64Array {
     const t = frame / this.clips[clip].fps;
-    const world = this.world(this.animations[clip], t);
+    const world = this.world(this.tracks[clip], t);
     const out = new Float64Array(16 * this.boneNodes.length);
     this.boneNodes.forEach((node, i) => out.set(multiply(world[node], this.restInverse[i]), 16 * i));
     return out;
   }
 
-  /** Every node's world matrix at time `t` of `animation` (null: the rest pose). */
-  private world(animation: Animation | null, t: number): Float64Array[] {
+  /** Every node's world matrix at time `t` of a clip's `tracks` (none: the rest pose). */
+  private world(tracks: readonly Track[], t: number): Float64Array[] {
     const trs = this.nodes.map((n) => ({ t: n.getTranslation() as number[], r: n.getRotation() as number[], s: n.getScale() as number[] }));
-    if (animation) for (const track of tracks(animation, this.nodes)) trs[track.node][pathKey(track.path)] = sample(track, t);
+    for (const track of tracks) trs[track.node][pathKey(track.path)] = sample(track, t);
     const world: Float64Array[] = new Array(this.nodes.length);
     const at = (i: number): Float64Array => {
       if (world[i]) return world[i];
@@ -91,7 +94,7 @@ function pathKey(path: Track['path']): 't' | 'r' | 's' {
   return path === 'translation' ? 't' : path === 'rotation' ? 'r' : 's';
 }
 
-function tracks(animation: Animation, nodes: Node[]): Track[] {
+function tracksOf(animation: Animation, nodes: Node[]): Track[] {
   const out: Track[] = [];
   for (const channel of animation.listChannels()) {
     const node = channel.getTargetNode(), path = channel.getTargetPath(), sampler = channel.getSampler();
