@@ -16,6 +16,7 @@
 import { Matrix4, Quaternion } from 'three';
 
 import { AvatarSolver, type AvatarInput } from '../web/src/avatar/avatar_solver.js';
+import { rotationAngleDeg } from '../web/src/ik/goals.js';
 import type { IkCoreModule } from '../web/src/ik/module.js';
 import type { RigSpec } from '../web/src/ik/rig_spec.js';
 import type { HumanoidMap, HumanoidRole } from '../web/src/rig/humanoid_roles.js';
@@ -23,6 +24,7 @@ import { transformPoint } from '../web/src/rig/mat4.js';
 import { ClipFrames } from './clip_frames.js';
 import { BenchError } from './errors.js';
 import { flipLimbs, isFlip } from './flips.js';
+import { restBase } from './reach.js';
 
 export interface TrackRow {
   rig: string;
@@ -80,7 +82,7 @@ function trackClip(ik: IkCoreModule, rig: TrackRig, clips: ClipFrames, clip: num
   try {
     const s = avatar.session, spec = s.spec, h = avatar.height, delta = 1e-3 * h;
     const numBones = spec.parents.length;
-    const heads = Array.from({ length: numBones }, (_, i) => [spec.rest[16 * i + 3], spec.rest[16 * i + 7], spec.rest[16 * i + 11]]);
+    const heads = Array.from({ length: numBones }, (_, i) => restBase(spec, i));
     const restRotations = s.tipRotations();
     const restTips = s.tips();
     const upper = UPPER_ROLES.map((r) => rig.humanoid.bones[r]).filter((b): b is number => b !== undefined);
@@ -114,7 +116,7 @@ function trackClip(ik: IkCoreModule, rig: TrackRig, clips: ClipFrames, clip: num
       times.push((performance.now() - t0) * 1000);
       const tips = s.tips(), turns = s.tipRotations(), poses = s.poses();
       const within = targets.every((p, k) => Math.hypot(tips[3 * k] - p[0], tips[3 * k + 1] - p[1], tips[3 * k + 2] - p[2]) < delta) &&
-        frames4.every((o, k) => turnDeg(turns.subarray(4 * k, 4 * k + 4), o) < TRACK_TOLERANCE_DEG);
+        frames4.every((o, k) => rotationAngleDeg(turns.subarray(4 * k, 4 * k + 4), o) < TRACK_TOLERANCE_DEG);
       if (within) onTarget++;
       const mine = heads.map((p, i) => transformPoint(poses.subarray(16 * i, 16 * i + 16), p));
       const error = (b: number): number => Math.hypot(mine[b][0] - truthHeads[b][0], mine[b][1] - truthHeads[b][1], mine[b][2] - truthHeads[b][2]);
@@ -164,10 +166,4 @@ function meanAcceleration(frames: number[][]): number {
       count++;
     }
   return count === 0 ? 0 : sum / count;
-}
-
-/** The angle, degrees, between two unit quaternions [x, y, z, w]. */
-function turnDeg(a: ArrayLike<number>, b: ArrayLike<number>): number {
-  const d = Math.abs(a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + a[3] * b[3]);
-  return (2 * Math.acos(Math.min(1, d)) * 180) / Math.PI;
 }

@@ -12,6 +12,7 @@ import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 
 import { bentAgainst, flipLimbs } from '../../bench-node/flips.js';
 import { AvatarSolver, type AvatarInput } from '../../web/src/avatar/avatar_solver.js';
+import { rotationAngleDeg } from '../../web/src/ik/goals.js';
 import type { IkCoreModule } from '../../web/src/ik/module.js';
 import { loadIkNode } from '../../web/src/ik/node.js';
 import { IkRig } from '../../web/src/ik/rig.js';
@@ -26,12 +27,6 @@ beforeAll(async () => {
   character = await loadRigFromPath(resolve(import.meta.dirname, '../../web/public/models/character.glb'));
 });
 afterAll(() => expect(IkSession.alive.sessions).toBe(0));
-
-/** The angle, degrees, between two unit quaternions [x, y, z, w]. */
-function turnDeg(a: ArrayLike<number>, b: ArrayLike<number>): number {
-  const d = Math.abs(a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + a[3] * b[3]);
-  return (2 * Math.acos(Math.min(1, d)) * 180) / Math.PI;
-}
 
 function distance(a: ArrayLike<number>, b: ArrayLike<number>, k: number): number {
   return Math.hypot(a[3 * k] - b[3 * k], a[3 * k + 1] - b[3 * k + 1], a[3 * k + 2] - b[3 * k + 2]);
@@ -76,7 +71,7 @@ function trackSway(frames: number): { tip: number[]; turn: number[]; foot: numbe
       avatar.update(trackedOf(tips, rotations));
       const mine = avatar.session.tips(), turned = avatar.session.tipRotations();
       out.tip.push(Math.max(...[0, 1, 2].map((k) => distance(mine, tips, k))) / delta);
-      out.turn.push(Math.max(...[0, 1, 2].map((k) => turnDeg(turned.subarray(4 * k, 4 * k + 4), rotations.subarray(4 * k, 4 * k + 4)))));
+      out.turn.push(Math.max(...[0, 1, 2].map((k) => rotationAngleDeg(turned.subarray(4 * k, 4 * k + 4), rotations.subarray(4 * k, 4 * k + 4)))));
       out.foot.push(Math.max(distance(mine, planted, 3), distance(mine, planted, 4)) / delta);
       const joints = truth.boneTips(a), ours = avatar.session.rig.boneTips(avatar.angles);
       let sum = 0;

@@ -7,6 +7,7 @@
 // something to catch.
 import { afterEach, beforeAll, describe, expect, it } from 'vitest';
 
+import { rotationAngleDeg } from '../../web/src/ik/goals.js';
 import type { IkCoreModule } from '../../web/src/ik/module.js';
 import { loadIkNode } from '../../web/src/ik/node.js';
 import { IkSession } from '../../web/src/live/session.js';
@@ -17,12 +18,6 @@ beforeAll(async () => {
   ik = await loadIkNode();
 });
 afterEach(() => expect(IkSession.alive.sessions).toBe(0));
-
-/** The angle, degrees, between two unit quaternions [x, y, z, w]. */
-function turnDeg(a: ArrayLike<number>, b: ArrayLike<number>): number {
-  const d = Math.abs(a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + a[3] * b[3]);
-  return (2 * Math.acos(Math.min(1, d)) * 180) / Math.PI;
-}
 
 /** Lowers the head target by a tenth of the rig size; the most a hand turned (degrees) and the worst pinned tip. */
 function bow(r: PoleRig, pin: boolean): { turn: number; drift: number } {
@@ -44,7 +39,7 @@ function bow(r: PoleRig, pin: boolean): { turn: number; drift: number } {
     t[1] = y0 - (0.1 * size * i) / 20;
     settle(r);
     const now = session.tipRotations(), tips = session.tips();
-    for (const k of hands) turn = Math.max(turn, turnDeg(before.subarray(4 * k, 4 * k + 4), now.subarray(4 * k, 4 * k + 4)));
+    for (const k of hands) turn = Math.max(turn, rotationAngleDeg(before.subarray(4 * k, 4 * k + 4), now.subarray(4 * k, 4 * k + 4)));
     effectors.forEach((_, k) => {
       if (k !== head) drift = Math.max(drift, Math.hypot(tips[3 * k] - session.targets[3 * k], tips[3 * k + 1] - session.targets[3 * k + 1], tips[3 * k + 2] - session.targets[3 * k + 2]));
     });

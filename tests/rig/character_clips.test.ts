@@ -9,6 +9,7 @@ import { beforeAll, describe, expect, it } from 'vitest';
 
 import { ClipFrames } from '../../bench-node/clip_frames.js';
 import { bentAgainst, flipLimbs } from '../../bench-node/flips.js';
+import { restBase } from '../../bench-node/reach.js';
 import { loadBenchRig, type BenchRig } from '../../bench-node/rigs.js';
 import { transformPoint } from '../../web/src/rig/mat4.js';
 
@@ -21,8 +22,7 @@ beforeAll(async () => {
 
 /** Where bone `bone`'s head is at `motion` (rig units). */
 function head(motion: Float64Array, bone: number): number[] {
-  const r = rig.spec.rest;
-  return transformPoint(motion.subarray(16 * bone, 16 * bone + 16), [r[16 * bone + 3], r[16 * bone + 7], r[16 * bone + 11]]);
+  return transformPoint(motion.subarray(16 * bone, 16 * bone + 16), restBase(rig.spec, bone));
 }
 
 describe("the character's clips", () => {

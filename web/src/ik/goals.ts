@@ -217,9 +217,14 @@ export function orientationErrorsDeg(rig: IkRig, angles: Numbers, goals: Goals):
       out[e] = NaN;
       continue;
     }
-    const norm = Math.hypot(g[0], g[1], g[2], g[3]);
-    const dot = Math.abs(q[4 * e] * g[0] + q[4 * e + 1] * g[1] + q[4 * e + 2] * g[2] + q[4 * e + 3] * g[3]) / norm;
-    out[e] = (2 * Math.acos(Math.min(1, dot)) * 180) / Math.PI;
+    out[e] = rotationAngleDeg(q.subarray(4 * e, 4 * e + 4), g);
   }
   return out;
+}
+
+/** The angle, DEGREES, between rotation `a`, a unit quaternion [x, y, z, w], and rotation `b`, a quaternion of any nonzero length. */
+export function rotationAngleDeg(a: ArrayLike<number>, b: ArrayLike<number>): number {
+  const norm = Math.hypot(b[0], b[1], b[2], b[3]);
+  const dot = Math.abs(a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + a[3] * b[3]) / norm;
+  return (2 * Math.acos(Math.min(1, dot)) * 180) / Math.PI;
 }
