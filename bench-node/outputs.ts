@@ -123,8 +123,9 @@ export function writeText(file: string, text: string): void {
   }
 }
 
-export function writeJson(file: string, rows: readonly Row[], info: RunInfo): void {
-  writeText(file, `${JSON.stringify({ rows, run: info }, (_, v: unknown) => (typeof v === 'number' && !Number.isFinite(v) ? null : v), 2)}\n`);
+/** Writes `{ rows, run }` to `file` as JSON; a number that is not finite is written as null. */
+export function writeJson(file: string, rows: readonly object[], run: object): void {
+  writeText(file, `${JSON.stringify({ rows, run }, (_, v: unknown) => (typeof v === 'number' && !Number.isFinite(v) ? null : v), 2)}\n`);
 }
 
 const csvColumns = [
@@ -136,12 +137,20 @@ const csvColumns = [
 ] as const;
 
 export function csvText(rows: readonly Row[]): string {
+  return csvTable(rows, csvColumns);
+}
+
+/**
+ * `rows` as CSV under `columns`: a header line, then a line per row. Empty for null, undefined and
+ * numbers that are not finite; an object (stop reasons) as `reason: count;...`; quoted as needed.
+ */
+export function csvTable<R>(rows: readonly R[], columns: readonly (keyof R & string)[]): string {
   const cell = (v: unknown): string => {
     if (v === null || v === undefined || (typeof v === 'number' && !Number.isFinite(v))) return '';
     const s = typeof v === 'object' ? formatStopReasons(v as Record<string, number>).replace(/, /g, ';') : String(v);
     return /[",\n]/.test(s) ? `"${s.replace(/"/g, '""')}"` : s;
   };
-  return [csvColumns.join(','), ...rows.map((r) => csvColumns.map((c) => cell(r[c])).join(','))].join('\n') + '\n';
+  return [columns.join(','), ...rows.map((r) => columns.map((c) => cell(r[c])).join(','))].join('\n') + '\n';
 }
 
 export function writeCsv(file: string, rows: readonly Row[]): void {

@@ -3,13 +3,13 @@
 import type { IkCoreModule } from '../web/src/ik/module.js';
 import { BenchError } from './errors.js';
 import type { BenchOptions } from './options.js';
-import { writeText } from './outputs.js';
+import { csvTable, writeJson, writeText } from './outputs.js';
 import { loadBenchRig } from './rigs.js';
 import { formatNumber, renderTable, type Table } from './table.js';
 import { runTrack, type TrackRow } from './track.js';
 
 /** The CSV's columns, in order (the JSON rows carry the same fields). */
-const columns: ReadonlyArray<keyof TrackRow> = [
+const columns: ReadonlyArray<keyof TrackRow & string> = [
   'rig', 'experiment', 'method', 'clip', 'frames', 'points', 'success_rate', 'mpjpe', 'mpjpe_upper', 'jitter_ratio', 'flips',
   'foot_slide', 'median_us', 'p99_us',
 ];
@@ -31,15 +31,9 @@ export async function runTrackCommand(opts: BenchOptions, ik: IkCoreModule, out:
   }
   out(renderTable(trackTable(rows), 'text'));
   const run = { command, date: new Date().toISOString().slice(0, 10), node: process.versions.node };
-  if (opts.json) writeText(opts.json, `${JSON.stringify({ rows, run }, null, 2)}\n`);
-  if (opts.csv) writeText(opts.csv, [columns.join(','), ...rows.map((r) => columns.map((c) => csvCell(r[c])).join(','))].join('\n') + '\n');
+  if (opts.json) writeJson(opts.json, rows, run);
+  if (opts.csv) writeText(opts.csv, csvTable(rows, columns));
   return rows;
-}
-
-function csvCell(v: unknown): string {
-  if (v === null || v === undefined) return '';
-  const s = String(v);
-  return /[",\n]/.test(s) ? `"${s.replace(/"/g, '""')}"` : s;
 }
 
 function trackTable(rows: readonly TrackRow[]): Table {
