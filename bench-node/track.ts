@@ -80,14 +80,14 @@ export async function runTrack(ik: IkCoreModule, rig: TrackRig, clips: string[] 
 function trackClip(ik: IkCoreModule, rig: TrackRig, clips: ClipFrames, clip: number, points: number): TrackRow {
   const avatar = new AvatarSolver(ik, rig.spec, rig.humanoid);
   try {
-    const s = avatar.session, spec = s.spec, h = avatar.height, delta = 1e-3 * h;
+    const spec = avatar.rig.spec, h = avatar.height, delta = 1e-3 * h;
     const numBones = spec.parents.length;
     const heads = Array.from({ length: numBones }, (_, i) => restBase(spec, i));
-    const restRotations = s.tipRotations();
-    const restTips = s.tips();
+    const restRotations = avatar.tipRotations();
+    const restTips = avatar.tips();
     const upper = UPPER_ROLES.map((r) => rig.humanoid.bones[r]).filter((b): b is number => b !== undefined);
     const limbs = flipLimbs(spec, rig.humanoid);
-    const effectors = Array.from(s.effectors());
+    const effectors = Array.from(avatar.bones);
     const { frames, name } = clips.clips[clip];
     const times: number[] = [];
     let onTarget = 0, mpjpe = 0, mpjpeUpper = 0, flips = 0, slide = 0;
@@ -114,7 +114,7 @@ function trackClip(ik: IkCoreModule, rig: TrackRig, clips: ClipFrames, clip: num
       const t0 = performance.now();
       avatar.update(input);
       times.push((performance.now() - t0) * 1000);
-      const tips = s.tips(), turns = s.tipRotations(), poses = s.poses();
+      const tips = avatar.tips(), turns = avatar.tipRotations(), poses = avatar.rig.poses(avatar.angles);
       const within = targets.every((p, k) => Math.hypot(tips[3 * k] - p[0], tips[3 * k + 1] - p[1], tips[3 * k + 2] - p[2]) < delta) &&
         frames4.every((o, k) => rotationAngleDeg(turns.subarray(4 * k, 4 * k + 4), o) < TRACK_TOLERANCE_DEG);
       if (within) onTarget++;

@@ -57,23 +57,23 @@ function swayFrame(rig: IkRig, bones: number[], f: number, out: Float64Array): v
 /** Tracks `frames` of the sway; per frame the worst tracked-point distance (δ), turn (degrees), foot distance (δ), mean joint error (height). */
 function trackSway(frames: number): { tip: number[]; turn: number[]; foot: number[]; mpjpe: number[]; last: Float64Array } {
   const avatar = new AvatarSolver(ik, character.spec, character.gltf!.humanoid!);
-  const truth = new IkRig(ik, avatar.session.spec);
+  const truth = new IkRig(ik, avatar.rig.spec);
   try {
     const humanoid = character.gltf!.humanoid!;
     const bones = UPPER_BODY.map((role) => humanoid.bones[role]).filter((b): b is number => b !== undefined);
     const delta = 1e-3 * avatar.height, numBones = character.spec.parents.length;
-    const planted = avatar.session.tips();
+    const planted = avatar.tips();
     const a = new Float64Array(truth.numAngles);
     const out = { tip: [] as number[], turn: [] as number[], foot: [] as number[], mpjpe: [] as number[], last: a };
     for (let f = 0; f < frames; f++) {
       swayFrame(truth, bones, f, a);
       const tips = truth.tips(a), rotations = truth.tipRotations(a);
       avatar.update(trackedOf(tips, rotations));
-      const mine = avatar.session.tips(), turned = avatar.session.tipRotations();
+      const mine = avatar.tips(), turned = avatar.tipRotations();
       out.tip.push(Math.max(...[0, 1, 2].map((k) => distance(mine, tips, k))) / delta);
       out.turn.push(Math.max(...[0, 1, 2].map((k) => rotationAngleDeg(turned.subarray(4 * k, 4 * k + 4), rotations.subarray(4 * k, 4 * k + 4)))));
       out.foot.push(Math.max(distance(mine, planted, 3), distance(mine, planted, 4)) / delta);
-      const joints = truth.boneTips(a), ours = avatar.session.rig.boneTips(avatar.angles);
+      const joints = truth.boneTips(a), ours = avatar.rig.boneTips(avatar.angles);
       let sum = 0;
       for (let b = 0; b < numBones; b++) sum += distance(joints, ours, b);
       out.mpjpe.push(sum / numBones / avatar.height);
@@ -101,9 +101,9 @@ describe('three tracked points drive the character', () => {
     const humanoid = character.gltf!.humanoid!;
     const avatar = new AvatarSolver(ik, character.spec, humanoid);
     try {
-      const s = avatar.session, h = avatar.height, delta = 1e-3 * h;
-      const start = s.tips(), rotations = s.tipRotations();
-      const knees = flipLimbs(s.spec, humanoid).filter((l) => l.bone === humanoid.bones.leftLowerLeg || l.bone === humanoid.bones.rightLowerLeg);
+      const h = avatar.height, delta = 1e-3 * h;
+      const start = avatar.tips(), rotations = avatar.tipRotations();
+      const knees = flipLimbs(avatar.rig.spec, humanoid).filter((l) => l.bone === humanoid.bones.leftLowerLeg || l.bone === humanoid.bones.rightLowerLeg);
       expect(knees.length).toBe(2);
       const lowered = new Float64Array(start);
       let onTarget = 0;
@@ -112,11 +112,11 @@ describe('three tracked points drive the character', () => {
         const down = 0.25 * h * Math.min(1, f / 60);
         for (const k of [0, 1, 2]) lowered[3 * k + 1] = start[3 * k + 1] - down;
         avatar.update(trackedOf(lowered, rotations));
-        const tips = s.tips();
+        const tips = avatar.tips();
         if ([0, 1, 2].every((k) => distance(tips, lowered, k) < delta)) onTarget++;
         for (const k of [3, 4]) expect(distance(tips, start, k)).toBeLessThan(delta);
-        const poses = s.poses();
-        for (const knee of knees) expect(bentAgainst(s.spec, knee, poses)).toBe(false);
+        const poses = avatar.rig.poses(avatar.angles);
+        for (const knee of knees) expect(bentAgainst(avatar.rig.spec, knee, poses)).toBe(false);
       }
       expect(onTarget).toBe(frames);
       const root = avatar.angles.subarray(3 * character.spec.parents.length);

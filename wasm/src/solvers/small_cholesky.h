@@ -1,6 +1,7 @@
 // Cholesky factorisation and solve for small dense symmetric positive definite matrices (the
-// residual-size systems of lm, 3 x #effectors): plain loops, which beat Eigen's blocked LLT by
-// several times at these sizes.
+// residual-size systems of lm, 3 x #effectors): left-looking, one column-major matrix-vector
+// product per column, which beats Eigen's blocked LLT by several times at these sizes and the
+// plain triple loop by about 1.5 (the avatar's 30 x 30 systems in WebAssembly).
 #pragma once
 
 #include <Eigen/Core>

@@ -1,20 +1,22 @@
 // A whole body from three tracked points (issue 29): the head's and both hands' positions and
 // orientations in, every joint out, on any recognised humanoid. The rig floats (its hips move,
-// rig.h FloatingRoot), its feet stay planted where they stood, its elbows and knees keep poles
-// that follow the way they bend while it crouches, and each update() is one solve from the last pose, as the page solves
-// a frame: Levenberg-Marquardt with strict priority, no restarts, the joints' speed bounded. No
-// three.js and no DOM: a page, a widget or a Node script drives it.
+// rig.h FloatingRoot), its feet stay planted where they stood, its knees take poles while it
+// crouches, and each update() is one solve from the last pose, as the page solves a frame:
+// Levenberg-Marquardt with strict priority, no restarts. It solves on the part of the rig
+// the tracked and planted bones hang from (sub_rig.ts: no fingers, toes or eyes) and writes that
+// pose into the whole rig's. No three.js and no DOM: a page, a widget or a Node script drives it.
 // Not yet: the feet stepping when the body leaves them behind, the 6-point input (hips and feet),
-// the spine's rest pull; and speed (a frame takes a median 0.11-0.26 ms in Node on the 65-joint
-// character's clips).
+// the spine's rest pull.
 import type { IkCoreModule } from '../ik/module.js';
 import type { RigSpec } from '../ik/rig_spec.js';
 import { type PoleLimb, poleLimbs } from '../live/pole_limbs.js';
 import { initialPole } from '../live/pole_placement.js';
+import { IkRig } from '../ik/rig.js';
 import { IkSession } from '../live/session.js';
 import type { SolveOutcome, SolveSettings } from '../live/solver.js';
 import type { HumanoidMap, HumanoidRole } from '../rig/humanoid_roles.js';
 import { dragTolerances, rigSize } from '../rig/tolerances.js';
+import { scatterAngles, type SubRig, subHumanoid, subRig } from './sub_rig.js';
 
 /** A tracked pose: a position (rig units) and an orientation, a unit quaternion [x, y, z, w] of the bone's frame, rig coordinates. */
 export interface TrackedPose {
@@ -46,6 +48,13 @@ const CROUCH_SHARE = 0.01;
  */
 const FRAME_ITERATIONS = 50;
 const FRAME_BUDGET_MS = 100;
+/**
+ * lm's first damping of each frame. The default, 1, suits a target dragged far: here, where a
+ * frame's targets are a few δ from the last pose, it cut the first step to a third of the way
+ * (4-5 iterations a frame on reach_wave); 1e-3 takes 1-2, and on the project's clips gave the
+ * lowest jitter of 1, 1e-2, 1e-3, 1e-4 and 1e-6.
+ */
+const FRAME_MU = 1e-3;
 
 /** Height of a rig at rest: the vertical extent of its bone tips (rig units). */
 export function restHeight(boneTips: ArrayLike<number>): number {
@@ -58,10 +67,17 @@ export function restHeight(boneTips: ArrayLike<number>): number {
 }
 
 export class AvatarSolver {
-  /** The live state: the rig (floating), the pose, the targets and goals. */
-  readonly session: IkSession;
+  /** The whole rig, floating (its hips move), its end effectors `bones`. */
+  readonly rig: IkRig;
+  /** The whole pose: 3 angles per bone (degrees), then the root's translation (rig units). Always this array. */
+  readonly angles: Float64Array;
+  /** The whole rig's indices of the head, the left and right hands, the left and right feet (the effectors' order). */
+  readonly bones: Int32Array;
   /** The rig's height at rest, rig units; δ, the tip tolerance, is 0.1% of it. */
   readonly height: number;
+  /** The part of the rig the solves move, and its live state. */
+  private readonly part: SubRig;
+  private readonly session: IkSession;
   private readonly settings: SolveSettings;
   private readonly limbs: PoleLimb[];
   private readonly poleBones: number[];
@@ -73,22 +89,30 @@ export class AvatarSolver {
    * its rest pose. Throws an Error naming the roles missing for tracking.
    */
   constructor(module: IkCoreModule, spec: RigSpec, humanoid: HumanoidMap) {
-    const bones = [...TRACKED, ...PLANTED].map((role) => humanoid.bones[role]);
-    const missing = [...TRACKED, ...PLANTED].filter((_, i) => bones[i] === undefined);
+    const roles = [...TRACKED, ...PLANTED];
+    const bones = roles.map((role) => humanoid.bones[role]);
+    const missing = roles.filter((_, i) => bones[i] === undefined);
     if (missing.length > 0) throw new Error(`the avatar needs these humanoid bones, not found: ${missing.join(', ')}`);
-    const probe = new IkSession(module, spec);
-    const tips = probe.rig.boneTips(probe.angles);
-    probe.dispose();
-    this.height = restHeight(tips);
+    this.bones = Int32Array.from(bones as number[]);
+    const whole = new IkRig(module, { ...spec, effectors: this.bones });
+    try {
+      this.height = restHeight(whole.boneTips(whole.project(new Float64Array(whole.numAngles))));
+    } finally {
+      whole.dispose();
+    }
     const h = this.height;
-    const floating: RigSpec = {
-      ...spec,
-      effectors: Int32Array.from(bones as number[]),
-      floatingRoot: { lower: [-ROOT_REACH.across * h, -ROOT_REACH.down * h, -ROOT_REACH.across * h], upper: [ROOT_REACH.across * h, ROOT_REACH.up * h, ROOT_REACH.across * h] },
-    };
-    this.session = new IkSession(module, floating);
+    const floatingRoot = { lower: [-ROOT_REACH.across * h, -ROOT_REACH.down * h, -ROOT_REACH.across * h], upper: [ROOT_REACH.across * h, ROOT_REACH.up * h, ROOT_REACH.across * h] };
+    this.rig = new IkRig(module, { ...spec, effectors: this.bones, floatingRoot });
+    this.angles = this.rig.project(new Float64Array(this.rig.numAngles));
+    this.part = subRig(this.rig.spec, Array.from(this.bones));
+    try {
+      this.session = new IkSession(module, this.part.spec);
+    } catch (e) {
+      this.rig.dispose();
+      throw e;
+    }
     const drag = dragTolerances(h);
-    this.settings = { ...drag, maxIterations: FRAME_ITERATIONS, timeBudgetMs: FRAME_BUDGET_MS, restarts: 0, paperMode: false, strictPriority: true };
+    this.settings = { ...drag, maxIterations: FRAME_ITERATIONS, timeBudgetMs: FRAME_BUDGET_MS, restarts: 0, paperMode: false, strictPriority: true, lmInitialMu: FRAME_MU };
     const s = this.session;
     // Every effector holds its frame: the tracked ones the tracker's, the feet where they stand.
     const rotations = s.tipRotations();
@@ -97,15 +121,21 @@ export class AvatarSolver {
     // arms take none: a hand's position and frame leave its elbow one turn about the shoulder-wrist
     // line, which each frame's least change from the last keeps (a fixed pole pulled it off the
     // tracked hand on 30% of the frames of an arm motion).
-    const knees = [humanoid.bones.leftLowerLeg, humanoid.bones.rightLowerLeg];
-    this.limbs = poleLimbs(floating, s.effectors(), humanoid).filter((l) => knees.includes(l.bone));
+    const partHumanoid = subHumanoid(this.part, humanoid);
+    const knees = [partHumanoid.bones.leftLowerLeg, partHumanoid.bones.rightLowerLeg];
+    this.limbs = poleLimbs(this.part.spec, s.effectors(), partHumanoid).filter((l) => knees.includes(l.bone));
     this.poleBones = this.limbs.map((l) => l.bone);
     this.standingHeadY = s.tips()[1];
   }
 
-  /** The current pose: 3 angles per bone (degrees), then the root's translation (rig units). Always this array. */
-  get angles(): Float64Array {
-    return this.session.angles;
+  /** The head's, hands' and feet's tips at the current pose, 3 per bone in `bones` order (rig units, a new array). */
+  tips(): Float64Array {
+    return this.session.tips();
+  }
+
+  /** Their bone frames at the current pose, 4 per bone [x, y, z, w], rig coordinates (a new array). */
+  tipRotations(): Float64Array {
+    return this.session.tipRotations();
   }
 
   /** Solves one frame towards `input` from the last pose; the pose is the result. */
@@ -121,7 +151,9 @@ export class AvatarSolver {
     // target with them, 100% without).
     if (input.head.position[1] < this.standingHeadY - CROUCH_SHARE * this.height) this.placePoles();
     else if (s.goals.poleBones.length > 0) s.goals.setPoles([], []);
-    return s.solve('lm', this.settings);
+    const outcome = s.solve('lm', this.settings);
+    scatterAngles(this.part, s.angles, this.angles);
+    return outcome;
   }
 
   /** The knees' poles where they bend now (one leg length out the way each knee bends): they follow the body. */
@@ -133,5 +165,6 @@ export class AvatarSolver {
 
   dispose(): void {
     this.session.dispose();
+    this.rig.dispose();
   }
 }

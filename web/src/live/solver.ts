@@ -28,6 +28,11 @@ export interface SolveSettings {
   strictPriority?: boolean;
   /** The farthest a joint moves in one solve, rig units (the solver option maxJointMove). Default 0: no cap. */
   maxJointMove?: number;
+  /**
+   * lm's damping factor at the start of a solve (the solver option lmInitialMu). Default 1: a
+   * cautious first step; a stream of small changes (tracking) takes near Gauss-Newton steps.
+   */
+  lmInitialMu?: number;
 }
 
 /** What a solve or a step reached (angles in degrees, distances in rig units, see SolverResult). */
@@ -100,6 +105,7 @@ export class MethodSolver {
       paperMode: s.paperMode,
       strictPriority: s.strictPriority ?? true,
       maxJointMove: s.maxJointMove ?? 0,
+      lmInitialMu: s.lmInitialMu ?? 1,
     });
     Object.assign(this.sent, s);
   }
