@@ -405,6 +405,7 @@ bool Solver::on_target() const {
 }
 
 StopReason Solver::check_stop(double previous_E) const {
+  if (summary_.iterations < opt_.min_iterations) return StopReason::running;
   // With soft rows on, on target is not yet the end: the run goes on towards the soft terms'
   // optimum until |g| is under the gradient tolerance or a step lowers E by less than
   // kSoftStallShare of it (a slow method's steps near that optimum).

@@ -107,6 +107,33 @@ TEST_P(StopReasonConsistency, AFarTargetWithRestartsClaimsNoStopItDidNotReach) {
   expect_consistent(kin, s, target, o);
 }
 
+// min_iterations: a start already on target (the tips' own positions, moved less than the tip
+// tolerance) ends at once by default, and takes exactly that many iterations with the option,
+// ending on target nearer than it started.
+TEST_P(StopReasonConsistency, MinIterationsPolishesAStartOnTarget) {
+  Kinematics kin(branched_rig());
+  Eigen::VectorXd angles = Eigen::VectorXd::Constant(kin.num_angles(), 10.0);
+  kin.project(angles);
+  Eigen::VectorXd target(kin.num_residuals());
+  kin.tips(angles, target);
+  target.array() += 0.002;  // within the tip tolerance
+  SolverOptions o;
+  o.tip_tolerance = 0.01;
+  o.restarts = 0;
+  auto solver = make_solver(GetParam(), kin, o);
+  const SolverSummary& left = solver->solve(angles, target);
+  EXPECT_EQ(left.stop_reason, StopReason::converged_E);
+  EXPECT_EQ(left.iterations, 0);
+  const double start_distance = left.tip_distance;
+  o.min_iterations = 1;
+  solver->set_options(o);
+  const SolverSummary& polished = solver->solve(angles, target);
+  EXPECT_EQ(polished.stop_reason, StopReason::converged_E);
+  EXPECT_EQ(polished.iterations, 1);
+  EXPECT_LT(polished.tip_distance, start_distance);
+  expect_consistent(kin, polished, target, o);
+}
+
 INSTANTIATE_TEST_SUITE_P(EveryMethod, StopReasonConsistency, ::testing::Values("gd", "bfgs", "gn", "newton", "lm"));
 
 }  // namespace

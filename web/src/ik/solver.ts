@@ -49,6 +49,11 @@ export interface SolverOptions {
   orientationToleranceDeg?: number;
   /** Iteration cap. Default 100000. */
   maxIterations?: number;
+  /**
+   * Iterations a solve takes before on target ends it (within maxIterations): a tracked frame that
+   * starts within the tolerance is polished instead of left. Default 0.
+   */
+  minIterations?: number;
   /** Time budget of one solve, seconds (time spent inside start/step); 0 or Infinity: none. Default 1. */
   timeBudgetSeconds?: number;
   /** E values kept per solve for errorHistory(). Default 10000. */

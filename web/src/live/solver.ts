@@ -33,6 +33,8 @@ export interface SolveSettings {
    * cautious first step; a stream of small changes (tracking) takes near Gauss-Newton steps.
    */
   lmInitialMu?: number;
+  /** Iterations a solve takes before on target ends it (the solver option minIterations). Default 0. */
+  minIterations?: number;
 }
 
 /** What a solve or a step reached (angles in degrees, distances in rig units, see SolverResult). */
@@ -106,6 +108,7 @@ export class MethodSolver {
       strictPriority: s.strictPriority ?? true,
       maxJointMove: s.maxJointMove ?? 0,
       lmInitialMu: s.lmInitialMu ?? 1,
+      minIterations: s.minIterations ?? 0,
     });
     Object.assign(this.sent, s);
   }
