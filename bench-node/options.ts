@@ -191,7 +191,7 @@ function program(allMethods: readonly string[], defaultMethods: readonly string[
     .addOption(new Option('--rig <paths>', `rig files (.glb, .gltf, A7 .json) or project rig names, comma-separated${merged}`).argParser(collect).makeOptionMandatory())
     .addOption(new Option('--experiment <list>', `experiments: ${experiments.join(', ')}, or track alone${merged}`).argParser(collect).default('random,incremental'))
     .addOption(single('--clips <list>', 'track: the animation clips to run, comma-separated, or all', 'all'))
-    .addOption(single('--points <n>', 'track: tracked points, 3 (head and hands)', '3'))
+    .addOption(single('--points <n>', 'track: tracked points, 3 (head and hands) or 6 (and the hips and feet)', '3'))
     .addOption(new Option('--methods <list>', `methods: ${allMethods.join(', ')} (kdl: --engine native only)${merged}`).argParser(collect).default(defaultMethods.join(',')))
     .addOption(single('--samples <n>', `samples per experiment (at most ${MAX_SAMPLES}); per-method overrides like 1000,gd=100`, String(DEFAULT_SAMPLES)))
     .addOption(single('--seed <s>', 'seed of the target sets', '1'))
@@ -292,7 +292,7 @@ export function parseOptions(argv: string[], isTTY: boolean, ownMethods: readonl
   if (track) {
     if (opts.experiments.length > 0) throw usage(`--experiment: track runs alone, not with ${opts.experiments.join(', ')}`);
     const points = integerIn('--points', raw.points, 3, 6);
-    if (points !== 3) throw usage('--points: only 3 (head and hands) so far; hips and feet as inputs are not built yet');
+    if (points !== 3 && points !== 6) throw usage('--points: 3 (head and hands) or 6 (and the hips and feet)');
     if (opts.markdown || opts.compare) throw usage(`${opts.markdown ? '--markdown' : '--compare'} goes with the other experiments, not track`);
     opts.track = { clips: raw.clips.trim() === 'all' ? 'all' : lists('--clips', raw.clips), points };
     return opts;

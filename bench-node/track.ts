@@ -3,6 +3,7 @@
 // give, the head's and the hands' poses, frame by frame at the clip's own rate, each frame solved
 // from the last one's result; the whole body is compared with the clip's.
 //
+// 3 points: the head and hands; 6: the hips and feet as well.
 // Per clip, one row:
 // - success: frames with the head and hands within δ (0.1% of the height) and 0.5° of the clip's;
 // - mpjpe, mpjpe_upper: the mean distance of every joint (bone head), and of the spine, neck, head,
@@ -10,12 +11,12 @@
 // - jitter_ratio: the joints' mean acceleration (second difference per frame) over the clip's own;
 // - flips: frames where an elbow or knee bends against its anatomical direction or its bend plane
 //   turns more than 90 degrees (flips.ts);
-// - foot_slide: the farthest a planted foot moved from where it was planted, as a fraction of the
-//   height (the feet do not step yet: planted for the whole clip);
+// - foot_slide: the farthest our foot moved from where it was planted, while the clip's foot stays
+//   still (moves less than 0.01% of the height a frame), as a fraction of the height;
 // - median_us, p99_us: the time of update() per frame, microseconds, WebAssembly in Node.
 import { Matrix4, Quaternion } from 'three';
 
-import { AvatarSolver, type AvatarInput } from '../web/src/avatar/avatar_solver.js';
+import { AvatarSolver, type AvatarInput, type TrackedPose } from '../web/src/avatar/avatar_solver.js';
 import { rotationAngleDeg } from '../web/src/ik/goals.js';
 import type { IkCoreModule } from '../web/src/ik/module.js';
 import type { RigSpec } from '../web/src/ik/rig_spec.js';
@@ -48,6 +49,16 @@ const UPPER_ROLES: readonly HumanoidRole[] = [
   'spine', 'chest', 'upperChest', 'neck', 'head', 'leftShoulder', 'leftUpperArm', 'leftLowerArm', 'leftHand',
   'rightShoulder', 'rightUpperArm', 'rightLowerArm', 'rightHand',
 ];
+
+/** The effector index of each input in AvatarSolver.bones' order, and the inputs of 3 and 6 tracked points. */
+const EFFECTOR: Record<keyof AvatarInput, number> = { head: 0, leftHand: 1, rightHand: 2, leftFoot: 3, rightFoot: 4, hips: 5 };
+const POINTS: Record<number, Array<keyof AvatarInput>> = {
+  3: ['head', 'leftHand', 'rightHand'],
+  6: ['head', 'leftHand', 'rightHand', 'hips', 'leftFoot', 'rightFoot'],
+};
+const FEET: Array<keyof AvatarInput> = ['leftFoot', 'rightFoot'];
+/** A clip's foot that moved less than this share of the height since the last frame is planted. */
+const STILL_SHARE = 1e-4;
 
 /** The tracked points' orientation tolerance, degrees. */
 const TRACK_TOLERANCE_DEG = 0.5;
@@ -89,44 +100,56 @@ function trackClip(ik: IkCoreModule, rig: TrackRig, clips: ClipFrames, clip: num
     const limbs = flipLimbs(spec, rig.humanoid);
     const effectors = Array.from(avatar.bones);
     const { frames, name } = clips.clips[clip];
+    const tracked = POINTS[points];
     const times: number[] = [];
     let onTarget = 0, mpjpe = 0, mpjpeUpper = 0, flips = 0, slide = 0;
     const ours: number[][] = [], theirs: number[][] = [];
     let previousPoses: Float64Array | null = null;
+    // Per foot: the clip's tip last frame, and ours where the foot was planted (null: in the air).
+    const feet = FEET.map(() => ({ truth: null as number[] | null, planted: null as number[] | null }));
     const g = new Matrix4(), q = new Quaternion(), rest = new Quaternion();
     for (let f = 0; f < frames; f++) {
       const motion = clips.motion(clip, f);
       const truthHeads = heads.map((p, i) => transformPoint(motion.subarray(16 * i, 16 * i + 16), p));
-      const input = {} as AvatarInput;
-      const tracked: Array<keyof AvatarInput> = ['head', 'leftHand', 'rightHand'];
-      const targets: number[][] = [], frames4: number[][] = [];
-      tracked.forEach((key, k) => {
+      // The clip's pose of effector k: its tip and its bone frame.
+      const truthOf = (k: number): TrackedPose & { position: number[]; orientation: number[] } => {
         const m = motion.subarray(16 * effectors[k], 16 * effectors[k] + 16);
         const position = transformPoint(m, restTips.subarray(3 * k, 3 * k + 3));
         g.set(m[0], m[1], m[2], 0, m[4], m[5], m[6], 0, m[8], m[9], m[10], 0, 0, 0, 0, 1);
         rest.fromArray(restRotations, 4 * k);
         q.setFromRotationMatrix(g).multiply(rest);
-        const orientation = q.toArray();
-        input[key] = { position, orientation };
-        targets.push(position);
-        frames4.push(orientation);
+        return { position, orientation: q.toArray() };
+      };
+      const input = {} as AvatarInput;
+      const given = tracked.map((key) => {
+        const pose = truthOf(EFFECTOR[key]);
+        input[key] = pose;
+        return { k: EFFECTOR[key], ...pose };
       });
       const t0 = performance.now();
       avatar.update(input);
       times.push((performance.now() - t0) * 1000);
       const tips = avatar.tips(), turns = avatar.tipRotations(), poses = avatar.rig.poses(avatar.angles);
-      const within = targets.every((p, k) => Math.hypot(tips[3 * k] - p[0], tips[3 * k + 1] - p[1], tips[3 * k + 2] - p[2]) < delta) &&
-        frames4.every((o, k) => rotationAngleDeg(turns.subarray(4 * k, 4 * k + 4), o) < TRACK_TOLERANCE_DEG);
+      const tipAt = (k: number): number[] => [tips[3 * k], tips[3 * k + 1], tips[3 * k + 2]];
+      const within = given.every(({ k, position, orientation }) =>
+        distance(tipAt(k), position) < delta && rotationAngleDeg(turns.subarray(4 * k, 4 * k + 4), orientation) < TRACK_TOLERANCE_DEG);
       if (within) onTarget++;
       const mine = heads.map((p, i) => transformPoint(poses.subarray(16 * i, 16 * i + 16), p));
-      const error = (b: number): number => Math.hypot(mine[b][0] - truthHeads[b][0], mine[b][1] - truthHeads[b][1], mine[b][2] - truthHeads[b][2]);
+      const error = (b: number): number => distance(mine[b], truthHeads[b]);
       mpjpe += mean(heads.map((_, b) => error(b))) / h;
       mpjpeUpper += mean(upper.map(error)) / h;
       ours.push(mine.flat());
       theirs.push(truthHeads.flat());
       if (previousPoses && isFlip(spec, limbs, previousPoses, poses)) flips++;
       previousPoses = poses;
-      for (const k of [3, 4]) slide = Math.max(slide, Math.hypot(tips[3 * k] - restTips[3 * k], tips[3 * k + 1] - restTips[3 * k + 1], tips[3 * k + 2] - restTips[3 * k + 2]) / h);
+      // A foot is planted while the clip's stays still; ours should not slide from where it was planted.
+      FEET.forEach((key, i) => {
+        const truth = truthOf(EFFECTOR[key]).position, foot = feet[i];
+        const still = foot.truth !== null && distance(truth, foot.truth) < STILL_SHARE * h;
+        if (!still || foot.planted === null) foot.planted = tipAt(EFFECTOR[key]);
+        else slide = Math.max(slide, distance(tipAt(EFFECTOR[key]), foot.planted) / h);
+        foot.truth = truth;
+      });
     }
     times.sort((a, b) => a - b);
     const truthJitter = meanAcceleration(theirs), ourJitter = meanAcceleration(ours);
@@ -156,6 +179,10 @@ function mean(xs: number[]): number {
 }
 
 /** The mean size of the second difference of each point over the frames (rig units per frame²); 0 with fewer than 3 frames. */
+function distance(a: ArrayLike<number>, b: ArrayLike<number>): number {
+  return Math.hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]);
+}
+
 function meanAcceleration(frames: number[][]): number {
   let sum = 0, count = 0;
   for (let f = 1; f + 1 < frames.length; f++)

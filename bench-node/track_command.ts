@@ -1,4 +1,4 @@
-// `npm run bench -- --rig FILE --experiment track [--clips NAME,...|all] [--points 3]`: every
+// `npm run bench -- --rig FILE --experiment track [--clips NAME,...|all] [--points 3|6]`: every
 // rig's clips through the avatar solver (track.ts), a table on stdout, the rows as JSON and CSV.
 import type { IkCoreModule } from '../web/src/ik/module.js';
 import { BenchError } from './errors.js';
@@ -39,7 +39,7 @@ export async function runTrackCommand(opts: BenchOptions, ik: IkCoreModule, out:
 function trackTable(rows: readonly TrackRow[]): Table {
   const percent = (x: number): string => `${(100 * x).toFixed(1)}%`;
   return {
-    title: 'track: three tracked points (head, hands) drive the avatar; errors as shares of the height',
+    title: 'track: the tracked points (3: head and hands; 6: and hips and feet) drive the avatar; errors as shares of the height',
     headers: ['rig', 'clip', 'frames', 'points', 'success', 'mpjpe', 'mpjpe_upper', 'jitter_ratio', 'flips', 'foot_slide', 'median_us', 'p99_us'],
     numeric: [false, false, true, true, true, true, true, true, true, true, true, true],
     rows: rows.map((r) => [

@@ -24,16 +24,31 @@ export interface TrackedPose {
   orientation: ArrayLike<number>;
 }
 
-/** One frame of tracking: the head and both hands. */
+/**
+ * One frame of tracking: the head and both hands (3 points); with the hips and both feet, 6. A
+ * foot not given stays planted where it last was; hips not given go where the body takes them.
+ */
 export interface AvatarInput {
   head: TrackedPose;
   leftHand: TrackedPose;
   rightHand: TrackedPose;
+  hips?: TrackedPose;
+  leftFoot?: TrackedPose;
+  rightFoot?: TrackedPose;
 }
 
-/** The tracked bones in effector order, then the planted feet. */
-const TRACKED: readonly HumanoidRole[] = ['head', 'leftHand', 'rightHand'];
-const PLANTED: readonly HumanoidRole[] = ['leftFoot', 'rightFoot'];
+/** The effectors' roles, in effector order (AvatarSolver.bones): the head and hands always tracked, the feet and hips when given. */
+const ROLES: readonly HumanoidRole[] = ['head', 'leftHand', 'rightHand', 'leftFoot', 'rightFoot', 'hips'];
+const INPUTS: ReadonlyArray<keyof AvatarInput> = ['head', 'leftHand', 'rightHand', 'leftFoot', 'rightFoot', 'hips'];
+const HIPS = 5;
+
+/**
+ * The hips' own rotation, XZX degrees: a turn about the hips bone (upright on a humanoid) and no
+ * tilt. A humanoid's limits hold the root still (it carries the whole rig); the avatar's hips turn
+ * with the body. A tilt of up to 30 degrees as well cost the crouch clip half its frames (46% on
+ * target): the spine and the hips then share every lean.
+ */
+const HIPS_RANGE = { lower: [-180, 0, 0], upper: [180, 0, 0] };
 
 /** How far the hips may move from where they stand, as shares of the height: sideways and forward, down, up. */
 const ROOT_REACH = { across: 1, down: 0.6, up: 0.1 };
@@ -77,7 +92,7 @@ export class AvatarSolver {
   readonly rig: IkRig;
   /** The whole pose: 3 angles per bone (degrees), then the root's translation (rig units). Always this array. */
   readonly angles: Float64Array;
-  /** The whole rig's indices of the head, the left and right hands, the left and right feet (the effectors' order). */
+  /** The whole rig's indices of the head, the left and right hands, the left and right feet and the hips (the effectors' order). */
   readonly bones: Int32Array;
   /** The rig's height at rest, rig units; δ, the tip tolerance, is 0.1% of it. */
   readonly height: number;
@@ -95,9 +110,8 @@ export class AvatarSolver {
    * its rest pose. Throws an Error naming the roles missing for tracking.
    */
   constructor(module: IkCoreModule, spec: RigSpec, humanoid: HumanoidMap) {
-    const roles = [...TRACKED, ...PLANTED];
-    const bones = roles.map((role) => humanoid.bones[role]);
-    const missing = roles.filter((_, i) => bones[i] === undefined);
+    const bones = ROLES.map((role) => humanoid.bones[role]);
+    const missing = ROLES.filter((_, i) => bones[i] === undefined);
     if (missing.length > 0) throw new Error(`the avatar needs these humanoid bones, not found: ${missing.join(', ')}`);
     this.bones = Int32Array.from(bones as number[]);
     const whole = new IkRig(module, { ...spec, effectors: this.bones });
@@ -108,7 +122,10 @@ export class AvatarSolver {
     }
     const h = this.height;
     const floatingRoot = { lower: [-ROOT_REACH.across * h, -ROOT_REACH.down * h, -ROOT_REACH.across * h], upper: [ROOT_REACH.across * h, ROOT_REACH.up * h, ROOT_REACH.across * h] };
-    this.rig = new IkRig(module, { ...spec, effectors: this.bones, floatingRoot });
+    const lower = spec.lower.slice(), upper = spec.upper.slice();
+    lower.set(HIPS_RANGE.lower, 3 * this.bones[HIPS]);
+    upper.set(HIPS_RANGE.upper, 3 * this.bones[HIPS]);
+    this.rig = new IkRig(module, { ...spec, lower, upper, effectors: this.bones, floatingRoot });
     this.angles = this.rig.project(new Float64Array(this.rig.numAngles));
     this.part = subRig(this.rig.spec, Array.from(this.bones));
     try {
@@ -120,9 +137,11 @@ export class AvatarSolver {
     const drag = dragTolerances(h);
     this.settings = { ...drag, maxIterations: FRAME_ITERATIONS, timeBudgetMs: FRAME_BUDGET_MS, restarts: 0, paperMode: false, strictPriority: true, lmInitialMu: FRAME_MU, minIterations: FRAME_MIN_ITERATIONS };
     const s = this.session;
-    // Every effector holds its frame: the tracked ones the tracker's, the feet where they stand.
+    // Every effector holds its frame: the tracked ones the tracker's, the feet where they stand;
+    // the hips have no goal until they are tracked.
     const rotations = s.tipRotations();
-    for (let k = 0; k < bones.length; k++) s.setOrientationGoal(k, true, rotations.subarray(4 * k, 4 * k + 4));
+    for (let k = 0; k < bones.length; k++) s.setOrientationGoal(k, k !== HIPS, rotations.subarray(4 * k, 4 * k + 4));
+    s.goals.setPosition(HIPS, false);
     // Poles on the knees only: they give a straight leg the way to bend when the hips go down. The
     // arms take none: a hand's position and frame leave its elbow one turn about the shoulder-wrist
     // line, which each frame's least change from the last keeps (a fixed pole pulled it off the
@@ -134,7 +153,7 @@ export class AvatarSolver {
     this.standingHeadY = s.tips()[1];
   }
 
-  /** The head's, hands' and feet's tips at the current pose, 3 per bone in `bones` order (rig units, a new array). */
+  /** The head's, hands', feet's and hips' tips at the current pose, 3 per bone in `bones` order (rig units, a new array). */
   tips(): Float64Array {
     return this.session.tips();
   }
@@ -147,10 +166,15 @@ export class AvatarSolver {
   /** Solves one frame towards `input` from the last pose; the pose is the result. */
   update(input: AvatarInput): SolveOutcome {
     const s = this.session;
-    const tracked = [input.head, input.leftHand, input.rightHand];
-    for (let k = 0; k < tracked.length; k++) {
-      for (let i = 0; i < 3; i++) s.targets[3 * k + i] = tracked[k].position[i];
-      for (let i = 0; i < 4; i++) s.goals.rotations[4 * k + i] = tracked[k].orientation[i];
+    for (let k = 0; k < INPUTS.length; k++) {
+      const pose = input[INPUTS[k]];
+      if (k === HIPS) {
+        s.goals.setPosition(HIPS, pose !== undefined);
+        s.setOrientationGoal(HIPS, pose !== undefined, pose?.orientation);
+      }
+      if (!pose) continue;
+      for (let i = 0; i < 3; i++) s.targets[3 * k + i] = pose.position[i];
+      for (let i = 0; i < 4; i++) s.goals.rotations[4 * k + i] = pose.orientation[i];
     }
     // The knees take their poles only while the head is lower than it stands (a crouch): standing,
     // their soft rows held the hard goals off target for whole clips (idle: 12% of the frames on
