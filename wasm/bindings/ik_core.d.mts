@@ -73,10 +73,12 @@ export interface EmbindSolver {
   setOptions(options: EmbindSolverOptions): boolean;
   options(): EmbindSolverOptions;
   /**
-   * Goals for the next start()/solveIo(): 6 per effector [positionWeight, orientationWeight, qx, qy, qz, qw]
-   * (the target gives positions), 5 per bend hint [bone, x, y, z, weight], stiffness per bone or none.
+   * Goals for the next start()/solveIo(): 7 per effector [positionWeight, orientationWeight, qx, qy, qz, qw, yields]
+   * (the target gives positions), 5 per bend hint [bone, x, y, z, weight], stiffness per bone or none;
+   * each array with its length.
    */
-  setGoals(packed: Float64Array, poles: Float64Array, stiffness: Float64Array, lengthScale: number): boolean;
+  setGoals(packed: Float64Array, packedLength: number, poles: Float64Array, polesLength: number, stiffness: Float64Array,
+    stiffnessLength: number, lengthScale: number): boolean;
   clearGoals(): void;
   readonly hasGoals: boolean;
   start(angles: Float64Array, target: Float64Array): string;

@@ -67,6 +67,13 @@ inline void copy_in(const emscripten::val& array, size_t expected, std::vector<d
   view.call<void>("set", array);
 }
 
+// Copies a Float64Array the API made, of `n` numbers, into `out` (resized only if needed).
+inline void copy_known(const emscripten::val& array, int n, std::vector<double>& out) {
+  if (n < 0) throw RigError("a negative array length");
+  if (out.size() != static_cast<size_t>(n)) out.resize(n);
+  if (n > 0) emscripten::val(emscripten::typed_memory_view(n, out.data())).call<void>("set", array);
+}
+
 inline void copy_in(const emscripten::val& array, std::vector<int>& out, const char* what) {
   const size_t n = js_length(array, what);
   out.resize(n);

@@ -79,14 +79,16 @@ class SolverBinding {
   // Goals beyond plain positions for the following start() and solve_io() calls (goal_input.h:
   // kGoalStride numbers per end effector, kPoleStride per bend hint, stiffness per bone or none;
   // length_scale rig units per radian, 0: the rig's reach). The target still gives the
-  // positions. False (the old goals kept) if refused.
-  bool set_goals(const val& packed, const val& poles, const val& stiffness, double length_scale) {
+  // positions. The arrays are Float64Arrays of the given lengths (the API's own, sent every frame
+  // a tracked avatar's goals turn: no length read back through JavaScript, no allocation once the
+  // sizes settle). False (the old goals kept) if refused.
+  bool set_goals(const val& packed, int packed_length, const val& poles, int poles_length, const val& stiffness,
+                 int stiffness_length, double length_scale) {
     return guarded([&] {
-      std::vector<double> numbers, pole_numbers, stiffness_numbers;
-      copy_in(packed, js_length(packed, "goals"), numbers, "goals");
-      copy_in(poles, js_length(poles, "poles"), pole_numbers, "poles");
-      copy_in(stiffness, js_length(stiffness, "stiffness"), stiffness_numbers, "stiffness");
-      goal_input_.set(rig_.kinematics(), numbers, pole_numbers, stiffness_numbers, length_scale);
+      copy_known(packed, packed_length, goal_numbers_);
+      copy_known(poles, poles_length, pole_numbers_);
+      copy_known(stiffness, stiffness_length, stiffness_numbers_);
+      goal_input_.set(rig_.kinematics(), goal_numbers_, pole_numbers_, stiffness_numbers_, length_scale);
       has_goals_ = true;
       return true;
     }, false);
@@ -274,6 +276,7 @@ class SolverBinding {
   std::vector<double> angles_, target_;
   std::vector<double> io_;  // solve_io(): angles | target | result numbers
   GoalInput goal_input_;
+  std::vector<double> goal_numbers_, pole_numbers_, stiffness_numbers_;  // set_goals()' copies
   bool has_goals_ = false;
   int io_n_ = 0, io_m_ = 0;
 };

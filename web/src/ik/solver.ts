@@ -430,7 +430,9 @@ export class IkSolver {
       equal(last.packed, goals.packed) && equal(last.poles, goals.poles) && equal(last.stiffness, goals.stiffness))
       return;
     this.goals = undefined;
-    if (!this.live().setGoals(goals.packed, goals.poles, goals.stiffness, goals.lengthScale)) throw coreError(this.rig.module, 'setGoals');
+    const live = this.live();
+    if (!live.setGoals(goals.packed, goals.packed.length, goals.poles, goals.poles.length, goals.stiffness, goals.stiffness.length, goals.lengthScale))
+      throw coreError(this.rig.module, 'setGoals');
     const none = new Float64Array(0);
     this.goals = {
       packed: keepCopy(last?.packed ?? none, goals.packed),
