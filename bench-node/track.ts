@@ -11,8 +11,9 @@
 // - jitter_ratio: the joints' mean acceleration (second difference per frame) over the clip's own;
 // - flips: frames where an elbow or knee bends against its anatomical direction or its bend plane
 //   turns more than 90 degrees (flips.ts);
-// - foot_slide: the farthest our foot moved from where it was planted, while the clip's foot stays
-//   still (moves less than 0.01% of the height a frame), as a fraction of the height;
+// - foot_slide: the farthest our foot moved from where it was planted, as a fraction of the
+//   height: with 3 points where the avatar planted it (between its steps), with 6 while the clip's
+//   foot stays still (moves less than 0.01% of the height a frame);
 // - median_us, p99_us: the time of update() per frame, microseconds, WebAssembly in Node.
 import { Matrix4, Quaternion } from 'three';
 
@@ -142,12 +143,19 @@ function trackClip(ik: IkCoreModule, rig: TrackRig, clips: ClipFrames, clip: num
       theirs.push(truthHeads.flat());
       if (previousPoses && isFlip(spec, limbs, previousPoses, poses)) flips++;
       previousPoses = poses;
-      // A foot is planted while the clip's stays still; ours should not slide from where it was planted.
+      // With 6 points a foot is planted while the clip's stays still, and ours should not slide from
+      // where it was then; with 3, where the avatar planted it (it steps when the body leaves it).
+      const planted = avatar.plantedFeet();
       FEET.forEach((key, i) => {
-        const truth = truthOf(EFFECTOR[key]).position, foot = feet[i];
+        const tip = tipAt(EFFECTOR[key]), foot = feet[i];
+        if (points === 3) {
+          if (planted[i]) slide = Math.max(slide, distance(tip, planted[i]!) / h);
+          return;
+        }
+        const truth = truthOf(EFFECTOR[key]).position;
         const still = foot.truth !== null && distance(truth, foot.truth) < STILL_SHARE * h;
-        if (!still || foot.planted === null) foot.planted = tipAt(EFFECTOR[key]);
-        else slide = Math.max(slide, distance(tipAt(EFFECTOR[key]), foot.planted) / h);
+        if (!still || foot.planted === null) foot.planted = tip;
+        else slide = Math.max(slide, distance(tip, foot.planted) / h);
         foot.truth = truth;
       });
     }

@@ -1,12 +1,12 @@
 // A whole body from three tracked points (issue 29): the head's and both hands' positions and
 // orientations in, every joint out, on any recognised humanoid. The rig floats (its hips move,
-// rig.h FloatingRoot), its feet stay planted where they stood, its knees take poles while it
+// rig.h FloatingRoot), its feet stay planted, its knees take poles while it
 // crouches, and each update() is one solve from the last pose, as the page solves a frame:
 // Levenberg-Marquardt with strict priority, no restarts. It solves on the part of the rig
 // the tracked and planted bones hang from (sub_rig.ts: no fingers, toes or eyes) and writes that
 // pose into the whole rig's. No three.js and no DOM: a page, a widget or a Node script drives it.
-// Not yet: the feet stepping when the body leaves them behind, the 6-point input (hips and feet),
-// the spine's rest pull.
+// With three points the feet stand where they stood and step when the body leaves them
+// (foot_steps.ts); with six (the hips and feet as well) they go where they are tracked.
 import type { IkCoreModule } from '../ik/module.js';
 import type { RigSpec } from '../ik/rig_spec.js';
 import { type PoleLimb, poleLimbs } from '../live/pole_limbs.js';
@@ -16,6 +16,7 @@ import { IkSession } from '../live/session.js';
 import type { SolveOutcome, SolveSettings } from '../live/solver.js';
 import type { HumanoidMap, HumanoidRole } from '../rig/humanoid_roles.js';
 import { dragTolerances, rigSize } from '../rig/tolerances.js';
+import { FootSteps } from './foot_steps.js';
 import { scatterAngles, type SubRig, subHumanoid, subRig } from './sub_rig.js';
 
 /** A tracked pose: a position (rig units) and an orientation, a unit quaternion [x, y, z, w] of the bone's frame, rig coordinates. */
@@ -104,6 +105,8 @@ export class AvatarSolver {
   private readonly poleBones: number[];
   /** The head's height at rest (rig units). */
   private readonly standingHeadY: number;
+  /** Where the untracked feet stand, and their steps. */
+  private readonly steps: FootSteps;
 
   /**
    * An avatar of `spec` (a humanoid's rig, its limits in place) mapped by `humanoid`, standing in
@@ -150,7 +153,10 @@ export class AvatarSolver {
     const knees = [partHumanoid.bones.leftLowerLeg, partHumanoid.bones.rightLowerLeg];
     this.limbs = poleLimbs(this.part.spec, s.effectors(), partHumanoid).filter((l) => knees.includes(l.bone));
     this.poleBones = this.limbs.map((l) => l.bone);
-    this.standingHeadY = s.tips()[1];
+    const tips = s.tips();
+    this.standingHeadY = tips[1];
+    const pose = (k: number) => ({ position: Array.from(tips.subarray(3 * k, 3 * k + 3)), orientation: Array.from(rotations.subarray(4 * k, 4 * k + 4)) });
+    this.steps = new FootSteps([pose(3), pose(4)], tips.subarray(3 * HIPS, 3 * HIPS + 3), rotations.subarray(0, 4), h);
   }
 
   /** The head's, hands', feet's and hips' tips at the current pose, 3 per bone in `bones` order (rig units, a new array). */
@@ -163,9 +169,22 @@ export class AvatarSolver {
     return this.session.tipRotations();
   }
 
+  /**
+   * Where each foot (left, right) is planted, its tip in rig units, or null while it steps; the
+   * tracked feet of 6 points count as planted where they were given.
+   */
+  plantedFeet(): Array<number[] | null> {
+    return [0, 1].map((k) => this.steps.planted(k)?.position ?? null);
+  }
+
   /** Solves one frame towards `input` from the last pose; the pose is the result. */
   update(input: AvatarInput): SolveOutcome {
     const s = this.session;
+    if (input.leftFoot && input.rightFoot) this.steps.plant([input.leftFoot, input.rightFoot].map((f) => ({ position: Array.from(f.position), orientation: Array.from(f.orientation) })));
+    else {
+      const [left, right] = this.steps.update(input.head.orientation, s.tips().subarray(3 * HIPS, 3 * HIPS + 3));
+      input = { ...input, leftFoot: input.leftFoot ?? left, rightFoot: input.rightFoot ?? right };
+    }
     for (let k = 0; k < INPUTS.length; k++) {
       const pose = input[INPUTS[k]];
       if (k === HIPS) {
