@@ -6,48 +6,25 @@
 // - reach_wave: the right arm reaches forward and up, then waves;
 // - crouch: the hips go down a quarter of the height and back, the knees bend forward, the feet stay
 //   on the floor (the legs solved in closed form), the spine leans forward, the arms come forward;
-// - look_around: the head and neck turn 45 degrees each way and nod, the chest turns with them.
-// Turning in place and the stress clip (hands behind the back, over the head...) are not made yet.
-import { type ClipDef, type ClipPose, type Quat, between, inverse, mul, rotate, turnAbout } from './clips.js';
+// - look_around: the head and neck turn 45 degrees each way and nod, the chest turns with them;
+// - turn_in_place (turn_clip.ts): the body turns 180 degrees on stepping feet, then stands;
+// - stress (stress_clip.ts): what users of full-body IK in VR complain about, one after another:
+//   hands behind the back and over the head, leaning, looking up and down, a deep crouch, a turn.
+// The first four keep every frame; the last two only the keyframes interpolation cannot rebuild
+// within KEY_TOLERANCE, and keep every joint within the humanoid limits (anatomy_ranges.ts).
+import { type Body, P, characterBody, ease, fwd } from './character_body.js';
+import { type ClipDef, type ClipPose, type Quat, between, inverse, mul, rotate } from './clips.js';
 import type { JointDef } from './model.js';
-import { type Vec3, add, cross, dot, length, normalize, scale, sub } from './vec.js';
+import { stressClip } from './stress_clip.js';
+import { turnInPlace } from './turn_clip.js';
+import { type Vec3, add, dot, length, normalize, scale, sub } from './vec.js';
 
-const P = 'mixamorig:';
 const FPS = 30;
 const SECONDS = 6;
-const fwd: Vec3 = [0, 0, 1];
-
-/** 0 before `a`, 1 after `b`, smooth between. */
-function ease(t: number, a: number, b: number): number {
-  const u = Math.min(1, Math.max(0, (t - a) / (b - a)));
-  return u * u * (3 - 2 * u);
-}
 
 export function characterClips(joints: readonly JointDef[]): ClipDef[] {
-  const joint = (name: string): JointDef => {
-    const j = joints.find((x) => x.name === P + name);
-    if (!j) throw new Error(`character clips: no joint ${name}`);
-    return j;
-  };
-  const dir = (name: string): Vec3 => normalize(sub(joint(name).tail, joint(name).head));
-  /** Turns bone `name` towards `towards` (armature coordinates, across the bone) by `degrees`. */
-  const bend = (name: string, towards: Vec3, degrees: number): Quat => turnAbout(cross(dir(name), towards), degrees);
-  const twist = (name: string, degrees: number): Quat => turnAbout(dir(name), degrees);
-  /** The turn that points bone `name` along `to` (the smallest one), eased in by `w`. */
-  const aim = (name: string, to: Vec3, w: number): Quat => {
-    const d = dir(name);
-    return between(d, normalize(add(scale(d, 1 - w), scale(normalize(to), w))));
-  };
-
-  /** The relaxed stance at weight w (0: T-pose): arms down and a little forward, elbows bent 20 degrees. */
-  const stance = (w: number, turns: Record<string, Quat> = {}): Record<string, Quat> => {
-    for (const s of ['Left', 'Right']) {
-      const side = s === 'Left' ? 1 : -1;
-      turns[P + `${s}Arm`] ??= aim(`${s}Arm`, [0.25 * side, -1, 0.15], w);
-      turns[P + `${s}ForeArm`] ??= bend(`${s}ForeArm`, fwd, 20 * w);
-    }
-    return turns;
-  };
+  const body: Body = characterBody(joints);
+  const { joint, dir, bend, twist, aim, stance } = body;
 
   /**
    * Both legs for the hips shifted by `shift` (armature units) with the feet where they stand at
@@ -120,5 +97,7 @@ export function characterClips(joints: readonly JointDef[]): ClipDef[] {
         [P + 'Spine2']: twist('Spine2', 10 * w * sine(t, 3)),
       }),
     })),
+    turnInPlace(body),
+    stressClip(body),
   ];
 }

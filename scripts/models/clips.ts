@@ -1,10 +1,12 @@
 // Animation clips for the generated models: a clip gives, at each time, each moving joint's turn
 // and the root's shift, and addClips() writes them as glTF animations sampled at the clip's frame
-// rate (LINEAR). A turn is a rotation in ARMATURE coordinates about the joint's own head, applied
-// after its parent's motion (the joint's world motion is its parent's times its turn), so a clip
-// can say "bend the shin back 40 degrees" without knowing the joints' local axes.
-import type { AnimationSampler, Buffer, Document, Node } from '@gltf-transform/core';
+// rate (LINEAR): every frame, or only the frames interpolation cannot rebuild within the clip's
+// tolerance (key_reduction.ts). A turn is a rotation in ARMATURE coordinates about the joint's own
+// head, applied after its parent's motion (the joint's world motion is its parent's times its
+// turn), so a clip can say "bend the shin back 40 degrees" without knowing the joints' local axes.
+import type { Accessor, AnimationSampler, Buffer, Document, Node } from '@gltf-transform/core';
 
+import { keptFrames } from './key_reduction.js';
 import { type Vec3, cross, dot, length, normalize } from './vec.js';
 
 /** A unit quaternion [x, y, z, w]. */
@@ -22,6 +24,11 @@ export interface ClipDef {
   seconds: number;
   fps: number;
   pose(t: number): ClipPose;
+  /**
+   * Keep only the keyframes that linear interpolation cannot rebuild within these: degrees for
+   * rotations, armature units for the root's shift. Without it every frame is a keyframe.
+   */
+  tolerance?: { degrees: number; units: number };
 }
 
 export const IDENTITY: Quat = [0, 0, 0, 1];
@@ -74,12 +81,23 @@ export function addClips(doc: Document, buffer: Buffer, clips: readonly ClipDef[
     const times = Float32Array.from({ length: frames }, (_, k) => k / clip.fps);
     const poses = Array.from(times, (t) => clip.pose(t));
     const animation = doc.createAnimation(clip.name);
-    const input = doc.createAccessor().setType('SCALAR').setArray(times).setBuffer(buffer);
+    // One input accessor per set of kept frames (all of them without a tolerance).
+    const inputs = new Map<string, Accessor>();
+    const input = (kept: number[]): Accessor => {
+      const key = kept.join(' ');
+      let accessor = inputs.get(key);
+      if (!accessor) inputs.set(key, (accessor = doc.createAccessor().setType('SCALAR').setArray(Float32Array.from(kept, (k) => times[k])).setBuffer(buffer)));
+      return accessor;
+    };
     const channel = (node: Node, path: 'rotation' | 'translation', values: Float32Array, type: 'VEC3' | 'VEC4'): void => {
+      const stride = type === 'VEC4' ? 4 : 3;
+      const tolerance = clip.tolerance && (path === 'rotation' ? clip.tolerance.degrees : clip.tolerance.units);
+      const kept = tolerance === undefined ? Array.from(times, (_, k) => k) : keptFrames(values, stride, tolerance);
+      const keys = tolerance === undefined ? values : Float32Array.from(kept.flatMap((k) => Array.from(values.subarray(stride * k, stride * (k + 1)))));
       const sampler: AnimationSampler = doc
         .createAnimationSampler()
-        .setInput(input)
-        .setOutput(doc.createAccessor().setType(type).setArray(values).setBuffer(buffer))
+        .setInput(input(kept))
+        .setOutput(doc.createAccessor().setType(type).setArray(keys).setBuffer(buffer))
         .setInterpolation('LINEAR');
       animation.addSampler(sampler).addChannel(doc.createAnimationChannel().setTargetNode(node).setTargetPath(path).setSampler(sampler));
     };
