@@ -5,7 +5,10 @@
 //
 // 3 points: the head and hands; 6: the hips and feet as well.
 // Per clip, one row:
-// - success: frames with the head and hands within δ (0.1% of the height) and 0.5° of the clip's;
+// - success: frames with the tracked points within δ (0.1% of the height) and 0.5° of the clip's;
+// - reachable, success_reachable: the share of frames whose clip pose keeps every moving bone
+//   within the avatar's limits (to 0.05°: the clip's pose itself is then one the solver may
+//   find), and the success over those frames (clip_limits.ts);
 // - mpjpe, mpjpe_upper: the mean distance of every joint (bone head), and of the spine, neck, head,
 //   shoulders and arms only, from the clip's, as fractions of the height;
 // - jitter_ratio: the joints' mean acceleration (second difference per frame) over the clip's own;
@@ -24,6 +27,7 @@ import type { RigSpec } from '../web/src/ik/rig_spec.js';
 import type { HumanoidMap, HumanoidRole } from '../web/src/rig/humanoid_roles.js';
 import { transformPoint } from '../web/src/rig/mat4.js';
 import { ClipFrames } from './clip_frames.js';
+import { limitExcessDeg } from './clip_limits.js';
 import { BenchError } from './errors.js';
 import { flipLimbs, isFlip } from './flips.js';
 import { restBase } from './reach.js';
@@ -36,6 +40,8 @@ export interface TrackRow {
   frames: number;
   points: number;
   success_rate: number;
+  reachable: number;
+  success_reachable: number | null;
   mpjpe: number;
   mpjpe_upper: number;
   jitter_ratio: number | null;
@@ -60,6 +66,9 @@ const POINTS: Record<number, Array<keyof AvatarInput>> = {
 const FEET: Array<keyof AvatarInput> = ['leftFoot', 'rightFoot'];
 /** A clip's foot that moved less than this share of the height since the last frame is planted. */
 const STILL_SHARE = 1e-4;
+
+/** A clip's bone this many degrees past the avatar's limits still counts as within them. */
+const REACH_TOLERANCE_DEG = 0.05;
 
 /** The tracked points' orientation tolerance, degrees. */
 const TRACK_TOLERANCE_DEG = 0.5;
@@ -102,8 +111,14 @@ function trackClip(ik: IkCoreModule, rig: TrackRig, clips: ClipFrames, clip: num
     const effectors = Array.from(avatar.bones);
     const { frames, name } = clips.clips[clip];
     const tracked = POINTS[points];
+    // The bones the avatar moves: the tracked and planted ones and every bone above them.
+    const moving = [...new Set(Array.from(avatar.bones).flatMap((b) => {
+      const chain: number[] = [];
+      for (let a = b; a >= 0; a = spec.parents[a]) chain.push(a);
+      return chain;
+    }))];
     const times: number[] = [];
-    let onTarget = 0, mpjpe = 0, mpjpeUpper = 0, flips = 0, slide = 0;
+    let onTarget = 0, reachable = 0, onTargetReachable = 0, mpjpe = 0, mpjpeUpper = 0, flips = 0, slide = 0;
     const ours: number[][] = [], theirs: number[][] = [];
     let previousPoses: Float64Array | null = null;
     // Per foot: the clip's tip last frame, and ours where the foot was planted (null: in the air).
@@ -135,6 +150,10 @@ function trackClip(ik: IkCoreModule, rig: TrackRig, clips: ClipFrames, clip: num
       const within = given.every(({ k, position, orientation }) =>
         distance(tipAt(k), position) < delta && rotationAngleDeg(turns.subarray(4 * k, 4 * k + 4), orientation) < TRACK_TOLERANCE_DEG);
       if (within) onTarget++;
+      if (moving.every((b) => limitExcessDeg(spec, motion, b) <= REACH_TOLERANCE_DEG)) {
+        reachable++;
+        if (within) onTargetReachable++;
+      }
       const mine = heads.map((p, i) => transformPoint(poses.subarray(16 * i, 16 * i + 16), p));
       const error = (b: number): number => distance(mine[b], truthHeads[b]);
       mpjpe += mean(heads.map((_, b) => error(b))) / h;
@@ -169,6 +188,8 @@ function trackClip(ik: IkCoreModule, rig: TrackRig, clips: ClipFrames, clip: num
       frames,
       points,
       success_rate: onTarget / frames,
+      reachable: reachable / frames,
+      success_reachable: reachable > 0 ? onTargetReachable / reachable : null,
       mpjpe: mpjpe / frames,
       mpjpe_upper: mpjpeUpper / frames,
       jitter_ratio: truthJitter > 0 ? ourJitter / truthJitter : null,

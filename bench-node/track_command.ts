@@ -10,7 +10,7 @@ import { runTrack, type TrackRow } from './track.js';
 
 /** The CSV's columns, in order (the JSON rows carry the same fields). */
 const columns: ReadonlyArray<keyof TrackRow & string> = [
-  'rig', 'experiment', 'method', 'clip', 'frames', 'points', 'success_rate', 'mpjpe', 'mpjpe_upper', 'jitter_ratio', 'flips',
+  'rig', 'experiment', 'method', 'clip', 'frames', 'points', 'success_rate', 'reachable', 'success_reachable', 'mpjpe', 'mpjpe_upper', 'jitter_ratio', 'flips',
   'foot_slide', 'median_us', 'p99_us',
 ];
 
@@ -40,10 +40,10 @@ function trackTable(rows: readonly TrackRow[]): Table {
   const percent = (x: number): string => `${(100 * x).toFixed(1)}%`;
   return {
     title: 'track: the tracked points (3: head and hands; 6: and hips and feet) drive the avatar; errors as shares of the height',
-    headers: ['rig', 'clip', 'frames', 'points', 'success', 'mpjpe', 'mpjpe_upper', 'jitter_ratio', 'flips', 'foot_slide', 'median_us', 'p99_us'],
-    numeric: [false, false, true, true, true, true, true, true, true, true, true, true],
+    headers: ['rig', 'clip', 'frames', 'points', 'success', 'reachable', 'success_reachable', 'mpjpe', 'mpjpe_upper', 'jitter_ratio', 'flips', 'foot_slide', 'median_us', 'p99_us'],
+    numeric: [false, false, true, true, true, true, true, true, true, true, true, true, true, true],
     rows: rows.map((r) => [
-      r.rig, r.clip, String(r.frames), String(r.points), percent(r.success_rate), percent(r.mpjpe), percent(r.mpjpe_upper),
+      r.rig, r.clip, String(r.frames), String(r.points), percent(r.success_rate), percent(r.reachable), r.success_reachable === null ? '-' : percent(r.success_reachable), percent(r.mpjpe), percent(r.mpjpe_upper),
       formatNumber(r.jitter_ratio), String(r.flips), percent(r.foot_slide), r.median_us.toFixed(1), r.p99_us.toFixed(1),
     ]),
   };

@@ -68,11 +68,11 @@ describe('the track experiment', () => {
     const r = await bench('--rig', clips, '--experiment', 'track', '--json', json, '--csv', csv);
     expect(r.stderr).toBe('');
     expect(r.code).toBe(0);
-    expect(r.stdout).toMatch(/clip +frames +points +success +mpjpe +mpjpe_upper +jitter_ratio +flips +foot_slide +median_us +p99_us/);
+    expect(r.stdout).toMatch(/clip +frames +points +success +reachable +success_reachable +mpjpe +mpjpe_upper +jitter_ratio +flips +foot_slide +median_us +p99_us/);
     const rows = JSON.parse(readFileSync(json, 'utf8')).rows;
     expect(rows.map((row: { clip: string }) => row.clip)).toEqual(['still', 'sway']);
     const [still, sway] = rows;
-    expect(still).toMatchObject({ rig: 'clips', experiment: 'track', method: 'avatar', frames: 61, points: 3, success_rate: 1, flips: 0, jitter_ratio: null });
+    expect(still).toMatchObject({ rig: 'clips', experiment: 'track', method: 'avatar', frames: 61, points: 3, success_rate: 1, reachable: 1, success_reachable: 1, flips: 0, jitter_ratio: null });
     // The clip's joints and the rig's agree (the tracked points are met at 0 iterations); the knees'
     // poles bend the straight legs a little (0.04% of the height).
     expect(still.mpjpe).toBeLessThan(1e-3);
@@ -82,7 +82,7 @@ describe('the track experiment', () => {
     expect(sway.foot_slide).toBeLessThan(1e-3);
     expect(sway.median_us).toBeGreaterThan(0);
     const lines = readFileSync(csv, 'utf8').trim().split('\n');
-    expect(lines[0]).toBe('rig,experiment,method,clip,frames,points,success_rate,mpjpe,mpjpe_upper,jitter_ratio,flips,foot_slide,median_us,p99_us');
+    expect(lines[0]).toBe('rig,experiment,method,clip,frames,points,success_rate,reachable,success_reachable,mpjpe,mpjpe_upper,jitter_ratio,flips,foot_slide,median_us,p99_us');
     expect(lines.length).toBe(3);
   });
 

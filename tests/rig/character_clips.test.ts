@@ -7,12 +7,11 @@
 // feet, stress leans, looks up and down, crouches to half the height and turns.
 import { resolve } from 'node:path';
 
-import { Matrix4, Quaternion, Vector3 } from 'three';
 import { beforeAll, describe, expect, it } from 'vitest';
 
 import { ClipFrames } from '../../bench-node/clip_frames.js';
 import { bentAgainst, flipLimbs } from '../../bench-node/flips.js';
-import { xzxWithinLimits } from '../../bench-node/peers/xzx.js';
+import { limitExcessDeg } from '../../bench-node/clip_limits.js';
 import { restBase } from '../../bench-node/reach.js';
 import { loadBenchRig, type BenchRig } from '../../bench-node/rigs.js';
 import { transformPoint } from '../../web/src/rig/mat4.js';
@@ -43,27 +42,6 @@ const degrees = (radians: number): number => (radians * 180) / Math.PI;
 function framesOf(name: string): Float64Array[] {
   const c = clips.clips.findIndex((x) => x.name === name);
   return Array.from({ length: clips.clips[c].frames }, (_, f) => clips.motion(c, f));
-}
-
-/** The row-major 4x4 numbers at `o` of `m` as a three.js matrix. */
-function matrix(m: ArrayLike<number>, o: number): Matrix4 {
-  return new Matrix4().set(m[o], m[o + 1], m[o + 2], m[o + 3], m[o + 4], m[o + 5], m[o + 6], m[o + 7], m[o + 8], m[o + 9], m[o + 10], m[o + 11], m[o + 12], m[o + 13], m[o + 14], m[o + 15]);
-}
-
-/**
- * How far (degrees) bone `bone`'s rotation at `motion` is from the nearest one within its XZX
- * limits: its rotation from its parent's in its canonical frame, rest^-1 G_parent^-1 G rest.
- */
-function limitExcessDeg(motion: Float64Array, bone: number): number {
-  const spec = rig.spec, parent = spec.parents[bone];
-  const rest = matrix(spec.rest, 16 * bone);
-  const local = rest.clone().invert().multiply(matrix(motion, 16 * parent).invert()).multiply(matrix(motion, 16 * bone)).multiply(rest);
-  const q = new Quaternion().setFromRotationMatrix(local).normalize();
-  const angles = new Float64Array(3);
-  xzxWithinLimits(q, spec.lower.subarray(3 * bone, 3 * bone + 3), spec.upper.subarray(3 * bone, 3 * bone + 3), angles);
-  const x = new Vector3(1, 0, 0), z = new Vector3(0, 0, 1), rad = Math.PI / 180;
-  const within = new Quaternion().setFromAxisAngle(x, angles[0] * rad).multiply(new Quaternion().setFromAxisAngle(z, angles[1] * rad)).multiply(new Quaternion().setFromAxisAngle(x, angles[2] * rad));
-  return degrees(q.angleTo(within));
 }
 
 /**
@@ -110,7 +88,7 @@ describe("the character's clips", () => {
     for (const { name } of clips.clips) {
       const worst = new Map<number, number>();
       framesOf(name).forEach((motion, f) => {
-        for (const b of bones) worst.set(b, Math.max(worst.get(b) ?? 0, limitExcessDeg(motion, b)));
+        for (const b of bones) worst.set(b, Math.max(worst.get(b) ?? 0, limitExcessDeg(rig.spec, motion, b)));
         for (const limb of limbs) expect(bentAgainst(spec, limb, motion), `${name} frame ${f} ${spec.names[limb.bone]}`).toBe(false);
       });
       for (const [b, excess] of worst) expect(excess, `${name}: ${spec.names[b]}`).toBeLessThan(KNOWN_EXCESS[name]?.[spec.names[b]] ?? LIMIT_SLACK_DEG);
