@@ -4,6 +4,7 @@ import './page/page.css';
 import { loadIk } from './ik/module.js';
 import { PageApp } from './page/app.js';
 import { makeProbe } from './page/probe.js';
+import { makeTrackProbe } from './page/track_probe.js';
 
 function slot(id: string): HTMLElement {
   const el = document.getElementById(id);
@@ -25,6 +26,7 @@ try {
     selection: slot('selection'),
   });
   window.ikPage = makeProbe(app);
+  window.ikTrack = makeTrackProbe(app);
   await app.start();
 } catch (e) {
   root.dataset.state = 'error';

@@ -1,7 +1,7 @@
 // The page: a LiveController (web/src/live/) shows the rig and solves while targets move; around
-// it the page's own parts: the panel, the solve report (stats and plot), compare, step mode, the
-// selection, the keyboard, the URL and loading rigs. Each part is its own module; this one wires
-// them together and loads rigs.
+// it the page's own parts: the panel, the solve report (stats and plot), compare, step mode, track
+// mode, the selection, the keyboard, the URL and loading rigs. Each part is its own module; this
+// one wires them together and loads rigs.
 import type { IkCoreModule } from '../ik/module.js';
 import { errorText } from '../live/error_text.js';
 import { LiveController } from '../live/live_controller.js';
@@ -23,6 +23,8 @@ import { showSelection, toggleEffector } from './selection.js';
 import { SolveReport } from './solve_report.js';
 import type { StatsPanel } from './stats.js';
 import { StepMode } from './step_mode.js';
+import { TrackMode } from './track_mode.js';
+import { TrackPanel } from './track_panel.js';
 import { readUrlState, writeUrlState } from './url_state.js';
 
 /** The page's DOM slots (see index.html). */
@@ -45,6 +47,9 @@ export class PageApp {
   private readonly stepMode: StepMode;
   private readonly keyboard: Keyboard;
   private readonly panel: Panel;
+  /** The avatar's track mode (the drag mode is put away while it is on). */
+  readonly track: TrackMode;
+  private readonly trackPanel: TrackPanel;
   private readonly files: FileInput;
   private readonly poseFiles: FileInput;
   private readonly removeSheet: () => void;
@@ -65,7 +70,10 @@ export class PageApp {
     this.controller = new LiveController(el.viewport, this.settings, {
       solved: (outcome, ms, tips) => this.report.solved(outcome, ms, tips),
       failed: (message) => this.showMessage(message, 'error'),
-      changed: () => this.stepMode.restart(),
+      changed: () => {
+        this.track.leave(); // the drag mode's problem changed: it is shown again
+        this.stepMode.restart();
+      },
       clicked: (c) => this.click(c),
       dragging: (on) => {
         el.root.dataset.dragging = String(on);
@@ -93,7 +101,6 @@ export class PageApp {
       () => this.panel?.showUndo(this.history.canUndo, this.history.canRedo),
     );
 
-    const handles = this.controller.handles;
     this.panel = new Panel(el.side, this.settings, rigMenu(), this.methods, {
       rigChanged: (key) => (key === FILE_CHOICE ? this.files.choose() : void this.loadProject(key)),
       openFile: () => this.files.choose(),
@@ -101,7 +108,7 @@ export class PageApp {
       methodChanged: () => this.methodChanged(),
       settingsChanged: () => this.controller.invalidate(),
       displayChanged: () => this.applyDisplay(this.controller.live),
-      gizmoChanged: () => handles.setMode(this.settings.gizmo),
+      gizmoChanged: () => this.setGizmo(this.settings.gizmo),
       orientationGoalChanged: (on) => this.setOrientationGoal(on),
       poleHandlesChanged: () => this.controller.setPoleHandles(this.settings.poleHandles),
       stepModeChanged: () => this.stepMode.switched(),
@@ -115,7 +122,9 @@ export class PageApp {
       compare: () => void this.compare.run(this.controller, this.settings),
       help: () => this.keyboard.toggle(),
     });
-    el.side.replaceChildren(this.report.stats.element, el.stepInfo, this.panel.gui.domElement, el.selection, this.report.plot.element);
+    this.track = new TrackMode(module, this.controller, (message) => this.showMessage(message, 'error'));
+    this.trackPanel = new TrackPanel(el.side, this.track);
+    el.side.replaceChildren(this.report.stats.element, el.stepInfo, this.panel.gui.domElement, this.trackPanel.gui.domElement, el.selection, this.report.plot.element);
     this.removeSheet = bottomSheet(el.root, el.side);
 
     this.keyboard = new Keyboard(el.root, [
@@ -127,6 +136,7 @@ export class PageApp {
       { keys: ['Q'], label: 'gizmo: swing the target about the root joint', run: () => this.setGizmo('swing') },
       { keys: ['O'], label: 'orientation goal of the selected target on or off', run: () => this.setOrientationGoal() },
       { keys: ['P'], label: 'pole handles on or off (drag one to turn an elbow or knee towards it)', run: () => this.togglePoleHandles() },
+      { keys: ['T'], label: 'track mode on or off: gizmos on the head and hands move the whole body (a recognised humanoid)', run: () => this.track.toggle() },
       { keys: ['S'], label: () => `step mode: one iteration of ${this.settings.method}${this.settings.paperMode ? ' (paper mode)' : ''}`, run: () => this.stepMode.step() },
       { keys: ['C'], label: () => this.compareHelp(), run: () => void this.compare.run(this.controller, this.settings) },
       { keys: ['?', 'H'], label: 'show or hide this help', run: () => this.keyboard.toggle() },
@@ -199,6 +209,8 @@ export class PageApp {
     this.removeSheet();
     this.files.dispose();
     this.poseFiles.dispose();
+    this.trackPanel.dispose();
+    this.track.dispose();
     this.panel.dispose();
     this.compare.dispose();
     this.report.dispose();
@@ -238,7 +250,9 @@ export class PageApp {
 
   private install(live: LiveRig, key: string | null): void {
     this.applyDisplay(live); // before the camera frames the rig: a hidden mesh does not count
+    this.track.leave(); // its avatar belongs to the rig shown until now
     this.controller.show(live);
+    this.trackPanel.showRig();
     this.controller.handles.setMode(this.settings.gizmo);
     this.rigKey = key;
     this.panel.showRig(key ?? FILE_CHOICE);
@@ -274,6 +288,7 @@ export class PageApp {
   private limitsChanged(): void {
     const live = this.controller.live;
     if (!live?.hasHumanoidLimits) return;
+    this.track.leave();
     if (this.controller.paused) {
       // A compare is running on the current session: keep it.
       this.settings.humanoidLimits = !this.settings.humanoidLimits;
@@ -294,6 +309,7 @@ export class PageApp {
   private setGizmo(mode: PageSettings['gizmo']): void {
     this.settings.gizmo = mode;
     this.controller.handles.setMode(mode);
+    this.track.setGizmo(mode);
     this.panel.refresh();
   }
 
@@ -327,7 +343,7 @@ export class PageApp {
   }
 
   private resetPose(): void {
-    if (!this.controller.live) return;
+    if (!this.controller.live || this.track.reset()) return;
     this.history.edit(() => this.controller.reset());
     this.report.showIdle();
     this.stepMode.clearInfo();
@@ -337,7 +353,7 @@ export class PageApp {
   /** A click that hit no target: the bone under it is selected, and (unless shift) toggled as an end effector. */
   private click(c: ViewClick): void {
     const live = this.controller.live;
-    if (!live) return;
+    if (!live || this.track.click(c)) return;
     const bone = live.view.pick(c.raycaster);
     live.selectedBone = bone;
     if (bone !== null && !c.shiftKey && this.settings.clickBone === 'toggle effector') {
