@@ -17,7 +17,8 @@
 // - foot_slide: the farthest our foot moved from where it was planted, as a fraction of the
 //   height: with 3 points where the avatar planted it (between its steps), with 6 while the clip's
 //   foot stays still (moves less than 0.01% of the height a frame);
-// - median_us, p99_us: the time of update() per frame, microseconds, WebAssembly in Node.
+// - median_us, p99_us: the time of update() per frame, microseconds, WebAssembly in Node, after
+//   the first clip has run once untimed (V8's warm-up).
 import { Matrix4, Quaternion } from 'three';
 
 import { AvatarSolver, type AvatarInput, type TrackedPose } from '../web/src/avatar/avatar_solver.js';
@@ -95,6 +96,9 @@ export async function runTrack(ik: IkCoreModule, rig: TrackRig, clips: string[] 
     if (i < 0) throw new BenchError(`track: ${rig.name} has no clip "${name}" (it has: ${names.join(', ')})`, 2);
     return i;
   });
+  // Warm-up (warm_up.ts): the first clip once, untimed, so that V8 has optimised the avatar's
+  // JavaScript and WebAssembly before any frame is timed (cold, the first clip's median read 2x).
+  trackClip(ik, rig, frames, chosen[0], points);
   return chosen.map((clip) => trackClip(ik, rig, frames, clip, points));
 }
 

@@ -107,6 +107,9 @@ export class AvatarSolver {
   private readonly standingHeadY: number;
   /** Where the untracked feet stand, and their steps. */
   private readonly steps: FootSteps;
+  /** The hips' tip at rest, and where the floating root has taken it since (rig units; the hips' turn aside). */
+  private readonly restHips: Float64Array;
+  private readonly hips = new Float64Array(3);
 
   /**
    * An avatar of `spec` (a humanoid's rig, its limits in place) mapped by `humanoid`, standing in
@@ -156,7 +159,8 @@ export class AvatarSolver {
     const tips = s.tips();
     this.standingHeadY = tips[1];
     const pose = (k: number) => ({ position: Array.from(tips.subarray(3 * k, 3 * k + 3)), orientation: Array.from(rotations.subarray(4 * k, 4 * k + 4)) });
-    this.steps = new FootSteps([pose(3), pose(4)], tips.subarray(3 * HIPS, 3 * HIPS + 3), rotations.subarray(0, 4), h);
+    this.restHips = tips.slice(3 * HIPS, 3 * HIPS + 3);
+    this.steps = new FootSteps([pose(3), pose(4)], this.restHips, rotations.subarray(0, 4), h);
   }
 
   /** The head's, hands', feet's and hips' tips at the current pose, 3 per bone in `bones` order (rig units, a new array). */
@@ -182,7 +186,11 @@ export class AvatarSolver {
     const s = this.session;
     if (input.leftFoot && input.rightFoot) this.steps.plant([input.leftFoot, input.rightFoot].map((f) => ({ position: Array.from(f.position), orientation: Array.from(f.orientation) })));
     else {
-      const [left, right] = this.steps.update(input.head.orientation, s.tips().subarray(3 * HIPS, 3 * HIPS + 3));
+      // The hips where the root's translation took them (their turn moves their tip a little: a
+      // step decision does not need it, and this costs no forward kinematics).
+      const root = s.angles.length - 3;
+      for (let i = 0; i < 3; i++) this.hips[i] = this.restHips[i] + s.angles[root + i];
+      const [left, right] = this.steps.update(input.head.orientation, this.hips);
       input = { ...input, leftFoot: input.leftFoot ?? left, rightFoot: input.rightFoot ?? right };
     }
     for (let k = 0; k < INPUTS.length; k++) {
