@@ -6,11 +6,11 @@
 // turn), so a clip can say "bend the shin back 40 degrees" without knowing the joints' local axes.
 import type { Accessor, AnimationSampler, Buffer, Document, Node } from '@gltf-transform/core';
 
+import { type Quat, inverse, mul } from '../../web/src/rig/quat.js';
 import { keptFrames } from './key_reduction.js';
 import { type Vec3, cross, dot, length, normalize } from './vec.js';
 
-/** A unit quaternion [x, y, z, w]. */
-export type Quat = [number, number, number, number];
+export { type Quat, inverse, mul, rotate } from '../../web/src/rig/quat.js';
 
 export interface ClipPose {
   /** Per joint name, its turn (armature coordinates); joints not listed keep their rest rotation. */
@@ -37,22 +37,6 @@ export const IDENTITY: Quat = [0, 0, 0, 1];
 export function turnAbout(axis: Vec3, degrees: number): Quat {
   const [x, y, z] = normalize(axis), h = (degrees * Math.PI) / 360, s = Math.sin(h);
   return [x * s, y * s, z * s, Math.cos(h)];
-}
-
-/** a then... the product a b (b applied first). */
-export function mul(a: Quat, b: Quat): Quat {
-  const [x1, y1, z1, w1] = a, [x2, y2, z2, w2] = b;
-  return [w1 * x2 + x1 * w2 + y1 * z2 - z1 * y2, w1 * y2 - x1 * z2 + y1 * w2 + z1 * x2, w1 * z2 + x1 * y2 - y1 * x2 + z1 * w2, w1 * w2 - x1 * x2 - y1 * y2 - z1 * z2];
-}
-
-export function inverse(q: Quat): Quat {
-  return [-q[0], -q[1], -q[2], q[3]];
-}
-
-/** `v` turned by `q`. */
-export function rotate(q: Quat, v: Vec3): Vec3 {
-  const p = mul(mul(q, [v[0], v[1], v[2], 0]), inverse(q));
-  return [p[0], p[1], p[2]];
 }
 
 /** The smallest rotation taking direction `from` to direction `to`. */

@@ -7,6 +7,7 @@
 // STEP_FRAMES frames: lifted on an arc, never below the floor it stood on, turned with the body.
 // The step is counted in frames, not seconds, so that a stream of inputs gives the same steps
 // on any machine. No three.js: plain arrays, quaternions [x, y, z, w], rig units (y up).
+import { inverse, mul, rotate } from '../rig/quat.js';
 
 /** A foot's target: its bone's tip and frame (rig units; unit quaternion [x, y, z, w]). */
 export interface FootPose {
@@ -96,7 +97,7 @@ export class FootSteps {
     const rest = this.restFeet[k];
     return {
       position: [hips[0] + c * ox + s * oz, rest.position[1], hips[2] - s * ox + c * oz],
-      orientation: multiply(yawQuaternion(yaw), rest.orientation),
+      orientation: mul(yawQuaternion(yaw), rest.orientation),
     };
   }
 
@@ -113,7 +114,7 @@ function copyPose(p: FootPose): FootPose {
 /** The turn about the vertical (radians, counter-clockwise seen from above) of the rotation that takes frame `rest` to frame `q`. */
 function headYaw(q: ArrayLike<number>, rest: ArrayLike<number>): number {
   // The rest frame's forward (z) in both, projected on the floor.
-  const f = rotate(multiply(q, conjugate(rest)), [0, 0, 1]);
+  const f = rotate(mul(q, inverse(rest)), [0, 0, 1]);
   return Math.atan2(f[0], f[2]);
 }
 
@@ -129,23 +130,8 @@ function yawQuaternion(yaw: number): number[] {
   return [0, Math.sin(yaw / 2), 0, Math.cos(yaw / 2)];
 }
 
-function conjugate(q: ArrayLike<number>): number[] {
-  return [-q[0], -q[1], -q[2], q[3]];
-}
 
-function multiply(a: ArrayLike<number>, b: ArrayLike<number>): number[] {
-  return [
-    a[3] * b[0] + a[0] * b[3] + a[1] * b[2] - a[2] * b[1],
-    a[3] * b[1] - a[0] * b[2] + a[1] * b[3] + a[2] * b[0],
-    a[3] * b[2] + a[0] * b[1] - a[1] * b[0] + a[2] * b[3],
-    a[3] * b[3] - a[0] * b[0] - a[1] * b[1] - a[2] * b[2],
-  ];
-}
 
-function rotate(q: ArrayLike<number>, v: number[]): number[] {
-  const p = multiply(multiply(q, [v[0], v[1], v[2], 0]), conjugate(q));
-  return [p[0], p[1], p[2]];
-}
 
 function nlerp(a: ArrayLike<number>, b: ArrayLike<number>, t: number): number[] {
   const sign = a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + a[3] * b[3] < 0 ? -1 : 1;
