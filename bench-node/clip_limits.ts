@@ -5,12 +5,8 @@
 import { Matrix4, Quaternion, Vector3 } from 'three';
 
 import type { RigSpec } from '../web/src/ik/rig_spec.js';
+import { fromRowMajor } from '../web/src/three/row_major.js';
 import { xzxWithinLimits } from './peers/xzx.js';
-
-/** The row-major 4x4 numbers at `o` of `m` as a three.js matrix. */
-function matrix(m: ArrayLike<number>, o: number): Matrix4 {
-  return new Matrix4().set(m[o], m[o + 1], m[o + 2], m[o + 3], m[o + 4], m[o + 5], m[o + 6], m[o + 7], m[o + 8], m[o + 9], m[o + 10], m[o + 11], m[o + 12], m[o + 13], m[o + 14], m[o + 15]);
-}
 
 const X = new Vector3(1, 0, 0), Z = new Vector3(0, 0, 1), RAD = Math.PI / 180;
 
@@ -21,9 +17,9 @@ const X = new Vector3(1, 0, 0), Z = new Vector3(0, 0, 1), RAD = Math.PI / 180;
  */
 export function limitExcessDeg(spec: RigSpec, motion: Float64Array, bone: number): number {
   const parent = spec.parents[bone];
-  const rest = matrix(spec.rest, 16 * bone);
-  const above = parent < 0 ? new Matrix4() : matrix(motion, 16 * parent).invert();
-  const local = rest.clone().invert().multiply(above).multiply(matrix(motion, 16 * bone)).multiply(rest);
+  const rest = fromRowMajor(new Matrix4(), spec.rest, 16 * bone);
+  const above = parent < 0 ? new Matrix4() : fromRowMajor(new Matrix4(), motion, 16 * parent).invert();
+  const local = rest.clone().invert().multiply(above).multiply(fromRowMajor(new Matrix4(), motion, 16 * bone)).multiply(rest);
   const q = new Quaternion().setFromRotationMatrix(local).normalize();
   const angles = new Float64Array(3);
   xzxWithinLimits(q, spec.lower.subarray(3 * bone, 3 * bone + 3), spec.upper.subarray(3 * bone, 3 * bone + 3), angles);

@@ -27,6 +27,7 @@ import type { IkCoreModule } from '../web/src/ik/module.js';
 import type { RigSpec } from '../web/src/ik/rig_spec.js';
 import type { HumanoidMap, HumanoidRole } from '../web/src/rig/humanoid_roles.js';
 import { transformPoint } from '../web/src/rig/mat4.js';
+import { fromRowMajor } from '../web/src/three/row_major.js';
 import { ClipFrames } from './clip_frames.js';
 import { limitExcessDeg } from './clip_limits.js';
 import { BenchError } from './errors.js';
@@ -135,7 +136,7 @@ function trackClip(ik: IkCoreModule, rig: TrackRig, clips: ClipFrames, clip: num
       const truthOf = (k: number): TrackedPose & { position: number[]; orientation: number[] } => {
         const m = motion.subarray(16 * effectors[k], 16 * effectors[k] + 16);
         const position = transformPoint(m, restTips.subarray(3 * k, 3 * k + 3));
-        g.set(m[0], m[1], m[2], 0, m[4], m[5], m[6], 0, m[8], m[9], m[10], 0, 0, 0, 0, 1);
+        fromRowMajor(g, m, 0); // its rotation part: the bone's turn from rest
         rest.fromArray(restRotations, 4 * k);
         q.setFromRotationMatrix(g).multiply(rest);
         return { position, orientation: q.toArray() };
