@@ -116,12 +116,7 @@ function trackClip(ik: IkCoreModule, rig: TrackRig, clips: ClipFrames, clip: num
     const effectors = Array.from(avatar.bones);
     const { frames, name } = clips.clips[clip];
     const tracked = POINTS[points];
-    // The bones the avatar moves: the tracked and planted ones and every bone above them.
-    const moving = [...new Set(Array.from(avatar.bones).flatMap((b) => {
-      const chain: number[] = [];
-      for (let a = b; a >= 0; a = spec.parents[a]) chain.push(a);
-      return chain;
-    }))];
+    const moving = Array.from(avatar.movingBones);
     const times: number[] = [];
     let onTarget = 0, reachable = 0, onTargetReachable = 0, mpjpe = 0, mpjpeUpper = 0, flips = 0, slide = 0;
     const ours: number[][] = [], theirs: number[][] = [];

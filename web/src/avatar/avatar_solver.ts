@@ -97,6 +97,8 @@ export class AvatarSolver {
   readonly bones: Int32Array;
   /** The rig's height at rest, rig units; δ, the tip tolerance, is 0.1% of it. */
   readonly height: number;
+  /** The bones the solves move (the tracked and planted ones and every bone above them), whole-rig indices in rig order; the others keep their angles. */
+  readonly movingBones: Int32Array;
   /** The part of the rig the solves move, and its live state. */
   private readonly part: SubRig;
   private readonly session: IkSession;
@@ -134,6 +136,7 @@ export class AvatarSolver {
     this.rig = new IkRig(module, { ...spec, lower, upper, effectors: this.bones, floatingRoot });
     this.angles = this.rig.project(new Float64Array(this.rig.numAngles));
     this.part = subRig(this.rig.spec, Array.from(this.bones));
+    this.movingBones = this.part.bones;
     try {
       this.session = new IkSession(module, this.part.spec);
     } catch (e) {

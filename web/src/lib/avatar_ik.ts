@@ -67,7 +67,7 @@ export class AvatarIK {
     const bone = (role: HumanoidRole): Object3D => rig.objects[rig.humanoid.bones[role]!];
     this.bones = { hips: bone('hips'), head: bone('head'), leftHand: bone('leftHand'), rightHand: bone('rightHand'), leftFoot: bone('leftFoot'), rightFoot: bone('rightFoot') };
     this.tracked = TRACKED.map((role) => new TrackedBone(rig.spec, rig.info, rig.humanoid.bones[role]!));
-    this.writer = new ChainWriter(rig.objects, rig.spec, rig.info, solver.bones);
+    this.writer = new ChainWriter(rig.objects, rig.spec, rig.info, solver.movingBones);
     this.height = solver.height * this.space.matrixWorld.getMaxScaleOnAxis();
     this.humanoid = rig.humanoid.source;
     [this.head, this.leftHand, this.rightHand] = TRACKED.map((role) => {

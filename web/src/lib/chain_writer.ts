@@ -31,16 +31,14 @@ export class ChainWriter {
   /** Each written bone's position, quaternion and scale when the writer was made. */
   private readonly rest: RestState[] = [];
 
-  /** The bones from the roots down to `ends` (rig bone indices) of the rig `spec`, carried by `objects`. */
+  /** The bones `bones` (rig bone indices, parents first: AvatarSolver.movingBones) of the rig `spec`, carried by `objects`. */
   constructor(
     private readonly objects: Object3D[],
     private readonly spec: RigSpec,
     info: GltfRigInfo,
-    ends: ArrayLike<number>,
+    bones: ArrayLike<number>,
   ) {
-    const moved = new Set<number>();
-    for (const end of Array.from(ends)) for (let b = end; b >= 0 && !moved.has(b); b = spec.parents[b]) moved.add(b);
-    this.bones = [...moved].sort((a, b) => a - b);
+    this.bones = Array.from(bones);
     for (const b of this.bones) {
       this.right[b] = fromRowMajor(new Matrix4(), info.restWorld, 16 * b);
       this.left[b] = fromRowMajor(new Matrix4(), info.restLocal, 16 * b).multiply(this.right[b].clone().invert());
