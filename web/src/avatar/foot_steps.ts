@@ -60,7 +60,7 @@ export class FootSteps {
 
   /** The feet's targets this frame (left, right), for the head's frame `head` and the hips' tip `hips` (the last pose's). */
   update(head: ArrayLike<number>, hips: ArrayLike<number>): FootPose[] {
-    const yaw = headYaw(head, this.restHead);
+    const yaw = yawFrom(head, this.restHead);
     const stepping = this.feet.some((f) => f.step !== null);
     if (!stepping) {
       // The foot farther from its place steps, if either is far enough.
@@ -103,7 +103,7 @@ export class FootSteps {
 
   /** Foot k's turn about the vertical from its rest frame (radians). */
   private plantedYaw(k: number): number {
-    return headYaw(this.feet[k].planted.orientation, this.restFeet[k].orientation);
+    return yawFrom(this.feet[k].planted.orientation, this.restFeet[k].orientation);
   }
 }
 
@@ -112,7 +112,7 @@ function copyPose(p: FootPose): FootPose {
 }
 
 /** The turn about the vertical (radians, counter-clockwise seen from above) of the rotation that takes frame `rest` to frame `q`. */
-function headYaw(q: ArrayLike<number>, rest: ArrayLike<number>): number {
+function yawFrom(q: ArrayLike<number>, rest: ArrayLike<number>): number {
   // The rest frame's forward (z) in both, projected on the floor.
   const f = rotate(mul(q, inverse(rest)), [0, 0, 1]);
   return Math.atan2(f[0], f[2]);
