@@ -122,7 +122,7 @@ function trackClip(ik: IkCoreModule, rig: TrackRig, clips: ClipFrames, clip: num
     const ours: number[][] = [], theirs: number[][] = [];
     let previousPoses: Float64Array | null = null;
     // Per foot: the clip's tip last frame, and ours where the foot was planted (null: in the air).
-    const feet = FEET.map(() => ({ truth: null as number[] | null, planted: null as number[] | null }));
+    const feet = FEET.map(() => ({ truth: null as ArrayLike<number> | null, planted: null as number[] | null }));
     const g = new Matrix4(), q = new Quaternion(), rest = new Quaternion();
     for (let f = 0; f < frames; f++) {
       const motion = clips.motion(clip, f);
@@ -171,7 +171,7 @@ function trackClip(ik: IkCoreModule, rig: TrackRig, clips: ClipFrames, clip: num
           if (planted[i]) slide = Math.max(slide, distance(tip, planted[i]!) / h);
           return;
         }
-        const truth = truthOf(EFFECTOR[key]).position;
+        const truth = input[key]!.position; // tracked with 6 points: the clip's foot this frame
         const still = foot.truth !== null && distance(truth, foot.truth) < STILL_SHARE * h;
         if (!still || foot.planted === null) foot.planted = tip;
         else slide = Math.max(slide, distance(tip, foot.planted) / h);
