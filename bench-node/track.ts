@@ -18,7 +18,11 @@
 //   height: with 3 points where the avatar planted it (between its steps), with 6 while the clip's
 //   foot stays still (moves less than 0.01% of the height a frame);
 // - median_us, p99_us: the time of update() per frame, microseconds, WebAssembly in Node, after
-//   the first clip has run once untimed (V8's warm-up).
+//   every clip has run once untimed (V8's warm-up); each frame's time is its median over
+//   TIMED_RUNS runs of the clip.
+import v8 from 'node:v8';
+import { runInNewContext } from 'node:vm';
+
 import { Matrix4, Quaternion } from 'three';
 
 import { AvatarSolver, type AvatarInput, type TrackedPose } from '../web/src/avatar/avatar_solver.js';
@@ -66,6 +70,9 @@ const POINTS: Record<number, Array<keyof AvatarInput>> = {
   6: ['head', 'leftHand', 'rightHand', 'hips', 'leftFoot', 'rightFoot'],
 };
 const FEET: Array<keyof AvatarInput> = ['leftFoot', 'rightFoot'];
+/** Timed runs of each clip (median_us and p99_us take each frame's median over them). */
+const TIMED_RUNS = 3;
+
 /** A clip's foot that moved less than this share of the height since the last frame is planted. */
 const STILL_SHARE = 1e-4;
 
@@ -97,9 +104,11 @@ export async function runTrack(ik: IkCoreModule, rig: TrackRig, clips: string[] 
     if (i < 0) throw new BenchError(`track: ${rig.name} has no clip "${name}" (it has: ${names.join(', ')})`, 2);
     return i;
   });
-  // Warm-up (warm_up.ts): the first clip once, untimed, so that V8 has optimised the avatar's
-  // JavaScript and WebAssembly before any frame is timed (cold, the first clip's median read 2x).
-  trackClip(ik, rig, frames, chosen[0], points);
+  // Warm-up (warm_up.ts): every clip once, untimed, so that V8 has optimised the avatar's
+  // JavaScript and WebAssembly on each of its paths (steps, poles, given-up goals) before any
+  // frame is timed. Cold, the first clip's median read 2x; warmed on the first clip alone, a
+  // later clip's first steps cost 4-7 ms a frame (its p99).
+  for (const clip of chosen) trackClip(ik, rig, frames, clip, points);
   return chosen.map((clip) => trackClip(ik, rig, frames, clip, points));
 }
 
@@ -117,35 +126,62 @@ function trackClip(ik: IkCoreModule, rig: TrackRig, clips: ClipFrames, clip: num
     const { frames, name } = clips.clips[clip];
     const tracked = POINTS[points];
     const moving = Array.from(avatar.movingBones);
-    const times: number[] = [];
+    const g = new Matrix4(), q = new Quaternion(), rest = new Quaternion();
+    // The clip's pose of effector k at frame `motion`: its tip and its bone frame.
+    const truthOf = (motion: Float64Array, k: number): TrackedPose & { position: number[]; orientation: number[] } => {
+      const m = motion.subarray(16 * effectors[k], 16 * effectors[k] + 16);
+      const position = transformPoint(m, restTips.subarray(3 * k, 3 * k + 3));
+      fromRowMajor(g, m, 0); // its rotation part: the bone's turn from rest
+      rest.fromArray(restRotations, 4 * k);
+      q.setFromRotationMatrix(g).multiply(rest);
+      return { position, orientation: q.toArray() };
+    };
+    const inputs = Array.from({ length: frames }, (_, f) => {
+      const motion = clips.motion(clip, f);
+      const input = {} as AvatarInput;
+      for (const key of tracked) input[key] = truthOf(motion, EFFECTOR[key]);
+      return input;
+    });
+    // The timed runs: update() and nothing else that allocates between the frames (the poses and
+    // planted feet go into arrays made beforehand), so that the times are the avatar's own. The
+    // clip runs TIMED_RUNS times, each from a new avatar; a frame's time is its median over them
+    // (one run's frame can lose a 4 ms slice of the CPU to another thread on a shared machine).
+    // The avatar is deterministic: every run must give the same poses.
+    const numAngles = avatar.angles.length;
+    const solved = new Float64Array(frames * numAngles);
+    const plantedLog = new Float64Array(frames * 6);
+    const runTimes = Array.from({ length: TIMED_RUNS }, () => new Float64Array(frames));
+    for (let run = 0; run < TIMED_RUNS; run++) {
+      const runner = run === 0 ? avatar : new AvatarSolver(ik, rig.spec, rig.humanoid);
+      try {
+        collectGarbage();
+        for (let f = 0; f < frames; f++) {
+          const t0 = performance.now();
+          runner.update(inputs[f]);
+          runTimes[run][f] = (performance.now() - t0) * 1000;
+          const at = f * numAngles;
+          if (run === 0) {
+            solved.set(runner.angles, at);
+            runner.plantedFeet().forEach((p, i) => plantedLog.set(p ?? [NaN, NaN, NaN], 6 * f + 3 * i));
+          } else if (!runner.angles.every((a, i) => a === solved[at + i]))
+            throw new BenchError(`track: ${name} frame ${f} gave another pose on run ${run + 1} (the avatar is not deterministic)`, 1);
+        }
+      } finally {
+        if (runner !== avatar) runner.dispose();
+      }
+    }
+    const times = Float64Array.from({ length: frames }, (_, f) => median(runTimes.map((t) => t[f])));
     let onTarget = 0, reachable = 0, onTargetReachable = 0, mpjpe = 0, mpjpeUpper = 0, flips = 0, slide = 0;
     const ours: number[][] = [], theirs: number[][] = [];
     let previousPoses: Float64Array | null = null;
     // Per foot: the clip's tip last frame, and ours where the foot was planted (null: in the air).
     const feet = FEET.map(() => ({ truth: null as ArrayLike<number> | null, planted: null as number[] | null }));
-    const g = new Matrix4(), q = new Quaternion(), rest = new Quaternion();
     for (let f = 0; f < frames; f++) {
-      const motion = clips.motion(clip, f);
+      const motion = clips.motion(clip, f), input = inputs[f];
+      const angles = solved.subarray(f * numAngles, (f + 1) * numAngles);
       const truthHeads = heads.map((p, i) => transformPoint(motion.subarray(16 * i, 16 * i + 16), p));
-      // The clip's pose of effector k: its tip and its bone frame.
-      const truthOf = (k: number): TrackedPose & { position: number[]; orientation: number[] } => {
-        const m = motion.subarray(16 * effectors[k], 16 * effectors[k] + 16);
-        const position = transformPoint(m, restTips.subarray(3 * k, 3 * k + 3));
-        fromRowMajor(g, m, 0); // its rotation part: the bone's turn from rest
-        rest.fromArray(restRotations, 4 * k);
-        q.setFromRotationMatrix(g).multiply(rest);
-        return { position, orientation: q.toArray() };
-      };
-      const input = {} as AvatarInput;
-      const given = tracked.map((key) => {
-        const pose = truthOf(EFFECTOR[key]);
-        input[key] = pose;
-        return { k: EFFECTOR[key], ...pose };
-      });
-      const t0 = performance.now();
-      avatar.update(input);
-      times.push((performance.now() - t0) * 1000);
-      const tips = avatar.tips(), turns = avatar.tipRotations(), poses = avatar.rig.poses(avatar.angles);
+      const given = tracked.map((key) => ({ k: EFFECTOR[key], ...input[key]! }));
+      const tips = avatar.rig.tips(angles), turns = avatar.rig.tipRotations(angles), poses = avatar.rig.poses(angles);
       const tipAt = (k: number): number[] => [tips[3 * k], tips[3 * k + 1], tips[3 * k + 2]];
       const within = given.every(({ k, position, orientation }) =>
         distance(tipAt(k), position) < delta && rotationAngleDeg(turns.subarray(4 * k, 4 * k + 4), orientation) < TRACK_TOLERANCE_DEG);
@@ -164,7 +200,7 @@ function trackClip(ik: IkCoreModule, rig: TrackRig, clips: ClipFrames, clip: num
       previousPoses = poses;
       // With 6 points a foot is planted while the clip's stays still, and ours should not slide from
       // where it was then; with 3, where the avatar planted it (it steps when the body leaves it).
-      const planted = avatar.plantedFeet();
+      const planted = [0, 1].map((i) => (Number.isNaN(plantedLog[6 * f + 3 * i]) ? null : plantedLog.subarray(6 * f + 3 * i, 6 * f + 3 * i + 3)));
       FEET.forEach((key, i) => {
         const tip = tipAt(EFFECTOR[key]), foot = feet[i];
         if (points === 3) {
@@ -201,6 +237,21 @@ function trackClip(ik: IkCoreModule, rig: TrackRig, clips: ClipFrames, clip: num
   } finally {
     avatar.dispose();
   }
+}
+
+/**
+ * A full garbage collection now, so that the clip's inputs and the last clip's measures, made
+ * before the timed run, are not collected inside it (V8's collector pauses 0.5-8 ms: one in a
+ * clip of 181 frames is its p99). What update() itself allocates is still collected in the run.
+ */
+function collectGarbage(): void {
+  v8.setFlagsFromString('--expose-gc');
+  (runInNewContext('gc') as () => void)();
+}
+
+function median(xs: number[]): number {
+  const sorted = [...xs].sort((a, b) => a - b);
+  return sorted[(sorted.length - 1) >> 1];
 }
 
 function mean(xs: number[]): number {

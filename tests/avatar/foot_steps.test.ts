@@ -16,8 +16,10 @@ const yaw = (degrees: number) => [0, Math.sin((degrees * Math.PI) / 360), 0, Mat
 
 /** Runs `frames` frames with the head's frame and the hips' tip given per frame; the targets per frame. */
 function run(frames: number, head: (f: number) => number[], at: (f: number) => number[]): FootPose[][] {
-  const steps = new FootSteps(rest, hips, identity, H);
-  return Array.from({ length: frames }, (_, f) => steps.update(head(f), at(f)).map((p) => ({ position: [...p.position], orientation: [...p.orientation] })));
+  const steps = new FootSteps(rest, hips, { position: [0, 1.5, 0], orientation: identity }, H);
+  // The head over the hips.
+  const tracked = (f: number) => ({ position: [at(f)[0], at(f)[1] + 0.5, at(f)[2]], orientation: head(f) });
+  return Array.from({ length: frames }, (_, f) => steps.update(tracked(f), at(f)).map((p) => ({ position: [...p.position], orientation: [...p.orientation] })));
 }
 
 /** Frames in which foot k's target moves. */

@@ -29,7 +29,7 @@ describe('project rigs', () => {
     for (const [name, bytes] of generated) {
       expect(Buffer.from(read(name)).equals(Buffer.from(bytes)), `${name} differs from the generator's output: run npm run models`).toBe(true);
       // The character carries its animation clips (scripts/models/character_clips.ts): four of 6 s
-      // with every frame at 30 fps (97 KB), then turn_in_place (7 s) and stress (21 s) with only the
+      // with every frame at 30 fps (100 KB), then turn_in_place (7 s) and stress (21 s) with only the
       // frames interpolation cannot rebuild within 0.01 degrees (78 KB; their steps and big, fast
       // moves need most frames even at 0.1 degrees, 54 KB, where planted feet slide 3 mm).
       expect(bytes.byteLength, name).toBeLessThan((name === 'character.glb' ? 240 : 64) * 1024);

@@ -6,11 +6,15 @@
 // the tracked and planted bones hang from (sub_rig.ts: no fingers, toes or eyes) and writes that
 // pose into the whole rig's. No three.js and no DOM: a page, a widget or a Node script drives it.
 // With three points the feet stand where they stood and step when the body leaves them
-// (foot_steps.ts); with six (the hips and feet as well) they go where they are tracked.
+// (foot_steps.ts), the foot in the air giving way to everything else; in a deep crouch the heels
+// may lift. With six (the hips and feet as well) the feet go where they are tracked.
 import type { IkCoreModule } from '../ik/module.js';
 import type { RigSpec } from '../ik/rig_spec.js';
 import { type PoleLimb, poleLimbs } from '../live/pole_limbs.js';
 import { initialPole } from '../live/pole_placement.js';
+import { bodyFrame } from '../rig/anatomy_frame.js';
+import { bendAxis } from '../rig/anatomy_axes.js';
+import { planeTurn } from '../rig/humanoid_limits.js';
 import { IkRig } from '../ik/rig.js';
 import { IkSession } from '../live/session.js';
 import type { SolveOutcome, SolveSettings } from '../live/solver.js';
@@ -44,18 +48,44 @@ const INPUTS: ReadonlyArray<keyof AvatarInput> = ['head', 'leftHand', 'rightHand
 const HIPS = 5;
 
 /**
- * The hips' own rotation, XZX degrees: a turn about the hips bone (upright on a humanoid) and no
- * tilt. A humanoid's limits hold the root still (it carries the whole rig); the avatar's hips turn
- * with the body. A tilt of up to 30 degrees as well cost the crouch clip half its frames (46% on
- * target): the spine and the hips then share every lean.
+ * The hips' own rotation: a turn about the hips bone (upright on a humanoid) and a tilt forward or
+ * back in the way they face (degrees: [back, forward]), no tilt sideways. A humanoid's limits hold
+ * the root still (it carries the whole rig); the avatar's hips turn with the body and tilt as a
+ * pelvis does in a crouch or a lean (the clips tilt them 10-12 degrees: held upright, the crouch's
+ * and stress's tilted hips left their frames' poses beyond the avatar, and on turn_in_place the
+ * spine alone took every lean: 98.6% of the frames on target, 100% with the tilt).
  */
-const HIPS_RANGE = { lower: [-180, 0, 0], upper: [180, 0, 0] };
+const HIPS_TILT: [number, number] = [-10, 20];
+
+/**
+ * XZX limits (degrees) of the avatar's hips bone `bone`: the turn a0 free all round, the tilt a1
+ * within HIPS_TILT about the hips' anatomical bend axis (its forward bend: anatomy_axes.ts), which
+ * lies phi degrees about the bone from its local z, and a2 = -phi, so that the tilt stays in the
+ * plane the hips face (humanoid_limits.ts explains the frame).
+ */
+function hipsRange(spec: RigSpec, humanoid: HumanoidMap, bone: number): { lower: number[]; upper: number[] } {
+  const phi = planeTurn(spec, bone, bendAxis(spec, humanoid, 'hips', bone, bodyFrame(spec, humanoid)).axis);
+  return { lower: [phi - 180, HIPS_TILT[0], -phi], upper: [phi + 180, HIPS_TILT[1], -phi] };
+}
 
 /** How far the hips may move from where they stand, as shares of the height: sideways and forward, down, up. */
 const ROOT_REACH = { across: 1, down: 0.6, up: 0.1 };
 
-/** The head this share of the height below where it stands makes a crouch: the knees take poles. */
-const CROUCH_SHARE = 0.01;
+/**
+ * The head this share of the height below where it stands makes a crouch: the knees take poles.
+ * At 0.01 a nod or a lean took them too, and their soft rows slowed the turn in place (3 times the
+ * time per frame, jitter 1.33 against 1.06); with no poles the stress clip's crouch bent a knee the
+ * wrong way once.
+ */
+const CROUCH_SHARE = 0.03;
+/**
+ * The head this share of the height below where it stands makes a deep crouch: the planted feet
+ * keep their places (the balls of the feet, their bones' tips) but may turn, so the heels lift, as
+ * a person's do. Held flat, lm did not find the crouch clip's own flat-footed pose (its shins 23
+ * degrees over the feet, the ankles allow 30): 45% of its frames on target, the feet pulled 7% of
+ * the height off their places; with the heels free at 0.2, 91%; at 0.1 and 0.05, every frame.
+ */
+const DEEP_CROUCH_SHARE = 0.05;
 
 /**
  * Per-frame solve: at most this many iterations (the page's cap), so that a stream of inputs gives
@@ -77,6 +107,22 @@ const FRAME_MU = 1e-3;
  * double one (idle: jitter ratio 1.46 with 0, 1.18 with 1).
  */
 const FRAME_MIN_ITERATIONS = 1;
+/**
+ * Rejected steps after which a frame's lm iteration is stuck. The default, 30, suits a solve from
+ * afar; in a frame one stuck iteration (at a stationary point, the closest point of a target out of
+ * reach) cost 30 factorisations, 40% of all the factorisations over the clips. After 10, Nielsen's
+ * rule has raised the damping 2^55-fold; at 5 (2^15) a hand gizmo dragged in track mode left the
+ * head 2.6 δ off its target (tests/browser/track.test.ts).
+ */
+const FRAME_REJECTIONS = 10;
+/**
+ * The solves left a tracked point off its target this many frames in a row: the stance is out of
+ * reach, and a foot steps (foot_steps.ts). One frame off (a target moved faster than a frame's
+ * iterations follow: a gizmo dragged, a step landing) is not; stepping then walked the feet of an
+ * avatar whose hands only swayed.
+ */
+const MISSED_FRAMES = 5;
+
 
 /** Height of a rig at rest: the vertical extent of its bone tips (rig units). */
 export function restHeight(boneTips: ArrayLike<number>): number {
@@ -112,6 +158,8 @@ export class AvatarSolver {
   /** The hips' tip at rest, and where the floating root has taken it since (rig units; the hips' turn aside). */
   private readonly restHips: Float64Array;
   private readonly hips = new Float64Array(3);
+  /** Frames in a row whose solves left a tracked point off its target. */
+  private missed = 0;
 
   /**
    * An avatar of `spec` (a humanoid's rig, its limits in place) mapped by `humanoid`, standing in
@@ -130,9 +178,9 @@ export class AvatarSolver {
     }
     const h = this.height;
     const floatingRoot = { lower: [-ROOT_REACH.across * h, -ROOT_REACH.down * h, -ROOT_REACH.across * h], upper: [ROOT_REACH.across * h, ROOT_REACH.up * h, ROOT_REACH.across * h] };
-    const lower = spec.lower.slice(), upper = spec.upper.slice();
-    lower.set(HIPS_RANGE.lower, 3 * this.bones[HIPS]);
-    upper.set(HIPS_RANGE.upper, 3 * this.bones[HIPS]);
+    const lower = spec.lower.slice(), upper = spec.upper.slice(), hips = hipsRange(spec, humanoid, this.bones[HIPS]);
+    lower.set(hips.lower, 3 * this.bones[HIPS]);
+    upper.set(hips.upper, 3 * this.bones[HIPS]);
     this.rig = new IkRig(module, { ...spec, lower, upper, effectors: this.bones, floatingRoot });
     this.angles = this.rig.project(new Float64Array(this.rig.numAngles));
     this.part = subRig(this.rig.spec, Array.from(this.bones));
@@ -144,7 +192,7 @@ export class AvatarSolver {
       throw e;
     }
     const drag = dragTolerances(h);
-    this.settings = { ...drag, maxIterations: FRAME_ITERATIONS, timeBudgetMs: FRAME_BUDGET_MS, restarts: 0, paperMode: false, strictPriority: true, lmInitialMu: FRAME_MU, minIterations: FRAME_MIN_ITERATIONS };
+    this.settings = { ...drag, maxIterations: FRAME_ITERATIONS, timeBudgetMs: FRAME_BUDGET_MS, restarts: 0, paperMode: false, strictPriority: true, lmInitialMu: FRAME_MU, minIterations: FRAME_MIN_ITERATIONS, lmMaxRejections: FRAME_REJECTIONS };
     const s = this.session;
     // Every effector holds its frame: the tracked ones the tracker's, the feet where they stand;
     // the hips have no goal until they are tracked.
@@ -163,7 +211,7 @@ export class AvatarSolver {
     this.standingHeadY = tips[1];
     const pose = (k: number) => ({ position: Array.from(tips.subarray(3 * k, 3 * k + 3)), orientation: Array.from(rotations.subarray(4 * k, 4 * k + 4)) });
     this.restHips = tips.slice(3 * HIPS, 3 * HIPS + 3);
-    this.steps = new FootSteps([pose(3), pose(4)], this.restHips, rotations.subarray(0, 4), h);
+    this.steps = new FootSteps([pose(3), pose(4)], this.restHips, pose(0), h);
   }
 
   /** The head's, hands', feet's and hips' tips at the current pose, 3 per bone in `bones` order (rig units, a new array). */
@@ -187,17 +235,20 @@ export class AvatarSolver {
   /** Solves one frame towards `input` from the last pose; the pose is the result. */
   update(input: AvatarInput): SolveOutcome {
     const s = this.session;
-    if (input.leftFoot && input.rightFoot) this.steps.plant([input.leftFoot, input.rightFoot].map((f) => ({ position: Array.from(f.position), orientation: Array.from(f.orientation) })));
+    let feet: readonly TrackedPose[] | null = null;
+    if (input.leftFoot && input.rightFoot) this.steps.plant([input.leftFoot, input.rightFoot]);
     else {
       // The hips where the root's translation took them (their turn moves their tip a little: a
       // step decision does not need it, and this costs no forward kinematics).
       const root = s.angles.length - 3;
       for (let i = 0; i < 3; i++) this.hips[i] = this.restHips[i] + s.angles[root + i];
-      const [left, right] = this.steps.update(input.head.orientation, this.hips);
-      input = { ...input, leftFoot: input.leftFoot ?? left, rightFoot: input.rightFoot ?? right };
+      feet = this.steps.update(input.head, this.hips, this.missed >= MISSED_FRAMES);
     }
+    // A foot in the air gives way first: the tracked points and the planted foot are held.
+    const swinging = this.steps.stepping();
+    s.yielding = swinging < 0 ? -1 : 3 + swinging;
     for (let k = 0; k < INPUTS.length; k++) {
-      const pose = input[INPUTS[k]];
+      const pose = input[INPUTS[k]] ?? (k === 3 || k === 4 ? feet![k - 3] : undefined);
       if (k === HIPS) {
         s.goals.setPosition(HIPS, pose !== undefined);
         s.setOrientationGoal(HIPS, pose !== undefined, pose?.orientation);
@@ -211,7 +262,11 @@ export class AvatarSolver {
     // target with them, 100% without).
     if (input.head.position[1] < this.standingHeadY - CROUCH_SHARE * this.height) this.placePoles();
     else if (s.goals.poleBones.length > 0) s.goals.setPoles([], []);
+    // In a deep crouch the planted feet hold their places but not their frames: the heels may lift.
+    const deep = input.head.position[1] < this.standingHeadY - DEEP_CROUCH_SHARE * this.height;
+    for (const k of [3, 4]) if (!input[INPUTS[k]] && (s.goals.orientation[k] === 1) === deep) s.setOrientationGoal(k, !deep, s.goals.rotations.subarray(4 * k, 4 * k + 4));
     const outcome = s.solve('lm', this.settings);
+    this.missed = outcome.reached ? 0 : this.missed + 1;
     scatterAngles(this.part, s.angles, this.angles);
     return outcome;
   }

@@ -3,11 +3,14 @@
 // the feet are; they stay where they stood (no sliding) while the hips are within reach of them
 // and the head faces their way. When the hips' floor point is more than STEP_DISTANCE of the
 // height from where the stance would put a foot, or the head has turned more than STEP_TURN
-// degrees from the feet (turning in place), the foot farther from its place steps there over
-// STEP_FRAMES frames: lifted on an arc, never below the floor it stood on, turned with the body.
-// The step is counted in frames, not seconds, so that a stream of inputs gives the same steps
-// on any machine. No three.js: plain arrays, quaternions [x, y, z, w], rig units (y up).
-import { inverse, mul, rotate } from '../rig/quat.js';
+// degrees from the feet (turning in place), or the last solve could not reach a tracked point
+// from this stance and a foot is a little way from its place, the foot farther from its place
+// steps over STEP_FRAMES frames: lifted on an arc, never below the floor it stood on, turned with
+// the head, to its place under the tracked head (under the hips' drift, a turn in place walked
+// the feet away from the head until the head was out of reach). The step is counted in frames,
+// not seconds, so that a stream of inputs gives the same steps on any machine. No three.js and
+// no allocation while the feet stand: plain arrays, quaternions [x, y, z, w], rig units (y up).
+import { mul } from '../rig/quat.js';
 
 /** A foot's target: its bone's tip and frame (rig units; unit quaternion [x, y, z, w]). */
 export interface FootPose {
@@ -23,34 +26,51 @@ const STEP_TURN = 60;
 const STEP_FRAMES = 10;
 /** The lift at the middle of a step, a share of the height. */
 const STEP_LIFT = 0.04;
+/**
+ * When the last solve missed a tracked point (the stance left it out of reach: a turn finished
+ * with the feet less than STEP_TURN behind), the foot farther from its place steps once it is
+ * this share of the way to a step's distance or turn from it.
+ */
+const MISSED_SHARE = 0.1;
 
 interface Foot {
   planted: FootPose;
+  /** The planted foot's turn about the vertical from its rest frame (radians). */
+  plantedYaw: number;
   /** The step under way: where it goes, and the frame it is on (1..STEP_FRAMES); null while planted. */
   step: { to: FootPose; frame: number } | null;
 }
 
 export class FootSteps {
   private readonly feet: Foot[];
-  /** Each foot's floor offset from the hips' floor point at rest, and its yaw there (radians). */
+  /** Each foot's floor offset from the hips' floor point at rest. */
   private readonly restOffsets: number[][];
+  /** The hips' floor offset from the head's at rest. */
+  private readonly restHipsFromHead: number[];
   private readonly restFeet: FootPose[];
   private readonly restHead: number[];
 
   /**
    * Feet standing at `feet` (left, right: the rest pose's tips and frames) under hips whose tip is
-   * at `hips`, with the head's frame `head` at rest; `height`: the avatar's height (rig units).
+   * at `hips`, with the head's tip and frame `head` at rest; `height`: the avatar's height (rig units).
    */
-  constructor(feet: FootPose[], hips: ArrayLike<number>, head: ArrayLike<number>, private readonly height: number) {
+  constructor(feet: FootPose[], hips: ArrayLike<number>, head: FootPose, private readonly height: number) {
     this.restFeet = feet.map(copyPose);
-    this.feet = feet.map((f) => ({ planted: copyPose(f), step: null }));
+    this.feet = feet.map((f, k) => this.standing(f, k));
     this.restOffsets = feet.map((f) => [f.position[0] - hips[0], f.position[2] - hips[2]]);
-    this.restHead = Array.from(head);
+    this.restHipsFromHead = [hips[0] - head.position[0], hips[2] - head.position[2]];
+    this.restHead = Array.from(head.orientation);
   }
 
   /** The feet stand at `feet` (left, right), planted: tracked feet, when they stop being tracked, stay there. */
-  plant(feet: FootPose[]): void {
-    feet.forEach((f, k) => (this.feet[k] = { planted: copyPose(f), step: null }));
+  plant(feet: ReadonlyArray<{ position: ArrayLike<number>; orientation: ArrayLike<number> }>): void {
+    feet.forEach((f, k) => {
+      const foot = this.feet[k];
+      for (let i = 0; i < 3; i++) foot.planted.position[i] = f.position[i];
+      for (let i = 0; i < 4; i++) foot.planted.orientation[i] = f.orientation[i];
+      foot.plantedYaw = yawFrom(f.orientation, this.restFeet[k].orientation);
+      foot.step = null;
+    });
   }
 
   /** Where foot k (0 left, 1 right) stands, or null while it steps. */
@@ -58,37 +78,62 @@ export class FootSteps {
     return this.feet[k].step ? null : this.feet[k].planted;
   }
 
-  /** The feet's targets this frame (left, right), for the head's frame `head` and the hips' tip `hips` (the last pose's). */
-  update(head: ArrayLike<number>, hips: ArrayLike<number>): FootPose[] {
-    const yaw = yawFrom(head, this.restHead);
-    const stepping = this.feet.some((f) => f.step !== null);
-    if (!stepping) {
+  /** Which foot (0 left, 1 right) is stepping, or -1. */
+  stepping(): number {
+    return this.feet.findIndex((f) => f.step !== null);
+  }
+
+  /**
+   * The feet's targets this frame (left, right), for the head's tracked tip and frame `head` and
+   * the hips' tip `hips` (the last pose's); `missed`: the last solve left a tracked point off its
+   * target. A foot steps when it is far from its place under the hips, or turned away from the
+   * head; it steps to its place under the head (where the hips stand under it upright), so that
+   * the stance follows the tracked head, not the hips' drift. A planted foot's target is the pose
+   * planted() gives (no new object while the feet stand).
+   */
+  update(head: { position: ArrayLike<number>; orientation: ArrayLike<number> }, hips: ArrayLike<number>, missed = false): FootPose[] {
+    const yaw = yawFrom(head.orientation, this.restHead);
+    if (this.stepping() < 0) {
       // The foot farther from its place steps, if either is far enough.
-      let worst = -1, worstMiss = 1;
-      this.feet.forEach((foot, k) => {
-        const home = this.home(k, yaw, hips);
+      let worst = -1, worstMiss = missed ? MISSED_SHARE : 1;
+      const c = Math.cos(yaw), s = Math.sin(yaw);
+      for (let k = 0; k < this.feet.length; k++) {
+        const [ox, oz] = this.restOffsets[k], at = this.feet[k].planted.position;
         const miss = Math.max(
-          Math.hypot(home.position[0] - foot.planted.position[0], home.position[2] - foot.planted.position[2]) / (STEP_DISTANCE * this.height),
-          Math.abs(angleBetween(yaw, this.plantedYaw(k))) / ((STEP_TURN * Math.PI) / 180),
+          Math.hypot(hips[0] + c * ox + s * oz - at[0], hips[2] - s * ox + c * oz - at[2]) / (STEP_DISTANCE * this.height),
+          Math.abs(angleBetween(yaw, this.feet[k].plantedYaw)) / ((STEP_TURN * Math.PI) / 180),
         );
         if (miss > worstMiss) (worst = k), (worstMiss = miss);
-      });
-      if (worst >= 0) this.feet[worst].step = { to: this.home(worst, yaw, hips), frame: 0 };
-    }
-    return this.feet.map((foot) => {
-      if (!foot.step) return foot.planted;
-      foot.step.frame++;
-      const u = foot.step.frame / STEP_FRAMES, from = foot.planted, to = foot.step.to;
-      const pose: FootPose = {
-        position: from.position.map((p, i) => p + (to.position[i] - p) * smooth(u) + (i === 1 ? STEP_LIFT * this.height * Math.sin(Math.PI * u) : 0)),
-        orientation: nlerp(from.orientation, to.orientation, smooth(u)),
-      };
-      if (foot.step.frame >= STEP_FRAMES) {
-        foot.planted = copyPose(to);
-        foot.step = null;
       }
-      return pose;
-    });
+      if (worst >= 0) {
+        const [hx, hz] = this.restHipsFromHead;
+        const under = [head.position[0] + c * hx + s * hz, 0, head.position[2] - s * hx + c * hz];
+        this.feet[worst].step = { to: this.home(worst, yaw, under), frame: 0 };
+      }
+    }
+    for (let k = 0; k < this.feet.length; k++) this.targets[k] = this.target(k);
+    return this.targets;
+  }
+
+  private readonly targets: FootPose[] = [];
+
+  /** Foot k's target this frame: where it stands, or the next frame of its step. */
+  private target(k: number): FootPose {
+    const foot = this.feet[k];
+    if (!foot.step) return foot.planted;
+    foot.step.frame++;
+    const u = foot.step.frame / STEP_FRAMES, from = foot.planted, to = foot.step.to;
+    const pose: FootPose = {
+      position: from.position.map((p, i) => p + (to.position[i] - p) * smooth(u) + (i === 1 ? STEP_LIFT * this.height * Math.sin(Math.PI * u) : 0)),
+      orientation: nlerp(from.orientation, to.orientation, smooth(u)),
+    };
+    if (foot.step.frame >= STEP_FRAMES) this.feet[k] = this.standing(to, k);
+    return pose;
+  }
+
+  /** Foot k standing at `pose` (a copy). */
+  private standing(pose: FootPose, k: number): Foot {
+    return { planted: copyPose(pose), plantedYaw: yawFrom(pose.orientation, this.restFeet[k].orientation), step: null };
   }
 
   /** Where the stance puts foot k for the head's yaw `yaw` (radians) over the hips' tip `hips`: its rest offset turned with the head. */
@@ -100,22 +145,24 @@ export class FootSteps {
       orientation: mul(yawQuaternion(yaw), rest.orientation),
     };
   }
-
-  /** Foot k's turn about the vertical from its rest frame (radians). */
-  private plantedYaw(k: number): number {
-    return yawFrom(this.feet[k].planted.orientation, this.restFeet[k].orientation);
-  }
 }
 
 function copyPose(p: FootPose): FootPose {
   return { position: Array.from(p.position), orientation: Array.from(p.orientation) };
 }
 
-/** The turn about the vertical (radians, counter-clockwise seen from above) of the rotation that takes frame `rest` to frame `q`. */
+/**
+ * The turn about the vertical (radians, counter-clockwise seen from above) of the rotation that
+ * takes frame `rest` to frame `q`: where it turns the forward axis (z), projected on the floor.
+ * Scalar arithmetic: called every frame.
+ */
 function yawFrom(q: ArrayLike<number>, rest: ArrayLike<number>): number {
-  // The rest frame's forward (z) in both, projected on the floor.
-  const f = rotate(mul(q, inverse(rest)), [0, 0, 1]);
-  return Math.atan2(f[0], f[2]);
+  // r = q rest^-1 (rest a unit quaternion: its inverse is its conjugate).
+  const x1 = q[0], y1 = q[1], z1 = q[2], w1 = q[3], x2 = -rest[0], y2 = -rest[1], z2 = -rest[2], w2 = rest[3];
+  const x = w1 * x2 + x1 * w2 + y1 * z2 - z1 * y2, y = w1 * y2 - x1 * z2 + y1 * w2 + z1 * x2;
+  const z = w1 * z2 + x1 * y2 - y1 * x2 + z1 * w2, w = w1 * w2 - x1 * x2 - y1 * y2 - z1 * z2;
+  // r's turn of (0, 0, 1): its x and z.
+  return Math.atan2(2 * (x * z + w * y), 1 - 2 * (x * x + y * y));
 }
 
 function angleBetween(a: number, b: number): number {
@@ -129,9 +176,6 @@ function smooth(u: number): number {
 function yawQuaternion(yaw: number): number[] {
   return [0, Math.sin(yaw / 2), 0, Math.cos(yaw / 2)];
 }
-
-
-
 
 function nlerp(a: ArrayLike<number>, b: ArrayLike<number>, t: number): number[] {
   const sign = a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + a[3] * b[3] < 0 ? -1 : 1;

@@ -35,6 +35,8 @@ export interface SolveSettings {
   lmInitialMu?: number;
   /** Iterations a solve takes before on target ends it (the solver option minIterations). Default 0. */
   minIterations?: number;
+  /** Rejected steps after which an lm iteration is stuck (the solver option lmMaxRejections). Default 30. */
+  lmMaxRejections?: number;
 }
 
 /** What a solve or a step reached (angles in degrees, distances in rig units, see SolverResult). */
@@ -109,6 +111,7 @@ export class MethodSolver {
       maxJointMove: s.maxJointMove ?? 0,
       lmInitialMu: s.lmInitialMu ?? 1,
       minIterations: s.minIterations ?? 0,
+      lmMaxRejections: s.lmMaxRejections ?? 30,
     });
     Object.assign(this.sent, s);
   }
