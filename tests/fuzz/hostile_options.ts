@@ -45,6 +45,7 @@ const OUT_OF_RANGE: [string, unknown][] = [
   ['restarts', -1], ['stallIterations', -1], ['chainRestarts', -1],
   ['gnSingularCutoff', -1], ['gnSingularCutoff', NaN], ['gnMaxStepDeg', 0], ['newtonMaxStepDeg', -1],
   ['errorTolerance', 0], ['fdStepDeg', 1e-300], ['fdStepDeg', 1e300], ['restWeight', 1e10], ['restWeight', 1e150], ['restWeight', 1e308],
+  ['rootUnit', 0], ['rootUnit', -1], ['rootUnit', NaN], ['rootUnit', Infinity], ['rootUnit', 1e200],
 ];
 
 /** [name, value] pairs in range but at an edge: accepted, and the solve must still end and be clean. */
@@ -56,7 +57,7 @@ const EDGE_VALUES: [string, unknown][] = [
   ['lmDampingFloor', 0], ['lmDampingFloor', 1e300], ['errorTolerance', 5e-324], ['gradientTolerance', 0], ['tipTolerance', 1e300],
   ['gnSingularCutoff', 0], ['gnMaxStepDeg', 1e300], ['newtonMaxStepDeg', 1e-300], ['gdInitialStep', 1e-300], ['gdInitialStep', 1e300],
   ['backtrackFactor', 1e-300], ['armijoC1', 0], ['fdStepDeg', 1e-9], ['fdStepDeg', 1], ['seed', 2 ** 32 - 1], ['paperMode', true],
-  ['restWeight', 1000],
+  ['restWeight', 1000], ['rootUnit', 1e-150], ['rootUnit', 1e150],
 ];
 
 /** A bounded options object with `name` set to `value`: a time budget bounds an iteration cap and the other way round. */

@@ -2,7 +2,8 @@
 // units within bounds. Off, nothing changes (the angles, the limits, the Jacobian). On, forward
 // kinematics moves every tip by it, the analytic Jacobian (positions, orientations, poles, rest
 // rows) matches central differences, and every registered method reaches a target beyond the
-// chain's reach by moving the root, never past its bounds; a bad bound is refused by name.
+// chain's reach by moving the root, never past its bounds; root_unit weighs the root's move
+// against the joints' in lm's step; a bad bound is refused by name.
 #include <gtest/gtest.h>
 
 #include <random>
@@ -128,6 +129,50 @@ TEST(FloatingRoot, EveryMethodReachesPastTheChainByMovingTheRootWithinItsBounds)
     EXPECT_GE(low.angles[16], -1) << method;
     EXPECT_FALSE(low.reached) << method;
   }
+}
+
+// root_unit weighs the root's move in lm's least-change step: both hands moved a little along +z
+// (within the arms' reach) are met with the root doing the move at the default (1 rig unit per
+// degree: nearly free) and mostly the joints at 0.01, both on target. Without a
+// floating root the option changes nothing, bit for bit.
+TEST(FloatingRoot, RootUnitWeighsTheRootsMoveAgainstTheJoints) {
+  Kinematics kin(two_arms(true));
+  std::mt19937_64 rng(7);
+  const Eigen::VectorXd start = pose(kin, rng, Eigen::Vector3d::Zero());
+  Eigen::VectorXd tips(6);
+  kin.tips(start, tips);
+  Eigen::VectorXd target = tips;
+  target[2] += 0.05;
+  target[5] += 0.05;
+  const auto root_move = [&](double unit, double& joints_moved) {
+    SolverOptions options;
+    options.tip_tolerance = 1e-6;
+    options.restarts = 0;
+    options.root_unit = unit;
+    options.lm_initial_mu = 1e-3;  // near Gauss-Newton steps: the least change, as a tracked frame takes
+    auto solver = make_solver("lm", kin, options);
+    const SolverSummary& s = solver->solve(start, target);
+    EXPECT_TRUE(s.reached) << "root_unit " << unit;
+    joints_moved = (s.angles - start).head(15).cwiseAbs().maxCoeff();
+    return (s.angles - start).tail<3>().norm();
+  };
+  double joints_free = 0, joints_held = 0;
+  const double free_move = root_move(1.0, joints_free), held_move = root_move(0.01, joints_held);
+  EXPECT_GT(free_move, 0.049);  // the hands' 0.05 (measured: all of it, the joints 0.001 degrees)
+  EXPECT_LT(held_move, 0.5 * free_move);  // measured 0.012, the joints up to 1.2 degrees
+  EXPECT_GT(joints_held, 100 * joints_free);
+
+  Kinematics fixed(two_arms(false));
+  const Eigen::VectorXd a = start.head(15);
+  Eigen::VectorXd fixed_target(6);
+  fixed.tips(a, fixed_target);
+  fixed_target[2] += 0.05;
+  SolverOptions plain, weighted;
+  weighted.root_unit = 0.01;
+  auto first = make_solver("lm", fixed, plain);
+  auto second = make_solver("lm", fixed, weighted);
+  const Eigen::VectorXd x = first->solve(a, fixed_target).angles;
+  EXPECT_EQ(second->solve(a, fixed_target).angles, x);
 }
 
 TEST(FloatingRoot, RefusesBadBoundsByName) {

@@ -25,6 +25,7 @@ void BlockPattern::build(const Kinematics& kin, const GoalSet& goals) {
     for (int b : moving) bone_blocks[fill[b]++] = k;
   }
   const int n = kin.num_angles();
+  root_start_ = 3 * kin.num_bones();
   start_.assign(n + 1, 0);
   blocks_of_.clear();
   for (int j = 0; j < n; ++j) {
@@ -39,11 +40,13 @@ void BlockPattern::build(const Kinematics& kin, const GoalSet& goals) {
 }
 
 void BlockPattern::accumulate(const Eigen::MatrixXd& J, int j, Eigen::MatrixXd& normal) const {
+  const double w = weight(j);
   for (int p = start_[j]; p < start_[j + 1]; ++p) {
     const int e = blocks_of_[p];
+    const Eigen::Vector3d je = w * block(J, e, j);
     for (int q = p; q < start_[j + 1]; ++q) {
       const int f = blocks_of_[q];
-      normal.block<3, 3>(3 * e, 3 * f).noalias() += block(J, e, j) * block(J, f, j).transpose();
+      normal.block<3, 3>(3 * e, 3 * f).noalias() += je * block(J, f, j).transpose();
     }
   }
 }
@@ -54,12 +57,14 @@ void BlockPattern::symmetrize(Eigen::MatrixXd& normal) const {
 }
 
 void BlockPattern::take_out(const Eigen::MatrixXd& J, int i, double d, Eigen::VectorXd& rhs, Eigen::MatrixXd& reduced) const {
+  const double w = weight(i);
   for (int p = start_[i]; p < start_[i + 1]; ++p) {
     const int e = blocks_of_[p];
     rhs.segment<3>(3 * e) += d * block(J, e, i);
+    const Eigen::Vector3d je = w * block(J, e, i);
     for (int q = start_[i]; q < start_[i + 1]; ++q) {
       const int f = blocks_of_[q];
-      reduced.block<3, 3>(3 * e, 3 * f).noalias() -= block(J, e, i) * block(J, f, i).transpose();
+      reduced.block<3, 3>(3 * e, 3 * f).noalias() -= je * block(J, f, i).transpose();
     }
   }
 }

@@ -1,5 +1,7 @@
 // Levenberg-Marquardt, solved at the residual size (3 x #effectors):
-//   step on the free angles  d = -Jf^T (Jf Jf^T + lambda I)^-1 r
+//   step on the free angles  d = -W Jf^T (Jf W Jf^T + lambda I)^-1 r
+// (W: 1 on the angles, root_unit^2 on a floating root's translation: the least change that
+// meets the linearised goals, the root's move counted in units of root_unit)
 // with error-dependent damping lambda = (mu |r|^2 / reach^2 + lm_damping_floor) * s, s the mean
 // diagonal of Jf Jf^T (so lambda shrinks like |r|^2 and the local convergence is quadratic even
 // where J is rank-deficient), and mu adapted from the gain ratio rho = actual / predicted
@@ -102,8 +104,8 @@ class LevenbergMarquardt final : public Solver {
       small_cholesky_solve(shifted_, m_, y_);
       return true;
     };
-    // Angle i's step -(Jf^T y)_i.
-    const auto proposed = [&](int i) { return -pattern_.dot(J_, i, y_); };
+    // Angle i's step -w_i (Jf^T y)_i (w_i: its column's weight, BlockPattern::weight).
+    const auto proposed = [&](int i) { return -pattern_.weight(i) * pattern_.dot(J_, i, y_); };
     // Angle i moves by a known d: its column leaves the system.
     const auto take_out = [&](int i, double d) { pattern_.take_out(J_, i, d, rhs_, reduced_); };
     switch (active_set_.run(a_, kin_.lower(), kin_.upper(), free_, num_free_, ActiveSet::Fix::past_limit, deadline(),

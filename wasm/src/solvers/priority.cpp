@@ -153,7 +153,7 @@ Priority::Status Priority::step(const Kinematics& kin, const Eigen::MatrixXd& J,
     small_cholesky_solve(shifted_, m, y_);
     return true;
   };
-  const auto proposed = [&](int i) { return -pattern.dot(J, i, y_); };
+  const auto proposed = [&](int i) { return -pattern.weight(i) * pattern.dot(J, i, y_); };
   const auto take_out = [&](int i, double d) { pattern.take_out(J, i, d, rhs_, reduced_); };
   switch (active_set_.run(a, kin.lower(), kin.upper(), movable_, static_cast<int>(movable_.size()),
                           ActiveSet::Fix::past_limit, deadline, solve_system, proposed, take_out)) {
@@ -190,7 +190,8 @@ double Priority::reduced_gradient_norm(const Kinematics& kin, const Eigen::Matri
     if (held_row(i)) y_[i] = 0;
   gradient_.setZero();
   for (int j : movable_) gradient_[j] = pattern.dot(J, j, y_);
-  // Less its part in the held rows' row space: g - Jh^T (Jh Jh^T)^-1 Jh g.
+  // Less its part in the held rows' row space, in the steps' metric (W, BlockPattern::weight):
+  // g - Jh^T (Jh W Jh^T)^-1 Jh W g.
   held_normal_ = normal_;
   for (int i = 0; i < m; ++i) {
     if (held_row(i)) {
@@ -202,7 +203,7 @@ double Priority::reduced_gradient_norm(const Kinematics& kin, const Eigen::Matri
     held_normal_(i, i) = 1;
   }
   held_y_.setZero();
-  for (int j : movable_) pattern.add(J, j, gradient_[j], held_y_);
+  for (int j : movable_) pattern.add(J, j, pattern.weight(j) * gradient_[j], held_y_);
   for (int i = 0; i < m; ++i)
     if (!held_row(i)) held_y_[i] = 0;
   if (small_cholesky(held_normal_, m)) {

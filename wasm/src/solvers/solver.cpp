@@ -119,6 +119,7 @@ StopReason Solver::begin(const Eigen::Ref<const Eigen::VectorXd>& angles, const 
   goals_ = incoming_;
   if (m_ != goals_.rows() || n_ != kin_.num_angles() || effectors_ != kin_.rig().effectors || layout_ != goals_.layout())
     resize_workspace();
+  pattern_.set_root_weight(opt_.root_unit * opt_.root_unit);
   priority_.clear();
   restarts_.begin_solve(n_, opt_.seed);
   if (static_cast<int>(history_.size()) != opt_.history_capacity) history_.resize(opt_.history_capacity);

@@ -6,8 +6,8 @@
 // the tracked and planted bones hang from (sub_rig.ts: no fingers, toes or eyes) and writes that
 // pose into the whole rig's. No three.js and no DOM: a page, a widget or a Node script drives it.
 // With three points the feet stand where they stood and step when the body leaves them
-// (foot_steps.ts), the foot in the air giving way to everything else; in a deep crouch the heels
-// may lift. With six (the hips and feet as well) the feet go where they are tracked.
+// (foot_steps.ts), the foot in the air giving way to everything else. With six (the hips and
+// feet as well) the feet go where they are tracked.
 import type { IkCoreModule } from '../ik/module.js';
 import type { RigSpec } from '../ik/rig_spec.js';
 import { type PoleLimb, poleLimbs } from '../live/pole_limbs.js';
@@ -68,6 +68,23 @@ function hipsRange(spec: RigSpec, humanoid: HumanoidMap, bone: number): { lower:
   return { lower: [phi - 180, HIPS_TILT[0], -phi], upper: [phi + 180, HIPS_TILT[1], -phi] };
 }
 
+/**
+ * The hips' move, as a share of the height, that a frame's step weighs as one degree of a joint
+ * (the solver option rootUnit): the least change that meets the tracked points then moves the
+ * hips only as far as a body does. At the default, one rig unit (a metre here, 0.53 of the
+ * height: the hips' move nearly free), the crouch slid the hips forward and arched the spine back,
+ * into a pose from which the flat feet could not go lower, its arms and spine 3.3% of the height
+ * from the clip's; with 6 points stress's sideways lean stuck on 4% of its frames. At 0.2 every
+ * frame of the six clips is on target with 3 and with 6 points, the crouch's arms and spine 1.9%
+ * from the clip's. Lower is dearer still and better on the crouch (1.0% at 0.1, 0.9% at 0.05) but
+ * stiffer elsewhere: stress missed 1% of its frames at 0.1; at 0.05 a hand gizmo dragged across
+ * the chest in track mode pulled the head off until a foot stepped, and ten avatars' random
+ * upper-body sway (tests/browser/avatars) lost 1.8% of its frames (1.25% at 0.2, none at the
+ * default), an arm drifting into its shoulder's and wrist's limits where the hips' move had
+ * absorbed it.
+ */
+const ROOT_UNIT_SHARE = 0.2;
+
 /** How far the hips may move from where they stand, as shares of the height: sideways and forward, down, up. */
 const ROOT_REACH = { across: 1, down: 0.6, up: 0.1 };
 
@@ -78,14 +95,8 @@ const ROOT_REACH = { across: 1, down: 0.6, up: 0.1 };
  * wrong way once.
  */
 const CROUCH_SHARE = 0.03;
-/**
- * The head this share of the height below where it stands makes a deep crouch: the planted feet
- * keep their places (the balls of the feet, their bones' tips) but may turn, so the heels lift, as
- * a person's do. Held flat, lm did not find the crouch clip's own flat-footed pose (its shins 23
- * degrees over the feet, the ankles allow 30): 45% of its frames on target, the feet pulled 7% of
- * the height off their places; with the heels free at 0.2, 91%; at 0.1 and 0.05, every frame.
- */
-const DEEP_CROUCH_SHARE = 0.05;
+
+
 
 /**
  * Per-frame solve: at most this many iterations (the page's cap), so that a stream of inputs gives
@@ -158,6 +169,8 @@ export class AvatarSolver {
   /** The hips' tip at rest, and where the floating root has taken it since (rig units; the hips' turn aside). */
   private readonly restHips: Float64Array;
   private readonly hips = new Float64Array(3);
+  /** The heels are lifted: a crouch could not be met with them down, and the head has not stood up since. */
+  private heelsLifted = false;
   /** Frames in a row whose solves left a tracked point off its target. */
   private missed = 0;
 
@@ -192,7 +205,7 @@ export class AvatarSolver {
       throw e;
     }
     const drag = dragTolerances(h);
-    this.settings = { ...drag, maxIterations: FRAME_ITERATIONS, timeBudgetMs: FRAME_BUDGET_MS, restarts: 0, paperMode: false, strictPriority: true, lmInitialMu: FRAME_MU, minIterations: FRAME_MIN_ITERATIONS, lmMaxRejections: FRAME_REJECTIONS };
+    this.settings = { ...drag, maxIterations: FRAME_ITERATIONS, timeBudgetMs: FRAME_BUDGET_MS, restarts: 0, paperMode: false, strictPriority: true, lmInitialMu: FRAME_MU, minIterations: FRAME_MIN_ITERATIONS, lmMaxRejections: FRAME_REJECTIONS, rootUnit: ROOT_UNIT_SHARE * h };
     const s = this.session;
     // Every effector holds its frame: the tracked ones the tracker's, the feet where they stand;
     // the hips have no goal until they are tracked.
@@ -260,15 +273,37 @@ export class AvatarSolver {
     // The knees take their poles only while the head is lower than it stands (a crouch): standing,
     // their soft rows held the hard goals off target for whole clips (idle: 12% of the frames on
     // target with them, 100% without).
-    if (input.head.position[1] < this.standingHeadY - CROUCH_SHARE * this.height) this.placePoles();
+    const crouching = input.head.position[1] < this.standingHeadY - CROUCH_SHARE * this.height;
+    if (crouching) this.placePoles();
     else if (s.goals.poleBones.length > 0) s.goals.setPoles([], []);
-    // In a deep crouch the planted feet hold their places but not their frames: the heels may lift.
-    const deep = input.head.position[1] < this.standingHeadY - DEEP_CROUCH_SHARE * this.height;
-    for (const k of [3, 4]) if (!input[INPUTS[k]] && (s.goals.orientation[k] === 1) === deep) s.setOrientationGoal(k, !deep, s.goals.rotations.subarray(4 * k, 4 * k + 4));
-    const outcome = s.solve('lm', this.settings);
+    // A crouch keeps the heels down until a frame cannot be met so: then the planted feet hold
+    // their places but not their frames, and that frame is solved again; until the head is up.
+    const threePoints = !input.leftFoot && !input.rightFoot;
+    this.liftHeels(crouching && this.heelsLifted && threePoints);
+    let outcome = s.solve('lm', this.settings);
+    if (!outcome.reached && crouching && !this.heelsLifted && threePoints) {
+      this.liftHeels(true);
+      outcome = s.solve('lm', this.settings);
+    }
     this.missed = outcome.reached ? 0 : this.missed + 1;
     scatterAngles(this.part, s.angles, this.angles);
     return outcome;
+  }
+
+  /**
+   * Lifts the heels (the planted feet's orientation goals off: each foot keeps the ball of the foot,
+   * its bone's tip, where it stands and may turn, as a person's heel rises) or puts them down (the
+   * goals on, at the planted frames). Held flat, the ankles' 30 degrees stop a squat with the head
+   * upright, straight down: the hips have to stay under the head and the shins lean past what the
+   * ankles allow (tests/avatar: from a sixth of the height down the feet were pulled off their
+   * places). Lifted at a fixed depth instead (the head 5% of the height down), the crouch clip's
+   * heels rose where the clip keeps them flat: jitter 1.69 and arms and spine 1.8% of the height
+   * from the clip's, against 1.32 and 0.8% when they rise only as needed.
+   */
+  private liftHeels(lifted: boolean): void {
+    const goals = this.session.goals;
+    this.heelsLifted = lifted;
+    for (const k of [3, 4]) if ((goals.orientation[k] === 1) === lifted) this.session.setOrientationGoal(k, !lifted, goals.rotations.subarray(4 * k, 4 * k + 4));
   }
 
   /** The knees' poles where they bend now (one leg length out the way each knee bends): they follow the body. */

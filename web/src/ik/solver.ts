@@ -93,6 +93,13 @@ export interface SolverOptions {
   /** Rejected trials per iteration (lm and newton) before stopping with zero_step. Default 30. */
   lmMaxRejections?: number;
   /**
+   * A floating root's move (rig units) that the damped steps (lm's, the strict-priority step)
+   * weigh as one degree of a joint's turn: they take the least change that meets the goals, the
+   * root's translation counted in these units. Default 1; smaller keeps the root still and moves
+   * the joints instead. No effect without a floating root.
+   */
+  rootUnit?: number;
+  /**
    * Pulls the angles of the bones on a goal's or a pole's chain towards the rest pose (all 0), or
    * with restFromStart towards the solve's start angles: rows restWeight * stiffness * L * (pi/180)
    * * (angle - reference), rig units (Goals.stiffness per bone; L the goals' length scale). Never at

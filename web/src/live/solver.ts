@@ -37,6 +37,8 @@ export interface SolveSettings {
   minIterations?: number;
   /** Rejected steps after which an lm iteration is stuck (the solver option lmMaxRejections). Default 30. */
   lmMaxRejections?: number;
+  /** A floating root's move (rig units) that a step weighs as a joint's degree (the solver option rootUnit). Default 1. */
+  rootUnit?: number;
 }
 
 /** What a solve or a step reached (angles in degrees, distances in rig units, see SolverResult). */
@@ -112,6 +114,7 @@ export class MethodSolver {
       lmInitialMu: s.lmInitialMu ?? 1,
       minIterations: s.minIterations ?? 0,
       lmMaxRejections: s.lmMaxRejections ?? 30,
+      rootUnit: s.rootUnit ?? 1,
     });
     Object.assign(this.sent, s);
   }
