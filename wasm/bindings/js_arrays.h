@@ -52,9 +52,9 @@ Result guarded(Body body, Result failure) {
 
 // Length of a JS array-like, or an error naming `what` if it is not one.
 inline size_t js_length(const emscripten::val& array, const char* what) {
-  if (!array.hasOwnProperty("length") && array["length"].isUndefined())
-    throw RigError(std::string(what) + " must be an array or typed array");
-  return array["length"].as<size_t>();
+  const emscripten::val length = array["length"];  // one read: each is a call into JavaScript
+  if (!length.isNumber()) throw RigError(std::string(what) + " must be an array or typed array");
+  return length.as<size_t>();
 }
 
 // Copies a JS array of `expected` numbers into `out` (resized only if needed) in one bulk set.
@@ -90,7 +90,10 @@ inline void check_finite(const double* values, size_t n, const char* what) {
 
 // A new Float64Array holding a copy of `n` doubles at `data`.
 inline emscripten::val copy_out(const double* data, size_t n) {
-  return emscripten::val::global("Float64Array").new_(emscripten::typed_memory_view(n, data));
+  // The constructor looked up once (a global lookup by name is a call into JavaScript); kept for
+  // the module's life.
+  static const emscripten::val* const float64_array = new emscripten::val(emscripten::val::global("Float64Array"));
+  return float64_array->new_(emscripten::typed_memory_view(n, data));
 }
 
 }  // namespace ik::js

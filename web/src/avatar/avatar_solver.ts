@@ -95,6 +95,13 @@ const ROOT_REACH = { across: 1, down: 0.6, up: 0.1 };
  * wrong way once.
  */
 const CROUCH_SHARE = 0.03;
+/**
+ * The poles are placed only while a knee bends less than this (degrees): they show a straight leg
+ * the way to bend; a bent knee keeps its way from frame to frame. Placed every frame of a crouch
+ * they cost 76 µs a frame on the crouch clip (their forward kinematics and soft rows), 29 at 20
+ * degrees, the same on target; at 5 degrees a knee of stress's deep crouch went astray.
+ */
+const KNEES_STRAIGHT_DEG = 20;
 
 
 
@@ -270,11 +277,11 @@ export class AvatarSolver {
       for (let i = 0; i < 3; i++) s.targets[3 * k + i] = pose.position[i];
       for (let i = 0; i < 4; i++) s.goals.rotations[4 * k + i] = pose.orientation[i];
     }
-    // The knees take their poles only while the head is lower than it stands (a crouch): standing,
-    // their soft rows held the hard goals off target for whole clips (idle: 12% of the frames on
-    // target with them, 100% without).
+    // The knees take their poles only while the head is lower than it stands (a crouch) and a
+    // knee is nearly straight: standing, their soft rows held the hard goals off target for whole
+    // clips (idle: 12% of the frames on target with them, 100% without).
     const crouching = input.head.position[1] < this.standingHeadY - CROUCH_SHARE * this.height;
-    if (crouching) this.placePoles();
+    if (crouching && this.kneesStraight()) this.placePoles();
     else if (s.goals.poleBones.length > 0) s.goals.setPoles([], []);
     // A crouch keeps the heels down until a frame cannot be met so: then the planted feet hold
     // their places but not their frames, and that frame is solved again; until the head is up.
@@ -304,6 +311,12 @@ export class AvatarSolver {
     const goals = this.session.goals;
     this.heelsLifted = lifted;
     for (const k of [3, 4]) if ((goals.orientation[k] === 1) === lifted) this.session.setOrientationGoal(k, !lifted, goals.rotations.subarray(4 * k, 4 * k + 4));
+  }
+
+  /** Whether a knee bends less than KNEES_STRAIGHT_DEG (its a1, degrees). */
+  private kneesStraight(): boolean {
+    const a = this.session.angles;
+    return this.poleBones.some((b) => Math.abs(a[3 * b + 1]) < KNEES_STRAIGHT_DEG);
   }
 
   /** The knees' poles where they bend now (one leg length out the way each knee bends): they follow the body. */
