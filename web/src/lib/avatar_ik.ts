@@ -11,9 +11,9 @@ import { Matrix4, Object3D, Quaternion, Vector3 } from 'three';
 
 import { AvatarSolver, type AvatarInput } from '../avatar/avatar_solver.js';
 import type { HumanoidRole } from '../rig/humanoid_roles.js';
-import { ChainWriter } from './chain_writer.js';
 import type { AvatarSource } from './avatar_source.js';
 import { packageCore } from './package_core.js';
+import { PoseWriter } from '../three/pose_writer.js';
 import { skeletonRig, type SkeletonRig } from './skeleton_rig.js';
 import { TrackedBone } from './tracked_bone.js';
 
@@ -55,7 +55,7 @@ export class AvatarIK {
 
   private readonly solver: AvatarSolver;
   private readonly tracked: TrackedBone[];
-  private readonly writer: ChainWriter;
+  private readonly writer: PoseWriter;
   /** The object whose local coordinates the rig lives in; it may move (the targets stay in world space). */
   private readonly space: Object3D;
   private readonly input = {} as AvatarInput;
@@ -67,7 +67,7 @@ export class AvatarIK {
     const bone = (role: HumanoidRole): Object3D => rig.objects[rig.humanoid.bones[role]!];
     this.bones = { hips: bone('hips'), head: bone('head'), leftHand: bone('leftHand'), rightHand: bone('rightHand'), leftFoot: bone('leftFoot'), rightFoot: bone('rightFoot') };
     this.tracked = TRACKED.map((role) => new TrackedBone(rig.spec, rig.info, rig.humanoid.bones[role]!));
-    this.writer = new ChainWriter(rig.objects, rig.spec, rig.info, solver.movingBones);
+    this.writer = new PoseWriter(rig.objects, rig.spec, rig.info, solver.movingBones);
     this.height = solver.height * this.space.matrixWorld.getMaxScaleOnAxis();
     this.humanoid = rig.humanoid.source;
     [this.head, this.leftHand, this.rightHand] = TRACKED.map((role) => {
@@ -125,6 +125,6 @@ export class AvatarIK {
     if (this.disposed) return;
     this.disposed = true;
     this.solver.dispose();
-    this.writer.restore();
+    this.writer.dispose();
   }
 }
