@@ -9,6 +9,7 @@ import { LiveRig } from '../live/live_rig.js';
 import { MethodList } from '../live/methods.js';
 import type { RigSource } from '../live/rig_source.js';
 import { Throttle } from '../live/throttle.js';
+import type { Handles } from '../view/handles.js';
 import type { ViewClick } from '../view/picking.js';
 import { bottomSheet } from './bottom_sheet.js';
 import { Compare } from './compare.js';
@@ -19,7 +20,7 @@ import { initialSettings, type PageSettings } from './page_settings.js';
 import { Panel } from './panel.js';
 import { DEFAULT_RIG, FILE_CHOICE, loadProjectRig, loadUserFile, projectRig, rigMenu } from './project_rigs.js';
 import { download, fileStem, glbExportProblem, looksLikePoseFile, poseJsonText, posedGlbBytes, readPoseFile } from './pose_files.js';
-import { showSelection, toggleEffector } from './selection.js';
+import { deselectTarget, showSelection, stepTarget, toggleEffector } from './selection.js';
 import { SolveReport } from './solve_report.js';
 import type { StatsPanel } from './stats.js';
 import { StepMode } from './step_mode.js';
@@ -128,6 +129,8 @@ export class PageApp {
     this.removeSheet = bottomSheet(el.root, el.side);
 
     this.keyboard = new Keyboard(el.root, [
+      { keys: ['Tab'], label: 'select the next target (in track mode: the next tracked point)', run: () => this.stepTarget(1), focusKey: true },
+      { keys: ['Shift+Tab'], label: 'select the previous target', run: () => this.stepTarget(-1), focusKey: true },
       { keys: ['R'], label: 'reset the pose', run: () => this.resetPose() },
       { keys: ['Ctrl+Z'], label: 'undo (target moves, effector changes, reset, rig loads, pose files)', run: () => void this.undo(false) },
       { keys: ['Ctrl+Shift+Z', 'Ctrl+Y'], label: 'redo', run: () => void this.undo(true) },
@@ -140,7 +143,7 @@ export class PageApp {
       { keys: ['S'], label: () => `step mode: one iteration of ${this.settings.method}${this.settings.paperMode ? ' (paper mode)' : ''}`, run: () => this.stepMode.step() },
       { keys: ['C'], label: () => this.compareHelp(), run: () => void this.compare.run(this.controller, this.settings) },
       { keys: ['?', 'H'], label: 'show or hide this help', run: () => this.keyboard.toggle() },
-      { keys: ['Escape'], label: 'close this help', run: () => this.keyboard.toggle(false) },
+      { keys: ['Escape'], label: 'deselect: the gizmo lets go of its target (with this help open: close the help)', run: () => this.deselect() },
     ]);
   }
 
@@ -311,6 +314,27 @@ export class PageApp {
     this.controller.handles.setMode(mode);
     this.track.setGizmo(mode);
     this.panel.refresh();
+  }
+
+  /**
+   * The handles Tab and Esc select among: the drag mode's targets, or in track mode the tracked
+   * points while their gizmos move them (none while a clip or a headset does).
+   */
+  private selectable(): Handles | null {
+    if (!this.track.active) return this.controller.handles;
+    return this.track.source === 'gizmos' ? this.track.gizmos.handles : null;
+  }
+
+  /** Tab (step 1) and Shift+Tab (-1): the gizmo takes the next or the previous target. */
+  private stepTarget(step: 1 | -1): void {
+    const handles = this.selectable();
+    if (handles) stepTarget(handles, step);
+  }
+
+  /** Esc: the gizmo lets go (the help, if open, was closed instead). */
+  private deselect(): void {
+    const handles = this.selectable();
+    if (handles) deselectTarget(handles);
   }
 
   /** Pole handles on or off, the other way round from now. */

@@ -1,11 +1,18 @@
 // Keyboard shortcuts and the help overlay that lists them (toggled with ?). Shortcuts work
 // whatever has the focus except where keys are typed: a text or number field, a text area, a
-// select (its letters pick options); a clicked checkbox or button keeps them working.
+// select (its letters pick options); a clicked checkbox or button keeps them working. Tab and
+// Shift+Tab (focus keys) are shortcuts only while no control has the focus: on a control they
+// move the focus, as everywhere.
 export interface Shortcut {
   keys: string[];
   /** What the keys do; a function when it depends on a setting (read each time the help opens). */
   label: string | (() => string);
   run(): void;
+  /**
+   * A key browsers move the focus with (Tab, Shift+Tab): a shortcut only while no control has the
+   * focus (the page itself or the view) and the help is closed; elsewhere the browser has it.
+   */
+  focusKey?: boolean;
 }
 
 /** Input types whose keys are not text: a shortcut pressed while one has the focus still runs. */
@@ -18,14 +25,19 @@ export function typingInto(target: EventTarget | null): boolean {
   return target instanceof HTMLElement && target.isContentEditable;
 }
 
+/** Whether keys pressed in `target` go to a control (anything focused but the page itself and the view). */
+export function controlFocused(target: EventTarget | null): boolean {
+  return target instanceof Element && target !== document.body && target !== document.documentElement && !(target instanceof HTMLCanvasElement);
+}
+
 /**
  * The key pressed, as shortcuts name keys, lower case: a letter or symbol ('z', '?'), a named key
- * ('escape'), and with Ctrl (or Cmd) held, 'ctrl+z' / 'ctrl+shift+z' (Shift is named only with Ctrl:
- * it is how '?' is typed).
+ * ('escape', with Shift 'shift+tab'), and with Ctrl (or Cmd) held, 'ctrl+z' / 'ctrl+shift+z'
+ * (Shift is named only with Ctrl or a named key: it is how '?' is typed).
  */
 export function keyName(e: Pick<KeyboardEvent, 'key' | 'ctrlKey' | 'metaKey' | 'shiftKey'>): string {
   const key = e.key.toLowerCase();
-  if (!e.ctrlKey && !e.metaKey) return key;
+  if (!e.ctrlKey && !e.metaKey) return e.shiftKey && key.length > 1 && key !== 'shift' ? `shift+${key}` : key;
   return `ctrl+${e.shiftKey ? 'shift+' : ''}${key}`;
 }
 
@@ -48,7 +60,7 @@ export class Keyboard {
     this.table = document.createElement('table');
     const more = document.createElement('p');
     more.textContent =
-      'Mouse or touch: drag a target’s gizmo to move it (or, in rotate mode, to turn it: the effector’s bone turns to the target’s axes); drag elsewhere to orbit; click a bone to make its tip an effector or remove it (shift-click only selects it and shows its joint limits); click a target to put the gizmo on it; with pole handles on (P), click a yellow pole handle and drag it to turn that elbow or knee towards it. Drop a .glb, .gltf or A7 .json file anywhere to load it, or a saved pose (.json) to put that pose on the rig shown.';
+      'Mouse or touch: drag a target’s gizmo to move it (or, in rotate mode, to turn it: the effector’s bone turns to the target’s axes); drag elsewhere to orbit; click a bone to make its tip an effector or remove it (shift-click only selects it and shows its joint limits); click a target to put the gizmo on it, even one the gizmo’s handles reach over (a click there picks the target, a drag moves the gizmo); with pole handles on (P), click a yellow pole handle and drag it to turn that elbow or knee towards it. Drop a .glb, .gltf or A7 .json file anywhere to load it, or a saved pose (.json) to put that pose on the rig shown.';
     const close = document.createElement('button');
     close.type = 'button';
     close.textContent = 'close';
@@ -69,7 +81,7 @@ export class Keyboard {
       }
       const key = keyName(e);
       const s = this.shortcuts.find((x) => x.keys.some((k) => k.toLowerCase() === key));
-      if (!s) return;
+      if (!s || (s.focusKey && (controlFocused(e.target) || !this.overlay.hidden))) return;
       e.preventDefault();
       s.run();
     };

@@ -38,6 +38,8 @@ export interface PageProbe {
   boneScreen(i: number): ScreenPoint | null;
   /** Index of the target holding the gizmo. */
   selectedTarget(): number | null;
+  /** The gizmo's handle under the mouse now ('X', 'XY', 'XYZ'…; the gizmo's hover), or null. */
+  gizmoAxis(): string | null;
   cameraPosition(): [number, number, number];
   /** Height of the floor (the ground grid), world units. */
   floorY(): number;
@@ -145,6 +147,7 @@ export function makeProbe(app: PageApp): PageProbe {
       return stage.toScreen(a.lerp(b, 0.5));
     },
     selectedTarget: () => controller.handles.selected,
+    gizmoAxis: () => controller.handles.gizmo.axis,
     selectedPole: () => controller.handles.selectedPole,
     poleHandles() {
       const s = session();

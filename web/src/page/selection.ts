@@ -1,9 +1,11 @@
 // The selected bone: the readout in the side column (its name, whether its tip is an end
 // effector, and for each XZX angle its value and limits in degrees, all as text, never HTML), and
-// making its tip an end effector or not.
+// making its tip an end effector or not. The selected target from the keyboard: Tab and Shift+Tab
+// step through the targets, Esc lets the gizmo go (a click on a target selects it: handles.ts).
 import type { RigSpec } from '../ik/rig_spec.js';
 import type { LiveController } from '../live/live_controller.js';
 import type { LiveRig } from '../live/live_rig.js';
+import type { Handles } from '../view/handles.js';
 import { unbounded } from '../view/limits_view.js';
 
 const AXES = ['X (twist)', 'Z (swing)', 'X (twist)'];
@@ -62,4 +64,19 @@ export function toggleEffector(controller: LiveController, bone: number): boolea
   controller.setEffectors(list, at < 0 ? list.length - 1 : undefined);
   controller.invalidate();
   return true;
+}
+
+/**
+ * The gizmo takes the target after (step 1) or before (step -1) the one it holds, in effector
+ * order, wrapping; holding none (or a pole handle), the first or the last. No targets: nothing.
+ */
+export function stepTarget(handles: Handles, step: 1 | -1): void {
+  const n = handles.count, k = handles.selected;
+  if (n === 0) return;
+  handles.select(k === null ? (step > 0 ? 0 : n - 1) : (k + step + n) % n);
+}
+
+/** The gizmo lets go: no target (and no pole handle) is selected. */
+export function deselectTarget(handles: Handles): void {
+  if (handles.selected !== null || handles.selectedPole !== null) handles.select(null);
 }

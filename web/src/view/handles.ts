@@ -10,6 +10,12 @@
 // the goal's quaternion in the rig, with no conversion. The gizmo may instead hold one of the
 // limbs' pole handles (pole_handles.ts), always in translate mode: the gizmo holds one thing at a
 // time, a target or a pole.
+//
+// Handles before the gizmo: a press on a target or pole handle the gizmo does not hold belongs to
+// that handle, even where the gizmo's axes reach over it. Released without moving (a click), it
+// gives the handle the gizmo; moved (a drag), it goes to the gizmo after all (or to the orbit, if
+// no axis was under it), as if it had not been held (picking.ts, holdClickablePresses). A press on
+// the handle the gizmo holds is the gizmo's, as always.
 import {
   BufferGeometry,
   CylinderGeometry,
@@ -28,6 +34,7 @@ import {
 } from 'three';
 import { TransformControls } from 'three/addons/controls/TransformControls.js';
 
+import { holdClickablePresses } from './picking.js';
 import { PoleHandles } from './pole_handles.js';
 import type { Stage } from './stage.js';
 
@@ -86,12 +93,15 @@ export class Handles {
   private readonly pivotStart = new Quaternion();
   private readonly turnFrom = new Quaternion();
   private readonly disposeGizmoListeners: () => void;
+  private readonly stopHoldingPresses: () => void;
 
   private size = 1;
 
   constructor(stage: Stage) {
     this.gizmo = new TransformControls(stage.camera, stage.canvas);
     this.gizmo.setSize(0.9);
+    // A capture listener: it sees a press before the gizmo, the orbit and the click listener do.
+    this.stopHoldingPresses = holdClickablePresses(stage.canvas, stage.camera, (ray) => this.claimPress(ray));
     const helper = this.gizmo.getHelper();
     stage.scene.add(helper);
     const lineGeo = new BufferGeometry();
@@ -305,7 +315,29 @@ export class Handles {
     return out.copy(this.targets[k].position);
   }
 
+  /**
+   * What a click under `raycaster` does when it lands on a handle the gizmo does not hold while it
+   * holds another (the nearest target first, else a pole handle): give that one the gizmo. Null
+   * when the gizmo holds nothing (a click then picks as any click does) or the press is on what it
+   * holds.
+   */
+  private claimPress(raycaster: Raycaster): (() => void) | null {
+    if (this.dragging || !this.gizmo.enabled || (this.selected === null && this.selectedPole === null)) return null;
+    const k = this.pick(raycaster);
+    if (k !== null) {
+      return k === this.selected ? null : () => {
+        if (this.targets[k]) this.select(k);
+      };
+    }
+    const j = this.pickPole(raycaster);
+    if (j === null || j === this.selectedPole) return null;
+    return () => {
+      if (this.poles.handle(j)) this.selectPole(j);
+    };
+  }
+
   dispose(): void {
+    this.stopHoldingPresses();
     this.gizmo.detach();
     this.disposeGizmoListeners();
     this.gizmo.dispose();
