@@ -1,7 +1,11 @@
 // Defaults for a glTF rig without IK metadata (docs/gltf-ik-extras.md, "Defaults"): end
 // effectors are a humanoid's hands, feet and head, else the bones that look like them by name (or
-// end an arm), else every leaf; limits are +-180 degrees per XZX angle.
+// end an arm), else every leaf; limits are +-180 degrees per XZX angle. Control bones
+// (control_bones.ts: IK targets and poles off the root, a foot off the root beside the legs) are
+// never chosen: where one is named as a hand or foot, the limb's own end is taken in its place.
 import { isSideToken, nameSide, nameTokens, type Side } from './bone_names.js';
+import { controlBones, limbChainEnd, lowerLimbStandIns, type ControlBone, type EndStandIn } from './control_bones.js';
+import { listed } from './gltf_json.js';
 import type { HumanoidMap, HumanoidRole } from './humanoid_roles.js';
 import { maxEffectors } from './rig_limits.js';
 
@@ -28,10 +32,14 @@ const EXCLUDE = new Set([
 /** The roles whose bones are a humanoid's default end effectors. */
 const HUMANOID_EFFECTOR_ROLES: readonly HumanoidRole[] = ['head', 'leftHand', 'rightHand', 'leftFoot', 'rightFoot'];
 
-/** Bone indices (ascending) of a humanoid's head, hands and feet, those it maps. */
-function humanoidEffectors(map: HumanoidMap): number[] {
+/**
+ * Bone indices (ascending) of a humanoid's head, hands and feet, those it maps, and a lower arm
+ * or leg with no hand or foot mapped below it where a control bone is named as that hand or foot.
+ */
+function humanoidEffectors(map: HumanoidMap, controls: readonly ControlBone[]): { effectors: number[]; standIns: EndStandIn[] } {
   const bones = HUMANOID_EFFECTOR_ROLES.flatMap((r) => (map.bones[r] === undefined ? [] : [map.bones[r]]));
-  return [...new Set(bones)].sort((a, b) => a - b);
+  const standIns = lowerLimbStandIns(map.bones, controls);
+  return { effectors: [...new Set([...bones, ...standIns.map((s) => s.end)])].sort((a, b) => a - b), standIns };
 }
 
 /** Depth of each bone in a parents-first parent array (0 for a root). */
@@ -49,9 +57,16 @@ function depths(parents: ArrayLike<number>): Int32Array {
  * an arm instead: the child of a bone named arm/forearm/elbow... with no such bone in its own
  * subtree. A hand ending an arm is sided like its name, else like the arm. `names` are the bones'
  * names, `parents` their parents (parents first). Returns an empty array when nothing matches.
- * Linear time.
+ * Control bones (`controls`, found here when not given) are never taken; a side whose hand or
+ * foot only a control bone names gets the end of that arm or leg (limbChainEnd). Linear time.
  */
-export function effectorsByName(names: readonly string[], parents: ArrayLike<number>): number[] {
+export function effectorsByName(names: readonly string[], parents: ArrayLike<number>, controls: readonly ControlBone[] = controlBones(names, parents)): number[] {
+  return namedEffectors(names, parents, controls).effectors;
+}
+
+/** effectorsByName, and the limb ends taken in place of control bones. */
+function namedEffectors(names: readonly string[], parents: ArrayLike<number>, controls: readonly ControlBone[]): { effectors: number[]; standIns: EndStandIn[] } {
+  const isControl = new Set(controls.map((c) => c.bone));
   const depth = depths(parents);
   const tokens = names.map(nameTokens);
   const isArm = tokens.map((t) => t.some((w) => ARM_WORDS.has(w)));
@@ -66,7 +81,7 @@ export function effectorsByName(names: readonly string[], parents: ArrayLike<num
     if (!current || (k >= 0 && score[k] < current.score[k])) best.set(key, { bone, score });
   };
   tokens.forEach((words, bone) => {
-    if (words.some((t) => EXCLUDE.has(t))) return;
+    if (isControl.has(bone) || words.some((t) => EXCLUDE.has(t))) return;
     const p = parents[bone];
     const side: Side = nameSide(words);
     const endsArm = p >= 0 && isArm[p] && !isArm[bone] && !armBelow[bone];
@@ -83,7 +98,30 @@ export function effectorsByName(names: readonly string[], parents: ArrayLike<num
     }
     if (!named && endsArm) offer(`hand ${handSide}`, bone, [1, 0, depth[bone]]);
   });
-  return [...new Set([...best.values()].map((b) => b.bone))].sort((a, b) => a - b);
+  // A hand or foot named only by a control bone: the end of the limb instead (an arm's end found
+  // above is kept).
+  const standIns: EndStandIn[] = [];
+  for (const c of controls) {
+    if (c.kind !== 'limbEnd' || !c.limb) continue;
+    const key = `${c.limb === 'leg' ? 'foot' : 'hand'} ${c.side}`;
+    const current = best.get(key);
+    if (current && current.score[0] === 0) continue;
+    const end = current?.bone ?? limbChainEnd(names, parents, c.limb, c.side, isControl);
+    if (end === undefined) continue;
+    best.set(key, { bone: end, score: [1, 0, depth[end]] });
+    if (!standIns.some((s) => s.end === end)) standIns.push({ control: c.bone, end });
+  }
+  return { effectors: [...new Set([...best.values()].map((b) => b.bone))].sort((a, b) => a - b), standIns };
+}
+
+/** ", the ends of the limbs (A, B) in place of the control bones off the root (C, D)", or ''. */
+function standInText(names: readonly string[], standIns: readonly EndStandIn[]): string {
+  if (standIns.length === 0) return '';
+  const ends = listed(standIns.map((s) => names[s.end]));
+  const controls = listed(standIns.map((s) => names[s.control]));
+  return standIns.length === 1
+    ? `, the end of a limb (${ends}) in place of the control bone off the root (${controls})`
+    : `, the ends of the limbs (${ends}) in place of the control bones off the root (${controls})`;
 }
 
 /** The default end effectors and how they were chosen (for the warning). */
@@ -96,8 +134,8 @@ export interface DefaultEffectors {
 /**
  * The default end effectors of a rig none of whose joints is flagged one: a humanoid's head,
  * hands and feet, else those found by name (effectorsByName), else the leaves (the deepest ones
- * when they are more than the core takes). Bones in `excluded` (flagged effector: false) are never
- * chosen. `names`, `parents` as for effectorsByName.
+ * when they are more than the core takes). Bones in `excluded` (flagged effector: false) and control
+ * bones (control_bones.ts) are never chosen. `names`, `parents` as for effectorsByName.
  */
 export function defaultEffectors(
   names: readonly string[],
@@ -105,12 +143,22 @@ export function defaultEffectors(
   humanoid: HumanoidMap | null,
   excluded: ReadonlySet<number>,
 ): DefaultEffectors {
-  const kept = (bones: number[]): number[] => bones.filter((b) => !excluded.has(b));
-  const byRole = humanoid ? kept(humanoidEffectors(humanoid)) : [];
-  if (byRole.length) return { effectors: byRole, which: 'the hands, feet and head of the humanoid mapping' };
-  const byName = kept(effectorsByName(names, parents));
-  if (byName.length) return { effectors: byName, which: 'the hands, feet and head found by name' };
-  const leaves = kept(leafBones(parents));
+  const controls = controlBones(names, parents);
+  const isControl = new Set(controls.map((c) => c.bone));
+  const kept = (bones: number[]): number[] => bones.filter((b) => !excluded.has(b) && !isControl.has(b));
+  const keptStandIns = (standIns: EndStandIn[]): EndStandIn[] => standIns.filter((s) => !excluded.has(s.end));
+  if (humanoid) {
+    const byRole = humanoidEffectors(humanoid, controls);
+    const effectors = kept(byRole.effectors);
+    const which = `the hands, feet and head of the humanoid mapping${standInText(names, keptStandIns(byRole.standIns))}`;
+    if (effectors.length) return { effectors, which };
+  }
+  const byName = namedEffectors(names, parents, controls);
+  const named = kept(byName.effectors);
+  if (named.length) return { effectors: named, which: `the hands, feet and head found by name${standInText(names, keptStandIns(byName.standIns))}` };
+  // Leaves, but control bones only when every leaf is one.
+  const allLeaves = leafBones(parents).filter((b) => !excluded.has(b));
+  const leaves = allLeaves.some((b) => !isControl.has(b)) ? allLeaves.filter((b) => !isControl.has(b)) : allLeaves;
   const effectors = deepestBones(leaves, depths(parents), maxEffectors(parents.length));
   if (effectors.length === leaves.length) return { effectors, which: 'all leaf joints' };
   return { effectors, which: `the ${effectors.length} leaf joints furthest from the root, of ${leaves.length} (the most this rig may have)` };

@@ -20,6 +20,11 @@ export interface Convention {
   names: Record<BodyPart, string[]>;
   /** Names taken for a part only when no bone has one of its `names`. */
   fallbacks?: Partial<Record<BodyPart, string[]>>;
+  /**
+   * True: a name whose last word carries a number glued to it ("Palm2L", "Hand01_L") is also
+   * read without the number, after the names without one ("PalmL" before "Palm2L").
+   */
+  numbered?: boolean;
 }
 
 /** The conventions, in the order that breaks a tie between two that map as many core roles. */
@@ -63,10 +68,11 @@ export const CONVENTIONS: readonly Convention[] = [
     names: {
       hips: ['hips', 'hip', 'pelvis'], neck: ['neck'], head: ['head'],
       shoulder: ['shoulder', 'clavicle', 'collar', 'collarbone'],
-      upperArm: ['upperarm', 'arm'], lowerArm: ['lowerarm', 'forearm', 'elbow'], hand: ['hand', 'palm', 'wrist'],
-      upperLeg: ['upperleg', 'upleg', 'thigh'], lowerLeg: ['lowerleg', 'shin', 'calf', 'knee'],
+      upperArm: ['upperarm', 'armupper', 'arm'], lowerArm: ['lowerarm', 'armlower', 'forearm', 'elbow'], hand: ['hand', 'palm', 'wrist'],
+      upperLeg: ['upperleg', 'legupper', 'upleg', 'thigh'], lowerLeg: ['lowerleg', 'leglower', 'shin', 'calf', 'knee'],
       foot: ['foot', 'ankle'], toes: ['toes', 'toe', 'toebase', 'ball'],
     },
+    numbered: true,
   },
 ];
 
@@ -84,16 +90,33 @@ export interface BoneName {
   side: Side;
   /** The last 1..MAX_NAME_WORDS words (side and joint words removed), joined, longest first. */
   endings: string[];
+  /**
+   * When the last of those words is a number glued to the word before it in the name ("Palm2L",
+   * not "thigh.L.001"): the endings without it, for conventions that read numbered names.
+   */
+  unnumbered?: string[];
 }
+
+/** The last 1..MAX_NAME_WORDS of `words`, joined, longest first. */
+function endingsOf(words: string[]): string[] {
+  const endings: string[] = [];
+  for (let n = Math.min(MAX_NAME_WORDS, words.length); n >= 1; n--) endings.push(words.slice(-n).join(''));
+  return endings;
+}
+
+// The name's last run of digits and the character before it (a letter when the number is glued on).
+const LAST_NUMBER = /([A-Za-z]?)[0-9]+[^0-9]*$/;
 
 /** The readable parts of a bone name, or null for a helper bone (ik, twist, ctrl...) or an empty name. */
 export function readBoneName(name: string): BoneName | null {
   const tokens = nameTokens(name);
   if (tokens.length === 0 || tokens.some((t) => HELPER_WORDS.has(t))) return null;
   const words = tokens.filter((t) => !isSideToken(t) && !JOINT_WORDS.has(t));
-  const endings: string[] = [];
-  for (let n = Math.min(MAX_NAME_WORDS, words.length); n >= 1; n--) endings.push(words.slice(-n).join(''));
-  return { side: nameSide(tokens), endings };
+  const read: BoneName = { side: nameSide(tokens), endings: endingsOf(words) };
+  // Side and joint words hold no digits, so a number last among the words is the name's last number.
+  if (words.length >= 2 && /^[0-9]+$/.test(words[words.length - 1]) && /^[a-z]/.test(words[words.length - 2]) && LAST_NUMBER.exec(name)?.[1])
+    read.unnumbered = endingsOf(words.slice(0, -1));
+  return read;
 }
 
 /** One convention's name table, ready for lookups: ending -> part and rank (0 = name, 1 = fallback). */
@@ -108,11 +131,19 @@ export function nameTable(c: Convention): NameTable {
   return table;
 }
 
-/** The part (and rank) a bone name states in a convention: its longest ending found in the table. */
-export function namedPart(name: BoneName, table: NameTable): { part: BodyPart; rank: number } | undefined {
+/**
+ * The part (and rank) a bone name states in a convention: its longest ending found in the table;
+ * with `numbered`, else its longest ending without a glued number, ranked after the others.
+ */
+export function namedPart(name: BoneName, table: NameTable, numbered = false): { part: BodyPart; rank: number } | undefined {
   for (const ending of name.endings) {
     const hit = table.get(ending);
     if (hit) return hit;
   }
+  if (numbered)
+    for (const ending of name.unnumbered ?? []) {
+      const hit = table.get(ending);
+      if (hit) return { part: hit.part, rank: hit.rank + 2 };
+    }
   return undefined;
 }

@@ -2,8 +2,12 @@
 // (docs/gltf-ik-extras.md, "Humanoid recognition"): each limb runs down the tree (a lower leg
 // below its upper leg, a foot below that; the legs below the hips); among several bones named for
 // one role the one nearest the root that fits wins. The spine, chest and upper chest are not read
-// from names: they are the bones between the hips and the neck, in order.
+// from names: they are the bones between the hips and the neck, in order. Control bones
+// (control_bones.ts) take no role; where one is named as a side's foot (or hand) and the leg (arm)
+// has no foot (hand) below its lower leg (arm), the lower bone's child is the foot (hand): the
+// limb's own end stands in for the control.
 import type { Side } from './bone_names.js';
+import { limbRoles, type ControlBone, type EndStandIn } from './control_bones.js';
 import { MIDLINE_PARTS, namedPart, nameTable, type BodyPart, type BoneName, type Convention } from './humanoid_names.js';
 import type { HumanoidRole } from './humanoid_roles.js';
 import type { BoneTree } from './humanoid_tree.js';
@@ -26,16 +30,30 @@ interface Candidate {
   rank: number;
 }
 
+/** The roles a convention finds, and the limb ends that stand in for control bones among them. */
+export interface AssembledHumanoid {
+  bones: RoleBones;
+  /** Hands and feet that are the lower bone's child in place of a control bone named as them. */
+  standIns: EndStandIn[];
+}
+
 /**
  * The roles `convention` finds in a rig: `names` holds each bone's read name (null for a helper
- * or unnamed bone), `tree` the rig's bone tree. Time O(n log n) in the bones.
+ * or unnamed bone), `tree` the rig's bone tree, `controls` its control bones. Time O(n log n) in
+ * the bones.
  */
-export function assembleHumanoid(names: readonly (BoneName | null)[], tree: BoneTree, convention: Convention): RoleBones {
+export function assembleHumanoid(
+  names: readonly (BoneName | null)[],
+  tree: BoneTree,
+  convention: Convention,
+  controls: readonly ControlBone[] = [],
+): AssembledHumanoid {
   const table = nameTable(convention);
+  const isControl = new Set(controls.map((c) => c.bone));
   const candidates = new Map<HumanoidRole, Candidate[]>();
   names.forEach((name, bone) => {
-    if (name === null) return;
-    const hit = namedPart(name, table);
+    if (name === null || isControl.has(bone)) return;
+    const hit = namedPart(name, table, convention.numbered);
     // Head, neck and hips have no side; a limb part must have one.
     if (!hit || MIDLINE_PARTS.includes(hit.part) !== (name.side === 'none')) return;
     const role = roleOf(name.side, hit.part);
@@ -69,6 +87,23 @@ export function assembleHumanoid(names: readonly (BoneName | null)[], tree: Bone
   }
   chain('none', NECK_HEAD, undefined);
 
+  // A hand or foot named only by a control bone: the lower arm's or leg's child, when it has one
+  // that is neither a control, a helper nor mapped already (the child with the biggest subtree).
+  const standIns: EndStandIn[] = [];
+  for (const c of controls) {
+    if (c.kind !== 'limbEnd' || c.side === 'none' || !c.limb) continue;
+    const { lower, end } = limbRoles(c.limb, c.side);
+    const low = bones[lower];
+    if (bones[end] !== undefined || low === undefined) continue;
+    const used = new Set(Object.values(bones));
+    let child: number | undefined;
+    for (const k of tree.children(low))
+      if (!isControl.has(k) && names[k] !== null && !used.has(k) && (child === undefined || tree.descendants(k) > tree.descendants(child))) child = k;
+    if (child === undefined) continue;
+    bones[end] = child;
+    standIns.push({ control: c.bone, end: child });
+  }
+
   const top = bones.neck ?? bones.head;
   if (bones.hips !== undefined && top !== undefined) {
     const used = new Set(Object.values(bones));
@@ -77,5 +112,5 @@ export function assembleHumanoid(names: readonly (BoneName | null)[], tree: Bone
     if (torso.length >= 2) bones.chest = torso[1];
     if (torso.length >= 3) bones.upperChest = torso[torso.length - 1];
   }
-  return bones;
+  return { bones, standIns };
 }

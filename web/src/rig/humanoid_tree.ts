@@ -1,6 +1,7 @@
 // The tree questions humanoid recognition asks of a rig's bones, each in constant or linear time
 // so that a hostile 16,384-bone file costs no more than a real one: is one bone below another,
-// how deep is a bone, which bones lie between two bones, does a subtree hold a marked bone.
+// how deep is a bone, which bones lie between two bones, does a subtree hold a marked bone, what
+// are a bone's children.
 
 /**
  * A rig's bone tree. `parents` must list parents first in depth-first order (as the importers
@@ -23,6 +24,18 @@ export class BoneTree {
   /** True when bone `a` lies strictly below bone `b` (a descendant of it). */
   below(a: number, b: number): boolean {
     return a > b && a <= this.last[b];
+  }
+
+  /** The number of bones strictly below bone `b`. */
+  descendants(b: number): number {
+    return this.last[b] - b;
+  }
+
+  /** The child bones of `b`, in order. Linear in the size of its subtree. */
+  children(b: number): number[] {
+    const kids: number[] = [];
+    for (let c = b + 1; c <= this.last[b]; c = this.last[c] + 1) kids.push(c);
+    return kids;
   }
 
   /**
