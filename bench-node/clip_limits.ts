@@ -6,7 +6,7 @@ import { Matrix4, Quaternion, Vector3 } from 'three';
 
 import type { RigSpec } from '../web/src/ik/rig_spec.js';
 import { fromRowMajor } from '../web/src/three/row_major.js';
-import { xzxWithinLimits } from './peers/xzx.js';
+import { xzxWithinLimits } from '../web/src/rig/xzx_angles.js';
 
 const X = new Vector3(1, 0, 0), Z = new Vector3(0, 0, 1), RAD = Math.PI / 180;
 

@@ -12,7 +12,7 @@
 // passes (stalled), or the time budget is spent (timeout).
 // CCD clamps Euler XYZ angles per link, not XZX ones, and no Euler XYZ box equals an XZX box (see
 // eulerBox). So after every pass the adapter reads each joint back as XZX angles inside the rig's
-// limits (peers/xzx.ts) and poses it there: every pass ends inside the limits, and E and the
+// limits (web/src/rig/xzx_angles.ts) and poses it there: every pass ends inside the limits, and E and the
 // stopping tests are measured on that pose. This projection is part of the timed solve.
 import { Bone, BufferGeometry, Matrix4, MeshBasicMaterial, Object3D, Quaternion, Skeleton, SkinnedMesh, Vector3 } from 'three';
 import { CCDIKSolver, type IK } from 'three/examples/jsm/animation/CCDIKSolver.js';
@@ -22,7 +22,7 @@ import { errorOf, isOnTarget, largestChange, pinnedDeviation, tipDistance } from
 import type { SolveResult } from '../metrics.js';
 import type { Runner, RunSettings, SolveInput } from '../runner.js';
 import { project } from '../targets.js';
-import { xzxWithinLimits } from './xzx.js';
+import { xzxWithinLimits } from '../../web/src/rig/xzx_angles.js';
 
 export const STALL_PASSES = 100;
 export const STALL_RATIO = 1e-3;

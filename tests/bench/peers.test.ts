@@ -5,7 +5,7 @@ import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 
 import { ClosedChainIkRunner } from '../../bench-node/peers/closed_chain_ik.js';
 import { eulerBox, ThreeCcdRunner, xzxQuaternion } from '../../bench-node/peers/three_ccd.js';
-import { xzxWithinLimits } from '../../bench-node/peers/xzx.js';
+import { xzxWithinLimits } from '../../web/src/rig/xzx_angles.js';
 import type { RunSettings } from '../../bench-node/runner.js';
 import { generateTargets } from '../../bench-node/targets.js';
 import type { IkCoreModule } from '../../web/src/ik/module.js';

@@ -41,6 +41,13 @@ export class LiveRig {
       const session = new IkSession(module, limitedSpec(source, humanoid));
       session.pinsFrames = source.humanoidLimits !== undefined;
       made.push(session);
+      // A file saved posed opens posed: its rest is the bind pose, its nodes' pose the start
+      // (gltf_rig.ts startAngles), the targets on its tips. R goes back to the rest.
+      const start = source.gltf?.info.startAngles;
+      if (start) {
+        session.angles.set(session.rig.project(start));
+        session.targets = session.tips();
+      }
       const poses = session.poses();
       const view = new RigView(source.spec, poses);
       made.push(view);

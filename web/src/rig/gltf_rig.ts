@@ -1,9 +1,11 @@
 // glTF 2.0 skinned character -> RigSpec (rules and schema: docs/gltf-ik-extras.md).
 // Every joint of every skin becomes one bone (a joint shared by several skins is one bone). The
-// rest pose is the nodes' own transforms (the pose three.js shows the file in), so the model does
-// not move at zero angles. Bones are ordered depth-first through the node tree (parents first).
+// rest pose is the skins' bind pose (bind_pose.ts; the nodes' own transforms where a skin has no
+// inverse bind matrices), and the nodes' pose, where it differs, the start angles: the model opens
+// as the file shows it. Bones are ordered depth-first through the node tree (parents first).
 // A humanoid skeleton is recognised (humanoid_recognition.ts) and gives the default end effectors.
 import type { RigSpec } from '../ik/rig_spec.js';
+import { bindMatrices, restFromBindPose, startAngles } from './bind_pose.js';
 import { boneRestFrame } from './bone_frame.js';
 import { chooseChainChild } from './chain_child.js';
 import { DEFAULT_LIMIT_DEG, defaultEffectors, rootChainEffectors } from './effector_defaults.js';
@@ -18,7 +20,7 @@ import { humanoidLimits, type RigLimits } from './humanoid_limits.js';
 import { recognizeHumanoid } from './humanoid_recognition.js';
 import type { HumanoidMap } from './humanoid_roles.js';
 import { readIkExtras, type IkExtras } from './ik_extras.js';
-import { allFinite, invertAffine, multiply, transformDirection, transformPoint } from './mat4.js';
+import { allFinite, invertAffine, transformDirection, transformPoint, type Mat4 } from './mat4.js';
 import { effectorCountProblem, MAX_BONES, MAX_COORDINATE } from './rig_limits.js';
 
 /** What the write-back and the page need to map rig bones onto the glTF (and three.js) nodes. */
@@ -27,10 +29,18 @@ export interface GltfRigInfo {
   boneNodes: Int32Array;
   /** glTF node name of each bone ('' when the node has none). */
   nodeNames: string[];
-  /** Each joint's rest world matrix in glTF scene space, 16 per bone, row-major, with its scale. */
+  /** Each joint's rest (bind pose) world matrix in glTF scene space, 16 per bone, row-major, with its scale. */
   restWorld: Float64Array;
-  /** Each joint's rest local matrix (relative to its glTF parent node), 16 per bone, row-major. */
+  /** Each joint's rest (bind pose) local matrix (relative to its glTF parent node), 16 per bone, row-major. */
   restLocal: Float64Array;
+  /**
+   * The pose the file's nodes stand in, where it differs from the rest (the bind pose): XZX angles
+   * from the rest, 3 per bone in degrees, within the spec's limits (the nearest angles within them
+   * where the pose leaves them; `warnings` names those bones). Posing the rig at these angles puts
+   * every joint where the file has it, so the model opens as saved, while the rest (angles 0, the
+   * page's reset) is the bind pose. null when the nodes stand in the rest pose.
+   */
+  startAngles: Float64Array | null;
   /** Each bone's tip in its joint node's local coordinates, 3 per bone. */
   tailLocal: Float64Array;
   /** Per glTF skin, the bone index of each of its joints (skin order). */
@@ -103,14 +113,32 @@ export async function importGltfRig(bytes: Uint8Array, file: string, readSibling
   const count = order.length;
   const parents = Int32Array.from(parentList);
 
-  const world = worldMatrices(tree);
-  for (const n of order) {
-    const W = world[n.index];
-    if (!allFinite(W)) failIn(file, `${nodeLabel(n)}: world matrix has a non-finite entry`);
-    if (invertAffine(W) === null) failIn(file, `${nodeLabel(n)}: world matrix is singular (a zero scale?)`);
-    if (Math.max(Math.abs(W[3]), Math.abs(W[7]), Math.abs(W[11])) > MAX_COORDINATE)
-      failIn(file, `${nodeLabel(n)}: world position (${W[3]}, ${W[7]}, ${W[11]}) lies beyond +-${MAX_COORDINATE} scene units`);
+  const posed = worldMatrices(tree); // the nodes' own pose
+  const checkWorld = (world: Mat4[], which: string): void => {
+    for (const n of order) {
+      const W = world[n.index];
+      if (!allFinite(W)) failIn(file, `${nodeLabel(n)}: ${which}world matrix has a non-finite entry`);
+      if (invertAffine(W) === null) failIn(file, `${nodeLabel(n)}: ${which}world matrix is singular (a zero scale?)`);
+      if (Math.max(Math.abs(W[3]), Math.abs(W[7]), Math.abs(W[11])) > MAX_COORDINATE)
+        failIn(file, `${nodeLabel(n)}: ${which}world position (${W[3]}, ${W[7]}, ${W[11]}) lies beyond +-${MAX_COORDINATE} scene units`);
+    }
+  };
+  checkWorld(posed, '');
+  // Inverse bind matrices: read (so a missing buffer or NaN is an error) and checked; they give the rest.
+  const buffers = new BufferCache(container, lists, file, readSibling);
+  const binds: (Mat4[] | undefined)[] = [];
+  for (const skin of skins) {
+    if (skin.inverseBindMatrices === undefined) {
+      binds.push(undefined);
+      continue;
+    }
+    const where = `skins[${skin.index}].inverseBindMatrices`;
+    const ibm = await readMat4Accessor(lists, buffers, skin.inverseBindMatrices, skin.joints.length, where, file);
+    binds.push(bindMatrices(ibm, skin, tree, `${where} (accessor ${skin.inverseBindMatrices})`, file));
   }
+  const restPose = restFromBindPose(tree, skins, binds, posed, isJoint);
+  const world = restPose.world;
+  if (restPose.rebound.length) checkWorld(world, 'bind pose ');
   const extras: (IkExtras | undefined)[] = order.map((n) => readIkExtras(n.extras, nodeLabel(n), file));
   const children: number[][] = order.map(() => []);
   parents.forEach((p, b) => p >= 0 && children[p].push(b));
@@ -150,6 +178,7 @@ export async function importGltfRig(bytes: Uint8Array, file: string, readSibling
     treeDepth: nodeDepth.reduce((a, b) => Math.max(a, b), 0),
     humanoid: humanoid.map,
     fileLimits: null,
+    startAngles: null,
     warnings: [...humanoid.notes],
   };
 
@@ -181,7 +210,7 @@ export async function importGltfRig(bytes: Uint8Array, file: string, readSibling
     spec.lengths[b] = length;
     spec.rest.set(boneRestFrame(W, unit), 16 * b);
     info.restWorld.set(W, 16 * b);
-    info.restLocal.set(node.local, 16 * b);
+    info.restLocal.set(restPose.local[node.index], 16 * b);
     const tip: Vec3 = [p[0] + length * unit[0], p[1] + length * unit[1], p[2] + length * unit[2]];
     info.tailLocal.set(transformPoint(invertAffine(W)!, tip), 3 * b);
     for (let k = 0; k < 3; k++) {
@@ -240,23 +269,19 @@ export async function importGltfRig(bytes: Uint8Array, file: string, readSibling
         : `no IK extras: every angle is limited to +-${DEFAULT_LIMIT_DEG} degrees`,
     );
 
-  // Inverse bind matrices: read (so a missing buffer or NaN is an error) and compared with the pose.
-  const buffers = new BufferCache(container, lists, file, readSibling);
-  const unbound: string[] = [];
-  for (const skin of skins) {
-    if (skin.inverseBindMatrices === undefined) continue;
-    const where = `skins[${skin.index}].inverseBindMatrices`;
-    const ibm = await readMat4Accessor(lists, buffers, skin.inverseBindMatrices, skin.joints.length, where, file);
-    // In the bind pose, world(joint) * ibm(joint) is the same matrix (the mesh's bind space) for all joints.
-    const first = multiply(world[skin.joints[0]], ibm.subarray(0, 16));
-    const scale = Math.max(1, ...Array.from(first, Math.abs));
-    const differs = skin.joints.some((j, k) => {
-      const m = multiply(world[j], ibm.subarray(16 * k, 16 * k + 16));
-      return m.some((v, i) => Math.abs(v - first[i]) > 1e-4 * scale);
-    });
-    if (differs) unbound.push(String(skin.index));
+  // Which pose is the rest, and the file's pose as start angles where it differs from the rest.
+  const skinList = (list: number[]): string[] => list.map(String);
+  if (restPose.unbound.length) info.warnings.push(grouped('skin', skinList(restPose.unbound), "no inverse bind matrices, so the nodes' pose is the rest"));
+  if (restPose.unusable.length) info.warnings.push(grouped('skin', skinList(restPose.unusable), "the nodes are not in the bind pose; the rig's rest pose is the nodes' pose"));
+  if (restPose.rebound.length) {
+    const start = startAngles(spec, info.boneNodes, world, posed);
+    info.startAngles = start.angles;
+    const moved = restPose.rebound.map((n) => spec.names[boneOfNode[n]]);
+    const at = moved.length === 1 ? 'joint' : `${moved.length} joints`;
+    info.warnings.push(`the file's pose differs from the bind pose (${at}: ${listed(moved)}): opened posed, the rest is the bind pose`);
+    if (start.clamped.length)
+      info.warnings.push(grouped('bone', start.clamped.map((b) => spec.names[b]), "posed past its limits in the file: opened at the nearest angles within them"));
   }
-  if (unbound.length) info.warnings.push(grouped('skin', unbound, "the nodes are not in the bind pose; the rig's rest pose is the nodes' pose"));
   return { spec, gltf: info };
 }
 

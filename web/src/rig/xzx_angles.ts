@@ -1,6 +1,15 @@
 // Reading a joint rotation back as XZX angles inside the joint's limits: how a pose from a peer
-// that does not work in XZX angles (three.js CCD) is judged by the rig's own limits.
-import type { Quaternion } from 'three';
+// that does not work in XZX angles (three.js CCD) is judged by the rig's own limits, how far a
+// clip's pose leaves them (bench-node/clip_limits.ts), and a posed file's pose read as angles
+// from its bind pose (bind_pose.ts). No three.js: a quaternion is any {x, y, z, w}.
+
+/** A unit quaternion. */
+export interface QuaternionLike {
+  x: number;
+  y: number;
+  z: number;
+  w: number;
+}
 
 const DEG = 180 / Math.PI;
 
@@ -24,7 +33,7 @@ function nearestTurn(x: number, lo: number, hi: number): number {
  * (a + 180, -b, c + 180). At b = 0 or 180 only a +- c is
  * defined; it is split so that both angles are inside their limits when possible.
  */
-export function xzxWithinLimits(q: Quaternion, lo: ArrayLike<number>, hi: ArrayLike<number>, out: Float64Array, at = 0): void {
+export function xzxWithinLimits(q: QuaternionLike, lo: ArrayLike<number>, hi: ArrayLike<number>, out: Float64Array, at = 0): void {
   const { x, y, z, w } = q;
   const r00 = 1 - 2 * (y * y + z * z);
   const r10 = 2 * (x * y + z * w);
