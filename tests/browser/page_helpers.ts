@@ -165,3 +165,33 @@ export async function panelControl(page: Page, name: RegExp) {
   for (const i of titles) await page.locator('.lil-gui > .lil-title').nth(i).click();
   return control;
 }
+
+/**
+ * Drags the selected target k straight up (dy > 0) or down by `dy` rig units with the mouse on the
+ * gizmo's world Y arrow: grabbed 35 px along the arrow from the target, each of the `steps` moves
+ * to the screen point of a world point on the arrow's line, so the target moves by dy exactly (up
+ * to where the mouse can point); a frame after each move.
+ */
+export async function dragTargetAlongY(page: Page, k: number, dy: number, steps = 20): Promise<void> {
+  const start = await page.evaluate((i) => window.ikPage?.targetPosition(i) ?? null, k);
+  if (!start) throw new Error(`no target ${k}`);
+  const at = async (up: number): Promise<ScreenPoint> => {
+    const p = await page.evaluate((q) => window.ikPage?.worldToScreen(q) ?? null, [start[0], start[1] + up, start[2]] as [number, number, number]);
+    if (!p) throw new Error('no screen point');
+    return p;
+  };
+  const center = await at(0);
+  const probe = Math.abs(dy) / 30 || 0.01;
+  const near = await at(probe);
+  const grabUp = (35 * probe) / Math.hypot(near.x - center.x, near.y - center.y); // 35 px along the arrow, in rig units
+  const grab = await at(grabUp);
+  await page.mouse.move(grab.x, grab.y);
+  await page.waitForFunction(() => window.ikPage?.gizmoAxis() === 'Y', null, { timeout: 5_000 }); // the mouse is on the up arrow
+  await page.mouse.down();
+  for (let i = 1; i <= steps; i++) {
+    const p = await at(grabUp + (dy * i) / steps);
+    await page.mouse.move(p.x, p.y);
+    await nextFrame(page);
+  }
+  await page.mouse.up();
+}

@@ -87,6 +87,8 @@ export interface PageProbe {
   angles(): number[];
   /** All targets, 3 per effector, rig units. */
   targets(): number[];
+  /** The joint limits in use (the session's: humanoid or the file's), per angle, degrees. */
+  limits(): { lower: number[]; upper: number[] };
   /** The page's settings record (what the panel edits): a test may set values the panel's sliders do not reach. */
   settings(): PageSettings;
   /** Steps undo can take now. */
@@ -165,6 +167,7 @@ export function makeProbe(app: PageApp): PageProbe {
     },
     angles: () => Array.from(session()?.angles ?? []),
     targets: () => Array.from(session()?.targets ?? []),
+    limits: () => ({ lower: Array.from(session()?.spec.lower ?? []), upper: Array.from(session()?.spec.upper ?? []) }),
     undoSteps: () => app.history.undoSteps,
     settings: () => app.settings,
     cameraPosition: () => stage.camera.position.toArray() as [number, number, number],
