@@ -1,5 +1,6 @@
 // The selected bone: the readout in the side column (its name, whether its tip is an end
-// effector, and for each XZX angle its value and limits in degrees, all as text, never HTML), and
+// effector, for each XZX angle its value and limits in degrees, and its bend and twist from rest,
+// all as text, never HTML), and
 // making its tip an end effector or not. The selected target from the keyboard: Tab and Shift+Tab
 // step through the targets, Esc lets the gizmo go (a click on a target selects it: handles.ts).
 import type { RigSpec } from '../ik/rig_spec.js';
@@ -19,6 +20,19 @@ export function describeLimits(spec: RigSpec, i: number, angles: Float64Array): 
     lines.push(`a${k} ${AXES[k]}: ${a.toFixed(1)}° in ${range}`);
   }
   return lines;
+}
+
+/**
+ * A joint's turn from its rest read as a bend and a twist (degrees), from its XZX angles a0, a1,
+ * a2 (degrees): Rx(a0) Rz(a1) Rx(a2) = S Rx(a0 + a2) with S = Rx(a0) Rz(a1) Rx(-a0) a swing about
+ * an axis across the bone, so the bone bends by |a1| (in the plane a0 picks) and twists about itself
+ * by a0 + a2 (in (-180, 180]). Both are 0 at rest whatever a0 and a2 are: a humanoid's limits turn
+ * a0's range to the joint's anatomical plane and a2's the other way, so a straight spine at rest
+ * can read a0 = 75, a2 = -75.
+ */
+export function bendAndTwist(a0: number, a1: number, a2: number): { bend: number; twist: number } {
+  const twist = a0 + a2 - 360 * Math.ceil((a0 + a2 - 180) / 360);
+  return { bend: Math.abs(a1), twist };
 }
 
 /**
@@ -42,7 +56,12 @@ export function showSelection(box: HTMLElement, live: LiveRig | null, humanoidLi
     li.textContent = line;
     list.append(li);
   }
-  box.append(title, list);
+  const { bend, twist } = bendAndTwist(angles[3 * bone], angles[3 * bone + 1], angles[3 * bone + 2]);
+  const turn = document.createElement('small');
+  turn.className = 'from-rest';
+  turn.textContent = `from rest: bent ${bend.toFixed(1)}°, twisted ${twist.toFixed(1)}°`;
+  turn.title = 'a0 picks the plane the bone bends in, a1 bends it in that plane, a0 + a2 twists it about itself: at rest a0 and a2 cancel';
+  box.append(title, list, turn, document.createElement('br'));
   if (live.hasHumanoidLimits) {
     const source = document.createElement('small');
     source.textContent = `limits: ${humanoidLimits ? 'humanoid (anatomical)' : 'the file’s (humanoid limits off)'}`;
