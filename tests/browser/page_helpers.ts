@@ -75,9 +75,8 @@ export async function dragTowardsRoot(page: Page, k: number, fraction: number, s
   return dragBy(page, k, dx, dy, steps, perFrame);
 }
 
-/** Drags the gizmo of the selected target k by (dx, dy) pixels with the mouse; `perFrame` as in dragTowardsRoot. */
-export async function dragBy(page: Page, k: number, dx: number, dy: number, steps = 12, perFrame = true): Promise<{ from: ScreenPoint; to: ScreenPoint }> {
-  const from = await targetScreen(page, k);
+/** Drags the mouse from `from` by (dx, dy) pixels in `steps` equal moves, waiting a frame after each when `perFrame`. */
+export async function dragMouse(page: Page, from: ScreenPoint, dx: number, dy: number, steps = 12, perFrame = true): Promise<void> {
   await page.mouse.move(from.x, from.y);
   await page.mouse.down();
   for (let i = 1; i <= steps; i++) {
@@ -85,6 +84,12 @@ export async function dragBy(page: Page, k: number, dx: number, dy: number, step
     if (perFrame) await nextFrame(page);
   }
   await page.mouse.up();
+}
+
+/** Drags the gizmo of the selected target k by (dx, dy) pixels with the mouse; `perFrame` as in dragTowardsRoot. */
+export async function dragBy(page: Page, k: number, dx: number, dy: number, steps = 12, perFrame = true): Promise<{ from: ScreenPoint; to: ScreenPoint }> {
+  const from = await targetScreen(page, k);
+  await dragMouse(page, from, dx, dy, steps, perFrame);
   return { from, to: { x: from.x + dx, y: from.y + dy } };
 }
 
@@ -138,14 +143,7 @@ export async function selectPole(page: Page, j: number): Promise<number> {
 
 /** Drags the gizmo of the selected pole handle j by (dx, dy) pixels with the mouse, a frame after each of `steps` moves. */
 export async function dragPoleBy(page: Page, j: number, dx: number, dy: number, steps = 12): Promise<void> {
-  const from = await poleScreen(page, j);
-  await page.mouse.move(from.x, from.y);
-  await page.mouse.down();
-  for (let i = 1; i <= steps; i++) {
-    await page.mouse.move(from.x + (dx * i) / steps, from.y + (dy * i) / steps);
-    await nextFrame(page);
-  }
-  await page.mouse.up();
+  await dragMouse(page, await poleScreen(page, j), dx, dy, steps);
 }
 
 /**

@@ -13,8 +13,8 @@ import type { Page } from 'playwright-core';
 import { describe, expect, it } from 'vitest';
 
 import type { ScreenPoint } from '../../web/src/view/stage.js';
-import { nextFrame, openPage, renderedFrames, resultsDir } from './harness.js';
-import { gotoRig, targetScreen, usePageServer } from './page_helpers.js';
+import { openPage, renderedFrames, resultsDir } from './harness.js';
+import { dragMouse, gotoRig, targetScreen, usePageServer } from './page_helpers.js';
 
 const env = usePageServer();
 
@@ -45,15 +45,9 @@ function moved(a: number[], b: number[], k: number): number {
   return Math.max(...[0, 1, 2].map((i) => Math.abs(a[3 * k + i] - b[3 * k + i])));
 }
 
-/** Drags the mouse from `from` by (dx, dy) px in `steps` moves, a frame after each. */
-async function drag(page: Page, from: ScreenPoint, dx: number, dy: number, steps = 12): Promise<void> {
-  await page.mouse.move(from.x, from.y);
-  await page.mouse.down();
-  for (let i = 1; i <= steps; i++) {
-    await page.mouse.move(from.x + (dx * i) / steps, from.y + (dy * i) / steps);
-    await nextFrame(page);
-  }
-  await page.mouse.up();
+/** Drags the mouse from `from` by (dx, dy) px, a frame after each move, and lets the page render. */
+async function drag(page: Page, from: ScreenPoint, dx: number, dy: number): Promise<void> {
+  await dragMouse(page, from, dx, dy);
   await renderedFrames(page);
 }
 
