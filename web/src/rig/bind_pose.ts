@@ -25,7 +25,8 @@ import { xzxWithinLimits } from './xzx_angles.js';
 import type { RigSpec } from '../ik/rig_spec.js';
 import { failIn } from './gltf_file.js';
 import { nodeLabel, type GltfSkin, type GltfTree } from './gltf_nodes.js';
-import { det3, invertAffine, multiply, polarRotation, transformDirection, type Mat4 } from './mat4.js';
+import { det3, invertAffine, maxAbs, maxAbsDiff, multiply, polarRotation, transformDirection, type Mat4 } from './mat4.js';
+import { fromRotation } from './quat.js';
 
 /** Offsets and scales of the bind pose and the nodes agree within this share of the skeleton's size. */
 const SHAPE_TOLERANCE = 1e-4;
@@ -71,12 +72,6 @@ function mul3(a: ArrayLike<number>, b: ArrayLike<number>): Float64Array {
   return out;
 }
 const transpose3 = (a: ArrayLike<number>): Float64Array => Float64Array.of(a[0], a[3], a[6], a[1], a[4], a[7], a[2], a[5], a[8]);
-function maxAbsDiff(a: ArrayLike<number>, b: ArrayLike<number>): number {
-  let m = 0;
-  for (let k = 0; k < a.length; k++) m = Math.max(m, Math.abs(a[k] - b[k]));
-  return m;
-}
-const maxAbs = (a: ArrayLike<number>): number => maxAbsDiff(a, new Float64Array(a.length));
 
 /**
  * The rest pose of every node of `tree` from the skins' bind pose (see the top of this file).
@@ -157,28 +152,6 @@ export function restFromBindPose(tree: GltfTree, skins: GltfSkin[], binds: (Mat4
   return rest;
 }
 
-/** Unit quaternion {x, y, z, w} of a proper rotation (9 numbers, row-major). */
-function quaternionOf(r: ArrayLike<number>): { x: number; y: number; z: number; w: number } {
-  const [m00, m01, m02, m10, m11, m12, m20, m21, m22] = Array.from(r);
-  const trace = m00 + m11 + m22;
-  let x, y, z, w;
-  if (trace > 0) {
-    const s = 0.5 / Math.sqrt(trace + 1);
-    [w, x, y, z] = [0.25 / s, (m21 - m12) * s, (m02 - m20) * s, (m10 - m01) * s];
-  } else if (m00 > m11 && m00 > m22) {
-    const s = 2 * Math.sqrt(1 + m00 - m11 - m22);
-    [w, x, y, z] = [(m21 - m12) / s, 0.25 * s, (m01 + m10) / s, (m02 + m20) / s];
-  } else if (m11 > m22) {
-    const s = 2 * Math.sqrt(1 + m11 - m00 - m22);
-    [w, x, y, z] = [(m02 - m20) / s, (m01 + m10) / s, 0.25 * s, (m12 + m21) / s];
-  } else {
-    const s = 2 * Math.sqrt(1 + m22 - m00 - m11);
-    [w, x, y, z] = [(m10 - m01) / s, (m02 + m20) / s, (m12 + m21) / s, 0.25 * s];
-  }
-  const n = Math.hypot(x, y, z, w);
-  return { x: x / n, y: y / n, z: z / n, w: w / n };
-}
-
 /** A middle XZX angle this close to 0 or 180 degrees (its sine, radians) is taken as exactly that. */
 const STRAIGHT = 1e-6;
 
@@ -224,7 +197,8 @@ export function startAngles(spec: RigSpec, boneNodes: ArrayLike<number>, restWor
     const p = spec.parents[b];
     const T = p < 0 ? motion[b] : multiply(invertAffine(motion[p])!, motion[b]);
     const R = straightened(polarRotation(multiply(multiply(invertAffine(rest)!, T), rest)));
-    const q = quaternionOf(R);
+    const [x, y, z, w] = fromRotation(R);
+    const q = { x, y, z, w };
     xzxWithinLimits(q, spec.lower.subarray(3 * b, 3 * b + 3), spec.upper.subarray(3 * b, 3 * b + 3), angles, 3 * b);
     if (maxAbsDiff(xzxRotation(angles, 3 * b), R) > CLAMP_REPORTED) clamped.push(b);
   }

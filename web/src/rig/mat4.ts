@@ -122,3 +122,17 @@ export function allFinite(m: ArrayLike<number>): boolean {
   for (let k = 0; k < m.length; k++) if (!Number.isFinite(m[k])) return false;
   return true;
 }
+
+/** The largest |v_k| (0 for an empty list). */
+export function maxAbs(v: ArrayLike<number>): number {
+  let m = 0;
+  for (let k = 0; k < v.length; k++) m = Math.max(m, Math.abs(v[k]));
+  return m;
+}
+
+/** The largest |a_k - b_k| over a's length. */
+export function maxAbsDiff(a: ArrayLike<number>, b: ArrayLike<number>): number {
+  let m = 0;
+  for (let k = 0; k < a.length; k++) m = Math.max(m, Math.abs(a[k] - b[k]));
+  return m;
+}

@@ -10,12 +10,12 @@
 // extensions it does not know (VRM's, for one) are refused rather than silently dropped.
 import { Logger, WebIO, type Document, type GLTF } from '@gltf-transform/core';
 import { ALL_EXTENSIONS } from '@gltf-transform/extensions';
-import { Matrix4, Quaternion } from 'three';
 
 import type { RigSpec } from '../ik/rig_spec.js';
 import { failIn, parseGltfContainer, type SiblingReader } from '../rig/gltf_file.js';
 import type { GltfRigInfo } from '../rig/gltf_rig.js';
-import { det3, fromTRS, invertAffine, multiply, polarRotation, type Mat4 } from '../rig/mat4.js';
+import { det3, fromTRS, invertAffine, maxAbs, maxAbsDiff, multiply, polarRotation, type Mat4 } from '../rig/mat4.js';
+import { fromRotation, type Quat } from '../rig/quat.js';
 
 /** Relative agreement within which a decomposed component keeps the file's own value. */
 export const KEEP_FILE_TOLERANCE = 1e-9;
@@ -30,7 +30,6 @@ export const KEEP_FILE_TOLERANCE = 1e-9;
 export const TRS_REBUILD_TOLERANCE = 1e-6;
 
 type Vec3 = [number, number, number];
-type Quat = [number, number, number, number];
 
 /** A local transform as glTF stores it: translation, unit quaternion (x, y, z, w), scale. */
 export interface NodeTRS {
@@ -39,24 +38,8 @@ export interface NodeTRS {
   scale: Vec3;
 }
 
-const maxAbs = (v: ArrayLike<number>): number => {
-  let m = 0;
-  for (let k = 0; k < v.length; k++) m = Math.max(m, Math.abs(v[k]));
-  return m;
-};
-const maxAbsDiff = (a: ArrayLike<number>, b: ArrayLike<number>): number => {
-  let m = 0;
-  for (let k = 0; k < a.length; k++) m = Math.max(m, Math.abs(a[k] - b[k]));
-  return m;
-};
 const close = (a: ArrayLike<number>, b: ArrayLike<number>): boolean =>
   maxAbsDiff(a, b) <= KEEP_FILE_TOLERANCE * Math.max(maxAbs(a), maxAbs(b));
-
-/** Unit quaternion (x, y, z, w) of a rotation given as 9 row-major numbers (three.js). */
-function quaternionOf(r: ArrayLike<number>): Quat {
-  const m = new Matrix4().set(r[0], r[1], r[2], 0, r[3], r[4], r[5], 0, r[6], r[7], r[8], 0, 0, 0, 0, 1);
-  return new Quaternion().setFromRotationMatrix(m).normalize().toArray() as Quat;
-}
 
 /**
  * The TRS of the row-major affine `m` (a node's local matrix, 16 numbers), keeping each component
@@ -78,7 +61,7 @@ export function decomposeLocal(m: ArrayLike<number>, file: NodeTRS): (NodeTRS & 
   }
   if (det3(m) * s[0] * s[1] * s[2] < 0) s[0] = -s[0]; // the rotation must have determinant +1
   const unmirrored = Float64Array.from(m, (v, k) => (k < 12 && s[k % 4] < 0 ? -v : v)); // A * diag(sign s)
-  let q = quaternionOf(polarRotation(unmirrored));
+  let q = fromRotation(polarRotation(unmirrored));
   const f = file.rotation;
   const fn = Math.hypot(...f);
   const fileUnit = fn > 0 ? (f.map((v) => v / fn) as Quat) : f;
