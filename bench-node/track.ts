@@ -244,9 +244,13 @@ function trackClip(ik: IkCoreModule, rig: TrackRig, clips: ClipFrames, clip: num
  * before the timed run, are not collected inside it (V8's collector pauses 0.5-8 ms: one in a
  * clip of 181 frames is its p99). What update() itself allocates is still collected in the run.
  */
+let gc: (() => void) | null = null;
 function collectGarbage(): void {
-  v8.setFlagsFromString('--expose-gc');
-  (runInNewContext('gc') as () => void)();
+  if (!gc) {
+    v8.setFlagsFromString('--expose-gc');
+    gc = runInNewContext('gc') as () => void;
+  }
+  gc();
 }
 
 function median(xs: number[]): number {

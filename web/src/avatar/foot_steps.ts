@@ -96,18 +96,17 @@ export class FootSteps {
     if (this.stepping() < 0) {
       // The foot farther from its place steps, if either is far enough.
       let worst = -1, worstMiss = missed ? MISSED_SHARE : 1;
-      const c = Math.cos(yaw), s = Math.sin(yaw);
       for (let k = 0; k < this.feet.length; k++) {
-        const [ox, oz] = this.restOffsets[k], at = this.feet[k].planted.position;
+        const [x, z] = turnedOnFloor(this.restOffsets[k], yaw), at = this.feet[k].planted.position;
         const miss = Math.max(
-          Math.hypot(hips[0] + c * ox + s * oz - at[0], hips[2] - s * ox + c * oz - at[2]) / (STEP_DISTANCE * this.height),
+          Math.hypot(hips[0] + x - at[0], hips[2] + z - at[2]) / (STEP_DISTANCE * this.height),
           Math.abs(angleBetween(yaw, this.feet[k].plantedYaw)) / ((STEP_TURN * Math.PI) / 180),
         );
         if (miss > worstMiss) (worst = k), (worstMiss = miss);
       }
       if (worst >= 0) {
-        const [hx, hz] = this.restHipsFromHead;
-        const under = [head.position[0] + c * hx + s * hz, 0, head.position[2] - s * hx + c * hz];
+        const [x, z] = turnedOnFloor(this.restHipsFromHead, yaw);
+        const under = [head.position[0] + x, 0, head.position[2] + z];
         this.feet[worst].step = { to: this.home(worst, yaw, under), frame: 0 };
       }
     }
@@ -138,10 +137,9 @@ export class FootSteps {
 
   /** Where the stance puts foot k for the head's yaw `yaw` (radians) over the hips' tip `hips`: its rest offset turned with the head. */
   private home(k: number, yaw: number, hips: ArrayLike<number>): FootPose {
-    const [ox, oz] = this.restOffsets[k], c = Math.cos(yaw), s = Math.sin(yaw);
-    const rest = this.restFeet[k];
+    const [x, z] = turnedOnFloor(this.restOffsets[k], yaw), rest = this.restFeet[k];
     return {
-      position: [hips[0] + c * ox + s * oz, rest.position[1], hips[2] - s * ox + c * oz],
+      position: [hips[0] + x, rest.position[1], hips[2] + z],
       orientation: mul(yawQuaternion(yaw), rest.orientation),
     };
   }
@@ -163,6 +161,12 @@ function yawFrom(q: ArrayLike<number>, rest: ArrayLike<number>): number {
   const z = w1 * z2 + x1 * y2 - y1 * x2 + z1 * w2, w = w1 * w2 - x1 * x2 - y1 * y2 - z1 * z2;
   // r's turn of (0, 0, 1): its x and z.
   return Math.atan2(2 * (x * z + w * y), 1 - 2 * (x * x + y * y));
+}
+
+/** A floor offset [x, z] turned by `yaw` (radians, counter-clockwise seen from above) about the vertical. */
+function turnedOnFloor([x, z]: readonly number[], yaw: number): [number, number] {
+  const c = Math.cos(yaw), s = Math.sin(yaw);
+  return [c * x + s * z, -s * x + c * z];
 }
 
 function angleBetween(a: number, b: number): number {
