@@ -29,6 +29,11 @@ export class EffectorGoals {
   pinned: Float64Array | null = null;
   /** While pinned: 1 where effector k keeps its frame as well as its place (pinned_frames.ts). */
   keepsFrame = new Uint8Array(0);
+  /**
+   * Per bone, the factor of its rest pull (Goals.stiffness, 0..1000; read only by a solve with
+   * SolveSettings.restWeight > 0, still_body.ts sets it); empty: all 1. Sent with the packed goals only.
+   */
+  stiffness: Float64Array = new Float64Array(0);
   private cached: Goals | null = null;
   private pack: PackedGoals | null = null;
   private cachedFor: Float64Array | null = null;
@@ -179,6 +184,7 @@ export class EffectorGoals {
       p.packed[o + 6] = k === yielding ? 1 : 0;
       for (let i = 0; i < 3; i++) p.target[3 * k + i] = this.position[k] ? targets[3 * k + i] : 0;
     }
+    p.stiffness = this.stiffness;
     for (let j = 0; j < poles; j++) {
       const o = POLE_STRIDE * j;
       p.poles[o] = this.poleBones[j];

@@ -20,6 +20,7 @@ import { initialPole } from './pole_placement.js';
 import { restorePose, type PoseState } from './pose_state.js';
 import type { IkSession } from './session.js';
 import type { SolveOutcome, SolveSettings } from './solver.js';
+import { applyStillBody } from './still_body.js';
 
 /** What the per-frame solve reads every frame (the page's panel edits its settings in place). */
 export interface FrameSettings {
@@ -44,6 +45,12 @@ export interface FrameSettings {
   pinOrientations?: boolean;
   /** The farthest a joint moves in one frame, rig units (SolveSettings.maxJointMove; the rig's drag tolerances give it). Default 0: no cap. */
   maxJointMove?: number;
+  /**
+   * On a rig without a humanoid map, the bones the dragged target's chain does not need alone keep
+   * their pose (a soft pull towards the solve's start; still_body.ts): lifting a paw moves its leg
+   * only. Default true. Not in paper mode; a humanoid is solved as without it.
+   */
+  stillBody?: boolean;
 }
 
 /** What the controller tells its front end. Only `failed` is required. */
@@ -388,6 +395,7 @@ export class LiveController {
     f.paperMode = s.paperMode;
     f.strictPriority = s.strictPriority ?? true;
     f.maxJointMove = s.paperMode ? 0 : (s.maxJointMove ?? 0);
+    applyStillBody(session, s.stillBody ?? true, this.current?.source.humanoid !== undefined, f);
     this.needsRedraw = true;
     let outcome: SolveOutcome;
     try {

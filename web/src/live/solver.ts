@@ -39,6 +39,10 @@ export interface SolveSettings {
   lmMaxRejections?: number;
   /** A floating root's move (rig units) that a step weighs as a joint's degree (the solver option rootUnit). Default 1. */
   rootUnit?: number;
+  /** A soft pull of the goals' chains towards a reference pose, 0..1000 (the solver option restWeight; Goals.stiffness per bone). Default 0: none. */
+  restWeight?: number;
+  /** The rest pull's reference is the solve's start angles, not the rest pose (the solver option restFromStart). Default false. */
+  restFromStart?: boolean;
 }
 
 /** What a solve or a step reached (angles in degrees, distances in rig units, see SolverResult). */
@@ -115,6 +119,8 @@ export class MethodSolver {
       minIterations: s.minIterations ?? 0,
       lmMaxRejections: s.lmMaxRejections ?? 30,
       rootUnit: s.rootUnit ?? 1,
+      restWeight: s.restWeight ?? 0,
+      restFromStart: s.restFromStart ?? false,
     });
     Object.assign(this.sent, s);
   }

@@ -45,6 +45,7 @@ export function initialSettings(rig: string, method: string): PageSettings {
     paperMode: false,
     strictPriority: true,
     pinOrientations: true,
+    stillBody: true,
     compareTimeBudgetMs: 1000,
     compareMaxIterations: 100000,
     compareFrom: 'current pose',

@@ -101,6 +101,11 @@ export class Panel {
       .name('pin orientations')
       .onChange(() => actions.settingsChanged())
       .domElement.setAttribute('title', 'on: while a target is dragged, the other end effectors keep their turn as well as their place (given up before the place when their chain cannot keep both); off: only their places are pinned');
+    solver
+      .add(s, 'stillBody')
+      .name('still body (no humanoid map)')
+      .onChange(() => actions.settingsChanged())
+      .domElement.setAttribute('title', 'on a rig not recognised as a humanoid: the bones the dragged target’s limb does not need alone keep their pose, so lifting a paw moves only its leg (the body still follows a target the limb cannot reach); off: the least change over the whole body');
 
     const teach = this.gui.addFolder('Teaching');
     this.folders = [rig, pose, solver, teach];
