@@ -55,6 +55,17 @@ describe('a robot whose feet are control bones off the root', () => {
     );
   });
 
+  it('takes the ends of the legs the humanoid mapping leaves out (legs off the body beside the hips, as in RobotExpressive)', async () => {
+    const joints = robotRig({ feet: 'controls', legEnds: false }).map((j) => (j.name.startsWith('UpperLeg') ? { ...j, parent: 'Body' } : j));
+    const rig = await load(joints);
+    expect(rig.gltf!.humanoid!.missing).toEqual(['leftUpperLeg', 'leftLowerLeg', 'leftFoot', 'rightUpperLeg', 'rightLowerLeg', 'rightFoot']);
+    expect(effectorNames(rig)).toEqual(['Head', 'Palm2L', 'Palm2R', 'LowerLegL', 'LowerLegR']);
+    expect(rig.warnings).toContain(
+      'no joint is flagged extras.ik.effector: end effectors are the hands, feet and head of the humanoid mapping, ' +
+        'the ends of the limbs (LowerLegL, LowerLegR) in place of the control bones off the root (FootL, FootR) (Head, Palm2L, Palm2R, LowerLegL, LowerLegR)',
+    );
+  });
+
   it('keeps feet named FootL at the end of the legs as the feet', async () => {
     const rig = await load(robotRig({ feet: 'legs', poles: false }));
     expect(role(rig, 'leftFoot')).toBe('FootL');

@@ -5,6 +5,7 @@ import { GLTFLoader } from 'three/addons/loaders/GLTFLoader.js';
 import { MeshoptDecoder } from 'three/addons/libs/meshopt_decoder.module.js';
 
 import type { RigSpec } from '../ik/rig_spec.js';
+import { followLimbEnds, limbEndFollowers } from '../rig/control_follow.js';
 import type { RigLimits } from '../rig/humanoid_limits.js';
 import type { HumanoidMap } from '../rig/humanoid_roles.js';
 import { loadRig, specWithFileLimits, type GltfRigInfo, type SiblingReader } from '../rig/load_rig.js';
@@ -77,10 +78,11 @@ async function gltfMesh(bytes: Uint8Array, fileName: string, resourcePath: strin
   if (!gltf.scene) throw failed(new Error('the file has no scene (glTF "scenes" is empty or missing)'));
   try {
     const writer = new PoseWriter(bonesFromGltf(gltf, info), spec, info);
+    const followed = followLimbEnds(limbEndFollowers(spec.names, spec.parents)); // a foot control carries its leg's end's pose
     gltf.scene.traverse((o) => (o.frustumCulled = false)); // skinned bounds do not follow the pose
     return {
       object: gltf.scene,
-      apply: (poses) => writer.write(poses),
+      apply: (poses) => writer.write(followed(poses)),
       dispose: () => {
         writer.dispose();
         disposeObject3D(gltf.scene);

@@ -2,7 +2,7 @@
 // bones, the camera, what is loaded, the targets' orientation goals, the limbs' pole handles and
 // the poles the solve is sent, and one action: turning the selected target's gizmo as a rotate
 // drag does (turnGizmo). Set as window.ikPage by main.ts.
-import { Quaternion, Vector3 } from 'three';
+import { Box3, Quaternion, Vector3 } from 'three';
 
 import { isGoals, orientationErrorsDeg } from '../ik/goals.js';
 import { limbPoints } from '../live/pole_placement.js';
@@ -34,6 +34,8 @@ export interface PageProbe {
   targetScreen(k: number): ScreenPoint | null;
   /** Bone i's tip as drawn (world coordinates), or null. */
   boneTip(i: number): [number, number, number] | null;
+  /** Bone i's base (its joint) as drawn (world coordinates), or null. */
+  boneBase(i: number): [number, number, number] | null;
   /** Where the middle of bone i is on screen, or null. */
   boneScreen(i: number): ScreenPoint | null;
   /** Index of the target holding the gizmo. */
@@ -55,6 +57,8 @@ export interface PageProbe {
   bounds(): { min: [number, number, number]; max: [number, number, number] } | null;
   /** The root joint's world position (where swing mode swings about), or null. */
   rootJoint(): [number, number, number] | null;
+  /** The world box of the scene's object named `name` (a mesh of the model: its vertices as posed now), or null. */
+  objectBounds(name: string): { min: [number, number, number]; max: [number, number, number] } | null;
   /** The gizmo's mode: translate, rotate or swing. */
   gizmoMode(): string;
   /** Target k's orientation goal [x, y, z, w] (rig coordinates), or null when it has none. */
@@ -141,6 +145,11 @@ export function makeProbe(app: PageApp): PageProbe {
       if (!live || i < 0 || i >= live.session.rig.numBones) return null;
       return live.view.boneTip(i, a).toArray() as [number, number, number];
     },
+    boneBase(i) {
+      const live = controller.live;
+      if (!live || i < 0 || i >= live.session.rig.numBones) return null;
+      return live.view.boneBase(i, a).toArray() as [number, number, number];
+    },
     boneScreen(i) {
       const live = controller.live;
       if (!live || i < 0 || i >= live.session.rig.numBones) return null;
@@ -193,6 +202,13 @@ export function makeProbe(app: PageApp): PageProbe {
     bounds() {
       const box = controller.live?.view.bounds();
       return box ? { min: box.min.toArray(), max: box.max.toArray() } : null;
+    },
+    objectBounds(name) {
+      const object = stage.scene.getObjectByName(name);
+      if (!object) return null;
+      object.updateWorldMatrix(true, true);
+      const box = new Box3().setFromObject(object, true);
+      return box.isEmpty() ? null : { min: box.min.toArray(), max: box.max.toArray() };
     },
     gizmoMode: () => controller.handles.gizmoMode,
     rootJoint: () => (controller.live ? (controller.live.view.boneBase(0, a).toArray() as [number, number, number]) : null),

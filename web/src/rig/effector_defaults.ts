@@ -4,7 +4,7 @@
 // (control_bones.ts: IK targets and poles off the root, a foot off the root beside the legs) are
 // never chosen: where one is named as a hand or foot, the limb's own end is taken in its place.
 import { isSideToken, nameSide, nameTokens, type Side } from './bone_names.js';
-import { controlBones, limbChainEnd, lowerLimbStandIns, type ControlBone, type EndStandIn } from './control_bones.js';
+import { controlBones, limbChainEnd, limbRoles, lowerLimbStandIns, type ControlBone, type EndStandIn } from './control_bones.js';
 import { listed } from './gltf_json.js';
 import type { HumanoidMap, HumanoidRole } from './humanoid_roles.js';
 import { maxEffectors } from './rig_limits.js';
@@ -35,10 +35,20 @@ const HUMANOID_EFFECTOR_ROLES: readonly HumanoidRole[] = ['head', 'leftHand', 'r
 /**
  * Bone indices (ascending) of a humanoid's head, hands and feet, those it maps, and a lower arm
  * or leg with no hand or foot mapped below it where a control bone is named as that hand or foot.
+ * A limb the mapping leaves out (RobotExpressive's legs hang off the body beside its hips) whose
+ * end a control bone names gets the end of its chain by name (limbChainEnd) all the same.
  */
-function humanoidEffectors(map: HumanoidMap, controls: readonly ControlBone[]): { effectors: number[]; standIns: EndStandIn[] } {
+function humanoidEffectors(map: HumanoidMap, controls: readonly ControlBone[], names: readonly string[], parents: ArrayLike<number>): { effectors: number[]; standIns: EndStandIn[] } {
   const bones = HUMANOID_EFFECTOR_ROLES.flatMap((r) => (map.bones[r] === undefined ? [] : [map.bones[r]]));
   const standIns = lowerLimbStandIns(map.bones, controls);
+  const isControl = new Set(controls.map((c) => c.bone));
+  for (const c of controls) {
+    if (c.kind !== 'limbEnd' || !c.limb || c.side === 'none') continue;
+    const { lower, end: endRole } = limbRoles(c.limb, c.side);
+    if (map.bones[lower] !== undefined || map.bones[endRole] !== undefined) continue;
+    const end = limbChainEnd(names, parents, c.limb, c.side, isControl);
+    if (end !== undefined && !standIns.some((s) => s.end === end)) standIns.push({ control: c.bone, end });
+  }
   return { effectors: [...new Set([...bones, ...standIns.map((s) => s.end)])].sort((a, b) => a - b), standIns };
 }
 
@@ -148,7 +158,7 @@ export function defaultEffectors(
   const kept = (bones: number[]): number[] => bones.filter((b) => !excluded.has(b) && !isControl.has(b));
   const keptStandIns = (standIns: EndStandIn[]): EndStandIn[] => standIns.filter((s) => !excluded.has(s.end));
   if (humanoid) {
-    const byRole = humanoidEffectors(humanoid, controls);
+    const byRole = humanoidEffectors(humanoid, controls, names, parents);
     const effectors = kept(byRole.effectors);
     const which = `the hands, feet and head of the humanoid mapping${standInText(names, keptStandIns(byRole.standIns))}`;
     if (effectors.length) return { effectors, which };
