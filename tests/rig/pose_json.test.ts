@@ -82,6 +82,18 @@ describe('poseToJson / poseFromJson', () => {
     }
   });
 
+  it('a floating root\'s move round-trips bit for bit; a pose without one reads none; a bad one is refused by name', () => {
+    const pose = { ...knightPose(4), root: [0.125, -0.3000000000000001, 1e-9] };
+    const json = poseToJson(pose);
+    expect(JSON.parse(json).root).toEqual(pose.root);
+    const read = poseFromJson(json, knight);
+    expect(sameBits(read.root!, pose.root), 'root').toBe(true);
+    expect(poseFromJson(poseToJson(knightPose(4)), knight).root).toBeNull();
+    expect(() => poseFromJson(json.replace('"root": [0.125', '"root": ["x"'), knight)).toThrow(/"root"/);
+    expect(() => poseFromJson(json.replace('"root": [0.125,', '"root": ['), knight)).toThrow(/"root"/);
+    expect(() => poseToJson({ ...pose, root: [NaN, 0, 0] })).toThrow(/"root"/);
+  });
+
   it('bones listed in another order, and a rig whose bones come in another order, get the right angles', () => {
     const pose = knightPose(4);
     const doc = JSON.parse(poseToJson(pose));

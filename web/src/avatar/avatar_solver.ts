@@ -12,14 +12,12 @@ import type { IkCoreModule } from '../ik/module.js';
 import type { RigSpec } from '../ik/rig_spec.js';
 import { type PoleLimb, poleLimbs } from '../live/pole_limbs.js';
 import { initialPole } from '../live/pole_placement.js';
-import { bodyFrame } from '../rig/anatomy_frame.js';
-import { bendAxis } from '../rig/anatomy_axes.js';
-import { planeTurn } from '../rig/humanoid_limits.js';
+import { floatingHipsSpec, floatingRootUnit } from '../rig/floating_hips.js';
 import { IkRig } from '../ik/rig.js';
 import { IkSession } from '../live/session.js';
 import type { SolveOutcome, SolveSettings } from '../live/solver.js';
 import type { HumanoidMap, HumanoidRole } from '../rig/humanoid_roles.js';
-import { dragTolerances, rigSize } from '../rig/tolerances.js';
+import { dragTolerances, restHeight } from '../rig/tolerances.js';
 import { FootSteps } from './foot_steps.js';
 import { scatterAngles, type SubRig, subHumanoid, subRig } from './sub_rig.js';
 
@@ -46,47 +44,6 @@ export interface AvatarInput {
 const ROLES: readonly HumanoidRole[] = ['head', 'leftHand', 'rightHand', 'leftFoot', 'rightFoot', 'hips'];
 const INPUTS: ReadonlyArray<keyof AvatarInput> = ['head', 'leftHand', 'rightHand', 'leftFoot', 'rightFoot', 'hips'];
 const HIPS = 5;
-
-/**
- * The hips' own rotation: a turn about the hips bone (upright on a humanoid) and a tilt forward or
- * back in the way they face (degrees: [back, forward]), no tilt sideways. A humanoid's limits hold
- * the root still (it carries the whole rig); the avatar's hips turn with the body and tilt as a
- * pelvis does in a crouch or a lean (the clips tilt them 10-12 degrees: held upright, the crouch's
- * and stress's tilted hips left their frames' poses beyond the avatar, and on turn_in_place the
- * spine alone took every lean: 98.6% of the frames on target, 100% with the tilt).
- */
-const HIPS_TILT: [number, number] = [-10, 20];
-
-/**
- * XZX limits (degrees) of the avatar's hips bone `bone`: the turn a0 free all round, the tilt a1
- * within HIPS_TILT about the hips' anatomical bend axis (its forward bend: anatomy_axes.ts), which
- * lies phi degrees about the bone from its local z, and a2 = -phi, so that the tilt stays in the
- * plane the hips face (humanoid_limits.ts explains the frame).
- */
-function hipsRange(spec: RigSpec, humanoid: HumanoidMap, bone: number): { lower: number[]; upper: number[] } {
-  const phi = planeTurn(spec, bone, bendAxis(spec, humanoid, 'hips', bone, bodyFrame(spec, humanoid)).axis);
-  return { lower: [phi - 180, HIPS_TILT[0], -phi], upper: [phi + 180, HIPS_TILT[1], -phi] };
-}
-
-/**
- * The hips' move, as a share of the height, that a frame's step weighs as one degree of a joint
- * (the solver option rootUnit): the least change that meets the tracked points then moves the
- * hips only as far as a body does. At the default, one rig unit (a metre here, 0.53 of the
- * height: the hips' move nearly free), the crouch slid the hips forward and arched the spine back,
- * into a pose from which the flat feet could not go lower, its arms and spine 3.3% of the height
- * from the clip's; with 6 points stress's sideways lean stuck on 4% of its frames. At 0.2 every
- * frame of the six clips is on target with 3 and with 6 points, the crouch's arms and spine 1.9%
- * from the clip's. Lower is dearer still and better on the crouch (1.0% at 0.1, 0.9% at 0.05) but
- * stiffer elsewhere: stress missed 1% of its frames at 0.1; at 0.05 a hand gizmo dragged across
- * the chest in track mode pulled the head off until a foot stepped, and ten avatars' random
- * upper-body sway (tests/browser/avatars) lost 1.8% of its frames (1.25% at 0.2, none at the
- * default), an arm drifting into its shoulder's and wrist's limits where the hips' move had
- * absorbed it.
- */
-const ROOT_UNIT_SHARE = 0.2;
-
-/** How far the hips may move from where they stand, as shares of the height: sideways and forward, down, up. */
-const ROOT_REACH = { across: 1, down: 0.6, up: 0.1 };
 
 /**
  * The head this share of the height below where it stands makes a crouch: the knees take poles.
@@ -142,16 +99,6 @@ const FRAME_REJECTIONS = 10;
 const MISSED_FRAMES = 5;
 
 
-/** Height of a rig at rest: the vertical extent of its bone tips (rig units). */
-export function restHeight(boneTips: ArrayLike<number>): number {
-  let lo = Infinity, hi = -Infinity;
-  for (let i = 1; i < boneTips.length; i += 3) {
-    lo = Math.min(lo, boneTips[i]);
-    hi = Math.max(hi, boneTips[i]);
-  }
-  return hi > lo ? hi - lo : rigSize(boneTips);
-}
-
 export class AvatarSolver {
   /** The whole rig, floating (its hips move), its end effectors `bones`. */
   readonly rig: IkRig;
@@ -197,11 +144,7 @@ export class AvatarSolver {
       whole.dispose();
     }
     const h = this.height;
-    const floatingRoot = { lower: [-ROOT_REACH.across * h, -ROOT_REACH.down * h, -ROOT_REACH.across * h], upper: [ROOT_REACH.across * h, ROOT_REACH.up * h, ROOT_REACH.across * h] };
-    const lower = spec.lower.slice(), upper = spec.upper.slice(), hips = hipsRange(spec, humanoid, this.bones[HIPS]);
-    lower.set(hips.lower, 3 * this.bones[HIPS]);
-    upper.set(hips.upper, 3 * this.bones[HIPS]);
-    this.rig = new IkRig(module, { ...spec, lower, upper, effectors: this.bones, floatingRoot });
+    this.rig = new IkRig(module, { ...floatingHipsSpec(spec, humanoid, h), effectors: this.bones });
     this.angles = this.rig.project(new Float64Array(this.rig.numAngles));
     this.part = subRig(this.rig.spec, Array.from(this.bones));
     this.movingBones = this.part.bones;
@@ -212,7 +155,7 @@ export class AvatarSolver {
       throw e;
     }
     const drag = dragTolerances(h);
-    this.settings = { ...drag, maxIterations: FRAME_ITERATIONS, timeBudgetMs: FRAME_BUDGET_MS, restarts: 0, paperMode: false, strictPriority: true, lmInitialMu: FRAME_MU, minIterations: FRAME_MIN_ITERATIONS, lmMaxRejections: FRAME_REJECTIONS, rootUnit: ROOT_UNIT_SHARE * h };
+    this.settings = { ...drag, maxIterations: FRAME_ITERATIONS, timeBudgetMs: FRAME_BUDGET_MS, restarts: 0, paperMode: false, strictPriority: true, lmInitialMu: FRAME_MU, minIterations: FRAME_MIN_ITERATIONS, lmMaxRejections: FRAME_REJECTIONS, rootUnit: floatingRootUnit(h) };
     const s = this.session;
     // Every effector holds its frame: the tracked ones the tracker's, the feet where they stand;
     // the hips have no goal until they are tracked.

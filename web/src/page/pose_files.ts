@@ -35,10 +35,12 @@ export function poseJsonText(live: LiveRig): string {
   const names = session.spec.names;
   const goals = session.goals;
   const effectors = session.effectors();
+  const n = 3 * names.length; // a floating root's move follows the bones' angles
   return poseToJson({
     rigName: live.name,
     boneNames: names,
-    angles: session.angles,
+    angles: session.angles.subarray(0, n),
+    root: session.angles.length > n ? session.angles.subarray(n) : undefined,
     effectors,
     targets: session.targets,
     orientations: Array.from(effectors, (_, k) => (goals.orientation[k] ? goals.rotations.subarray(4 * k, 4 * k + 4) : null)),
@@ -53,12 +55,19 @@ export function poseJsonText(live: LiveRig): string {
 export function readPoseText(text: string, live: LiveRig): { state: PoseState; warnings: string[] } {
   const { session } = live;
   const read = poseFromJson(text, session.spec);
+  // A rig whose hips float (floating_hips.ts) takes the file's root move (none: where it stands),
+  // clamped into its reach; another rig has no root to move and says so.
+  const angles = new Float64Array(session.angles.length);
+  angles.set(read.angles);
+  if (read.root && angles.length > read.angles.length) angles.set(read.root, read.angles.length);
+  else if (read.root) read.warnings.push(`the pose moves the root by [${Array.from(read.root).join(', ')}], which this rig cannot (its hips do not float): ignored`);
+  const pose = session.rig.project(angles);
   if (read.effectors.length === 0) {
     const effectors = session.effectors();
-    const targets = session.rig.tips(read.angles);
-    return { state: poseWithOrientations(read.angles, effectors, targets, []), warnings: read.warnings };
+    const targets = session.rig.tips(pose);
+    return { state: poseWithOrientations(pose, effectors, targets, []), warnings: read.warnings };
   }
-  return { state: poseWithOrientations(read.angles, read.effectors, read.targets, read.orientations), warnings: read.warnings };
+  return { state: poseWithOrientations(pose, read.effectors, read.targets, read.orientations), warnings: read.warnings };
 }
 
 /**

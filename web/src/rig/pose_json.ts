@@ -10,6 +10,7 @@
 //       "thigh.L": [10, -5, 0],           <- XZX angles, degrees
 //       ...
 //     },
+//     "root": [0, -0.2, 0.05],            <- a floating root's move, rig units (only for a rig whose hips float)
 //     "effectors": [
 //       { "bone": "hand.L", "target": [0.1, 1.2, 0.3], "orientation": [0, 0, 0, 1] },  <- rig units; unit quaternion (x, y, z, w), optional
 //       ...
@@ -49,6 +50,8 @@ export interface PoseInput {
   targets: ArrayLike<number>;
   /** Per effector, an orientation goal as a unit quaternion (x, y, z, w), or null for none. */
   orientations?: readonly (ArrayLike<number> | null)[];
+  /** A floating root's move (x, y, z, rig units), for a rig whose hips float; omitted: none. */
+  root?: ArrayLike<number>;
 }
 
 /** A pose read for a given rig. */
@@ -63,6 +66,8 @@ export interface PoseRead {
   targets: Float64Array;
   /** Per effector, the orientation quaternion (x, y, z, w) or null. */
   orientations: (Float64Array | null)[];
+  /** The floating root's move (x, y, z, rig units) the file gives, or null. */
+  root: Float64Array | null;
   /** Things the user may want to know: bones the file lacks, clamped angles. */
   warnings: string[];
 }
@@ -107,7 +112,7 @@ const KEYED_BY_INDEX = 'which is not the key of one bone: a bone without a name 
  * non-unit orientation, more than MAX_POSE_CHARS of text.
  */
 export function poseToJson(pose: PoseInput): string {
-  const { rigName, boneNames, angles, effectors, targets, orientations } = pose;
+  const { rigName, boneNames, angles, effectors, targets, orientations, root } = pose;
   const check = (problem: string | undefined): void => {
     if (problem) throw new Error(`poseToJson: ${problem}`);
   };
@@ -140,6 +145,13 @@ export function poseToJson(pose: PoseInput): string {
     if (orientation) fields.push(`"orientation":${numberList(orientation)}`);
     return `    {${fields.join(',')}}`;
   });
+  const rootLine: string[] = [];
+  if (root !== undefined) {
+    const r = row(root, 0, root.length);
+    check(numbersProblem(r, 3, '"root"', 'a floating root\'s move in rig units'));
+    check(targetProblem(r, '"root"'));
+    rootLine.push(`  "root": ${numberList(r)},`);
+  }
   const block = (open: string, lines: string[], close: string): string => (lines.length ? `${open}\n${lines.join(',\n')}\n  ${close}` : `${open}${close}`);
   const text = [
     '{',
@@ -147,6 +159,7 @@ export function poseToJson(pose: PoseInput): string {
     `  "version": ${POSE_VERSION},`,
     `  "rig": ${JSON.stringify(rigName)},`,
     `  "bones": ${block('{', bones, '}')},`,
+    ...rootLine,
     `  "effectors": ${block('[', effectorLines, ']')}`,
     '}',
     '',
@@ -217,6 +230,15 @@ export function poseFromJson(text: string, spec: Pick<RigSpec, 'names' | 'lower'
   const missing = keys.filter((_, i) => !given[i]);
   if (missing.length) warnings.push(`the pose gives no angles for ${missing.length} bone(s), set to 0 or the nearest limit: ${listed(missing)}`);
 
+  const rootField = field('root');
+  let rootMove: Float64Array | null = null;
+  if (rootField !== undefined) {
+    const r = finiteArray(rootField, 3, '"root"', "a floating root's move in rig units");
+    const far = targetProblem(r, '"root"');
+    if (far) fail(far);
+    rootMove = Float64Array.from(r);
+  }
+
   const list = field('effectors');
   if (!Array.isArray(list)) return fail(`"effectors" is ${shown(list)}, not an array of { "bone", "target", "orientation"? }`);
   const countProblem = effectorsProblem(list.length, n);
@@ -249,5 +271,5 @@ export function poseFromJson(text: string, spec: Pick<RigSpec, 'names' | 'lower'
     effectors.push(b);
     targets.set(t as number[], 3 * e);
   });
-  return { rigName: typeof rig === 'string' ? rig : '', angles, effectors, targets, orientations, warnings };
+  return { rigName: typeof rig === 'string' ? rig : '', angles, effectors, targets, orientations, root: rootMove, warnings };
 }

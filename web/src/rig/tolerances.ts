@@ -76,6 +76,16 @@ export function rigSize(boneTipsAtRest: ArrayLike<number>): number {
   return Math.hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]);
 }
 
+/** Height of a rig at rest: the vertical extent of its bone tips `boneTips` (3 per bone, rig units); rigSize when they are flat. */
+export function restHeight(boneTips: ArrayLike<number>): number {
+  let lo = Infinity, hi = -Infinity;
+  for (let i = 1; i < boneTips.length; i += 3) {
+    lo = Math.min(lo, boneTips[i]);
+    hi = Math.max(hi, boneTips[i]);
+  }
+  return hi > lo ? hi - lo : rigSize(boneTips);
+}
+
 /** Default tolerances of the rig `name` (file base name); `a7` says it came from an A7 .json file. */
 export function defaultTolerances(name: string, a7: boolean, size: number): Tolerances {
   const report = a7 && Object.hasOwn(reportTolerances, name) ? reportTolerances[name] : undefined;
