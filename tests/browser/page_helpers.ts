@@ -193,3 +193,17 @@ export async function dragTargetAlongY(page: Page, k: number, dy: number, steps 
   }
   await page.mouse.up();
 }
+
+/** Effector k's tip (rig units) as the page has it; throws when there is none. */
+export async function tipAt(page: Page, k: number): Promise<[number, number, number]> {
+  const p = await page.evaluate((i) => window.ikPage?.tipPosition(i) ?? null, k);
+  if (!p) throw new Error(`no tip ${k}`);
+  return p;
+}
+
+/** Target k (rig units) as the page has it; throws when there is none. */
+export async function targetAt(page: Page, k: number): Promise<[number, number, number]> {
+  const p = await page.evaluate((i) => window.ikPage?.targetPosition(i) ?? null, k);
+  if (!p) throw new Error(`no target ${k}`);
+  return p;
+}

@@ -9,29 +9,16 @@
 import { mkdirSync } from 'node:fs';
 import { join } from 'node:path';
 
-import type { Page } from 'playwright-core';
 import { describe, expect, it } from 'vitest';
 
 import { openPage, renderedFrames, resultsDir } from './harness.js';
-import { dragTargetAlongY, effectorNamed, gotoRig, panelControl, selectTarget, statText, usePageServer, waitForConvergence } from './page_helpers.js';
+import { dragTargetAlongY, effectorNamed, gotoRig, panelControl, selectTarget, statText, targetAt, tipAt, usePageServer, waitForConvergence } from './page_helpers.js';
 
 const env = usePageServer();
 
 type Point = [number, number, number];
 
 const distance = (a: Point, b: Point): number => Math.hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]);
-
-async function tip(page: Page, k: number): Promise<Point> {
-  const p = await page.evaluate((i) => window.ikPage?.tipPosition(i) ?? null, k);
-  if (!p) throw new Error(`no tip ${k}`);
-  return p;
-}
-
-async function target(page: Page, k: number): Promise<Point> {
-  const p = await page.evaluate((i) => window.ikPage?.targetPosition(i) ?? null, k);
-  if (!p) throw new Error(`no target ${k}`);
-  return p;
-}
 
 /** Largest difference between two limit lists (equal infinities count as 0); Infinity when the lengths differ. */
 function worstDifference(a: number[], b: number[]): number {
@@ -56,15 +43,15 @@ describe('the posed .glb round trip', () => {
     });
     const limits = await page.evaluate(() => window.ikPage?.limits() ?? { lower: [], upper: [] });
     expect(limits.lower.length).toBeGreaterThan(0);
-    const stood = await tip(page, left), rightStood = await tip(page, right);
+    const stood = await tipAt(page, left), rightStood = await tipAt(page, right);
 
     // 1. The left foot's target up 30% of the height with the mouse.
     await selectTarget(page, left);
     await dragTargetAlongY(page, left, 0.3 * height, 20);
     await waitForConvergence(page);
-    const lifted = await target(page, left);
+    const lifted = await targetAt(page, left);
     expect(lifted[1] - stood[1]).toBeGreaterThan(0.29 * height);
-    const savedLeft = await tip(page, left), savedRight = await tip(page, right);
+    const savedLeft = await tipAt(page, left), savedRight = await tipAt(page, right);
     expect(distance(savedLeft, lifted)).toBeLessThan(delta);
     expect(distance(savedRight, rightStood)).toBeLessThan(delta);
 
@@ -88,7 +75,7 @@ describe('the posed .glb round trip', () => {
     const lowerOff = worstDifference(limits.lower, again.lower), upperOff = worstDifference(limits.upper, again.upper);
     expect(await page.evaluate(() => window.ikPage?.tipTolerance() ?? 0)).toBeCloseTo(delta, 6);
     const left2 = await effectorNamed(page, /LeftFoot$/), right2 = await effectorNamed(page, /RightFoot$/);
-    const openedLeft = await tip(page, left2), openedRight = await tip(page, right2);
+    const openedLeft = await tipAt(page, left2), openedRight = await tipAt(page, right2);
     console.log(
       `[posed round trip] limits: lower off by ${lowerOff.toExponential(2)}°, upper by ${upperOff.toExponential(2)}° over ${again.lower.length} angles; ` +
         `reopened left foot ${(distance(openedLeft, savedLeft) / delta).toExponential(2)} δ from where it was saved, right foot ${(distance(openedRight, rightStood) / delta).toExponential(2)} δ from where it stands (δ = ${delta.toPrecision(3)})`,
@@ -105,14 +92,14 @@ describe('the posed .glb round trip', () => {
 
     // 4. Dragged back down with the mouse to where the foot stood at first.
     await selectTarget(page, left2);
-    const from = await target(page, left2);
+    const from = await targetAt(page, left2);
     await dragTargetAlongY(page, left2, stood[1] - from[1], 20);
     await waitForConvergence(page);
-    const down = await tip(page, left2), downTarget = await target(page, left2);
+    const down = await tipAt(page, left2), downTarget = await targetAt(page, left2);
     const pixels = await page.evaluate(() => window.ikPage?.pixelsPerUnit() ?? NaN);
     console.log(
       `[posed round trip] dragged back down: target ${(distance(downTarget, stood) / delta).toFixed(3)} δ from where the foot stood (${(distance(downTarget, stood) * pixels).toFixed(2)} px; δ is ${(delta * pixels).toFixed(2)} px), ` +
-        `foot ${(distance(down, stood) / delta).toFixed(3)} δ; right foot ${(distance(await tip(page, right2), rightStood) / delta).toExponential(2)} δ`,
+        `foot ${(distance(down, stood) / delta).toFixed(3)} δ; right foot ${(distance(await tipAt(page, right2), rightStood) / delta).toExponential(2)} δ`,
     );
     expect(distance(down, stood)).toBeLessThan(delta);
     expect(await statText(page, 'status')).toBe('on target');
@@ -120,7 +107,7 @@ describe('the posed .glb round trip', () => {
     // 5. R: the bind pose, the left foot back at its rest place.
     await page.keyboard.press('r');
     await renderedFrames(page, 3);
-    const reset = await tip(page, left2);
+    const reset = await tipAt(page, left2);
     console.log(`[posed round trip] after R: left foot ${(distance(reset, stood) / delta).toExponential(2)} δ from its rest place`);
     expect(distance(reset, stood)).toBeLessThan(delta);
     expect(errors).toEqual([]);

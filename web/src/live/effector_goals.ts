@@ -93,6 +93,13 @@ export class EffectorGoals {
     this.changed();
   }
 
+  /** While pinned (pin()), effector k keeps its pinned frame as well as its place. */
+  keepFrame(k: number): void {
+    if (k < 0 || k >= this.keepsFrame.length || this.keepsFrame[k] === 1) return;
+    this.keepsFrame[k] = 1;
+    this.changed();
+  }
+
   /** Frees the pinned orientations (pin()). */
   unpin(): void {
     this.pinned = null;

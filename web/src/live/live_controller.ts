@@ -387,7 +387,10 @@ export class LiveController {
     }
     // The selected target (the one dragged, or last dragged) gives way; the others stay pinned.
     session.yielding = this.handles.selected ?? -1;
+    const hips = this.current?.hipsTarget;
+    hips?.beforeSolve(session, this.handles.selected, this.handles.dragging);
     const s = this.settings, f = this.solveSettings;
+    f.rootUnit = this.current?.rootUnit ?? 1;
     f.gradientTolerance = s.gradientTolerance;
     f.tipTolerance = s.tipTolerance;
     f.maxIterations = s.maxIterations;
@@ -396,6 +399,7 @@ export class LiveController {
     f.strictPriority = s.strictPriority ?? true;
     f.maxJointMove = s.paperMode ? 0 : (s.maxJointMove ?? 0);
     applyStillBody(session, s.stillBody ?? true, this.current?.source.humanoid !== undefined, f);
+    hips?.applyTrunkPull(session, f);
     this.needsRedraw = true;
     let outcome: SolveOutcome;
     try {
@@ -407,6 +411,7 @@ export class LiveController {
     }
     this.needsSolve = this.timing.again;
     const tips = session.tips();
+    hips?.afterSolve(session, tips);
     this.events.solved?.(outcome, this.timing.ms, tips);
     return tips;
   }
