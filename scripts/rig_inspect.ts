@@ -1,5 +1,5 @@
-// `npm run rig -- FILE [--json]`: what the rig importer makes of a file (bone count, end
-// effectors, humanoid mapping, limits, warnings), as a short summary or as JSON. The command as a
+// `npm run rig -- FILE [--chain BASE:TIP] [--json]`: what the rig importer makes of a file (bone
+// count, end effectors, humanoid mapping, a URDF's chain, limits, warnings), as a short summary or as JSON. The command as a
 // function, runRigInspect (scripts/rig.ts calls it on process.argv). A file that does not load
 // gives one line `rig: ...` on stderr and exit code 1; a usage error exit code 2.
 import { Command, CommanderError } from 'commander';
@@ -65,7 +65,7 @@ export function reportJson(r: RigReport): string {
   return `{\n  "bones": ${r.bones},\n  "effectors": ${list(r.effectors)},\n  "humanoid": ${humanoid ?? 'null'},\n  "limits": ${limits},\n  "warnings": ${warnings}\n}\n`;
 }
 
-const FORMATS = { a7: 'A7 rig', glb: 'glTF binary', gltf: 'glTF' } as const;
+const FORMATS = { a7: 'A7 rig', glb: 'glTF binary', gltf: 'glTF', urdf: 'URDF' } as const;
 
 const REGIONS: [string, HumanoidRole[]][] = [
   ['torso', ['hips', 'spine', 'chest', 'upperChest', 'neck', 'head']],
@@ -84,7 +84,9 @@ export function rigSummary(rig: LoadedRig, file: string): string {
   const r = rigReport(rig);
   const lines = [`${file}: ${FORMATS[rig.format]}, ${r.bones} bones`, `end effectors (${r.effectors.length}): ${r.effectors.join(', ')}`];
   const map = rig.gltf?.humanoid;
-  if (!map || !r.humanoid) lines.push('humanoid: not recognised');
+  const urdf = rig.urdf;
+  if (urdf) lines.push(`chain: ${urdf.base}:${urdf.tip}, ${urdf.joints.length} moving joints (${urdf.joints.join(', ')}); the end effector's frame is ${urdf.tip}'s`);
+  else if (!map || !r.humanoid) lines.push('humanoid: not recognised');
   else {
     const missing = map.missing.length ? `; missing the core roles ${map.missing.join(', ')}` : '';
     lines.push(`humanoid (${map.source}): ${Object.keys(r.humanoid).length} of ${HUMANOID_ROLES.length} roles${missing}`);
@@ -123,11 +125,12 @@ const processIo: InspectIo = {
 
 class UsageError extends Error {}
 
-/** Parses argv: the file and --json; undefined after printing the help. */
-function parseArgs(argv: string[], io: InspectIo): { file: string; json: boolean } | undefined {
+/** Parses argv: the file, --chain and --json; undefined after printing the help. */
+function parseArgs(argv: string[], io: InspectIo): { file: string; json: boolean; chain?: string } | undefined {
   const cmd = new Command('npm run rig --')
     .description('Prints what the rig importer makes of a file: bone count, end effectors, humanoid mapping, limits and warnings.')
-    .argument('<file>', 'a rig file: .glb, .gltf or A7 .json')
+    .argument('<file>', 'a rig file: .glb, .gltf, .urdf or A7 .json')
+    .option('--chain <BASE:TIP>', "a URDF file's chain, from the BASE link down to the TIP link (default: the longest serial chain)")
     .option('--json', 'print {"bones", "effectors", "humanoid", "limits", "warnings"} as JSON (limits in degrees, null = unbounded)', false)
     .allowExcessArguments(false)
     .exitOverride()
@@ -138,7 +141,8 @@ function parseArgs(argv: string[], io: InspectIo): { file: string; json: boolean
     if (e instanceof CommanderError && (e.code === 'commander.helpDisplayed' || e.code === 'commander.help')) return undefined;
     throw new UsageError((e as Error).message.replace(/^error: /, '').split('\n')[0]);
   }
-  return { file: cmd.args[0], json: cmd.opts<{ json: boolean }>().json };
+  const { json, chain } = cmd.opts<{ json: boolean; chain?: string }>();
+  return { file: cmd.args[0], json, chain };
 }
 
 /**
@@ -149,7 +153,7 @@ export async function runRigInspect(argv: string[], io: InspectIo = processIo): 
   try {
     const args = parseArgs(argv, io);
     if (!args) return 0;
-    const rig = await loadRigFromPath(args.file);
+    const rig = await loadRigFromPath(args.file, { chain: args.chain });
     io.out(args.json ? reportJson(rigReport(rig)) : rigSummary(rig, args.file));
     return 0;
   } catch (e) {

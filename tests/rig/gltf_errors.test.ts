@@ -141,7 +141,7 @@ describe('errors in glTF files', () => {
   });
 
   it('unknown formats', async () => {
-    await expectError(glb, 'rig.fbx', 'unknown rig format (expected .json for A7, .glb or .gltf)');
+    await expectError(glb, 'rig.fbx', 'unknown rig format (expected .json for A7, .glb, .gltf or .urdf)');
     await expectError(text('{}'), 'rig.json', 'no "bones" array');
   });
 });

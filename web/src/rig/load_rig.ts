@@ -1,14 +1,23 @@
 // One entry point for every rig format, shared by the page and Node (no DOM, no node:fs):
-// .json = A7 course format, .glb / .gltf = glTF 2.0 skinned character.
+// .json = A7 course format, .glb / .gltf = glTF 2.0 skinned character, .urdf = a robot's serial
+// chain (docs/urdf.md).
 import type { RigSpec } from '../ik/rig_spec.js';
 import { parseA7Rig, RigFormatError } from './a7_rig.js';
 import type { SiblingReader } from './gltf_file.js';
 import { importGltfRig, type GltfRigInfo } from './gltf_rig.js';
+import { parseUrdfModel } from './urdf_model.js';
+import { urdfRigSpec, type UrdfRigInfo } from './urdf_rig.js';
 
-export type { GltfRigInfo, SiblingReader };
+export type { GltfRigInfo, SiblingReader, UrdfRigInfo };
 export { RigFormatError };
 
-export type RigFormat = 'a7' | 'glb' | 'gltf';
+export type RigFormat = 'a7' | 'glb' | 'gltf' | 'urdf';
+
+/** Choices for formats that hold more than one rig. */
+export interface LoadRigOptions {
+  /** URDF: the chain "BASE:TIP" (link names); default the longest serial chain (a warning says which). */
+  chain?: string;
+}
 
 export interface LoadedRig {
   /** The rig for the solver: angles and limits in degrees, lengths in the file's units. */
@@ -18,6 +27,8 @@ export interface LoadedRig {
   format: RigFormat;
   /** For glTF: bone -> node mapping and rest matrices for the write-back. */
   gltf?: GltfRigInfo;
+  /** For URDF: the chain taken and its joints, bone k moving joint k. */
+  urdf?: UrdfRigInfo;
   /** Notes for the user (defaults applied...); empty for A7. */
   warnings: string[];
 }
@@ -38,23 +49,31 @@ export function rigBaseName(fileName: string): string {
   return dot > 0 ? base.slice(0, dot) : base;
 }
 
+const FORMAT_NAMES = { json: 'A7 rig', glb: 'glTF', gltf: 'glTF', urdf: 'URDF' } as const;
+
 /**
  * Loads a rig from the bytes of a file. The format comes from `fileName`'s extension (.json, .glb,
- * .gltf; case-insensitive). `readSibling` reads the side files (buffers) a .gltf refers to by
- * relative URI. Throws RigFormatError naming the file and the problem; never returns a partial rig.
+ * .gltf, .urdf; case-insensitive). `readSibling` reads the side files (buffers) a .gltf refers to by
+ * relative URI (a URDF needs none). `options.chain` picks a URDF's chain. Throws RigFormatError
+ * naming the file and the problem; never returns a partial rig.
  */
-export async function loadRig(bytes: Uint8Array, fileName: string, readSibling?: SiblingReader): Promise<LoadedRig> {
+export async function loadRig(bytes: Uint8Array, fileName: string, readSibling?: SiblingReader, options: LoadRigOptions = {}): Promise<LoadedRig> {
   const name = rigBaseName(fileName);
   const ext = fileName.toLowerCase().match(/\.([a-z0-9]+)$/)?.[1];
-  if (ext !== 'json' && ext !== 'glb' && ext !== 'gltf')
-    throw new RigFormatError(`${fileName}: unknown rig format (expected .json for A7, .glb or .gltf)`);
+  if (ext !== 'json' && ext !== 'glb' && ext !== 'gltf' && ext !== 'urdf')
+    throw new RigFormatError(`${fileName}: unknown rig format (expected .json for A7, .glb, .gltf or .urdf)`);
+  if (options.chain !== undefined && ext !== 'urdf') throw new RigFormatError(`${fileName}: a chain can only be chosen in a URDF file`);
   try {
     if (ext === 'json') return { spec: parseA7Rig(new TextDecoder().decode(bytes), fileName), name, format: 'a7', warnings: [] };
+    if (ext === 'urdf') {
+      const { spec, urdf } = urdfRigSpec(parseUrdfModel(bytes, fileName), fileName, options.chain);
+      return { spec, name, format: 'urdf', urdf, warnings: urdf.warnings };
+    }
     const { spec, gltf } = await importGltfRig(bytes, fileName, readSibling);
     return { spec, name, format: ext, gltf, warnings: gltf.warnings };
   } catch (e) {
     if (e instanceof RigFormatError) throw e;
     // Anything unforeseen still names the file rather than escaping as a bare TypeError.
-    throw new RigFormatError(`${fileName}: cannot read the ${ext === 'json' ? 'A7 rig' : 'glTF'}: ${(e as Error).message}`);
+    throw new RigFormatError(`${fileName}: cannot read the ${FORMAT_NAMES[ext]}: ${(e as Error).message}`);
   }
 }
