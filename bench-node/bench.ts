@@ -20,6 +20,7 @@ import { effectiveRestarts } from './runners.js';
 import { runOnPool, WorkerPool } from './run_wasm.js';
 import type { RunSettings } from './runner.js';
 import { addFlips, StepMeasurer } from './step_measures.js';
+import { tracikSettings } from './tracik.js';
 import { generateTargets, hasReachability, isDragging, prefix, project, type Experiment, type TargetSet } from './targets.js';
 
 export interface PreparedRig extends BenchRig {
@@ -79,7 +80,7 @@ async function namingRig<T>(entry: string, work: () => T | Promise<T>): Promise<
 
 /** One rig of prepareRigs. */
 async function prepareRig(entry: string, opts: BenchOptions, ik: IkCoreModule): Promise<PreparedRig> {
-  const rig = await loadBenchRig(entry, opts.humanoidLimits);
+  const rig = await loadBenchRig(entry, opts.humanoidLimits, opts.chain);
   const core = new IkRig(ik, rig.spec);
   let size: number, reachSteps: number, gestures = 0;
   try {
@@ -163,14 +164,16 @@ export function totalSolves(opts: BenchOptions, rigs: readonly PreparedRig[]): n
 
 /**
  * The settings of `method` on `rig` for `experiment`: the report's tolerances for random and
- * incremental; for drag, reach and gestures a user's drag in the page (the rig's drag tolerances
+ * incremental; TRAC-IK's for tracik (tracik.ts); for drag, reach and gestures a user's drag in the page (the rig's drag tolerances
  * and joint speed, the page's goals, and no restarts: a restart jumps the whole pose).
  */
 export function runSettings(rig: PreparedRig, experiment: Experiment, method: string, opts: BenchOptions): RunSettings {
   const common = { method, ftol: rig.ftol, timeoutSeconds: opts.timeoutSeconds, paper: opts.paper, rigSize: rig.size };
+  const restarts = opts.restarts === undefined ? {} : { restarts: opts.restarts };
+  if (experiment === 'tracik') return { ...common, ...tracikSettings(opts.gtol), ...restarts };
   if (isDragging(experiment)) return { ...common, ...rig.drag, restarts: 0, pageGoals: true, pinFrames: rig.humanoid !== null };
   const pose = opts.goals === 'pose' ? { goals: opts.goals, orientationToleranceDeg: ORIENTATION_TOLERANCE_DEG } : {};
-  return { ...common, gtol: rig.gtol, tipTolerance: 0, ...(opts.restarts === undefined ? {} : { restarts: opts.restarts }), ...pose };
+  return { ...common, gtol: rig.gtol, tipTolerance: 0, ...restarts, ...pose };
 }
 
 export interface RunContext {

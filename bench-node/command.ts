@@ -12,11 +12,12 @@ import { compareTable, readReferenceCsv } from './compare.js';
 import { BenchError, errorLine } from './errors.js';
 import type { Row } from './metrics.js';
 import { parseOptions } from './options.js';
-import { checkOutputs, writeCsv, writeJson, writeMarkdown, type RunInfo } from './outputs.js';
+import { checkOutputs, csvTable, writeCsv, writeJson, writeMarkdown, writeText, type RunInfo } from './outputs.js';
 import { makeProgress } from './progress.js';
 import { resolveRigPaths } from './rigs.js';
 import { engineRatioTable, groupRows, renderTable, resultsTable, type Table } from './table.js';
 import { timeToSuccessTable } from './time_to_success.js';
+import { tracikCsvColumns, tracikTable, withPublished } from './tracik_table.js';
 import { runTrackCommand } from './track_command.js';
 
 /** Where the command writes: the tables (stdout), errors and notes (stderr). */
@@ -43,6 +44,8 @@ const notes = [
     'jump_max_deg is the largest change of one angle in one step (the shortest way round for an angle without limits). ' +
     'With --goals pose, E is over the tip positions and success also needs every orientation within 0.5 degrees; ' +
     'rot_err_avg_deg and rot_err_max_deg are the mean and max of each solve\'s largest orientation error. ' +
+    'tracik: TRAC-IK\'s protocol (pose within 1e-5 in position and 1e-5 rad in rotation angle, from the mid-limit seed, ' +
+    '5 ms per query; t_avg over all queries), with the TRAC-IK v1.4.6 README\'s KDL and TRAC-IK figures for the chains it lists. ' +
     'Definitions, the drag and reach experiments and the peers\' settings: bench-node/README.md.',
   'Times are per solve in seconds, measured on a machine that may be shared: a solve that is descheduled for ' +
     'milliseconds moves t_avg and t_max far more than t_median, so compare speeds by the medians. Wobble is in rig units.',
@@ -101,7 +104,10 @@ async function main(argv: string[], io: CommandIo): Promise<number> {
     progress.stop();
   }
 
-  const tables: Table[] = groupRows(rows).map(resultsTable);
+  // tracik: each row with its chain and the published figures of that chain (tracik_table.ts).
+  const chainOf = (rig: string): string | undefined => rigs.find((r) => r.name === rig)?.chain ?? undefined;
+  const tracik = opts.experiments.includes('tracik') ? rows.map((r) => withPublished(r, chainOf(r.rig))) : undefined;
+  const tables: Table[] = tracik ? groupRows(tracik).map(tracikTable) : groupRows(rows).map(resultsTable);
   const timed = timeToSuccessTable(rows);
   if (timed) tables.push(timed);
   const engineEntries = [...new Set(rows.map((r) => r.engine))].filter((e) => e !== 'js');
@@ -130,6 +136,7 @@ async function main(argv: string[], io: CommandIo): Promise<number> {
     rigs: rigs.map((r) => ({
       rig: r.name,
       path: r.path,
+      chain: r.chain,
       bones: r.spec.parents.length,
       effectors: r.spec.effectors.length,
       size: r.size,
@@ -139,8 +146,9 @@ async function main(argv: string[], io: CommandIo): Promise<number> {
       tipTolerance: r.drag.tipTolerance,
     })),
   };
-  if (opts.json) writeJson(opts.json, rows, info);
-  if (opts.csv) writeCsv(opts.csv, rows);
+  if (opts.json) writeJson(opts.json, tracik ?? rows, info);
+  if (opts.csv && tracik) writeText(opts.csv, csvTable(tracik, tracikCsvColumns));
+  else if (opts.csv) writeCsv(opts.csv, rows);
   if (opts.markdown) writeMarkdown(opts.markdown, tables, info, notes);
   return 0;
 }

@@ -9,8 +9,8 @@ import type { Experiment } from './targets.js';
 /** Methods that solve tip positions only: refused with --goals pose, and left out of its --methods default. */
 export const positionOnlyMethods: readonly string[] = ['three-ccd'];
 
-/** Experiments whose targets are tip frames at target angles A_k, so they can be whole poses. */
-const poseExperiments: readonly Experiment[] = ['random', 'incremental'];
+/** Experiments whose targets are tip frames at target angles A_k, so they can be whole poses (tracik: always). */
+const poseExperiments: readonly Experiment[] = ['random', 'incremental', 'tracik'];
 
 const usage = (message: string): BenchError => new BenchError(message, 2);
 

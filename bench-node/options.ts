@@ -12,6 +12,7 @@ import { BenchError, quote } from './errors.js';
 import { checkGoals } from './goals_option.js';
 import { goalsKinds, type GoalsKind } from './pose_goals.js';
 import { experiments, type Experiment } from './targets.js';
+import { applyTracik, checkChain } from './tracik.js';
 import { WARM_UP_MS } from './warm_up.js';
 
 /** The peers: other libraries' solvers, run in JavaScript (peers/). */
@@ -35,6 +36,8 @@ export function isNativeOnly(method: string): boolean {
 
 export interface BenchOptions {
   rigs: string[];
+  /** --chain BASE:TIP: the chain of every rig, URDF files only (the importer's default: the longest serial chain). */
+  chain?: string;
   experiments: Experiment[];
   methods: string[];
   /** Samples per known method (a --samples default plus METHOD=N overrides). */
@@ -189,7 +192,8 @@ function program(allMethods: readonly string[], defaultMethods: readonly string[
   return new Command('bench')
     .description("Benchmarks the IK solvers on the report's target sets and more (see bench-node/README.md).")
     .addOption(new Option('--rig <paths>', `rig files (.glb, .gltf, A7 .json) or project rig names, comma-separated${merged}`).argParser(collect).makeOptionMandatory())
-    .addOption(new Option('--experiment <list>', `experiments: ${experiments.join(', ')}, or track alone${merged}`).argParser(collect).default('random,incremental'))
+    .addOption(single('--chain <base:tip>', "URDF rigs: the chain, from its base link to its tip link (default: the longest serial chain)"))
+    .addOption(new Option('--experiment <list>', `experiments: ${experiments.filter((e) => e !== 'tracik').join(', ')}, or track or tracik alone${merged}`).argParser(collect).default('random,incremental'))
     .addOption(single('--clips <list>', 'track: the animation clips to run, comma-separated, or all', 'all'))
     .addOption(single('--points <n>', 'track: tracked points, 3 (head and hands) or 6 (and the hips and feet)', '3'))
     .addOption(new Option('--methods <list>', `methods: ${allMethods.join(', ')} (kdl: --engine native only)${merged}`).argParser(collect).default(defaultMethods.join(',')))
@@ -218,6 +222,7 @@ function program(allMethods: readonly string[], defaultMethods: readonly string[
 interface RawOptions {
   /** The list options: the default as a string, the values given as an array. */
   rig: string[];
+  chain?: string;
   experiment: string | string[];
   methods: string | string[];
   samples: string;
@@ -267,6 +272,7 @@ export function parseOptions(argv: string[], isTTY: boolean, ownMethods: readonl
   const raw = cmd.opts<RawOptions>();
   const opts: BenchOptions = {
     rigs: lists('--rig', raw.rig),
+    chain: raw.chain === undefined ? undefined : present('--chain', raw.chain).trim(),
     experiments: pick('--experiment', raw.experiment, [...experiments, TRACK], 'experiment').filter((e): e is Experiment => e !== TRACK),
     methods: pick('--methods', raw.methods, allMethods, 'method'),
     samples: parseSamples(raw.samples, allMethods),
@@ -288,6 +294,7 @@ export function parseOptions(argv: string[], isTTY: boolean, ownMethods: readonl
     warmUpMs: integerIn('--warm-up', raw.warmUp, 0, MAX_WARM_UP_MS),
     goals: pickOne('--goals', raw.goals, goalsKinds, 'goal kind'),
   };
+  checkChain(opts.chain, opts.rigs);
   const track = lists('--experiment', raw.experiment).includes(TRACK);
   if (track) {
     if (opts.experiments.length > 0) throw usage(`--experiment: track runs alone, not with ${opts.experiments.join(', ')}`);
@@ -299,6 +306,7 @@ export function parseOptions(argv: string[], isTTY: boolean, ownMethods: readonl
   }
   for (const flag of ['--clips', '--points'] as const)
     if (cmd.getOptionValueSource(flag.slice(2)) !== 'default') throw usage(`${flag} goes with --experiment track only`);
+  applyTracik(opts, (option) => cmd.getOptionValueSource(option) === 'cli');
   opts.methods = checkGoals(opts.goals, opts.methods, cmd.getOptionValueSource('methods') !== 'default', opts.experiments, opts.paper, opts.compare !== undefined);
   const nativeOnly = opts.methods.find(isNativeOnly);
   if (nativeOnly !== undefined && !opts.engines.includes('native'))

@@ -28,6 +28,8 @@ export interface RunInfo {
   rigs: Array<{
     rig: string;
     path: string;
+    /** URDF: the chain BASE:TIP the importer took; null for the other formats. */
+    chain: string | null;
     bones: number;
     effectors: number;
     size: number;

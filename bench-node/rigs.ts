@@ -1,6 +1,7 @@
 // Finding and reading the rigs named by --rig, and their default tolerances.
 //
-// A rig is a path to a .glb, .gltf or A7 .json file, or a bare name (`knight`) meaning the
+// A rig is a path to a .glb, .gltf, A7 .json or .urdf file (with --chain BASE:TIP, the chain the
+// URDF importer takes), or a bare name (`knight`) meaning the
 // project rig web/public/models/NAME.glb. Its display name is the file's base name.
 //
 // Default tolerances: web/src/rig/tolerances.ts (shared with the page) has the values and the
@@ -33,6 +34,8 @@ export interface BenchRig {
   humanoid: HumanoidMap | null;
   /** glTF: the node index of each bone (GltfRigInfo.boneNodes); null for an A7 rig. */
   boneNodes: Int32Array | null;
+  /** URDF: the chain the importer took, BASE:TIP (--chain, else its default); null for the other formats. */
+  chain: string | null;
 }
 
 /** Resolves a --rig entry to a file path; throws BenchError naming the entry when it does not exist. */
@@ -58,18 +61,21 @@ export function resolveRigPaths(entries: readonly string[]): string[] {
 }
 
 /**
- * Reads a rig file (A7 .json, .glb or .gltf). `humanoidLimits` false: a recognised humanoid keeps
- * the file's own limits. Throws BenchError with one line naming the entry on failure.
+ * Reads a rig file (A7 .json, .glb, .gltf or .urdf). `humanoidLimits` false: a recognised
+ * humanoid keeps the file's own limits; `chain` (BASE:TIP, URDF only; --chain) the chain the URDF
+ * importer takes. Throws BenchError with one line naming the entry on failure.
  */
-export async function loadBenchRig(entry: string, humanoidLimits = true): Promise<BenchRig> {
+export async function loadBenchRig(entry: string, humanoidLimits = true, chain?: string): Promise<BenchRig> {
   const path = resolveRigPath(entry);
   const ext = extname(path).toLowerCase();
-  if (!['.json', '.glb', '.gltf'].includes(ext))
-    throw new BenchError(`${entry}: unknown rig format "${ext}" (expected .glb, .gltf or A7 .json)`);
+  if (!['.json', '.glb', '.gltf', '.urdf'].includes(ext))
+    throw new BenchError(`${entry}: unknown rig format "${ext}" (expected .glb, .gltf, A7 .json or .urdf)`);
   try {
-    const loaded = await loadRigFromPath(path);
+    const loaded = await loadRigFromPath(path, chain === undefined ? {} : { chain });
     const spec = humanoidLimits ? loaded.spec : specWithFileLimits(loaded);
-    return { name: loaded.name, path, format: loaded.format, spec, humanoid: loaded.gltf?.humanoid ?? null, boneNodes: loaded.gltf?.boneNodes ?? null };
+    const urdf = loaded.urdf;
+    return { name: loaded.name, path, format: loaded.format, spec, humanoid: loaded.gltf?.humanoid ?? null, boneNodes: loaded.gltf?.boneNodes ?? null,
+      chain: urdf ? `${urdf.base}:${urdf.tip}` : null };
   } catch (e) {
     const message = errorLine(e);
     throw new BenchError(`${entry}: ${message.startsWith(`${path}: `) ? message.slice(path.length + 2) : message}`);

@@ -155,6 +155,7 @@ export async function runNative(
         if (settings.maxJointMove !== undefined) args.push('--max-joint-move', String(settings.maxJointMove));
         if (settings.pageGoals) args.push('--page-goals', pinnedFramesArgument(spec, spec.effectors, settings.pinFrames ?? false));
         if (settings.goals === 'pose') args.push('--goals', 'pose');
+        if (settings.orientationToleranceDeg !== undefined) args.push('--orientation-tol', String(settings.orientationToleranceDeg));
         await runProcess(args);
         results[b] = decodeResults(readFileSync(output, 'utf8'), end - begin, output);
         onProgress(end - begin);

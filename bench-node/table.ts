@@ -101,8 +101,8 @@ export function resultsTable(rows: readonly Row[]): Table {
 }
 
 /** Groups rows by (rig, experiment), keeping first-seen order. */
-export function groupRows(rows: readonly Row[]): Row[][] {
-  const groups = new Map<string, Row[]>();
+export function groupRows<R extends Row>(rows: readonly R[]): R[][] {
+  const groups = new Map<string, R[]>();
   for (const r of rows) {
     const key = `${r.rig}\u0000${r.experiment}`;
     const g = groups.get(key);

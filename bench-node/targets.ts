@@ -11,6 +11,8 @@
 //                previous step's solution (`chained`), as when a user drags an effector.
 //   reach:       straight paths of one effector's target from its rest tip, the others pinned at
 //                theirs, from P(0), chained (reach.ts). Not seeded: the set is the same for every seed.
+//   tracik:      TRAC-IK's protocol (tracik.ts): A_k uniform within the limits, each solve from the
+//                nominal (mid-limit) configuration; run with pose goals.
 //   gestures:    a humanoid's scripted gestures (hand across the chest, over the head...) in small
 //                steps from P(0), the others pinned at their rest tips, chained (gestures.ts). Not
 //                seeded either.
@@ -25,9 +27,10 @@ import { draggableEffectors, exclusiveAngles } from './effectors.js';
 import { fillGestures, gesturePaths, gestureSteps, type GestureBody } from './gestures.js';
 import { signedUnit, streamFor } from './prng.js';
 import { fillReach, REACH_PATH_STEPS, reachPaths } from './reach.js';
+import { fillTracik } from './tracik.js';
 
-export type Experiment = 'random' | 'incremental' | 'drag' | 'reach' | 'gestures';
-export const experiments: readonly Experiment[] = ['random', 'incremental', 'drag', 'reach', 'gestures'];
+export type Experiment = 'random' | 'incremental' | 'drag' | 'reach' | 'gestures' | 'tracik';
+export const experiments: readonly Experiment[] = ['random', 'incremental', 'drag', 'reach', 'gestures', 'tracik'];
 
 /**
  * Drag, reach and gestures: paths a user drags an effector along. Solved as the page solves while
@@ -169,7 +172,8 @@ export function generateTargets(
   }
   const targetAngles = (set.targetAngles = new Float64Array(n * m));
   const rand = streamFor(seed, experiment);
-  if (experiment === 'random') fillRandom(spec, set, targetAngles, rest, rand);
+  if (experiment === 'tracik') fillTracik(spec, set, targetAngles, rand);
+  else if (experiment === 'random') fillRandom(spec, set, targetAngles, rest, rand);
   else if (experiment === 'incremental') fillIncremental(spec, set, targetAngles, rest, rand);
   else fillDrag(spec, set, targetAngles, rand);
   for (let k = 0; k < n; k++) set.targets.set(tips(targetAngles.subarray(k * m, (k + 1) * m)), k * r);

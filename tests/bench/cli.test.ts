@@ -12,7 +12,6 @@ import { afterAll, describe, expect, it } from 'vitest';
 
 import { writeA7Rig } from '../../bench-node/a7_writer.js';
 import { prepareRigs } from '../../bench-node/bench.js';
-import { runCommand } from '../../bench-node/command.js';
 import { parseOptions } from '../../bench-node/options.js';
 import { checkOutputs } from '../../bench-node/outputs.js';
 import { REACH_MARGIN } from '../../bench-node/reachability.js';
@@ -23,6 +22,7 @@ import { loadIkNode } from '../../web/src/ik/node.js';
 import { IkSolver } from '../../web/src/ik/solver.js';
 import { rigsLike } from '../helpers/a7.js';
 import { sketchRig, straightLimb } from '../helpers/rig_builder.js';
+import { benchHere, type Outcome } from './bench_here.js';
 
 const root = resolve(import.meta.dirname, '../..');
 const methods = IkSolver.methods(await loadIkNode());
@@ -30,23 +30,12 @@ const knight = rigsLike('knight')[0].path; // an A7 file: the project's knight (
 const dir = mkdtempSync(join(tmpdir(), 'bench-cli-test-'));
 afterAll(() => rmSync(dir, { recursive: true, force: true }));
 
-interface Outcome {
-  code: number;
-  stdout: string;
-  stderr: string;
-}
 
 function bench(...args: string[]): Outcome {
   const r = spawnSync(process.execPath, ['--import', 'tsx', 'bench-node/cli.ts', ...args], { cwd: root, encoding: 'utf8' });
   return { code: r.status ?? -1, stdout: r.stdout, stderr: r.stderr };
 }
 
-/** The command run in this process, its output captured. */
-async function benchHere(...args: string[]): Promise<Outcome> {
-  const out = { stdout: '', stderr: '' };
-  const code = await runCommand(args, { out: (t) => (out.stdout += t), err: (t) => (out.stderr += t), isTTY: false });
-  return { code, ...out };
-}
 
 /** Exit code `code`, nothing on stdout, one line `bench: ...` matching `pattern` on stderr, no stack. */
 function expectOneLineError(r: Outcome, code: number, pattern: RegExp): void {
@@ -132,7 +121,7 @@ describe('careless values: a usage error naming the option and the value', () =>
     [['--ftol', 'Infinity'], /--ftol: "Infinity" is not a positive number/],
     [['--ftol', '0'], /--ftol: "0" is not a positive number/],
     [['--warm-up', '-1'], /--warm-up: "-1" is not an integer in 0\.\.60000$/],
-    [['--experiment', 'random,Drag'], /--experiment: unknown experiment "Drag" \(known: random, incremental, drag, reach, gestures, track\)/],
+    [['--experiment', 'random,Drag'], /--experiment: unknown experiment "Drag" \(known: random, incremental, drag, reach, gestures, tracik, track\)/],
     [['--methods', `lm,${'y'.repeat(500)}`], /--methods: unknown method "y{57}\.\.\." \(known:/],
   ] as Array<[string[], RegExp]>)('%j', async (args, pattern) => {
     expectOneLineError(await benchHere('--rig', knight, ...args), 2, pattern);

@@ -9,7 +9,6 @@ import { join } from 'node:path';
 
 import { afterAll, describe, expect, it } from 'vitest';
 
-import { runCommand } from '../../bench-node/command.js';
 import { isOnTarget } from '../../bench-node/evaluate.js';
 import { summarize, type SolveResult } from '../../bench-node/metrics.js';
 import { parseOptions } from '../../bench-node/options.js';
@@ -21,6 +20,7 @@ import { loadIkNode } from '../../web/src/ik/node.js';
 import { IkRig } from '../../web/src/ik/rig.js';
 import { IkSolver } from '../../web/src/ik/solver.js';
 import { loadTestRig, rigsLike } from '../helpers/a7.js';
+import { benchHere, type Outcome } from './bench_here.js';
 
 const ik = await loadIkNode();
 const methods = IkSolver.methods(ik);
@@ -29,17 +29,7 @@ const lamp = rigsLike('ikea-lamp')[0];
 const dir = mkdtempSync(join(tmpdir(), 'bench-goals-test-'));
 afterAll(() => rmSync(dir, { recursive: true, force: true }));
 
-interface Outcome {
-  code: number;
-  stdout: string;
-  stderr: string;
-}
 
-async function benchHere(...args: string[]): Promise<Outcome> {
-  const out = { stdout: '', stderr: '' };
-  const code = await runCommand(args, { out: (t) => (out.stdout += t), err: (t) => (out.stderr += t), isTTY: false });
-  return { code, ...out };
-}
 
 type Json = Record<string, unknown>;
 

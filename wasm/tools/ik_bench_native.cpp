@@ -6,7 +6,7 @@
 //   ik_bench_native --rig RIG.json --method NAME --input JOB.bin --output RESULTS.jsonl
 //                   [--gtol X] [--ftol Y] [--tip-tol Z] [--timeout SECONDS] [--paper] [--restarts N]
 //                   [--max-joint-move D] [--page-goals ROWS]
-//                   [--goals position|pose]
+//                   [--goals position|pose] [--orientation-tol DEG]
 //   ik_bench_native --list-methods     prints the methods it knows (the core's registry, the
 //                                      default first, then "kdl" when built with Orocos KDL) as a
 //                                      JSON array of names
@@ -22,7 +22,8 @@
 // --goals pose: each record also carries each effector's target orientation, and every method
 // solves towards the whole poses (Goals of native/pose_goals.h: position and orientation per
 // effector, weight 1; kdl with its rotation rows weighted); on target then also needs every
-// orientation within SolverOptions::orientation_tolerance_deg (0.5 degrees).
+// orientation within SolverOptions::orientation_tolerance_deg (0.5 degrees; --orientation-tol DEG,
+// > 0, sets it: the bench's tracik experiment asks for 1e-5 rad).
 //
 // JOB.bin, little-endian:
 //   header  char[8] "IKBJOB1\0", int32 count, int32 #angles, int32 #residuals, int32 #orientation
@@ -89,7 +90,7 @@ struct Args {
                               "\nusage: ik_bench_native --rig RIG.json --method NAME --input JOB.bin --output "
                               "RESULTS.jsonl [--gtol X] [--ftol Y] [--tip-tol Z] [--timeout S] [--paper] [--restarts N]\n"
                               "       [--max-joint-move D] [--page-goals ROWS]\n"
-                              "       [--goals position|pose]\n"
+                              "       [--goals position|pose] [--orientation-tol DEG]\n"
                               "       ik_bench_native --list-methods");
 }
 
@@ -121,6 +122,10 @@ Args parse_args(int argc, char** argv) {
     else if (flag == "--gtol") a.options.gradient_tolerance = number_arg(flag, value);
     else if (flag == "--ftol") a.options.error_tolerance = number_arg(flag, value);
     else if (flag == "--tip-tol") a.options.tip_tolerance = number_arg(flag, value);
+    else if (flag == "--orientation-tol") {
+      a.options.orientation_tolerance_deg = number_arg(flag, value);
+      if (a.options.orientation_tolerance_deg <= 0) usage(flag + ": \"" + value + "\" is not a number > 0");
+    }
     else if (flag == "--max-joint-move") a.options.max_joint_move = number_arg(flag, value);
     else if (flag == "--page-goals") {
       std::string rows = value;
