@@ -43,16 +43,8 @@ void point_in_limits(const Eigen::Ref<const Eigen::VectorXd>& unit, const Eigen:
       out[i] = lo;
       continue;
     }
-    double from = std::max(lo, -180.0), to = std::min(hi, 180.0);
-    if (from > to) {  // limits entirely outside [-180, 180]: one turn from the finite end
-      if (std::isfinite(lo)) {
-        from = lo;
-        to = std::min(hi, lo + 360);
-      } else {
-        to = hi;
-        from = hi - 360;
-      }
-    }
+    // The whole range when it is at most a turn wide; else the turn within it nearest -180..180.
+    const double from = hi - lo <= 360 ? lo : std::clamp(-180.0, lo, hi - 360), to = hi - lo <= 360 ? hi : from + 360;
     out[i] = std::clamp(from + (to - from) * unit[i], lo, hi);
   }
 }

@@ -24,9 +24,10 @@ class QuasiRandom {
   Eigen::VectorXd alpha_, shift_;
 };
 
-// A point inside the limits from `unit` (coordinates in [0, 1)): each angle spans its limits,
-// narrowed to [-180, 180] where the limits are wider (unbounded angles included). Fixed angles
-// take their value. `lower`, `upper` and `out` are #angles, degrees. No allocation.
+// A point inside the limits from `unit` (coordinates in [0, 1)): each angle spans its limits when
+// they are at most one turn wide (47..313 included: a Jaco2 joint), else one turn of them, the
+// one nearest [-180, 180] (unbounded angles: [-180, 180]). Fixed angles take their value.
+// `lower`, `upper` and `out` are #angles, degrees. No allocation.
 void point_in_limits(const Eigen::Ref<const Eigen::VectorXd>& unit, const Eigen::Ref<const Eigen::VectorXd>& lower,
                      const Eigen::Ref<const Eigen::VectorXd>& upper, Eigen::Ref<Eigen::VectorXd> out);
 

@@ -2,7 +2,10 @@
 // inside the limits and counted.
 #include <gtest/gtest.h>
 
+#include <limits>
+
 #include "../allocation_counter.h"
+#include "solvers/quasi_random.h"
 #include "solvers/restarts.h"
 
 namespace ik {
@@ -76,6 +79,31 @@ TEST(Restarts, AllocateOnlyWhenTheSizeOrSeedChanges) {
   EXPECT_EQ(test::heap_allocations() - before, 0);
   r.begin_solve(5, 3);
   EXPECT_GT(test::heap_allocations() - before, 0);
+}
+
+// Restart points span a range up to one turn wide whole, beyond +-180 too (a Jaco2 joint's
+// 47..313 degrees), and one turn of a wider or unbounded range, the one nearest -180..180.
+TEST(Restarts, PointsSpanEachRangeUpToOneTurn) {
+  const double inf = std::numeric_limits<double>::infinity();
+  Eigen::VectorXd lower(5), upper(5);
+  lower << 47, -10, -inf, -inf, 50;
+  upper << 313, 400, inf, 100, inf;
+  Eigen::VectorXd lo = Eigen::VectorXd::Constant(5, inf), hi = Eigen::VectorXd::Constant(5, -inf), unit(5), p(5);
+  QuasiRandom q(5, 1);
+  for (int k = 1; k <= 2000; ++k) {
+    q.point(k, unit);
+    point_in_limits(unit, lower, upper, p);
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  const Eigen::VectorXd want_lo = (Eigen::VectorXd(5) << 47, -10, -180, -260, 50).finished();
+  const Eigen::VectorXd want_hi = (Eigen::VectorXd(5) << 313, 350, 180, 100, 410).finished();
+  for (int i = 0; i < 5; ++i) {
+    EXPECT_NEAR(lo[i], want_lo[i], 1.0) << i;
+    EXPECT_NEAR(hi[i], want_hi[i], 1.0) << i;
+    EXPECT_GE(lo[i], want_lo[i]) << i;
+    EXPECT_LE(hi[i], want_hi[i]) << i;
+  }
 }
 
 }  // namespace
