@@ -262,11 +262,12 @@ function mean(xs: number[]): number {
   return xs.length === 0 ? 0 : xs.reduce((s, x) => s + x, 0) / xs.length;
 }
 
-/** The mean size of the second difference of each point over the frames (rig units per frame²); 0 with fewer than 3 frames. */
+/** The distance between two points (rig units). */
 function distance(a: ArrayLike<number>, b: ArrayLike<number>): number {
   return Math.hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]);
 }
 
+/** The mean size of the second difference of each point over the frames (rig units per frame²); 0 with fewer than 3 frames. */
 function meanAcceleration(frames: number[][]): number {
   let sum = 0, count = 0;
   for (let f = 1; f + 1 < frames.length; f++)
