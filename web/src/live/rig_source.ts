@@ -1,6 +1,7 @@
 // A rig file read for showing: its spec for the IK session and, for glTF, a factory for the posed
-// mesh. Parsing is web/src/rig/load_rig.ts; the mesh is three.js's GLTFLoader, posed by
-// web/src/three/'s PoseWriter. This module only fetches bytes and joins the two.
+// mesh; for URDF, the chain shown and the file's other chains. Parsing is web/src/rig/load_rig.ts;
+// the mesh is three.js's GLTFLoader, posed by web/src/three/'s PoseWriter. This module only
+// fetches bytes and joins the two.
 import { GLTFLoader } from 'three/addons/loaders/GLTFLoader.js';
 import { MeshoptDecoder } from 'three/addons/libs/meshopt_decoder.module.js';
 
@@ -8,7 +9,11 @@ import type { RigSpec } from '../ik/rig_spec.js';
 import { followLimbEnds, limbEndFollowers } from '../rig/control_follow.js';
 import type { RigLimits } from '../rig/humanoid_limits.js';
 import type { HumanoidMap } from '../rig/humanoid_roles.js';
-import { loadRig, specWithFileLimits, type GltfRigInfo, type SiblingReader } from '../rig/load_rig.js';
+import { loadRig, specWithFileLimits, type GltfRigInfo, type LoadRigOptions, type SiblingReader } from '../rig/load_rig.js';
+import { multiply } from '../rig/mat4.js';
+import { urdfChains } from '../rig/urdf_chains.js';
+import { parseUrdfModel } from '../rig/urdf_model.js';
+import { urdfRigSpec } from '../rig/urdf_rig.js';
 import { bonesFromGltf } from '../three/find_bones.js';
 import { PoseWriter } from '../three/pose_writer.js';
 import { disposeObject3D } from '../view/dispose_three.js';
@@ -22,7 +27,7 @@ import { errorText } from './error_text.js';
 export interface RigSource {
   /** Display name (shown as text). */
   name: string;
-  /** Format for display: "glb", "gltf" or "A7 JSON". */
+  /** Format for display: "glb", "gltf", "A7 JSON" or "URDF". */
   format: string;
   spec: RigSpec;
   /**
@@ -38,6 +43,22 @@ export interface RigSource {
   makeMesh: (() => Promise<MeshBinding>) | null;
   /** The glTF file the rig was read from (the page writes posed copies of it); absent for A7 rigs. */
   gltf?: GltfSource;
+  /** The URDF file the rig was read from: the chain shown and the file's chains (the panel's chain menu). */
+  urdf?: UrdfSource;
+}
+
+/** A URDF rig's file as read: the chain taken, the others to choose from, and the bytes to read it again. */
+export interface UrdfSource {
+  bytes: Uint8Array;
+  fileName: string;
+  /** The chain shown, "BASE:TIP". */
+  chain: string;
+  /** The importer's default chain (the longest serial one), or null when the file has none it takes. */
+  defaultChain: string | null;
+  /** The file's maximal importable chains (urdf_chains.ts), the default first; `chain` is among them. */
+  chains: string[];
+  /** The file's revolute and continuous joints in `chain`, bone k moving joint k. */
+  joints: string[];
 }
 
 /** A glTF rig's file as read: what web/src/three/pose_glb.ts needs to write it posed. */
@@ -101,10 +122,81 @@ async function gltfMesh(bytes: Uint8Array, fileName: string, resourcePath: strin
 export const MAX_MODEL_TREE_DEPTH = 1000;
 
 /**
- * Parses a rig file of any supported format. `resourcePath` is where a .gltf's relative files
- * live (for GLTFLoader). Throws an Error whose message names the file.
+ * URDF's up (+z, ROS REP 103) turned to the page's (+y, three.js): a quarter turn about x, row-major.
+ * Turning every rest frame by it turns the whole rig (T_i = T_parent rest_i R rest_i^-1 becomes W T_i
+ * W^-1): the same angles, the same limits, the tips and tip frames turned by W.
  */
-export async function readRig(bytes: Uint8Array, fileName: string, readSibling?: SiblingReader, resourcePath = ''): Promise<RigSource> {
+const Z_UP_TO_Y_UP = Float64Array.of(1, 0, 0, 0, 0, 0, 1, 0, 0, -1, 0, 0, 0, 0, 0, 1);
+
+/** `spec` with every rest frame turned by Z_UP_TO_Y_UP. */
+function yUp(spec: RigSpec): RigSpec {
+  const rest = new Float64Array(spec.rest.length);
+  for (let i = 0; i < rest.length; i += 16) rest.set(multiply(Z_UP_TO_Y_UP, spec.rest.subarray(i, i + 16)), i);
+  return { ...spec, rest };
+}
+
+/** Most chains in the panel's chain menu (the PR2 has 18, Baxter 19). */
+const MAX_LISTED_CHAINS = 100;
+
+/**
+ * A URDF file's chain `wanted` ("BASE:TIP"; undefined: the importer's default) as a rig, turned so
+ * that the robot's +z is the page's up. A `wanted` chain naming a link the file does not have
+ * (a ?chain= left from another file) gives the default chain and a warning; any other refusal of
+ * the importer (a prismatic joint in the chain, a chain that is not serial) is thrown.
+ */
+async function readUrdf(bytes: Uint8Array, fileName: string, wanted: string | undefined): Promise<RigSource> {
+  const model = parseUrdfModel(bytes, fileName);
+  const notes: string[] = [];
+  if (wanted !== undefined) {
+    const missing = wanted.split(':').filter((link) => !model.links.includes(link));
+    if (missing.length > 0) {
+      notes.push(`the chain ${wanted} is not in this file (no link ${missing.map((l) => `"${l}"`).join(', ')}): took the file's longest chain`);
+      wanted = undefined;
+    }
+  }
+  const rig = await loadRig(bytes, fileName, undefined, { chain: wanted });
+  const urdf = rig.urdf!;
+  const chain = `${urdf.base}:${urdf.tip}`;
+  let defaultChain: string | null = chain;
+  if (wanted !== undefined) {
+    try {
+      const d = urdfRigSpec(model, fileName).urdf;
+      defaultChain = `${d.base}:${d.tip}`;
+    } catch {
+      defaultChain = null;
+    }
+  }
+  const listed = urdfChains(model, MAX_LISTED_CHAINS).chains.map((c) => c.chain);
+  const chains = [...new Set([chain, ...(defaultChain ? [defaultChain] : []), ...listed])];
+  if (defaultChain) chains.sort((a, b) => Number(b === defaultChain) - Number(a === defaultChain));
+  const moving = `${urdf.joints.length} moving joint${urdf.joints.length === 1 ? '' : 's'}`;
+  notes.unshift(
+    chain === defaultChain
+      ? `chain ${chain} (${moving}, the longest; choose another in the panel's chain menu or with ?chain=BASE:TIP)`
+      : `chain ${chain} (${moving})`,
+  );
+  // The importer's notes on the chain (it names the command line's --chain) and on package://
+  // meshes are said here for the page.
+  notes.push(...rig.warnings.filter((w) => !w.startsWith('no chain given') && !w.includes('package://')));
+  if (model.meshes.length > 0)
+    notes.push(`${model.meshes.length} mesh${model.meshes.length === 1 ? ' is' : 'es are'} not drawn: the chain's links show as bones`);
+  return {
+    name: rig.name,
+    format: 'URDF',
+    spec: yUp(rig.spec),
+    warnings: notes,
+    makeMesh: null,
+    urdf: { bytes, fileName, chain, defaultChain, chains, joints: urdf.joints },
+  };
+}
+
+/**
+ * Parses a rig file of any supported format. `resourcePath` is where a .gltf's relative files
+ * live (for GLTFLoader); `options.chain` picks a URDF's chain (readUrdf). Throws an Error whose
+ * message names the file.
+ */
+export async function readRig(bytes: Uint8Array, fileName: string, readSibling?: SiblingReader, resourcePath = '', options: LoadRigOptions = {}): Promise<RigSource> {
+  if (/\.urdf$/i.test(fileName)) return readUrdf(bytes, fileName, options.chain);
   const rig = await loadRig(bytes, fileName, readSibling);
   const info = rig.gltf;
   const tooDeep = info !== undefined && info.treeDepth > MAX_MODEL_TREE_DEPTH;

@@ -7,7 +7,7 @@ import { errorText } from '../live/error_text.js';
 import { LiveController } from '../live/live_controller.js';
 import { LiveRig } from '../live/live_rig.js';
 import { MethodList } from '../live/methods.js';
-import type { RigSource } from '../live/rig_source.js';
+import { readRig, type RigSource } from '../live/rig_source.js';
 import { Throttle } from '../live/throttle.js';
 import type { Handles } from '../view/handles.js';
 import type { ViewClick } from '../view/picking.js';
@@ -59,6 +59,8 @@ export class PageApp {
   /** The selection readout, rewritten a few times a second while the pose changes. */
   private readonly selectionText = new Throttle(() => this.showSelection());
   private rigKey: string | null = null;
+  /** The URL's ?chain=: the chain of the URDF shown when not its longest, or the one the next .urdf opened is to show. */
+  private chain: string | null;
   private loadToken = 0;
   /** Completed loads, successful or not (for tests and tools). */
   loads = 0;
@@ -66,6 +68,7 @@ export class PageApp {
   constructor(private readonly module: IkCoreModule, private readonly el: PageElements) {
     this.methods = new MethodList(module);
     const url = readUrlState();
+    this.chain = url.chain;
     this.settings = initialSettings(url.rig && projectRig(url.rig) ? url.rig : DEFAULT_RIG, this.methods.pick(url.method));
 
     this.controller = new LiveController(el.viewport, this.settings, {
@@ -105,6 +108,7 @@ export class PageApp {
     this.panel = new Panel(el.side, this.settings, rigMenu(), this.methods, {
       rigChanged: (key) => (key === FILE_CHOICE ? this.files.choose() : void this.loadProject(key)),
       openFile: () => this.files.choose(),
+      chainChanged: (chain) => void this.loadChain(chain),
       limitsChanged: () => this.limitsChanged(),
       methodChanged: () => this.methodChanged(),
       settingsChanged: () => this.controller.invalidate(),
@@ -168,10 +172,20 @@ export class PageApp {
     await this.load(() => loadProjectRig(key), projectRig(key)?.file ?? key, key);
   }
 
-  /** Loads a user's rig file; a pose file (ik-pose JSON) is applied to the rig shown instead. */
+  /**
+   * Loads a user's rig file (a URDF's chain: the URL's ?chain=, else its longest); a pose file
+   * (ik-pose JSON) is applied to the rig shown instead.
+   */
   async loadFile(file: File): Promise<void> {
     if (/\.json$/i.test(file.name) && looksLikePoseFile(await file.slice(0, 200).text())) return this.loadPoseFile(file);
-    await this.load(() => loadUserFile(file), file.name, null);
+    await this.load(() => loadUserFile(file, { chain: this.chain ?? undefined }), file.name, null);
+  }
+
+  /** Shows chain `chain` ("BASE:TIP") of the URDF file shown (the panel's chain menu); a refused chain keeps the rig shown. */
+  async loadChain(chain: string): Promise<void> {
+    const urdf = this.controller.live?.source.urdf;
+    if (!urdf || chain === urdf.chain) return;
+    await this.load(() => readRig(urdf.bytes, urdf.fileName, undefined, '', { chain }), `${urdf.fileName} (chain ${chain})`, null);
   }
 
   /** Applies a pose file (ik-pose JSON) to the rig shown, as one undoable step; a bad file changes nothing and says why. */
@@ -235,6 +249,7 @@ export class PageApp {
       const shown = this.controller.live;
       this.showMessage(`Could not load ${what}: ${errorText(e)}${shown ? ` — still showing ${shown.name}` : ''}`, 'error');
       this.panel.showRig(this.rigKey ?? FILE_CHOICE);
+      this.showChains(shown);
       this.el.root.dataset.state = shown ? 'ready' : 'error';
       this.loads++;
       return;
@@ -260,13 +275,16 @@ export class PageApp {
     this.rigKey = key;
     this.panel.showRig(key ?? FILE_CHOICE);
     this.panel.showHumanoidLimits(live.hasHumanoidLimits);
+    this.showChains(live);
     // The rig's drag tolerances, shown to 3 significant digits in the panel.
     const t = live.tolerances();
     this.settings.tipTolerance = Number(t.tipTolerance.toPrecision(3));
     this.settings.gradientTolerance = Number(t.gradientTolerance.toPrecision(3));
     this.settings.maxJointMove = t.maxJointMove;
     this.panel.refresh();
-    writeUrlState({ rig: key, method: this.settings.method });
+    const urdf = live.source.urdf;
+    if (urdf) this.chain = urdf.chain !== urdf.defaultChain ? urdf.chain : null;
+    writeUrlState({ rig: key, method: this.settings.method, chain: this.chain });
     this.showRigName();
     this.el.root.dataset.rig = live.name;
     this.report.reset();
@@ -281,7 +299,7 @@ export class PageApp {
   // ---- panel, keyboard and click actions -----------------------------------------------------
 
   private methodChanged(): void {
-    writeUrlState({ rig: this.rigKey, method: this.settings.method });
+    writeUrlState({ rig: this.rigKey, method: this.settings.method, chain: this.chain });
     this.controller.live?.session.endSteps();
     this.controller.invalidate();
     this.report.showIdle();
@@ -307,6 +325,12 @@ export class PageApp {
     this.report.showIdle();
     this.controller.invalidate();
     this.showSelection();
+  }
+
+  /** The panel's chain menu for `live`'s URDF file, hidden for other rigs. */
+  private showChains(live: LiveRig | null): void {
+    const urdf = live?.source.urdf;
+    this.panel.showChains(urdf ? urdf.chains : null, urdf?.chain, urdf?.defaultChain);
   }
 
   private setGizmo(mode: PageSettings['gizmo']): void {
@@ -423,7 +447,9 @@ export class PageApp {
     const live = this.controller.live;
     if (!live) return;
     const n = live.session.effectors().length;
-    this.el.rigName.textContent = `${live.name} — ${live.source.format}, ${live.session.rig.numBones} bones, ${n} end effector${n === 1 ? '' : 's'}`;
+    const urdf = live.source.urdf;
+    const format = urdf ? `${live.source.format} chain ${urdf.chain}` : live.source.format;
+    this.el.rigName.textContent = `${live.name} — ${format}, ${live.session.rig.numBones} bones, ${n} end effector${n === 1 ? '' : 's'}`;
   }
 
   private showMessage(text: string, kind: 'info' | 'error'): void {

@@ -1,5 +1,5 @@
 // Files from the user: a hidden file chooser and, optionally, drag-and-drop anywhere on the page.
-export const RIG_FILE_TYPES = '.glb,.gltf,.json';
+export const RIG_FILE_TYPES = '.glb,.gltf,.json,.urdf';
 
 export class FileInput {
   private readonly input: HTMLInputElement;

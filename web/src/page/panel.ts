@@ -1,6 +1,7 @@
-// The method panel (lil-gui): rig choice, pose (undo, redo, files), method (the core's registered
-// methods), tolerances, per-frame budget, display options and the teaching actions. It edits a
-// PageSettings record and calls the page back; every label it shows is set as text by lil-gui.
+// The method panel (lil-gui): rig choice (and a URDF file's chain), pose (undo, redo, files),
+// method (the core's registered methods), tolerances, per-frame budget, display options and the
+// teaching actions. It edits a PageSettings record and calls the page back; every label it shows
+// is set as text by lil-gui.
 // Its folders open one at a time (opening one closes the others), so the panel fits the screen
 // and every folder's title is in view without scrolling.
 import GUI, { type Controller } from 'lil-gui';
@@ -11,6 +12,8 @@ import type { PageSettings } from './page_settings.js';
 export interface PanelActions {
   rigChanged(key: string): void;
   openFile(): void;
+  /** The URDF chain menu's choice, "BASE:TIP". */
+  chainChanged(chain: string): void;
   limitsChanged(): void;
   methodChanged(): void;
   settingsChanged(): void;
@@ -38,6 +41,9 @@ export class Panel {
   private readonly folders: GUI[];
   private readonly rigController: Controller;
   private readonly humanoidController: Controller;
+  /** The URDF file's chain ("BASE:TIP"), as the chain menu shows it. */
+  private readonly urdf = { chain: '' };
+  private readonly chainController: Controller;
   /** The selected target's goals, as the panel shows them. */
   private readonly target = { orientationGoal: false };
   private readonly orientationController: Controller;
@@ -57,7 +63,10 @@ export class Panel {
 
     const rig = this.gui.addFolder('Rig');
     this.rigController = rig.add(s, 'rig', rigs).name('project rig').onChange((v: string) => actions.rigChanged(v));
-    rig.add({ open: () => actions.openFile() }, 'open').name('open .glb / .gltf / .json…');
+    rig.add({ open: () => actions.openFile() }, 'open').name('open .glb / .gltf / .json / .urdf…');
+    this.chainController = rig.add(this.urdf, 'chain', []).name('chain').onChange((v: string) => actions.chainChanged(v));
+    this.chainController.domElement.title = 'the URDF robot’s serial chain shown, BASE:TIP (its tip is the end effector); ?chain=BASE:TIP in the URL picks it too';
+    this.chainController.hide();
     this.humanoidController = rig.add(s, 'humanoidLimits').name('humanoid limits').onChange(() => actions.limitsChanged());
     this.humanoidController.hide();
     rig.add(s, 'showMesh').name('show mesh').onChange(() => actions.displayChanged());
@@ -155,6 +164,17 @@ export class Panel {
   showRig(key: string): void {
     this.settings.rig = key;
     this.rigController.updateDisplay();
+  }
+
+  /**
+   * The chain menu: shown with `chains` ("BASE:TIP") and `chain` chosen for a URDF rig, the
+   * importer's default chain (`longest`) marked; hidden for any other rig (null).
+   */
+  showChains(chains: readonly string[] | null, chain = '', longest: string | null = null): void {
+    this.chainController.show(chains !== null);
+    if (!chains) return;
+    this.urdf.chain = chain;
+    this.chainController.options(Object.fromEntries(chains.map((c) => [c === longest ? `${c} (longest)` : c, c])));
   }
 
   /** Shows the humanoid-limits switch only for a rig that has humanoid limits. */

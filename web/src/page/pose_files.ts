@@ -9,7 +9,8 @@ import { MAX_POSE_CHARS, PoseFormatError, poseFromJson, poseToJson } from '../ri
 /** Why the rig shown cannot be saved as a posed .glb, or null when it can. */
 export function glbExportProblem(live: LiveRig | null): string | null {
   if (!live) return 'no rig is loaded';
-  if (!live.source.gltf) return `${live.name} is an A7 rig (bones only): there is no glTF file to pose; save the pose as .json`;
+  if (!live.source.gltf)
+    return `${live.name} is ${live.source.urdf ? 'a URDF robot' : 'an A7 rig'} (bones only): there is no glTF file to pose; save the pose as .json`;
   return null;
 }
 

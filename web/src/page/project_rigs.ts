@@ -1,7 +1,7 @@
 // The page's rigs: the project models under web/public/models/ (the rig menu and ?rig=), or a
 // file the user drops or chooses. Reading a file is web/src/live/rig_source.ts.
 import { loadRigUrl, readRig, type RigSource } from '../live/rig_source.js';
-import { RigFormatError } from '../rig/load_rig.js';
+import { RigFormatError, type LoadRigOptions } from '../rig/load_rig.js';
 import { MAX_RIG_FILE_BYTES } from '../rig/rig_limits.js';
 
 export interface ProjectRig {
@@ -54,13 +54,14 @@ export async function loadProjectRig(key: string, base: string | URL = document.
 /**
  * Loads a user's file; a .gltf's side files cannot be reached and must be embedded. A file over
  * MAX_RIG_FILE_BYTES is refused before it is read; the importer's caps (web/src/rig/gltf_budget.ts)
- * refuse the rest before three.js's GLTFLoader sees the file. Throws an Error naming the file.
+ * refuse the rest before three.js's GLTFLoader sees the file. `options.chain` picks a URDF's chain.
+ * Throws an Error naming the file.
  */
-export async function loadUserFile(file: File): Promise<RigSource> {
+export async function loadUserFile(file: File, options: LoadRigOptions = {}): Promise<RigSource> {
   if (file.size > MAX_RIG_FILE_BYTES)
     throw new RigFormatError(`${file.name}: ${file.size} bytes, more than the ${MAX_RIG_FILE_BYTES} (512 MiB) a rig file may have`);
   const bytes = new Uint8Array(await file.arrayBuffer());
   return readRig(bytes, file.name, async (uri) => {
     throw new Error(`${file.name} refers to "${uri}": choose a .glb, or a .gltf with embedded buffers`);
-  });
+  }, '', options);
 }

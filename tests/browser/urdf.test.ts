@@ -1,0 +1,236 @@
+// A URDF robot on the page (issue 31, part 4): a small 6-joint arm written here (revolute joints with
+// limits, a bent elbow at the zero pose, a fixed joint to an off-axis tool tip, a camera branch and
+// a package:// mesh) opened through the file input. Its longest chain is shown as bones, the tool tip
+// the one end effector, with a warning that meshes are not drawn; the tip is dragged with the mouse
+// to within the page's tip tolerance, then turned with an orientation goal (O, the rotate gizmo)
+// while its position holds; a bone's joint limits show. The camera chain is chosen in the panel's
+// chain menu and with ?chain= (track mode and pole handles, made for humanoids and limbs, do no
+// harm); a URDF the importer refuses (a limit upside down, a prismatic joint
+// in the chosen chain) is reported naming the joint and the rig shown stays. With the shared robots
+// (../shared/robots), Panda is opened and its tip dragged. Writes test-results/urdf-arm.png.
+import { mkdirSync } from 'node:fs';
+import { join } from 'node:path';
+
+import type { Page } from 'playwright-core';
+import { describe, expect, it } from 'vitest';
+
+import { a7Required } from '../helpers/a7_folder.js';
+import { robotsDir, robotsMissingMessage, robotsPresent } from '../helpers/robots_folder.js';
+import { openPage, renderedFrames, resultsDir } from './harness.js';
+import { dragTargetAlongY, gotoRig, panelControl, selectTarget, targetAt, tipAt, usePageServer, waitForConvergence } from './page_helpers.js';
+
+const env = usePageServer();
+
+type Point = [number, number, number];
+const distance = (a: Point, b: Point): number => Math.hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]);
+
+/** A revolute joint of the test arm. */
+const revolute = (name: string, parent: string, child: string, xyz: string, axis: string, lower: number, upper: number, rpy = '0 0 0'): string =>
+  `<joint name="${name}" type="revolute"><parent link="${parent}"/><child link="${child}"/><origin xyz="${xyz}" rpy="${rpy}"/>` +
+  `<axis xyz="${axis}"/><limit lower="${lower}" upper="${upper}" effort="10" velocity="1"/></joint>`;
+
+/** The test arm: base_link -> six revolute joints -> flange, a fixed joint to the off-axis tool0; a camera on link2. */
+function armUrdf(cameraLimits: [number, number] = [-1.0, 1.0]): string {
+  const links = ['base_link', 'link1', 'link2', 'link3', 'link4', 'link5', 'flange', 'tool0', 'camera_link', 'camera_optical_frame'];
+  return `<?xml version="1.0"?>
+<robot name="test_arm">
+  ${links.map((l) => (l === 'link1' ? `<link name="link1"><visual><geometry><mesh filename="package://test_arm/meshes/link1.stl"/></geometry></visual></link>` : `<link name="${l}"/>`)).join('\n  ')}
+  ${revolute('shoulder_pan', 'base_link', 'link1', '0 0 0.1', '0 0 1', -2.9, 2.9)}
+  ${revolute('shoulder_lift', 'link1', 'link2', '0 0.08 0.05', '0 1 0', -2.0, 2.0, '0 0.3 0')}
+  ${revolute('elbow', 'link2', 'link3', '0 -0.06 0.35', '0 1 0', -2.6, 2.6, '0 1.0 0')}
+  ${revolute('wrist_1', 'link3', 'link4', '0 0 0.3', '0 1 0', -3.0, 3.0, '0 0.5 0')}
+  ${revolute('wrist_2', 'link4', 'link5', '0 0.05 0.05', '0 0 1', -3.0, 3.0)}
+  ${revolute('wrist_3', 'link5', 'flange', '0 0 0.06', '0 1 0', -3.0, 3.0)}
+  <joint name="tool_mount" type="fixed"><parent link="flange"/><child link="tool0"/><origin xyz="0.03 0.08 0.02" rpy="0.3 -0.5 0.2"/></joint>
+  ${revolute('camera_tilt', 'link2', 'camera_link', '0 0.06 0.2', '0 1 0', ...cameraLimits)}
+  <joint name="camera_optical" type="fixed"><parent link="camera_link"/><child link="camera_optical_frame"/><origin xyz="0.04 0 0.03" rpy="-1.5708 0 -1.5708"/></joint>
+</robot>
+`;
+}
+
+/** A robot whose only chain base:tip runs through the prismatic joint "slider". */
+const sliderUrdf = `<robot name="slider_arm">
+  <link name="base"/><link name="carriage"/><link name="tip"/>
+  <joint name="slider" type="prismatic"><parent link="base"/><child link="carriage"/><axis xyz="1 0 0"/><limit lower="0" upper="0.5" effort="1" velocity="1"/></joint>
+  ${revolute('turn', 'carriage', 'tip', '0 0 0.2', '0 0 1', -1, 1)}
+</robot>`;
+
+const text = (s: string): Uint8Array => new TextEncoder().encode(s);
+
+/** Chooses `bytes` as the rig file `name` and waits until the page has dealt with it; returns the message shown. */
+async function openFile(page: Page, name: string, bytes: Uint8Array): Promise<string> {
+  const before = await page.evaluate(() => window.ikPage?.loads() ?? 0);
+  await page.setInputFiles('#rig-file', { name, mimeType: 'application/xml', buffer: Buffer.from(bytes) });
+  await page.waitForFunction((n) => (window.ikPage?.loads() ?? 0) > n, before, { timeout: 20_000 });
+  return (await page.textContent('#message')) ?? '';
+}
+
+/** The page's rig line ("name — format, N bones, M end effectors"). */
+async function rigLine(page: Page): Promise<string> {
+  return (await page.textContent('#rig-name')) ?? '';
+}
+
+/** Opens `name` and expects it shown without an error; returns the message line. */
+async function openRig(page: Page, name: string, bytes: Uint8Array): Promise<string> {
+  const message = await openFile(page, name, bytes);
+  expect(await page.getAttribute('#message', 'data-kind'), message).toBe('info');
+  expect(await page.evaluate(() => window.ikPage?.rigName())).toBe(name.replace(/\.urdf$/, ''));
+  return message;
+}
+
+/** Drags effector k's target up by `dy` with the mouse (the gizmo's Y arrow); expects the tip on it within the page's tolerance. */
+async function dragTip(page: Page, k: number, dy: number): Promise<void> {
+  await selectTarget(page, k);
+  const from = await targetAt(page, k);
+  await dragTargetAlongY(page, k, dy, 20);
+  await waitForConvergence(page);
+  const target = await targetAt(page, k), tip = await tipAt(page, k);
+  const tolerance = await page.evaluate(() => window.ikPage?.tipTolerance() ?? 0);
+  console.log(`[urdf] dragged ${(target[1] - from[1]).toFixed(4)} up: tip ${distance(tip, target).toExponential(2)} from its target (tolerance ${tolerance.toPrecision(3)})`);
+  expect(Math.abs(target[1] - from[1] - dy)).toBeLessThan(0.02 * Math.abs(dy));
+  expect(distance(tip, target)).toBeLessThan(tolerance);
+}
+
+describe('a URDF robot on the page', () => {
+  it('opens the arm as bones with its tool tip the one effector, drags and turns the tip, shows the limits', async (ctx) => {
+    const { page, errors } = await openPage(env.browser, ctx);
+    await gotoRig(page, env.url, 'lamp');
+    expect(await page.getAttribute('#rig-file', 'accept')).toContain('.urdf');
+    const message = await openRig(page, 'test_arm.urdf', text(armUrdf()));
+    console.log(`[urdf] ${await rigLine(page)} | ${message}`);
+    expect(await rigLine(page)).toBe('test_arm — URDF chain base_link:tool0, 7 bones, 1 end effector');
+    expect(message).toMatch(/^test_arm: chain base_link:tool0 \(6 moving joints, the longest; choose another in the panel's chain menu or with \?chain=BASE:TIP\)/);
+    expect(message).toMatch(/1 mesh is not drawn: the chain's links show as bones/);
+    expect(message).not.toMatch(/--chain/);
+    const names = await page.evaluate(() => window.ikPage?.boneNames() ?? []);
+    expect(names).toEqual(['shoulder_pan', 'shoulder_lift', 'elbow', 'wrist_1', 'wrist_2', 'wrist_3', 'tool0']);
+    expect(await page.evaluate(() => window.ikPage?.effectors())).toEqual([6]);
+    // The robot's +z is the page's up: the arm stands on the floor, its tool above its base.
+    const rest = await tipAt(page, 0);
+    expect(rest[1]).toBeGreaterThan(0.5);
+    // No humanoid: no humanoid-limits switch, no hips target.
+    expect(await page.isVisible('.lil-controller:has(.lil-name:text-is("humanoid limits"))')).toBe(false);
+    // The panel's chain menu lists the file's two chains, the longest chosen.
+    const chainMenu = (await panelControl(page, /^chain$/)).locator('select');
+    expect(await chainMenu.locator('option').allTextContents()).toEqual(['base_link:tool0 (longest)', 'base_link:camera_optical_frame']);
+    expect(await chainMenu.locator('option:checked').textContent()).toBe('base_link:tool0 (longest)');
+
+    // 1. The tool tip's target dragged down 0.15 m with the mouse.
+    await dragTip(page, 0, -0.15);
+
+    // 2. Its orientation goal on (O), the rotate gizmo (E) turned 30 degrees about the vertical.
+    const held = await targetAt(page, 0);
+    await page.keyboard.press('o');
+    expect(await page.evaluate(() => window.ikPage?.orientationGoal(0))).not.toBeNull();
+    await page.keyboard.press('e');
+    await page.evaluate(() => window.ikPage?.turnGizmo([0, 1, 0], 30, 8));
+    await waitForConvergence(page);
+    const error = await page.evaluate(() => window.ikPage?.orientationError(0) ?? NaN);
+    const tolerance = await page.evaluate(() => window.ikPage?.tipTolerance() ?? 0);
+    const tip = await tipAt(page, 0);
+    console.log(`[urdf] turned 30°: orientation error ${error.toExponential(2)}°, tip ${distance(tip, held).toExponential(2)} from where it was held`);
+    expect(error).toBeLessThan(0.5);
+    expect(distance(await targetAt(page, 0), held)).toBeLessThan(1e-9);
+    expect(distance(tip, held)).toBeLessThan(tolerance);
+
+    // 3. The elbow's joint limits: shift-click its bone (select only).
+    const elbow = await page.evaluate(() => window.ikPage?.boneScreen(2) ?? null);
+    if (!elbow) throw new Error('no elbow on screen');
+    await page.keyboard.down('Shift');
+    await page.mouse.click(elbow.x, elbow.y);
+    await page.keyboard.up('Shift');
+    const readout = (await page.textContent('#selection')) ?? '';
+    expect(readout).toMatch(/^elbow/);
+    expect(readout).toMatch(/a0 X \(twist\): -?\d+\.\d° in \[-149\.0°, 149\.0°\]/);
+    expect(readout).toMatch(/a1 Z \(swing\): 0\.0° in fixed at 0\.0°/);
+    expect(await page.evaluate(() => window.ikPage?.effectors())).toEqual([6]);
+
+    // The picture: the arm as bones, the tool's target with its axes, the elbow's limits.
+    await page.keyboard.press('w');
+    const view = await page.locator('#viewport').boundingBox();
+    if (!view) throw new Error('no viewport');
+    await page.mouse.move(view.x + 10, view.y + 10);
+    await renderedFrames(page, 3);
+    mkdirSync(resultsDir, { recursive: true });
+    await page.screenshot({ path: join(resultsDir, 'urdf-arm.png') });
+    expect(errors).toEqual([]);
+  });
+
+  it('chooses the camera chain in the panel and with ?chain=; refused URDFs name the joint and keep the rig', async (ctx) => {
+    const { page, errors } = await openPage(env.browser, ctx);
+    await gotoRig(page, env.url, 'lamp');
+    await openRig(page, 'test_arm.urdf', text(armUrdf()));
+    const toolTip = await tipAt(page, 0);
+
+    // The panel's chain menu: the camera chain, 3 moving joints, its tip the optical frame.
+    const chainMenu = (await panelControl(page, /^chain$/)).locator('select');
+    const before = await page.evaluate(() => window.ikPage?.loads() ?? 0);
+    await chainMenu.selectOption({ label: 'base_link:camera_optical_frame' });
+    await page.waitForFunction((n) => (window.ikPage?.loads() ?? 0) > n, before);
+    expect(await rigLine(page)).toBe('test_arm — URDF chain base_link:camera_optical_frame, 4 bones, 1 end effector');
+    expect(await page.textContent('#message')).toMatch(/^test_arm: chain base_link:camera_optical_frame \(3 moving joints\)/);
+    expect(await page.evaluate(() => window.ikPage?.boneNames())).toEqual(['shoulder_pan', 'shoulder_lift', 'camera_tilt', 'camera_optical_frame']);
+    const cameraTip = await tipAt(page, 0);
+    expect(distance(cameraTip, toolTip)).toBeGreaterThan(0.1);
+    expect(new URL(page.url()).searchParams.get('chain')).toBe('base_link:camera_optical_frame');
+    await dragTip(page, 0, -0.05);
+    // Not a humanoid: track mode (T) says why it cannot start, pole handles (P) go on and off, the tip stays on target.
+    await page.keyboard.press('t');
+    const track = (await page.textContent('#message')) ?? '';
+    console.log(`[urdf] T: ${track}`);
+    expect(track).toMatch(/^track mode: /);
+    await page.keyboard.press('p');
+    await renderedFrames(page, 3);
+    await page.keyboard.press('p');
+    await waitForConvergence(page);
+
+    // A URDF the importer refuses (the camera joint's limits upside down): the message names the joint, the camera chain stays.
+    const bad = await openFile(page, 'bad_arm.urdf', text(armUrdf([1, -1])));
+    console.log(`[urdf] refused: ${bad}`);
+    expect(await page.getAttribute('#message', 'data-kind')).toBe('error');
+    expect(bad).toMatch(/^Could not load bad_arm\.urdf: bad_arm\.urdf: .*"camera_tilt".* — still showing test_arm$/);
+    expect(await rigLine(page)).toMatch(/chain base_link:camera_optical_frame/);
+    expect(await page.getAttribute('#app', 'data-state')).toBe('ready');
+
+    // ?chain= picks the chain of the next URDF opened.
+    await gotoRig(page, env.url, 'lamp', '&chain=base_link:camera_optical_frame');
+    await openRig(page, 'test_arm.urdf', text(armUrdf()));
+    expect(await rigLine(page)).toBe('test_arm — URDF chain base_link:camera_optical_frame, 4 bones, 1 end effector');
+    expect(distance(await tipAt(page, 0), cameraTip)).toBeLessThan(1e-9);
+    expect(await (await panelControl(page, /^chain$/)).locator('select option:checked').textContent()).toBe('base_link:camera_optical_frame');
+
+    // A ?chain= through a prismatic joint: refused naming the joint, the arm stays.
+    await gotoRig(page, env.url, 'lamp', '&chain=base:tip');
+    const slider = await openFile(page, 'slider_arm.urdf', text(sliderUrdf));
+    console.log(`[urdf] refused: ${slider}`);
+    expect(slider).toBe(
+      'Could not load slider_arm.urdf: slider_arm.urdf: joint "slider" is prismatic and lies in the chain base:tip; only revolute, continuous and fixed joints can be imported — still showing lamp',
+    );
+    expect(await page.evaluate(() => window.ikPage?.rigName())).toBe('lamp');
+    // A ?chain= whose links the file does not have: the file's longest chain, with a note.
+    const other = await openRig(page, 'test_arm.urdf', text(armUrdf()));
+    expect(other).toMatch(/the chain base:tip is not in this file \(no link "base", "tip"\): took the file's longest chain/);
+    expect(await rigLine(page)).toMatch(/chain base_link:tool0/);
+    expect(new URL(page.url()).searchParams.get('chain')).toBeNull();
+    expect(errors).toEqual([]);
+  });
+
+  it('opens the shared Panda and drags its tip', async (ctx) => {
+    if (!robotsPresent) {
+      if (a7Required) throw new Error(robotsMissingMessage);
+      ctx.skip(`robots folder missing: ${robotsDir}`);
+    }
+    const { page, errors } = await openPage(env.browser, ctx);
+    await gotoRig(page, env.url, 'lamp', '&chain=panda_link0:panda_link8');
+    const before = await page.evaluate(() => window.ikPage?.loads() ?? 0);
+    await page.setInputFiles('#rig-file', join(robotsDir, 'panda.urdf'));
+    await page.waitForFunction((n) => (window.ikPage?.loads() ?? 0) > n, before, { timeout: 20_000 });
+    const message = (await page.textContent('#message')) ?? '';
+    console.log(`[urdf] ${await rigLine(page)} | ${message}`);
+    expect(await page.getAttribute('#message', 'data-kind'), message).toBe('info');
+    expect(await rigLine(page)).toBe('panda — URDF chain panda_link0:panda_link8, 8 bones, 1 end effector');
+    expect(message).toMatch(/meshes are not drawn/);
+    await dragTip(page, 0, -0.1);
+    expect(errors).toEqual([]);
+  });
+});
