@@ -37,9 +37,10 @@ double goal_objective(Kinematics& kin, const GoalSet& goals, const Eigen::Ref<co
   return 0.5 * residual.squaredNorm();
 }
 
-void goal_jacobian(const Kinematics& kin, const GoalSet& goals, Eigen::Ref<Eigen::MatrixXd> jac) {
+void goal_jacobian(const Kinematics& kin, const GoalSet& goals, Eigen::Ref<Eigen::MatrixXd> jac,
+                   Kinematics::Columns columns) {
   if (goals.plain()) {
-    kin.current_jacobian(jac);
+    kin.current_jacobian(jac, columns);
     return;
   }
   jac.setZero();
@@ -50,13 +51,19 @@ void goal_jacobian(const Kinematics& kin, const GoalSet& goals, Eigen::Ref<Eigen
     if (g.orientation) {
       const Eigen::Matrix3d R = kin.tip_rotation(bone);
       const Eigen::Matrix3d M = scale * so3_right_jacobian_inverse(so3_log(g.rotation.transpose() * R)) * R.transpose();
-      for (int j : kin.effector_chain(g.effector))
-        for (int a = 0; a < 3; ++a) jac.block<3, 1>(3 * b, 3 * j + a) = M * kin.joint_axis(j, a);
+      for (int j : kin.effector_chain(g.effector)) {
+        const int filled = kin.columns_of(j, columns);
+        for (int a = 0; a < 3; ++a)
+          if (filled & (1 << a)) jac.block<3, 1>(3 * b, 3 * j + a) = M * kin.joint_axis(j, a);
+      }
     } else {
       const Eigen::Vector3d p = kin.tip(bone);
-      for (int j : kin.effector_chain(g.effector))
+      for (int j : kin.effector_chain(g.effector)) {
+        const int filled = kin.columns_of(j, columns);
         for (int a = 0; a < 3; ++a)
-          jac.block<3, 1>(3 * b, 3 * j + a) = scale * kin.joint_axis(j, a).cross(p - kin.joint_origin(j));
+          if (filled & (1 << a))
+            jac.block<3, 1>(3 * b, 3 * j + a) = scale * kin.joint_axis(j, a).cross(p - kin.joint_origin(j));
+      }
       if (kin.floats()) jac.block<3, 3>(3 * b, kin.root_translation()) = g.scale * Eigen::Matrix3d::Identity();
     }
   }
@@ -72,6 +79,7 @@ void goal_jacobian(const Kinematics& kin, const GoalSet& goals, Eigen::Ref<Eigen
     // (the parent turns about S itself, so its S term is 0 anyway).
     for (int k = g.bone; k >= 0; k = kin.rig().bones[k].parent)
       for (int a = 0; a < 3; ++a) {
+        if (!(kin.columns_of(k, columns) & (1 << a))) continue;
         const Eigen::Vector3d axis = kin.joint_axis(k, a), origin = kin.joint_origin(k);
         Eigen::Vector3d column = d.wrist * axis.cross(T - origin);
         if (k != g.bone) column += d.shoulder * axis.cross(S - origin) + d.elbow * axis.cross(M - origin);

@@ -28,8 +28,10 @@ double goal_objective(Kinematics& kin, const GoalSet& goals, const Eigen::Ref<co
                       Eigen::Ref<Eigen::VectorXd> residual);
 
 // After kin.forward(): the Jacobian of the residual (goals.rows() x #angles, rig units per
-// degree). No allocation.
-void goal_jacobian(const Kinematics& kin, const GoalSet& goals, Eigen::Ref<Eigen::MatrixXd> jac);
+// degree). With Columns::movable the columns of fixed angles (min >= max) stay 0 except in the
+// rest rows (the solvers never read them). No allocation.
+void goal_jacobian(const Kinematics& kin, const GoalSet& goals, Eigen::Ref<Eigen::MatrixXd> jac,
+                   Kinematics::Columns columns = Kinematics::Columns::all);
 
 // The largest distance of an effector's tip from its position target (rig units, unweighted);
 // 0 without position goals.

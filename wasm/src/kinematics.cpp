@@ -51,6 +51,14 @@ void Kinematics::precompute() {
     lower_.segment<3>(3 * i) = b.min_deg;
     upper_.segment<3>(3 * i) = b.max_deg;
   }
+  zero_locked_.assign(n, 0);
+  movable_.assign(n, 0);
+  for (int i = 0; i < n; ++i)
+    for (int k = 0; k < 3; ++k) {
+      const double lo = lower_[3 * i + k], hi = upper_[3 * i + k];
+      if (lo == 0 && hi == 0) zero_locked_[i] |= 1 << k;
+      if (lo < hi) movable_[i] |= 1 << k;
+    }
   for (int i = 0; i < n; ++i) {
     const int p = rig_.bones[i].parent;
     from_parent_[i] = (p == -1) ? rest_[i] : rest_inv_[p] * rest_[i];
@@ -75,12 +83,16 @@ void Kinematics::forward(const Eigen::Ref<const Eigen::VectorXd>& angles) {
     Eigen::Isometry3d joint = (p == -1) ? from_parent_[i] : frame_[p] * from_parent_[i];
     if (p == -1 && floats()) joint.translation() += angles.segment<3>(3 * num_bones());
     Eigen::Matrix3d r = joint.linear();
+    // An angle locked at 0 whose value is +-0 turns nothing: its rotation is skipped (NaN and
+    // any other value still rotate).
+    const int locked = zero_locked_[i];
+    const double a0 = angles[3 * i], a1 = angles[3 * i + 1], a2 = angles[3 * i + 2];
     axes_[i].col(0) = r.col(0);                        // first x axis, before any rotation
-    rotate_columns(r, 1, 2, angles[3 * i] * kRadPerDeg);
+    if (!(locked & 1) || a0 != 0) rotate_columns(r, 1, 2, a0 * kRadPerDeg);
     axes_[i].col(1) = r.col(2);                        // z axis after Rx(a0)
-    rotate_columns(r, 0, 1, angles[3 * i + 1] * kRadPerDeg);
+    if (!(locked & 2) || a1 != 0) rotate_columns(r, 0, 1, a1 * kRadPerDeg);
     axes_[i].col(2) = r.col(0);                        // second x axis after Rx(a0) Rz(a1)
-    rotate_columns(r, 1, 2, angles[3 * i + 2] * kRadPerDeg);
+    if (!(locked & 4) || a2 != 0) rotate_columns(r, 1, 2, a2 * kRadPerDeg);
     frame_[i].linear() = r;
     frame_[i].translation() = joint.translation();
   }
@@ -90,14 +102,15 @@ void Kinematics::current_tips(Eigen::Ref<Eigen::VectorXd> tips) const {
   for (int k = 0; k < num_effectors(); ++k) tips.segment<3>(3 * k) = tip(rig_.effectors[k]);
 }
 
-void Kinematics::current_jacobian(Eigen::Ref<Eigen::MatrixXd> jac) const {
+void Kinematics::current_jacobian(Eigen::Ref<Eigen::MatrixXd> jac, Columns columns) const {
   jac.setZero();
   for (int k = 0; k < num_effectors(); ++k) {
     const Eigen::Vector3d p = tip(rig_.effectors[k]);
     for (int j : chains_[k]) {
       const Eigen::Vector3d r = p - frame_[j].translation();
+      const int filled = columns_of(j, columns);
       for (int a = 0; a < 3; ++a)
-        jac.block<3, 1>(3 * k, 3 * j + a) = kRadPerDeg * axes_[j].col(a).cross(r);
+        if (filled & (1 << a)) jac.block<3, 1>(3 * k, 3 * j + a) = kRadPerDeg * axes_[j].col(a).cross(r);
     }
     if (floats()) jac.block<3, 3>(3 * k, root_translation()).setIdentity();
   }

@@ -8,6 +8,11 @@
 // root, T_root = Trans(t) * rest_root * Rx Rz Rx * rest_root^-1. The solvers treat them as angles
 // with limits (the root's bounds); off, A and everything computed from it are as without it.
 // Tips: a vector of 3 * #effectors values, effector k at [3k..3k+2], in rig units.
+//
+// Locked angles cost (nearly) nothing: an angle locked at 0 (min == max == 0, as a URDF joint's a1
+// and a2, docs/urdf.md) whose value is +-0 skips its rotation in forward() (a rotation by 0 is the
+// identity: the pose is the same up to the sign of zero entries), and the solvers' Jacobian
+// (Columns::movable) leaves the columns of fixed angles (min >= max) at 0.
 #pragma once
 
 #include <Eigen/Core>
@@ -68,9 +73,14 @@ class Kinematics {
 
   // Writes the tips at the current pose (after forward()).
   void current_tips(Eigen::Ref<Eigen::VectorXd> tips) const;
+  // Which columns current_jacobian() fills: all of them, or those of the movable angles only
+  // (min < max; the columns of fixed angles stay 0: the solvers never read them, free_set.h).
+  enum class Columns { all, movable };
   // Writes the Jacobian at the current pose (after forward()). A floating root's columns are the
   // identity in every effector's rows (rig units per rig unit).
-  void current_jacobian(Eigen::Ref<Eigen::MatrixXd> jac) const;
+  void current_jacobian(Eigen::Ref<Eigen::MatrixXd> jac, Columns columns = Columns::all) const;
+  // Bit k (k in {0, 1, 2}) set when bone i's angle k is movable (min < max); 7 with `all`.
+  int columns_of(int bone, Columns columns) const { return columns == Columns::all ? 7 : movable_[bone]; }
 
   // Clamps each angle into its [min, max] limits (degrees; a floating root's bounds, rig units), in place.
   void project(Eigen::Ref<Eigen::VectorXd> angles) const;
@@ -89,6 +99,8 @@ class Kinematics {
   std::vector<Eigen::Isometry3d> from_parent_;  // rest_parent^-1 * rest_i (rest_i for a root)
   std::vector<Eigen::Isometry3d> frame_;   // T_parent * rest_i * Rx Rz Rx: canonical bone -> world
   std::vector<Eigen::Matrix3d> axes_;      // world joint axes (x, z, x) per bone
+  std::vector<unsigned char> zero_locked_;  // per bone, bit k: angle k is locked at 0 (min == max == 0)
+  std::vector<unsigned char> movable_;      // per bone, bit k: angle k is movable (min < max)
   Eigen::VectorXd lower_, upper_;
 };
 

@@ -58,6 +58,25 @@ class ProjectedNewton final : public Solver {
     work_.resize(n);
     active_set_.resize(n);
     weights_.resize(kin_.num_residuals());
+    // The tip Hessian over the movable angles only when some are fixed (a URDF joint's two locked
+    // angles): their rows and columns of H count for nothing (modify_hessian() replaces them by
+    // the identity's, and the step is 0 there), and the solver's J has no columns for them.
+    position_.resize(n);
+    fixed_angles_ = false;
+    for (int i = 0; i < n; ++i) {
+      const bool movable = kin_.lower()[i] < kin_.upper()[i];
+      position_[i] = movable ? i : -1;
+      fixed_angles_ = fixed_angles_ || !movable;
+    }
+    bones_.resize(kin_.num_bones());
+  }
+
+  // H_ += the weighted tip Hessian (weights: 3 x #effectors).
+  void add_tip_hessian(const Eigen::Ref<const Eigen::VectorXd>& weights) {
+    if (fixed_angles_)
+      add_weighted_tip_hessian(kin_, weights, position_, bones_, H_);
+    else
+      add_weighted_tip_hessian(kin_, weights, H_);
   }
 
   void reset() override { damping_.reset(opt_.lm_initial_mu); }
@@ -67,10 +86,10 @@ class ProjectedNewton final : public Solver {
     kin_.forward(a_);  // the tip Hessian reads the pose; others may have posed kin_ since
     H_.noalias() = J_.transpose() * J_;
     if (goals_.plain()) {
-      add_weighted_tip_hessian(kin_, r_, H_);
+      add_tip_hessian(r_);
     } else {
       tip_hessian_weights(goals_, r_, weights_);
-      add_weighted_tip_hessian(kin_, weights_, H_);
+      add_tip_hessian(weights_);
     }
     double s = 0;
     for (int c = 0; c < num_free_; ++c) s += std::abs(H_(free_[c], free_[c]));
@@ -179,6 +198,8 @@ class ProjectedNewton final : public Solver {
   Eigen::LLT<Eigen::MatrixXd> llt_, normal_llt_;
   Eigen::VectorXd rhs_, step_, work_, weights_;  // weights_: the tip Hessian's (3 x #effectors)
   ActiveSet active_set_;
+  std::vector<int> position_, bones_;  // the tip Hessian's angle positions (-1: fixed) and bone scratch
+  bool fixed_angles_ = false;          // some angle is fixed (min >= max)
   NielsenDamping damping_;
   double null_curvature_ = 0;
 };

@@ -354,7 +354,7 @@ bool Solver::update_derivatives(bool posed) {
     paper_jacobian(kin_, a_, opt_.fd_step_deg, fd_scratch_, fd_plus_, fd_minus_, J_);
   } else {
     if (!posed) kin_.forward(a_);
-    goal_jacobian(kin_, goals_, J_);
+    goal_jacobian(kin_, goals_, J_, Kinematics::Columns::movable);  // fixed angles never move: no columns
   }
   ++summary_.jacobian_evaluations;
   g_.noalias() = J_.transpose() * r_;
