@@ -12,7 +12,7 @@ import type { IkCoreModule } from '../ik/module.js';
 import type { RigSpec } from '../ik/rig_spec.js';
 import { type PoleLimb, poleLimbs } from '../live/pole_limbs.js';
 import { initialPole } from '../live/pole_placement.js';
-import { floatingHipsSpec, floatingRootUnit } from '../rig/floating_hips.js';
+import { floatingHipsSpec, floatingRootUnit, KNEES_STRAIGHT_DEG } from '../rig/floating_hips.js';
 import { IkRig } from '../ik/rig.js';
 import { IkSession } from '../live/session.js';
 import type { SolveOutcome, SolveSettings } from '../live/solver.js';
@@ -52,13 +52,6 @@ const HIPS = 5;
  * wrong way once.
  */
 const CROUCH_SHARE = 0.03;
-/**
- * The poles are placed only while a knee bends less than this (degrees): they show a straight leg
- * the way to bend; a bent knee keeps its way from frame to frame. Placed every frame of a crouch
- * they cost 76 µs a frame on the crouch clip (their forward kinematics and soft rows), 29 at 20
- * degrees, the same on target; at 5 degrees a knee of stress's deep crouch went astray.
- */
-const KNEES_STRAIGHT_DEG = 20;
 
 
 

@@ -11,6 +11,7 @@
 //   as its rest: a root joint's rest is its node's place, bind_pose.ts).
 // A target whose goal is off follows its bone's tip after every solve, so it is drawn on the body
 // and picks up from there when it is dragged next. No three.js and no DOM.
+import { KNEES_STRAIGHT_DEG } from '../rig/floating_hips.js';
 import type { HumanoidMap } from '../rig/humanoid_roles.js';
 import { type PoleLimb, poleLimbs } from './pole_limbs.js';
 import { initialPole } from './pole_placement.js';
@@ -29,16 +30,13 @@ import type { SolveSettings } from './solver.js';
 const TRUNK_PULL = 1;
 const TRUNK_ROLES = ['hips', 'spine', 'chest', 'upperChest', 'neck', 'head'] as const;
 
-/** The knees take poles for a crouch only while one bends less than this (degrees, its a1), as the avatar's (avatar_solver.ts KNEES_STRAIGHT_DEG). */
-const KNEES_STRAIGHT_DEG = 20;
-
 export class HipsTarget {
   /** The effectors this made free for a hips drag (bone indices), to give their goals back. */
   private freed: number[] = [];
 
-  /** The head's orientation goal is this one's: set when the head was selected (see beforeSolve). */
+  /** The head's orientation goal is this one's: set when a drag of the head began (keepHeadFrame). */
   private headFrame = false;
-  /** The effector bone selected at the last solve (-1: none). */
+  /** The effector bone dragged at the last solve (-1: none). */
   private lastDragged = -1;
   /** The knees' poles this one set for a crouch (the goals' poleBones array then), or null: the page's pole handles own the poles. */
   private kneePoles: Int32Array | null = null;

@@ -67,6 +67,15 @@ export function floatingHipsSpec(spec: RigSpec, humanoid: HumanoidMap, height: n
   return { ...spec, lower, upper, floatingRoot };
 }
 
+/**
+ * A crouch's knees take poles only while one bends less than this (degrees, its a1): the poles show
+ * a straight leg the way to bend; a bent knee keeps its way from frame to frame. Placed every
+ * frame of the avatar's crouch they cost 76 µs a frame on the crouch clip (their forward
+ * kinematics and soft rows), 29 at 20 degrees, the same on target; at 5 degrees a knee of
+ * stress's deep crouch went astray. The avatar and the page's hips target use it.
+ */
+export const KNEES_STRAIGHT_DEG = 20;
+
 /** The solver option rootUnit (rig units) for a floating humanoid `height` rig units tall. */
 export function floatingRootUnit(height: number): number {
   return ROOT_UNIT_SHARE * height;
