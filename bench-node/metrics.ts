@@ -58,6 +58,8 @@ export interface SolveResult {
   angles?: Float64Array;
   /** --goals pose: the largest angle between an effector's frame and its target orientation, degrees. */
   rotErrDeg?: number;
+  /** --goals pose: the largest component of the twists onto the targets (pose_goals.ts largestTwistComponent: rig units and radians). */
+  twistMax?: number;
 }
 
 /** A row's statistics over its solves (with its time to success, time_to_success.ts). */
@@ -101,6 +103,12 @@ export interface RowStats extends TimeToSuccess {
   /** --goals pose only (null otherwise): mean and max over the solves of the largest orientation error, degrees. */
   rot_err_avg_deg: number | null;
   rot_err_max_deg: number | null;
+  /**
+   * --goals pose with a tip tolerance (null otherwise): the share of the reachable solves with every
+   * component of the twist onto the targets within the tip tolerance, KDL's and TRAC-IK's own test
+   * (success_rate tests the distance and the angle: at most as lenient).
+   */
+  twist_rate: number | null;
 }
 
 /** One row of the tables and of --json: its statistics and the restarts every method had. */
@@ -173,5 +181,8 @@ export function summarize(key: RowKey, results: readonly SolveResult[], test: On
     flips: dragging && flips.length > 0 ? flips.filter((f) => f === 1).length : null,
     rot_err_avg_deg: goals === 'pose' ? orNull(mean(rotation)) : null,
     rot_err_max_deg: goals === 'pose' ? orNull(maxOf(rotation)) : null,
+    twist_rate: goals === 'pose' && test.tipTolerance > 0 && judged.length
+      ? judged.filter((r) => (r.twistMax ?? NaN) <= test.tipTolerance).length / judged.length
+      : null,
   };
 }

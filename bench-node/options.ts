@@ -28,7 +28,7 @@ export function isPeer(method: string): boolean {
 }
 
 /** Methods of the native engine only (ik_bench_native, built with Orocos KDL): not in the --methods default. */
-export const nativeOnlyMethods: readonly string[] = ['kdl'];
+export const nativeOnlyMethods: readonly string[] = ['kdl', 'kdl_nr_jl'];
 
 export function isNativeOnly(method: string): boolean {
   return (nativeOnlyMethods as readonly string[]).includes(method);

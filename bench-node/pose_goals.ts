@@ -69,3 +69,30 @@ export function largestRotationErrorDeg(rotations: ArrayLike<number>, goal: Arra
   for (let e = 0; 4 * e < goal.length; e++) worst = Math.max(worst, rotationAngleDeg(rotations, goal, e));
   return worst;
 }
+
+/**
+ * The largest component of the twists that take the pose's tips onto their targets, KDL's and
+ * TRAC-IK's success test (each of them within the tolerance): per effector the position's
+ * difference x, y, z (rig units; `tips` and `targets`, 3 per effector) and the world rotation
+ * vector, RADIANS, that turns the frame (`rotations`, quaternions [x, y, z, w], 4 per effector)
+ * onto its target (`goal`, the same).
+ */
+export function largestTwistComponent(tips: ArrayLike<number>, targets: ArrayLike<number>, rotations: ArrayLike<number>, goal: ArrayLike<number>): number {
+  let worst = 0;
+  for (let e = 0; 4 * e < goal.length; e++) {
+    for (let i = 0; i < 3; i++) worst = Math.max(worst, Math.abs(targets[3 * e + i] - tips[3 * e + i]));
+    // goal * conj(rotation): the world turn from the frame onto its target, as an axis times its angle
+    const [ax, ay, az, aw] = [rotations[4 * e], rotations[4 * e + 1], rotations[4 * e + 2], rotations[4 * e + 3]];
+    const norm = Math.hypot(goal[4 * e], goal[4 * e + 1], goal[4 * e + 2], goal[4 * e + 3]);
+    const [bx, by, bz, bw] = [goal[4 * e] / norm, goal[4 * e + 1] / norm, goal[4 * e + 2] / norm, goal[4 * e + 3] / norm];
+    let w = bw * aw + bx * ax + by * ay + bz * az;
+    let x = -bw * ax + bx * aw - by * az + bz * ay;
+    let y = -bw * ay + by * aw - bz * ax + bx * az;
+    let z = -bw * az + bz * aw - bx * ay + by * ax;
+    if (w < 0) [w, x, y, z] = [-w, -x, -y, -z];
+    const s = Math.hypot(x, y, z);
+    const scale = s > 0 ? (2 * Math.atan2(s, w)) / s : 2;
+    worst = Math.max(worst, Math.abs(x) * scale, Math.abs(y) * scale, Math.abs(z) * scale);
+  }
+  return worst;
+}

@@ -69,6 +69,7 @@ interface NativeResult {
   angles?: number[];
   /** --goals pose only. */
   rot_err_deg?: number | null;
+  twist_max?: number | null;
 }
 
 /** Parses RESULTS.jsonl (see ik_bench_native.cpp), `expected` lines; `file` names it in errors. */
@@ -90,6 +91,7 @@ export function decodeResults(text: string, expected: number, file: string): Sol
       ...(r.jump_move === undefined ? {} : { jointMove: num(r.jump_move) }),
       ...(r.angles === undefined ? {} : { angles: Float64Array.from(r.angles) }),
       ...(r.rot_err_deg === undefined ? {} : { rotErrDeg: num(r.rot_err_deg) }),
+      ...(r.twist_max === undefined ? {} : { twistMax: num(r.twist_max) }),
     };
   });
 }
@@ -118,7 +120,7 @@ export function checkNativeTool(methods: readonly string[]): void {
   const known = listed.status === 0 ? (JSON.parse(listed.stdout) as string[]) : [];
   const unknown = methods.find((m) => !known.includes(m));
   // kdl is there only when CMake found Orocos KDL (liborocos-kdl-dev, which the build installs).
-  const why = unknown === 'kdl' ? ' (kdl needs Orocos KDL: the package liborocos-kdl-dev)' : '';
+  const why = unknown?.startsWith('kdl') ? ` (${unknown} needs Orocos KDL: the package liborocos-kdl-dev)` : '';
   if (unknown !== undefined)
     throw new BenchError(
       `native engine: ${nativeToolPath} has no method ${quote(unknown)}${why} (it knows: ${known.join(', ') || 'none'}); rebuild it with "${build}"`,

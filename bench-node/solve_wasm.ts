@@ -8,7 +8,7 @@ import type { Goals } from '../web/src/ik/goals.js';
 import { DragGoals } from './drag_goals.js';
 import { errorOf, largestChange, pinnedDeviation, tipDistance } from './evaluate.js';
 import type { SolveResult } from './metrics.js';
-import { largestRotationErrorDeg, poseGoals } from './pose_goals.js';
+import { largestRotationErrorDeg, largestTwistComponent, poseGoals } from './pose_goals.js';
 import type { Runner, RunSettings, SolveInput } from './runner.js';
 import { project } from './targets.js';
 
@@ -78,7 +78,10 @@ export class WasmSolverRunner implements Runner {
     const during = Number.isNaN(after) ? NaN : this.replayWobble(start, input, problem, result.iterations, after);
     // With pose goals the solver's E holds the orientation rows too: judge the pose by its own
     // forward kinematics, E of the positions and the orientation error of the frames.
-    const judged = pose ? { E: errorOf(tips, input.target), rotErrDeg: largestRotationErrorDeg(this.observer.tipRotations(result.angles), pose) } : {};
+    const rotations = pose ? this.observer.tipRotations(result.angles) : null;
+    const judged = pose && rotations
+      ? { E: errorOf(tips, input.target), rotErrDeg: largestRotationErrorDeg(rotations, pose), twistMax: largestTwistComponent(tips, input.target, rotations, pose) }
+      : {};
     return {
       E: result.E,
       tipDistance: tipDistance(tips, input.target),

@@ -7,7 +7,7 @@ import { loadIk } from '../web/src/ik/module.js';
 import { IkRig } from '../web/src/ik/rig.js';
 import { errorOf, tipDistance } from './evaluate.js';
 import type { SolveResult } from './metrics.js';
-import { largestRotationErrorDeg } from './pose_goals.js';
+import { largestRotationErrorDeg, largestTwistComponent } from './pose_goals.js';
 import { makeRunner } from './runners.js';
 import { StepMeasurer } from './step_measures.js';
 import type { Runner } from './runner.js';
@@ -69,7 +69,11 @@ function run(task: WorkerTask): SolveResult[] {
       const tips = rig.tips(startAngles);
       result.E = errorOf(tips, target);
       result.tipDistance = tipDistance(tips, target);
-      if (orientations) result.rotErrDeg = largestRotationErrorDeg(rig.tipRotations(startAngles), orientations);
+      if (orientations) {
+        const rotations = rig.tipRotations(startAngles);
+        result.rotErrDeg = largestRotationErrorDeg(rotations, orientations);
+        result.twistMax = largestTwistComponent(tips, target, rotations, orientations);
+      }
     }
     // The step's joint move and flip, from where it started to the pose the runner returned.
     const from = chained ? previous : task.starts.subarray(k * m, (k + 1) * m);

@@ -250,7 +250,7 @@ describe('rigs past the limits', () => {
   it('the native tool knows the same methods as the module, and one that lacks a method is refused', () => {
     expect(() => checkNativeTool(methods)).not.toThrow();
     expect(() => checkNativeTool(['lm', 'simplex'])).toThrow(
-      new RegExp(`^native engine: .*ik_bench_native has no method "simplex" \\(it knows: ${methods.join(', ')}(, kdl)?\\); rebuild it`),
+      new RegExp(`^native engine: .*ik_bench_native has no method "simplex" \\(it knows: ${methods.join(', ')}(, kdl, kdl_nr_jl)?\\); rebuild it`),
     );
   });
 

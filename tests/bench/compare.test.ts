@@ -16,7 +16,7 @@ const ours = (over: Partial<Row>): Row => ({
   success_rate: 0.3, unreachable: 0, stop_reasons: { converged_E: 90 }, restarts: 0,
   wobble_during_avg: null, wobble_during_max: null, wobble_after_avg: null, wobble_after_max: null, jump_max_deg: null,
   wobble_unreachable_avg: null, wobble_unreachable_max: null, jumps: null, flips: null,
-  rot_err_avg_deg: null, rot_err_max_deg: null,
+  rot_err_avg_deg: null, rot_err_max_deg: null, twist_rate: null,
   t_success_median_s: 0.008, t_success_p95_s: 0.015, success_within_1ms: 0, success_within_10ms: 0.2, success_within_100ms: 0.3,
   ...over,
 });

@@ -53,6 +53,19 @@ describe('URDF import', () => {
     expect(rig.warnings).toEqual([]);
   });
 
+  it("narrows a joint's limits to its safety controller's soft limits, as MoveIt and TRAC-IK do", async () => {
+    const safe = (extra: string): string => urdfText([{ ...arm2.joints[0], extra }, ...arm2.joints.slice(1)]);
+    const deg = (r: number): number => (r * 180) / Math.PI;
+    const both = await load(safe('<safety_controller k_position="100" k_velocity="3" soft_lower_limit="-1.5" soft_upper_limit="3"/>'), 'base:tool');
+    expect([both.spec.lower[0], both.spec.upper[0]]).toEqual([deg(-1.5), deg(2.5)]); // the hard upper limit is the tighter
+    const one = await load(safe('<safety_controller k_velocity="3" soft_upper_limit="0.5"/>'), 'base:tool');
+    expect([one.spec.lower[0], one.spec.upper[0]]).toEqual([deg(-2), deg(0.5)]);
+    await expectRefused(safe('<safety_controller k_velocity="3" soft_lower_limit="2.6"/>'),
+      /joint "j1": its <safety_controller> soft limits leave no range within <limit> \(2\.6 > 2\.5 radians\)/, 'base:tool');
+    await expectRefused(safe('<safety_controller k_velocity="3" soft_lower_limit="x"/>'),
+      /joint "j1": <safety_controller soft_lower_limit> = "x" is not a finite number/, 'base:tool');
+  });
+
   it('gives a continuous joint -180 .. 180 degrees and folds fixed joints away', async () => {
     const rig = await load(urdfText(arm4.joints), arm4.chain);
     expect(rig.spec.names).toEqual(['j1', 'j2', 'j3', 'j4', 'l4']);

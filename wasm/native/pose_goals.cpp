@@ -36,4 +36,18 @@ double largest_rotation_error_deg(Kinematics& kin, const Eigen::Ref<const Eigen:
   return worst;
 }
 
+double largest_twist_component(Kinematics& kin, const Eigen::Ref<const Eigen::VectorXd>& angles,
+                               const Eigen::Ref<const Eigen::VectorXd>& targets,
+                               const Eigen::Ref<const Eigen::VectorXd>& quaternions) {
+  kin.forward(angles);
+  double worst = 0;
+  for (int e = 0; e < kin.num_effectors(); ++e) {
+    const int bone = kin.rig().effectors[e];
+    worst = std::max(worst, (targets.segment<3>(3 * e) - kin.tip(bone)).cwiseAbs().maxCoeff());
+    const Eigen::AngleAxisd turn(rotation_of(quaternions.data() + 4 * e) * kin.tip_rotation(bone).transpose());
+    worst = std::max(worst, (turn.angle() * turn.axis()).cwiseAbs().maxCoeff());
+  }
+  return worst;
+}
+
 }  // namespace ik::bench

@@ -24,4 +24,12 @@ Eigen::Matrix3d rotation_of(const double* q);
 double largest_rotation_error_deg(Kinematics& kin, const Eigen::Ref<const Eigen::VectorXd>& angles,
                                   const Eigen::Ref<const Eigen::VectorXd>& quaternions);
 
+// The largest component of the twists that take the tips at `angles` onto their poses (KDL's and
+// TRAC-IK's success test: each within the tolerance): per effector the position's difference x, y,
+// z (rig units; `targets`, 3 per effector) and the world rotation vector, radians, that turns the
+// frame onto its target (`quaternions`, x, y, z, w per effector). Poses `kin` at `angles`.
+double largest_twist_component(Kinematics& kin, const Eigen::Ref<const Eigen::VectorXd>& angles,
+                               const Eigen::Ref<const Eigen::VectorXd>& targets,
+                               const Eigen::Ref<const Eigen::VectorXd>& quaternions);
+
 }  // namespace ik::bench

@@ -8,10 +8,12 @@
 //                   [--max-joint-move D] [--page-goals ROWS]
 //                   [--goals position|pose] [--orientation-tol DEG]
 //   ik_bench_native --list-methods     prints the methods it knows (the core's registry, the
-//                                      default first, then "kdl" when built with Orocos KDL) as a
-//                                      JSON array of names
+//                                      default first, then "kdl" and "kdl_nr_jl" when built with
+//                                      Orocos KDL) as a JSON array of names
 // Method "kdl" (native builds with Orocos KDL only, native/kdl/kdl_solver.h) solves with KDL's
-// tree solvers under the same tolerances, time budget and restarts.
+// tree solvers under the same tolerances, time budget and restarts. Method "kdl_nr_jl"
+// (native/kdl/kdl_nr_jl.h) is KDL's ChainIkSolverPos_NR_JL as TRAC-IK's harness runs it: whole
+// poses of one end effector, one iteration per call until success or the time budget.
 // --tip-tol Z > 0 makes "on target" every tip within Z (rig units) of its target (SolverOptions::
 // tip_tolerance) instead of E < Y. --max-joint-move D > 0 caps how far a joint moves in one solve
 // (SolverOptions::max_joint_move, rig units). --page-goals ROWS: records with a dragged effector
@@ -37,7 +39,8 @@
 //    "stop_reason", "wobble_during", "wobble_after", "tip_distance", "jump_deg", "jump_move"},
 //   "angles" (records with a dragged effector), and with --goals
 //   pose "rot_err_deg": the largest angle of an effector's frame from its target orientation at the
-//   solution (degrees, from forward kinematics of the returned angles); E is then the positions'
+//   solution (degrees, from forward kinematics of the returned angles) and "twist_max" (pose_goals.h
+//   largest_twist_component); E is then the positions'
 //   1/2 |x(A) - x_b|^2 at the solution, from forward kinematics too (the solver's E holds the
 //   orientation rows as well).
 // `seconds` is steady_clock around Solver::solve(). tip_distance: the largest distance of an
@@ -70,6 +73,7 @@
 #include "solvers/solver.h"
 #include "solvers/solver_registry.h"
 #ifdef IK_HAVE_KDL
+#include "../native/kdl/kdl_nr_jl.h"
 #include "../native/kdl/kdl_solver.h"
 #endif
 
@@ -252,6 +256,7 @@ void list_methods() {
   std::vector<std::string> names = ik::solver_names();
 #ifdef IK_HAVE_KDL
   names.push_back("kdl");
+  names.push_back("kdl_nr_jl");
 #endif
   std::printf("%s\n", nlohmann::json(names).dump().c_str());
 }
@@ -269,12 +274,15 @@ struct Outcome {
 class Method {
  public:
   Method(const Args& args, ik::Kinematics& kin) : args_(args), kin_(kin) {
-    if (args.method == "kdl") {
+    if (args.method == "kdl" || args.method == "kdl_nr_jl") {
 #ifdef IK_HAVE_KDL
-      kdl_ = std::make_unique<ik::kdl::KdlSolver>(kin.rig(), args.options);
+      if (args.method == "kdl")
+        kdl_ = std::make_unique<ik::kdl::KdlSolver>(kin.rig(), args.options);
+      else
+        nr_jl_ = std::make_unique<ik::kdl::KdlNrJl>(kin.rig(), args.options);
       return;
 #else
-      throw std::invalid_argument("method kdl: this build has no Orocos KDL (install liborocos-kdl-dev: "
+      throw std::invalid_argument("method " + args.method + ": this build has no Orocos KDL (install liborocos-kdl-dev: "
                                   "scripts/setup.sh --native, then rebuild build/native)");
 #endif
     }
@@ -298,8 +306,10 @@ class Method {
     const ik::Goals* goals = drag_goals && !kdl_active() ? drag_goals : pose ? &goals_ : nullptr;
     const auto t0 = std::chrono::steady_clock::now();
 #ifdef IK_HAVE_KDL
-    if (kdl_) {
-      const ik::kdl::KdlSummary& s = pose ? kdl_->solve(start, target, rotations_) : kdl_->solve(start, target);
+    if (kdl_ || nr_jl_) {
+      const ik::kdl::KdlSummary& s = nr_jl_ ? nr_jl_->solve(start, target, rotations_)
+                                     : pose ? kdl_->solve(start, target, rotations_)
+                                            : kdl_->solve(start, target);
       seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       return {s.angles, s.E, s.gradient_norm, s.iterations, s.function_evaluations, s.jacobian_evaluations, s.stop_reason,
               s.stop_reason != "invalid_input"};
@@ -313,7 +323,7 @@ class Method {
   }
 
   // Wobble during a solve of `iterations` iterations from `start` that ended `after` (rig units)
-  // off the pinned targets (see replay_wobble).
+  // off the pinned targets (see replay_wobble). Rigs of two or more effectors only: never kdl_nr_jl.
   double wobble(ik::Kinematics& observer, const Eigen::VectorXd& start, const Eigen::VectorXd& target, int dragged,
                 int iterations, double after, Eigen::VectorXd& tips) {
 #ifdef IK_HAVE_KDL
@@ -335,7 +345,7 @@ class Method {
  private:
   bool kdl_active() const {
 #ifdef IK_HAVE_KDL
-    return kdl_ != nullptr;
+    return kdl_ != nullptr || nr_jl_ != nullptr;
 #else
     return false;
 #endif
@@ -348,6 +358,7 @@ class Method {
   std::vector<Eigen::Matrix3d> rotations_;  // their orientations, for kdl
 #ifdef IK_HAVE_KDL
   std::unique_ptr<ik::kdl::KdlSolver> kdl_;
+  std::unique_ptr<ik::kdl::KdlNrJl> nr_jl_;
 #endif
 };
 
@@ -422,6 +433,7 @@ void run(const Args& args) {
     if (dragged >= 0 && valid) line["angles"] = std::vector<double>(previous.data(), previous.data() + previous.size());
     if (args.pose) {  // judged from forward kinematics of the returned angles, as the bench does
       line["rot_err_deg"] = valid ? ik::bench::largest_rotation_error_deg(observer, previous, orientations) : nan;
+      line["twist_max"] = valid ? ik::bench::largest_twist_component(observer, previous, target, orientations) : nan;
       if (valid) {
         observer.tips(previous, tips);
         E = 0.5 * (tips - target).squaredNorm();

@@ -172,7 +172,11 @@ export interface JointGeometry {
   rpy: [number, number, number];
   /** <axis xyz> as a unit vector (URDF's default is 1 0 0); read for revolute and continuous joints only (a fixed joint's may be 0 0 0). */
   axis: [number, number, number];
-  /** <limit lower upper>, radians; undefined without a <limit>. */
+  /**
+   * <limit lower upper>, radians, narrowed to <safety_controller soft_lower_limit soft_upper_limit>
+   * where those are given (the range a controller keeps the joint in, as MoveIt and TRAC-IK read
+   * it); undefined without a <limit>.
+   */
   limit?: { lower: number; upper: number };
 }
 
@@ -215,8 +219,18 @@ export function readJointGeometry(joint: UrdfJoint, file: string): JointGeometry
       const text = attribute(limit, name);
       return text === undefined ? 0 : number(text, `<limit ${name}>`); // URDF's default is 0
     };
-    const lower = side('lower'), upper = side('upper');
+    let lower = side('lower'), upper = side('upper');
     if (lower > upper) failIn(file, `${where}: <limit lower="${lower}"> is above upper="${upper}"`);
+    const safety = only('safety_controller');
+    const soft = (name: string): number | undefined => {
+      const text = safety && attribute(safety, name);
+      return text === undefined ? undefined : number(text, `<safety_controller ${name}>`);
+    };
+    const softLower = soft('soft_lower_limit'), softUpper = soft('soft_upper_limit');
+    if (softLower !== undefined) lower = Math.max(lower, softLower);
+    if (softUpper !== undefined) upper = Math.min(upper, softUpper);
+    if (lower > upper)
+      failIn(file, `${where}: its <safety_controller> soft limits leave no range within <limit> (${lower} > ${upper} radians)`);
     geometry.limit = { lower, upper };
   }
   return geometry;
