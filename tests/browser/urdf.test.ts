@@ -141,8 +141,10 @@ describe('a URDF robot on the page', () => {
     await page.keyboard.up('Shift');
     const readout = (await page.textContent('#selection')) ?? '';
     expect(readout).toMatch(/^elbow/);
-    expect(readout).toMatch(/a0 X \(twist\): -?\d+\.\d° in \[-149\.0°, 149\.0°\]/);
-    expect(readout).toMatch(/a1 Z \(swing\): 0\.0° in fixed at 0\.0°/);
+    // A hinge: one angle about its axis, no bend or twist.
+    expect(readout).toMatch(/angle about its axis \(a0\): -?\d+\.\d° in \[-149\.0°, 149\.0°\]/);
+    expect(readout).toContain('a hinge: one angle about its axis (a1, a2 fixed at 0)');
+    expect(readout).not.toMatch(/twist/);
     expect(await page.evaluate(() => window.ikPage?.effectors())).toEqual([6]);
 
     // The picture: the arm as bones, the tool's target with its axes, the elbow's limits.

@@ -4,7 +4,8 @@
 import { Quaternion, Vector3 } from 'three';
 import { describe, expect, it } from 'vitest';
 
-import { bendAndTwist } from '../../web/src/page/selection.js';
+import type { RigSpec } from '../../web/src/ik/rig_spec.js';
+import { bendAndTwist, describeHinge, isHinge } from '../../web/src/page/selection.js';
 
 const X = new Vector3(1, 0, 0), Z = new Vector3(0, 0, 1), RAD = Math.PI / 180;
 
@@ -39,5 +40,21 @@ describe('a joint read as bend and twist from rest', () => {
       // The same twist up to a whole turn (a twist of +-180 reads either way).
       expect(Math.abs(((got.twist - want.twist + 540) % 360) - 180)).toBeLessThan(1e-6);
     }
+  });
+});
+
+describe('hinges (a URDF joint: a0 moves, a1 and a2 fixed at 0)', () => {
+  const spec = {
+    parents: Int32Array.of(-1, 0, 1),
+    lower: Float64Array.of(-166, 0, 0, -180, 0, 0, -30, -40, 0),
+    upper: Float64Array.of(166, 0, 0, 180, 0, 0, 30, 40, 0),
+  } as unknown as RigSpec;
+
+  it('tells a hinge from a bone of two or three angles', () => {
+    expect([0, 1, 2].map((i) => isHinge(spec, i))).toEqual([true, true, false]);
+  });
+
+  it('reads its one angle and its limits', () => {
+    expect(describeHinge(spec, 0, Float64Array.of(12.345, 0, 0, 0, 0, 0, 0, 0, 0))).toBe('angle about its axis (a0): 12.3° in [-166.0°, 166.0°]');
   });
 });

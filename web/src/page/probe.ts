@@ -154,7 +154,7 @@ export function makeProbe(app: PageApp): PageProbe {
       const live = controller.live;
       if (!live || i < 0 || i >= live.session.rig.numBones) return null;
       live.view.boneBase(i, a);
-      live.view.boneTip(i, b);
+      live.view.glyphEnd(i, b);
       return stage.toScreen(a.lerp(b, 0.5));
     },
     selectedTarget: () => controller.handles.selected,

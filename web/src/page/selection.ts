@@ -23,6 +23,22 @@ export function describeLimits(spec: RigSpec, i: number, angles: Float64Array): 
 }
 
 /**
+ * Whether bone i of `spec` is a hinge: a0 moves, a1 and a2 are fixed at 0 (a URDF revolute or
+ * continuous joint, docs/urdf.md): one angle about the bone's x axis.
+ */
+export function isHinge(spec: RigSpec, i: number): boolean {
+  const fixedAtZero = (k: number): boolean => spec.lower[3 * i + k] === 0 && spec.upper[3 * i + k] === 0;
+  return spec.lower[3 * i] < spec.upper[3 * i] && fixedAtZero(1) && fixedAtZero(2);
+}
+
+/** The readout line of hinge bone i (isHinge): its one angle (degrees) and its limits. */
+export function describeHinge(spec: RigSpec, i: number, angles: Float64Array): string {
+  const lo = spec.lower[3 * i], hi = spec.upper[3 * i];
+  const range = unbounded(lo, hi) ? 'free' : `[${lo.toFixed(1)}°, ${hi.toFixed(1)}°]`;
+  return `angle about its axis (a0): ${angles[3 * i].toFixed(1)}° in ${range}`;
+}
+
+/**
  * A joint's turn from its rest read as a bend and a twist (degrees), from its XZX angles a0, a1,
  * a2 (degrees): Rx(a0) Rz(a1) Rx(a2) = S Rx(a0 + a2) with S = Rx(a0) Rz(a1) Rx(-a0) a swing about
  * an axis across the bone, so the bone bends by |a1| (in the plane a0 picks) and twists about itself
@@ -51,16 +67,22 @@ export function showSelection(box: HTMLElement, live: LiveRig | null, humanoidLi
   const effector = live.session.effectors().includes(bone) ? ' (end effector)' : '';
   title.textContent = `${spec.names[bone] || `bone ${bone}`}${effector}`;
   const list = document.createElement('ul');
-  for (const line of describeLimits(spec, bone, angles)) {
+  // A hinge (a robot's joint) has one angle: it neither bends nor twists as a bone of three does.
+  const hinge = isHinge(spec, bone);
+  for (const line of hinge ? [describeHinge(spec, bone, angles)] : describeLimits(spec, bone, angles)) {
     const li = document.createElement('li');
     li.textContent = line;
     list.append(li);
   }
-  const { bend, twist } = bendAndTwist(angles[3 * bone], angles[3 * bone + 1], angles[3 * bone + 2]);
   const turn = document.createElement('small');
   turn.className = 'from-rest';
-  turn.textContent = `from rest: bent ${bend.toFixed(1)}°, twisted ${twist.toFixed(1)}°`;
-  turn.title = 'a0 picks the plane the bone bends in, a1 bends it in that plane, a0 + a2 twists it about itself: at rest a0 and a2 cancel';
+  if (hinge) {
+    turn.textContent = 'a hinge: one angle about its axis (a1, a2 fixed at 0)';
+  } else {
+    const { bend, twist } = bendAndTwist(angles[3 * bone], angles[3 * bone + 1], angles[3 * bone + 2]);
+    turn.textContent = `from rest: bent ${bend.toFixed(1)}°, twisted ${twist.toFixed(1)}°`;
+    turn.title = 'a0 picks the plane the bone bends in, a1 bends it in that plane, a0 + a2 twists it about itself: at rest a0 and a2 cancel';
+  }
   box.append(title, list, turn, document.createElement('br'));
   if (live.hasHumanoidLimits) {
     const source = document.createElement('small');

@@ -11,6 +11,7 @@ import {
   Matrix4,
   MeshStandardMaterial,
   type Object3D,
+  Quaternion,
   type Raycaster,
   SphereGeometry,
   Vector3,
@@ -38,6 +39,9 @@ const mRest = new Matrix4();
 const mBone = new Matrix4();
 const mScale = new Matrix4();
 const v = new Vector3();
+const v2 = new Vector3();
+const ORIGIN = new Vector3();
+const X_AXIS = new Vector3(1, 0, 0);
 
 /** An elongated octahedron from (0,0,0) to (1,0,0), the classic bone glyph. */
 function boneGeometry(): BufferGeometry {
@@ -64,6 +68,13 @@ export class RigView {
   private readonly bones: InstancedMesh;
   private readonly joints: InstancedMesh;
   private readonly boneWorld: Float64Array; // 16 per bone, column-major (three.js), bone frame
+  /**
+   * Per bone, how its glyph lies in its frame: its turn from the x axis and its length. Along x by
+   * the bone's length, except for a bone whose one child's head lies elsewhere (a URDF link, whose
+   * x axis is its joint's axis and whose next joint sits off it): from its head to that child's.
+   */
+  private readonly glyphTurn: Quaternion[];
+  private readonly glyphLength: Float64Array;
   private mesh: MeshBinding | null = null;
   /** What the bone colours show now (recolor() skips the work when neither changed). */
   private colored: { effectors: Int32Array | null; selected: number | null } = { effectors: null, selected: null };
@@ -79,6 +90,24 @@ export class RigView {
       box.expandByPoint(v.set(spec.lengths[i], 0, 0).applyMatrix4(mBone));
     }
     this.size = Math.max(box.getSize(v).length(), 1e-3);
+    this.glyphTurn = Array.from({ length: n }, () => new Quaternion());
+    this.glyphLength = Float64Array.from(spec.lengths);
+    const children = new Int32Array(n), child = new Int32Array(n).fill(-1);
+    for (let i = 0; i < n; i++) {
+      const p = spec.parents[i];
+      if (p < 0) continue;
+      children[p]++;
+      child[p] = i;
+    }
+    for (let i = 0; i < n; i++) {
+      if (children[i] !== 1 || spec.lengths[i] <= 0) continue;
+      fromRowMajor(mRest, spec.rest, 16 * i);
+      fromRowMajor(mBone, spec.rest, 16 * child[i]);
+      const local = v.setFromMatrixPosition(mBone).applyMatrix4(mRest.invert()); // the child's head in bone i's frame
+      if (local.distanceTo(v2.set(spec.lengths[i], 0, 0)) <= 1e-6 * this.size || local.length() === 0) continue;
+      this.glyphLength[i] = local.length();
+      this.glyphTurn[i].setFromUnitVectors(X_AXIS, local.normalize());
+    }
 
     const boneMat = new MeshStandardMaterial({
       color: 0xffffff, roughness: 0.5, metalness: 0.1, depthTest: false, transparent: true, opacity: ghost ? 0.3 : 0.92,
@@ -127,9 +156,9 @@ export class RigView {
     for (let i = 0; i < n; i++) {
       this.frameOf(poses, i, mBone);
       mBone.toArray(this.boneWorld, 16 * i);
-      const len = this.spec.lengths[i];
+      const len = this.glyphLength[i];
       const thick = Math.min(len, this.size * 0.25);
-      mScale.makeScale(len, thick, thick);
+      mScale.compose(ORIGIN, this.glyphTurn[i], v2.set(len, thick, thick));
       this.bones.setMatrixAt(i, mPose.multiplyMatrices(mBone, mScale));
       v.setFromMatrixPosition(mBone);
       this.joints.setMatrixAt(i, mPose.makeScale(jointRadius, jointRadius, jointRadius).setPosition(v));
@@ -152,6 +181,12 @@ export class RigView {
 
   boneTip(i: number, out: Vector3): Vector3 {
     return out.set(this.spec.lengths[i], 0, 0).applyMatrix4(this.boneFrame(i, mBone));
+  }
+
+  /** Where bone i's glyph ends (world, at the last update): its tip, or its one child's head (glyphTurn). */
+  glyphEnd(i: number, out: Vector3): Vector3 {
+    this.bones.getMatrixAt(i, mBone);
+    return out.set(1, 0, 0).applyMatrix4(mBone);
   }
 
   /** Bounds of the bones (and mesh) at the last update. */
