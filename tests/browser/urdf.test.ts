@@ -29,12 +29,32 @@ const revolute = (name: string, parent: string, child: string, xyz: string, axis
   `<joint name="${name}" type="revolute"><parent link="${parent}"/><child link="${child}"/><origin xyz="${xyz}" rpy="${rpy}"/>` +
   `<axis xyz="${axis}"/><limit lower="${lower}" upper="${upper}" effort="10" velocity="1"/></joint>`;
 
+/** The arm's visuals: a box mesh on link1 at the link's origin, one on link3 off its origin (0.1 along its z), both package:// files. */
+const VISUALS: Record<string, string> = {
+  link1: '<visual><geometry><mesh filename="package://test_arm/meshes/link1.stl"/></geometry></visual>',
+  link3: '<visual><origin xyz="0 0 0.1"/><geometry><mesh filename="package://test_arm/meshes/link3.stl"/></geometry><material name="orange"><color rgba="1 0.5 0 1"/></material></visual>',
+};
+
+/** An ASCII STL box of half-size `h` (metres) centred on its origin: 12 triangles. */
+function boxStl(h: number): Uint8Array {
+  const c = [[-h, -h, -h], [h, -h, -h], [h, h, -h], [-h, h, -h], [-h, -h, h], [h, -h, h], [h, h, h], [-h, h, h]];
+  const faces = [[0, 2, 1], [0, 3, 2], [4, 5, 6], [4, 6, 7], [0, 1, 5], [0, 5, 4], [2, 3, 7], [2, 7, 6], [1, 2, 6], [1, 6, 5], [0, 4, 7], [0, 7, 3]];
+  const facet = (f: number[]): string => {
+    const [a, b, d] = f.map((i) => c[i]);
+    const u = [0, 1, 2].map((k) => b[k] - a[k]), v = [0, 1, 2].map((k) => d[k] - a[k]);
+    const n = [u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]];
+    const len = Math.hypot(n[0], n[1], n[2]);
+    return `facet normal ${n.map((x) => x / len).join(' ')}\nouter loop\n${f.map((i) => `vertex ${c[i].join(' ')}`).join('\n')}\nendloop\nendfacet`;
+  };
+  return new TextEncoder().encode(`solid box\n${faces.map(facet).join('\n')}\nendsolid box\n`);
+}
+
 /** The test arm: base_link -> six revolute joints -> flange, a fixed joint to the off-axis tool0; a camera on link2. */
 function armUrdf(cameraLimits: [number, number] = [-1.0, 1.0]): string {
   const links = ['base_link', 'link1', 'link2', 'link3', 'link4', 'link5', 'flange', 'tool0', 'camera_link', 'camera_optical_frame'];
   return `<?xml version="1.0"?>
 <robot name="test_arm">
-  ${links.map((l) => (l === 'link1' ? `<link name="link1"><visual><geometry><mesh filename="package://test_arm/meshes/link1.stl"/></geometry></visual></link>` : `<link name="${l}"/>`)).join('\n  ')}
+  ${links.map((l) => (VISUALS[l] ? `<link name="${l}">${VISUALS[l]}</link>` : `<link name="${l}"/>`)).join('\n  ')}
   ${revolute('shoulder_pan', 'base_link', 'link1', '0 0 0.1', '0 0 1', -2.9, 2.9)}
   ${revolute('shoulder_lift', 'link1', 'link2', '0 0.08 0.05', '0 1 0', -2.0, 2.0, '0 0.3 0')}
   ${revolute('elbow', 'link2', 'link3', '0 -0.06 0.35', '0 1 0', -2.6, 2.6, '0 1.0 0')}
@@ -100,7 +120,7 @@ describe('a URDF robot on the page', () => {
     console.log(`[urdf] ${await rigLine(page)} | ${message}`);
     expect(await rigLine(page)).toBe('test_arm — URDF chain base_link:tool0, 7 bones, 1 end effector');
     expect(message).toMatch(/^test_arm: chain base_link:tool0 \(6 moving joints, the longest; choose another in the panel's chain menu or with \?chain=BASE:TIP\)/);
-    expect(message).toMatch(/1 mesh is not drawn: the chain's links show as bones/);
+    expect(message).toMatch(/2 mesh files are not beside it \(drop the robot's folder to see them\): the chain's links show as bones/);
     expect(message).not.toMatch(/--chain/);
     const names = await page.evaluate(() => window.ikPage?.boneNames() ?? []);
     expect(names).toEqual(['shoulder_pan', 'shoulder_lift', 'elbow', 'wrist_1', 'wrist_2', 'wrist_3', 'tool0']);
@@ -155,6 +175,47 @@ describe('a URDF robot on the page', () => {
     await renderedFrames(page, 3);
     mkdirSync(resultsDir, { recursive: true });
     await page.screenshot({ path: join(resultsDir, 'urdf-arm.png') });
+    expect(errors).toEqual([]);
+  });
+
+  it('draws the meshes chosen with it, each moving with its link', async (ctx) => {
+    const { page, errors } = await openPage(env.browser, ctx);
+    await gotoRig(page, env.url, 'lamp');
+    const before = await page.evaluate(() => window.ikPage?.loads() ?? 0);
+    // As a user picks the robot's files together: the URDF and its two meshes (plus one it does not name).
+    await page.setInputFiles('#rig-file', [
+      { name: 'link1.stl', mimeType: 'model/stl', buffer: Buffer.from(boxStl(0.03)) },
+      { name: 'test_arm.urdf', mimeType: 'application/xml', buffer: Buffer.from(text(armUrdf())) },
+      { name: 'link3.stl', mimeType: 'model/stl', buffer: Buffer.from(boxStl(0.04)) },
+      { name: 'notes.txt', mimeType: 'text/plain', buffer: Buffer.from('not a mesh') },
+    ]);
+    await page.waitForFunction((n) => (window.ikPage?.loads() ?? 0) > n, before, { timeout: 20_000 });
+    const message = (await page.textContent('#message')) ?? '';
+    console.log(`[urdf] with meshes: ${await rigLine(page)} | ${message}`);
+    expect(await page.getAttribute('#message', 'data-kind'), message).toBe('info');
+    expect(message).not.toMatch(/mesh/);
+    expect(await page.evaluate(() => window.ikPage?.rigName())).toBe('test_arm');
+    // link3's box (half-size 0.04, 0.1 along link3's z from its origin) rides with the elbow's bone:
+    // its centre keeps its distances from the elbow's joint and from wrist_1's (both on link3).
+    const centre = async (): Promise<Point> => {
+      const box = await page.evaluate(() => window.ikPage?.objectBounds('link3') ?? null);
+      if (!box) throw new Error('link3 is not drawn');
+      expect(box.max[0] - box.min[0]).toBeGreaterThan(0.079); // the whole box, not an empty group
+      return [0, 1, 2].map((i) => (box.min[i] + box.max[i]) / 2) as Point;
+    };
+    const joint = async (bone: number): Promise<Point> => (await page.evaluate((b) => window.ikPage?.boneBase(b) ?? null, bone))!;
+    const rest = await centre();
+    const restElbow = distance(rest, await joint(2)), restWrist = distance(rest, await joint(3));
+    expect(restElbow).toBeGreaterThan(0.09);
+    expect(await page.evaluate(() => window.ikPage?.objectBounds('link1') ?? null)).not.toBeNull();
+    await dragTip(page, 0, 0.1);
+    const moved = await centre();
+    console.log(`[urdf] link3's box moved ${distance(moved, rest).toFixed(4)}; from the elbow ${restElbow.toFixed(5)} -> ${distance(moved, await joint(2)).toFixed(5)}`);
+    expect(distance(moved, rest)).toBeGreaterThan(0.01);
+    expect(Math.abs(distance(moved, await joint(2)) - restElbow)).toBeLessThan(1e-4);
+    expect(Math.abs(distance(moved, await joint(3)) - restWrist)).toBeLessThan(1e-4);
+    mkdirSync(resultsDir, { recursive: true });
+    await page.screenshot({ path: join(resultsDir, 'urdf-meshes.png') });
     expect(errors).toEqual([]);
   });
 
@@ -231,7 +292,7 @@ describe('a URDF robot on the page', () => {
     console.log(`[urdf] ${await rigLine(page)} | ${message}`);
     expect(await page.getAttribute('#message', 'data-kind'), message).toBe('info');
     expect(await rigLine(page)).toBe('panda — URDF chain panda_link0:panda_link8, 8 bones, 1 end effector');
-    expect(message).toMatch(/meshes are not drawn/);
+    expect(message).toMatch(/mesh files are not beside it/);
     await dragTip(page, 0, -0.1);
     expect(errors).toEqual([]);
   });

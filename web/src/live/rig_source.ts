@@ -12,7 +12,7 @@ import type { HumanoidMap } from '../rig/humanoid_roles.js';
 import { loadRig, specWithFileLimits, type GltfRigInfo, type LoadRigOptions, type SiblingReader } from '../rig/load_rig.js';
 import { multiply } from '../rig/mat4.js';
 import { urdfChains } from '../rig/urdf_chains.js';
-import { parseUrdfModel } from '../rig/urdf_model.js';
+import { parseUrdfModel, URDF_MESH_FORMATS } from '../rig/urdf_model.js';
 import { urdfRigSpec } from '../rig/urdf_rig.js';
 import { bonesFromGltf } from '../three/find_bones.js';
 import { PoseWriter } from '../three/pose_writer.js';
@@ -59,6 +59,8 @@ export interface UrdfSource {
   chains: string[];
   /** The file's revolute and continuous joints in `chain`, bone k moving joint k. */
   joints: string[];
+  /** Reads the files beside it (its meshes), as it was read; absent: none. */
+  readSibling?: SiblingReader;
 }
 
 /** A glTF rig's file as read: what web/src/three/pose_glb.ts needs to write it posed. */
@@ -144,7 +146,7 @@ const MAX_LISTED_CHAINS = 100;
  * (a ?chain= left from another file) gives the default chain and a warning; any other refusal of
  * the importer (a prismatic joint in the chain, a chain that is not serial) is thrown.
  */
-async function readUrdf(bytes: Uint8Array, fileName: string, wanted: string | undefined): Promise<RigSource> {
+async function readUrdf(bytes: Uint8Array, fileName: string, wanted: string | undefined, readSibling?: SiblingReader): Promise<RigSource> {
   const model = parseUrdfModel(bytes, fileName);
   const notes: string[] = [];
   if (wanted !== undefined) {
@@ -178,15 +180,27 @@ async function readUrdf(bytes: Uint8Array, fileName: string, wanted: string | un
   // The importer's notes on the chain (it names the command line's --chain) and on package://
   // meshes are said here for the page.
   notes.push(...rig.warnings.filter((w) => !w.startsWith('no chain given') && !w.includes('package://')));
-  if (model.meshes.length > 0)
-    notes.push(`${model.meshes.length} mesh${model.meshes.length === 1 ? ' is' : 'es are'} not drawn: the chain's links show as bones`);
+  // The mesh files, where they sit beside the file (a folder dropped): read now, drawn by makeMesh.
+  const names = [...new Set(model.meshes)];
+  const files = new Map<string, Uint8Array>();
+  if (readSibling) for (const name of names) await readSibling(name).then((b) => files.set(name, b), () => undefined);
+  const lacking = names.length - files.size;
+  if (files.size === 0 && names.length > 0)
+    notes.push(`${names.length} mesh file${names.length === 1 ? ' is' : 's are'} not beside it (drop the robot's folder to see them): the chain's links show as bones`);
+  else if (lacking > 0) notes.push(`${lacking} of ${names.length} mesh files are not beside it: their links are not drawn`);
+  const drawn = new Map([...files].filter(([name]) => URDF_MESH_FORMATS.test(name)));
+  const unread = files.size - drawn.size;
+  if (unread > 0) notes.push(`${unread} mesh file${unread === 1 ? ' is' : 's are'} neither STL nor Collada (.dae): not drawn`);
+  const text = new TextDecoder().decode(bytes);
+  const links = { base: urdf.base, joints: urdf.joints, toPage: Z_UP_TO_Y_UP };
   return {
     name: rig.name,
     format: 'URDF',
     spec: yUp(rig.spec),
     warnings: notes,
-    makeMesh: null,
-    urdf: { bytes, fileName, chain, defaultChain, chains, joints: urdf.joints },
+    // urdf-loader and its Collada reader load with the first robot drawn, not with the page.
+    makeMesh: drawn.size > 0 ? async () => (await (await import('../view/urdf_mesh.js')).urdfMesh(text, links, drawn)).binding : null,
+    urdf: { bytes, fileName, chain, defaultChain, chains, joints: urdf.joints, readSibling },
   };
 }
 
@@ -196,7 +210,7 @@ async function readUrdf(bytes: Uint8Array, fileName: string, wanted: string | un
  * message names the file.
  */
 export async function readRig(bytes: Uint8Array, fileName: string, readSibling?: SiblingReader, resourcePath = '', options: LoadRigOptions = {}): Promise<RigSource> {
-  if (/\.urdf$/i.test(fileName)) return readUrdf(bytes, fileName, options.chain);
+  if (/\.urdf$/i.test(fileName)) return readUrdf(bytes, fileName, options.chain, readSibling);
   const rig = await loadRig(bytes, fileName, readSibling);
   const info = rig.gltf;
   const tooDeep = info !== undefined && info.treeDepth > MAX_MODEL_TREE_DEPTH;

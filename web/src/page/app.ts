@@ -14,6 +14,7 @@ import type { ViewClick } from '../view/picking.js';
 import { bottomSheet } from './bottom_sheet.js';
 import { Compare } from './compare.js';
 import { EditHistory } from './edit_history.js';
+import type { PathFile } from './dropped_files.js';
 import { FileInput } from './file_input.js';
 import { Keyboard } from './keyboard.js';
 import { initialSettings, type PageSettings } from './page_settings.js';
@@ -96,7 +97,7 @@ export class PageApp {
       failed: (message) => this.showMessage(message, 'error'),
       switchedOn: () => this.panel.refresh(),
     });
-    this.files = new FileInput(el.root, (f) => void this.loadFile(f));
+    this.files = new FileInput(el.root, (f, others) => void this.loadFile(f, others));
     this.poseFiles = new FileInput(el.root, (f) => void this.loadPoseFile(f), '.json', 'pose-file', false);
     this.history = new EditHistory(
       this.controller,
@@ -176,16 +177,16 @@ export class PageApp {
    * Loads a user's rig file (a URDF's chain: the URL's ?chain=, else its longest); a pose file
    * (ik-pose JSON) is applied to the rig shown instead.
    */
-  async loadFile(file: File): Promise<void> {
+  async loadFile(file: File, others: PathFile[] = []): Promise<void> {
     if (/\.json$/i.test(file.name) && looksLikePoseFile(await file.slice(0, 200).text())) return this.loadPoseFile(file);
-    await this.load(() => loadUserFile(file, { chain: this.chain ?? undefined }), file.name, null);
+    await this.load(() => loadUserFile(file, { chain: this.chain ?? undefined }, others), file.name, null);
   }
 
   /** Shows chain `chain` ("BASE:TIP") of the URDF file shown (the panel's chain menu); a refused chain keeps the rig shown. */
   async loadChain(chain: string): Promise<void> {
     const urdf = this.controller.live?.source.urdf;
     if (!urdf || chain === urdf.chain) return;
-    await this.load(() => readRig(urdf.bytes, urdf.fileName, undefined, '', { chain }), `${urdf.fileName} (chain ${chain})`, null);
+    await this.load(() => readRig(urdf.bytes, urdf.fileName, urdf.readSibling, '', { chain }), `${urdf.fileName} (chain ${chain})`, null);
   }
 
   /** Applies a pose file (ik-pose JSON) to the rig shown, as one undoable step; a bad file changes nothing and says why. */

@@ -3,6 +3,7 @@
 import { loadRigUrl, readRig, type RigSource } from '../live/rig_source.js';
 import { RigFormatError, type LoadRigOptions } from '../rig/load_rig.js';
 import { MAX_RIG_FILE_BYTES } from '../rig/rig_limits.js';
+import { findSibling, type PathFile } from './dropped_files.js';
 
 export interface ProjectRig {
   /** Path relative to the page. */
@@ -52,16 +53,22 @@ export async function loadProjectRig(key: string, base: string | URL = document.
 }
 
 /**
- * Loads a user's file; a .gltf's side files cannot be reached and must be embedded. A file over
+ * Loads a user's file; a URDF's meshes are taken from `others`, the files given with it
+ * (dropped_files.ts findSibling); a .gltf's side files cannot be reached and must be embedded. A file over
  * MAX_RIG_FILE_BYTES is refused before it is read; the importer's caps (web/src/rig/gltf_budget.ts)
  * refuse the rest before three.js's GLTFLoader sees the file. `options.chain` picks a URDF's chain.
  * Throws an Error naming the file.
  */
-export async function loadUserFile(file: File, options: LoadRigOptions = {}): Promise<RigSource> {
+export async function loadUserFile(file: File, options: LoadRigOptions = {}, others: readonly PathFile[] = []): Promise<RigSource> {
   if (file.size > MAX_RIG_FILE_BYTES)
     throw new RigFormatError(`${file.name}: ${file.size} bytes, more than the ${MAX_RIG_FILE_BYTES} (512 MiB) a rig file may have`);
   const bytes = new Uint8Array(await file.arrayBuffer());
   return readRig(bytes, file.name, async (uri) => {
-    throw new Error(`${file.name} refers to "${uri}": choose a .glb, or a .gltf with embedded buffers`);
+    // A URDF's meshes come from the files given with it; a .gltf must embed what it refers to
+    // (three.js's loader, which draws it, would fetch its files from the page's address).
+    const sibling = /\.urdf$/i.test(file.name) ? findSibling(uri, others) : undefined;
+    if (!sibling) throw new Error(`${file.name} refers to "${uri}": choose a .glb, or a .gltf with embedded buffers`);
+    if (sibling.size > MAX_RIG_FILE_BYTES) throw new Error(`${sibling.name}: ${sibling.size} bytes, more than the ${MAX_RIG_FILE_BYTES} (512 MiB) a file beside a rig may have`);
+    return new Uint8Array(await sibling.arrayBuffer());
   }, '', options);
 }

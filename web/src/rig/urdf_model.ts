@@ -165,6 +165,9 @@ export function parseUrdfModel(bytes: Uint8Array, file: string): UrdfModel {
   return { robot: attribute(robot, 'name') ?? '', links, joints, parentJoint, childJoints, meshes };
 }
 
+/** The mesh formats the page draws (web/src/view/urdf_mesh.ts: urdf-loader's STL and Collada loaders). */
+export const URDF_MESH_FORMATS = /\.(stl|dae)$/i;
+
 /** What the rig needs of one joint, in URDF units (metres, radians). */
 export interface JointGeometry {
   /** <origin xyz> and <origin rpy> (fixed-axis roll about x, pitch about y, yaw about z). */
