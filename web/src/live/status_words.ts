@@ -39,6 +39,8 @@ function wordsFor(reached: boolean, code: string, paperMode: boolean, reach: Rea
   switch (code) {
     case 'running':
       return words('solving', 'solving', 'the solve has not stopped yet');
+    case 'not_started':
+      return words('not solved yet: press S', 'solving', 'step mode: the targets moved and no iteration has run towards them; each S takes one');
     case 'joint_speed':
       return words('catching up', 'solving', 'the nearest pose on target is farther than the joints may move in one frame: the body moves there over a few frames');
     case 'max_iterations':

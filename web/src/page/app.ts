@@ -96,6 +96,7 @@ export class PageApp {
       stepped: (outcome, ms) => this.report.stepped(outcome, ms),
       failed: (message) => this.showMessage(message, 'error'),
       switchedOn: () => this.panel.refresh(),
+      pending: () => this.report.pending(),
     });
     this.files = new FileInput(el.root, (f, others) => void this.loadFile(f, others));
     this.poseFiles = new FileInput(el.root, (f) => void this.loadPoseFile(f), '.json', 'pose-file', false);

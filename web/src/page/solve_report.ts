@@ -21,6 +21,9 @@ export interface SlowestSolve {
 
 const v = new Vector3();
 
+/** The solvers' orientation tolerance (the option orientationToleranceDeg's default), degrees. */
+const ORIENTATION_TOLERANCE_DEG = 0.5;
+
 export class SolveReport {
   readonly stats: StatsPanel;
   readonly plot: ConvergencePlot;
@@ -54,6 +57,33 @@ export class SolveReport {
     if (!tips) return;
     this.plot.follow(this.settings.method);
     this.stats.showStep(this.valuesOf(outcome, ms, tips));
+  }
+
+  /**
+   * Step mode, after the problem changed: the pose on screen measured against the new targets, its
+   * status "not solved yet" unless it is on them, 0 iterations, no gradient and no time (nothing
+   * ran). Written a few times a second while a target is dragged.
+   */
+  pending(): void {
+    const session = this.controller.live?.session;
+    if (!session) return;
+    const tips = session.tips(), targets = session.targets;
+    const k = Math.min(this.controller.handles.selected ?? 0, targets.length / 3 - 1);
+    const s = this.values;
+    s.method = this.settings.method;
+    s.iterations = 0;
+    s.E = session.objective();
+    s.gradNorm = NaN;
+    s.tipDistance = largestTipDistance(tips, targets);
+    s.orientationErrorDeg = session.orientationErrorDeg();
+    s.reached = s.tipDistance < this.settings.tipTolerance && !(s.orientationErrorDeg >= ORIENTATION_TOLERANCE_DEG);
+    s.pixelsPerUnit = k < 0 ? NaN : this.controller.stage.pixelsPerUnit(v.fromArray(targets, 3 * k));
+    s.stopReason = 'not_started';
+    s.outOfReach = s.orientationOutOfReach = false;
+    s.paperMode = this.settings.paperMode;
+    s.ms = NaN;
+    s.pinnedDrift = largestTipDistance(tips, targets, this.controller.handles.selected ?? -1);
+    this.stats.showPending(s);
   }
 
   /**

@@ -133,6 +133,13 @@ export class StatsPanel {
     this.numbers.now();
   }
 
+  /** Shows a pose that no solve has reached for yet (step mode, a target moved): at once when its status changes, else a few times a second. */
+  showPending(v: StatsValues): void {
+    Object.assign(this.latest, v);
+    if (this.showStatus(v)) this.numbers.now();
+    else this.numbers.request();
+  }
+
   /** Shows E for a pose that was not solved (after reset, load, or an effector change). */
   showIdle(method: string, E: number, paperMode = false): void {
     this.numbers.cancel();
@@ -173,11 +180,11 @@ export class StatsPanel {
     this.set('method', methodText(v), NaN);
     this.set('iterations', String(v.iterations), v.iterations);
     this.set('E', formatNumber(v.E), v.E);
-    this.set('gradNorm', formatNumber(v.gradNorm), v.gradNorm);
+    this.set('gradNorm', Number.isNaN(v.gradNorm) ? '–' : formatNumber(v.gradNorm), v.gradNorm); // –: not solved
     const px = v.tipDistance * v.pixelsPerUnit;
     this.set('tipDistance', `${formatNumber(v.tipDistance)}${Number.isFinite(px) ? ` (${px.toFixed(1)} px)` : ''}`, v.tipDistance);
     this.setOptional('orientationErrorDeg', `${v.orientationErrorDeg.toPrecision(3)}°`, v.orientationErrorDeg);
-    this.set('ms', formatNumber(v.ms), v.ms);
+    this.set('ms', Number.isNaN(v.ms) ? '–' : formatNumber(v.ms), v.ms);
     const m = this.median.median();
     this.set('median', Number.isNaN(m) ? '–' : `${formatNumber(m)} (n=${this.median.size})`, m);
     this.set('pinnedDrift', formatNumber(v.pinnedDrift), v.pinnedDrift);

@@ -18,6 +18,8 @@ export interface StepHooks {
   failed(message: string): void;
   /** Step mode was switched on by a step (the panel shows it). */
   switchedOn(): void;
+  /** In step mode the problem changed (a target dragged): the pose on screen has not been solved for it. */
+  pending(): void;
 }
 
 interface StepReport {
@@ -76,10 +78,17 @@ export class StepMode {
     private readonly hooks: StepHooks,
   ) {}
 
-  /** The problem or the pose changed: the next step starts a new solve, and the ghost goes. */
+  /**
+   * The problem or the pose changed: the next step starts a new solve, the ghost goes, and in step
+   * mode the stats show the pose on screen against the new targets (no per-frame solve follows).
+   */
   restart(): void {
     this.dirty = true;
-    if (this.settings.stepMode) this.controller.live?.showGhost(null);
+    if (!this.settings.stepMode) return;
+    this.controller.live?.showGhost(null);
+    this.hooks.pending();
+    this.showInfo('The targets moved: press S (or “one iteration”) for an iteration towards them.');
+    this.info.dataset.iterations = '0';
   }
 
   /** The step-mode switch changed (settings.stepMode): the per-frame solve stops or resumes. */
