@@ -1,6 +1,6 @@
 // What the page's browser tests share: opening a rig, reading the stats, and dragging a target's
 // gizmo with real mouse events (screen positions come from window.ikPage, web/src/page/probe.ts).
-import type { Page } from 'playwright-core';
+import type { CDPSession, Page } from 'playwright-core';
 import { afterAll, beforeAll, expect } from 'vitest';
 
 import type { ScreenPoint } from '../../web/src/view/stage.js';
@@ -206,4 +206,11 @@ export async function targetAt(page: Page, k: number): Promise<[number, number, 
   const p = await page.evaluate((i) => window.ikPage?.targetPosition(i) ?? null, k);
   if (!p) throw new Error(`no target ${k}`);
   return p;
+}
+
+/** A one-finger touch drag from (x, y) by (dx, dy) pixels in `steps` moves (CDP touch events, as a finger makes). */
+export async function swipe(cdp: CDPSession, x: number, y: number, dx: number, dy: number, steps = 12): Promise<void> {
+  await cdp.send('Input.dispatchTouchEvent', { type: 'touchStart', touchPoints: [{ x, y }] });
+  for (let i = 1; i <= steps; i++) await cdp.send('Input.dispatchTouchEvent', { type: 'touchMove', touchPoints: [{ x: x + (dx * i) / steps, y: y + (dy * i) / steps }] });
+  await cdp.send('Input.dispatchTouchEvent', { type: 'touchEnd', touchPoints: [] });
 }

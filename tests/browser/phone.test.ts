@@ -4,11 +4,11 @@
 // (the page itself never scrolls), and collapses it again. A touch drag on a target still moves it
 // and the hand follows; the compare table fits the screen's width; vertical swipes on the view
 // cannot take the camera under the floor.
-import type { CDPSession, Page } from 'playwright-core';
+import type { Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 
 import { launchBrowser, openPage, startVite, type BrowserSession } from './harness.js';
-import { effectorNamed, gotoRig, targetScreen, waitForConvergence } from './page_helpers.js';
+import { effectorNamed, gotoRig, swipe, targetScreen, waitForConvergence } from './page_helpers.js';
 
 let server: { url: string; close: () => Promise<void> };
 let phone: BrowserSession;
@@ -22,13 +22,6 @@ afterAll(async () => {
 });
 
 const HEIGHT = 844;
-
-/** A one-finger touch drag from (x, y) by (dx, dy) pixels in `steps` moves (CDP touch events, as a finger makes). */
-async function swipe(cdp: CDPSession, x: number, y: number, dx: number, dy: number, steps = 12): Promise<void> {
-  await cdp.send('Input.dispatchTouchEvent', { type: 'touchStart', touchPoints: [{ x, y }] });
-  for (let i = 1; i <= steps; i++) await cdp.send('Input.dispatchTouchEvent', { type: 'touchMove', touchPoints: [{ x: x + (dx * i) / steps, y: y + (dy * i) / steps }] });
-  await cdp.send('Input.dispatchTouchEvent', { type: 'touchEnd', touchPoints: [] });
-}
 
 async function rect(page: Page, selector: string): Promise<{ top: number; bottom: number; height: number }> {
   return page.$eval(selector, (e) => {

@@ -2,16 +2,35 @@
 // 1. Step mode tells the truth after a drag: on the knight, hand.L selected, S pressed (step mode
 //    on), its target dragged up 120 px: the stats say the pose is not solved for the new target,
 //    with the hand's real distance from it, until S takes an iteration towards it.
-// Writes test-results/step-mode-after-drag.png.
+// 2. A compare right after a drag shows something: every method starts from the rest pose by
+//    default and takes iterations towards the dragged target; its results sit in the side column,
+//    clear of the view.
+// 4. On a 390x844 phone the compare's results are readable in the expanded sheet.
+// 5. A long note (the character's recognition message) is one line on a desktop and a phone, its
+//    details behind a click, and it goes once a target is dragged.
+// Writes test-results/step-mode-after-drag.png, compare-after-drag.png and phone-compare.png.
 import { mkdirSync } from 'node:fs';
 import { join } from 'node:path';
 
-import { describe, expect, it } from 'vitest';
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 
-import { openPage, renderedFrames, resultsDir } from './harness.js';
-import { dragTargetAlongY, effectorNamed, gotoRig, selectTarget, stat, statText, tipAt, targetAt, usePageServer } from './page_helpers.js';
+import { type BrowserSession, launchBrowser, openPage, renderedFrames, resultsDir } from './harness.js';
+import {
+  dragTargetAlongY, dragTowardsRoot, effectorNamed, gotoRig, selectTarget, stat, statText, swipe, targetAt, targetScreen, tipAt, usePageServer, waitForConvergence,
+} from './page_helpers.js';
+
+/** Whether two client rectangles overlap. */
+const overlaps = (a: { x: number; y: number; width: number; height: number }, b: { x: number; y: number; width: number; height: number }): boolean =>
+  a.x < b.x + b.width && b.x < a.x + a.width && a.y < b.y + b.height && b.y < a.y + a.height;
 
 const env = usePageServer();
+let phone: BrowserSession;
+beforeAll(async () => {
+  phone = await launchBrowser(true); // 390x844, touch
+});
+afterAll(async () => {
+  await phone?.close();
+});
 
 describe('what a student sees', () => {
   it('step mode: a dragged target shows the pose as not solved, with its real error, until S', async (ctx) => {
@@ -44,4 +63,89 @@ describe('what a student sees', () => {
     expect(Number(await stat(page, 'tipDistance'))).toBeLessThan(distance);
     expect(errors).toEqual([]);
   });
+
+  it('a compare right after a drag: every method solves from the rest pose, its results beside the view', async (ctx) => {
+    const { page, errors } = await openPage(env.browser, ctx);
+    await gotoRig(page, env.url, 'knight');
+    const hand = await selectTarget(page, await effectorNamed(page, /^hand\.L$/));
+    await dragTowardsRoot(page, hand, 0.3);
+    await waitForConvergence(page);
+    await page.keyboard.press('c');
+    await page.waitForFunction(() => document.getElementById('compare')?.dataset.state === 'done', null, { timeout: 60_000 });
+    expect(await page.textContent('#compare h2')).toMatch(/from the rest pose/);
+    const iterations = await page.$$eval('#compare .compare-table tbody tr', (rows) => rows.map((r) => Number((r as HTMLTableRowElement).cells[2].textContent)));
+    console.log(`[student] compare iterations: ${iterations.join(", ")}`);
+    expect(iterations.length).toBe(5);
+    for (const n of iterations) expect(n).toBeGreaterThan(0);
+    const view = (await page.locator('#viewport').boundingBox())!, box = (await page.locator('#compare').boundingBox())!;
+    expect(overlaps(view, box)).toBe(false);
+    mkdirSync(resultsDir, { recursive: true });
+    await page.screenshot({ path: join(resultsDir, 'compare-after-drag.png') });
+    expect(errors).toEqual([]);
+  });
+
+  it('on a phone, the compare reads in the expanded sheet', async (ctx) => {
+    const { page, errors } = await openPage(phone, ctx);
+    await gotoRig(page, env.url, 'knight');
+    // A finger drags the left hand's target (a tap gives it the gizmo), then the sheet opens.
+    const hand = await effectorNamed(page, /^hand\.L$/);
+    const cdp = await phone.context.newCDPSession(page);
+    const from = await targetScreen(page, hand);
+    await swipe(cdp, from.x, from.y, 0, 0, 1);
+    await page.waitForFunction((k) => window.ikPage?.selectedTarget() === k, hand);
+    await swipe(cdp, from.x, from.y, 10, -25);
+    await waitForConvergence(page);
+    await page.locator('#sheet-handle').tap();
+    await page.waitForFunction(() => document.getElementById('app')?.dataset.sheet === 'expanded');
+    await page.keyboard.press('c');
+    await page.waitForFunction(() => document.getElementById('compare')?.dataset.state === 'done', null, { timeout: 60_000 });
+    await renderedFrames(page, 2);
+    const box = (await page.locator('#compare').boundingBox())!;
+    const rows = await page.$$eval('#compare .compare-table tbody tr', (r) => r.length);
+    console.log(`[student] phone compare: ${box.height.toFixed(0)} px tall, ${rows} rows`);
+    expect(rows).toBe(5);
+    const iterations = await page.$$eval('#compare .compare-table tbody tr', (r) => r.map((row) => Number((row as HTMLTableRowElement).cells[2].textContent)));
+    for (const n of iterations) expect(n).toBeGreaterThan(0);
+    expect(box.height).toBeGreaterThan(250); // the title, the table and its plot, not a strip
+    // Every row of the table is on screen.
+    const last = (await page.locator('#compare .compare-table tbody tr').last().boundingBox())!;
+    expect(last.y + last.height).toBeLessThanOrEqual(844);
+    expect(last.y).toBeGreaterThanOrEqual(0);
+    mkdirSync(resultsDir, { recursive: true });
+    await page.screenshot({ path: join(resultsDir, 'phone-compare.png') });
+    expect(errors).toEqual([]);
+  });
+
+  for (const where of ['desktop', 'phone']) {
+    it(`a long note is one line (${where}), its details behind a click, and goes with a drag`, async (ctx) => {
+      const { page, errors } = await openPage(where === 'phone' ? phone : env.browser, ctx);
+      await gotoRig(page, env.url, 'character');
+      const note = page.locator('#message');
+      const text = (await note.textContent()) ?? '';
+      expect(text.length).toBeGreaterThan(150); // the recognition message and its details
+      expect(await note.getAttribute('data-kind')).toBe('info');
+      const oneLine = (await note.boundingBox())!.height;
+      console.log(`[student] ${where}: the note is ${oneLine.toFixed(0)} px tall, ${text.length} characters`);
+      expect(oneLine).toBeLessThan(36); // padding and one line of 14 px text
+      await note.click();
+      expect(await note.getAttribute('data-expanded')).toBe('true');
+      expect((await note.boundingBox())!.height).toBeGreaterThan(2 * oneLine);
+      expect(await note.textContent()).toBe(text);
+      await note.click();
+      expect((await note.boundingBox())!.height).toBe(oneLine);
+      // A drag of a target: the note goes.
+      const hand = await effectorNamed(page, /hand/i);
+      if (where === 'phone') {
+        const cdp = await phone.context.newCDPSession(page);
+        const from = await targetScreen(page, hand);
+        await swipe(cdp, from.x, from.y, 0, 0, 1);
+        await page.waitForFunction((k) => window.ikPage?.selectedTarget() === k, hand);
+        await swipe(cdp, from.x, from.y, 8, -20);
+      } else {
+        await dragTowardsRoot(page, await selectTarget(page, hand), 0.2);
+      }
+      await page.waitForFunction(() => document.getElementById('message')?.hidden === true);
+      expect(errors).toEqual([]);
+    });
+  }
 });

@@ -65,17 +65,17 @@ describe('teaching clarity', () => {
     await gotoRig(page, env.url, 'lamp', '&method=gd');
     await page.keyboard.press('?');
     const compareLine = () => page.locator('#help tr', { hasText: /^Ccompare/ }).textContent();
-    expect(await compareLine()).toMatch(/from the current pose: 1000 ms and 100000 iterations each, 0 restarts/);
+    expect(await compareLine()).toMatch(/from the rest pose: 1000 ms and 100000 iterations each, 0 restarts/);
     expect(await compareLine()).not.toMatch(/paper/);
     await page.keyboard.press('Escape');
 
     await (await panelControl(page, /^paper mode/)).locator('input').check();
-    await (await panelControl(page, /^compare: start from$/)).locator('select').selectOption('rest pose');
+    await (await panelControl(page, /^compare: start from$/)).locator('select').selectOption('current pose');
     await dragTowardsRoot(page, 0, 0.3);
     await waitForSettled(page);
     expect(await page.textContent('[data-stat="method"]')).toBe('gd (paper mode)');
     await page.keyboard.press('?');
-    expect(await compareLine()).toMatch(/from the rest pose, as the report ran them \(paper mode\)/);
+    expect(await compareLine()).toMatch(/from the current pose, as the report ran them \(paper mode\)/);
     await page.keyboard.press('Escape');
 
     await (await panelControl(page, /^step mode$/)).locator('input').check();
@@ -88,8 +88,8 @@ describe('teaching clarity', () => {
   it('the iteration axis is logarithmic, and linear with the box unticked; no timer note when isolated', async (ctx) => {
     const { page, errors } = await openPage(env.browser, ctx);
     await gotoRig(page, env.url, 'lamp');
-    await page.locator('#side .plot').scrollIntoViewIfNeeded();
-    const plot = page.locator('#side .plot');
+    await page.locator('#side > .plot').scrollIntoViewIfNeeded();
+    const plot = page.locator('#side > .plot');
     expect(await plot.getAttribute('data-axis')).toBe('log');
     expect(await plot.locator('.uplot').count()).toBe(1);
     await plot.locator('.plot-axis input').uncheck();

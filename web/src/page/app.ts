@@ -83,6 +83,7 @@ export class PageApp {
       dragging: (on) => {
         el.root.dataset.dragging = String(on);
         this.history.dragging(on);
+        if (on && el.message.dataset.kind === 'info') this.showMessage('', 'info'); // a note goes once the user works
       },
       redrawn: () => {
         if (this.controller.live?.selectedBone != null) this.selectionText.request(); // its angles changed
@@ -91,7 +92,7 @@ export class PageApp {
       targetChanged: () => this.showTargetGoals(),
     });
     this.report = new SolveReport(el.side, this.methods, this.controller, this.settings);
-    this.compare = new Compare(el.root, this.methods, this.report.plot);
+    this.compare = new Compare(el.side, this.methods, this.report.plot);
     this.stepMode = new StepMode(el.stepInfo, this.settings, this.methods, this.controller, {
       stepped: (outcome, ms) => this.report.stepped(outcome, ms),
       failed: (message) => this.showMessage(message, 'error'),
@@ -99,6 +100,9 @@ export class PageApp {
       pending: () => this.report.pending(),
     });
     this.files = new FileInput(el.root, (f, others) => void this.loadFile(f, others));
+    el.message.addEventListener('click', () => {
+      if (el.message.dataset.kind === 'info') el.message.dataset.expanded = String(el.message.dataset.expanded !== 'true');
+    });
     this.poseFiles = new FileInput(el.root, (f) => void this.loadPoseFile(f), '.json', 'pose-file', false);
     this.history = new EditHistory(
       this.controller,
@@ -131,7 +135,8 @@ export class PageApp {
     });
     this.track = new TrackMode(module, this.controller, (message) => this.showMessage(message, 'error'));
     this.trackPanel = new TrackPanel(el.side, this.track);
-    el.side.replaceChildren(this.report.stats.element, el.stepInfo, this.panel.gui.domElement, this.trackPanel.gui.domElement, el.selection, this.report.plot.element);
+    // The compare's results sit under the stats, in the side column (the bottom sheet on a phone), not over the view.
+    el.side.replaceChildren(this.report.stats.element, el.stepInfo, this.compare.view.element, this.panel.gui.domElement, this.trackPanel.gui.domElement, el.selection, this.report.plot.element);
     this.removeSheet = bottomSheet(el.root, el.side);
 
     this.keyboard = new Keyboard(el.root, [
@@ -454,9 +459,16 @@ export class PageApp {
     this.el.rigName.textContent = `${live.name} — ${format}, ${live.session.rig.numBones} bones, ${n} end effector${n === 1 ? '' : 's'}`;
   }
 
+  /**
+   * Shows `text` in the message line. A note ('info') reads as one line, its details behind a click
+   * on it, and goes when a target is dragged; an error shows whole and stays until the next message.
+   */
   private showMessage(text: string, kind: 'info' | 'error'): void {
-    this.el.message.textContent = text;
-    this.el.message.dataset.kind = kind;
-    this.el.message.hidden = text === '';
+    const m = this.el.message;
+    m.textContent = text;
+    m.dataset.kind = kind;
+    m.dataset.expanded = 'false';
+    m.title = kind === 'info' && text ? 'click for the details (goes when you drag a target)' : '';
+    m.hidden = text === '';
   }
 }

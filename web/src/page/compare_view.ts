@@ -80,6 +80,7 @@ export class CompareView {
     clearInterval(this.ticker);
     this.ticker = window.setInterval(() => this.showProgress(), 100);
     this.showProgress();
+    this.element.scrollIntoView({ block: 'nearest' }); // in the side column (a phone's bottom sheet), which may be scrolled
   }
 
   /** Method `method` (the `index`-th, from 0) started solving. */

@@ -18,6 +18,7 @@ export interface PageSettings extends FrameSettings {
   restarts: number;
   compareTimeBudgetMs: number;
   compareMaxIterations: number;
+  /** Where every method of a compare starts: the rest pose by default (right after a drag that ended on target, from the current pose every method has nothing to do). */
   compareFrom: CompareStart;
   showMesh: boolean;
   showBones: boolean;
@@ -48,7 +49,7 @@ export function initialSettings(rig: string, method: string): PageSettings {
     stillBody: true,
     compareTimeBudgetMs: 1000,
     compareMaxIterations: 100000,
-    compareFrom: 'current pose',
+    compareFrom: 'rest pose',
     showMesh: true,
     showBones: true,
     gizmo: 'translate',
