@@ -1,6 +1,9 @@
 // The widget as a course page uses it: the single-file build (dist/widget/ik-widget.js) served
 // as static files next to web/embed-example.html and the project models; no bundler on the page.
-// A click or a tap on any target selects it; dragging it solves onto it and the status says so.
+// A click or a tap on any target selects it; dragging it solves onto it and the status says so. The
+// example's text says what its knight shows (issue 33): a dragged hand moves no other effector.
+// Writes test-results/embed-knight-still.png.
+import { mkdirSync } from 'node:fs';
 import { join } from 'node:path';
 
 import type { Page } from 'playwright-core';
@@ -9,7 +12,7 @@ import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 
 import type { IkWidget } from '../../web/src/widget/ik_widget.js';
 import type { WidgetProbe } from '../../web/src/widget/probe.js';
-import { launchBrowser, nextFrame, openPage, repoRoot, startStatic, type BrowserSession } from './harness.js';
+import { launchBrowser, nextFrame, openPage, repoRoot, resultsDir, startStatic, type BrowserSession } from './harness.js';
 
 let server: { url: string; close: () => Promise<void> };
 let browser: BrowserSession;
@@ -163,6 +166,39 @@ describe('<ik-widget>', () => {
     expect(line).toMatchObject({ kind: 'on-target', reached: 'true' });
     expect(line.text).toMatch(/^bfgs · \d+ it · tip error [\d.e-]+ · [\d.]+ ms · on target$/);
     expect(line.title).toContain('within the tolerance');
+    expect(errors).toEqual([]);
+  });
+
+  it("the example's text says what the knight shows: with bfgs, gd and lm a dragged hand moves no other effector", async (ctx) => {
+    const { page, errors } = await openPage(browser, ctx);
+    await gotoExample(page, 'knight');
+    const text = (await page.textContent('#knight-text')) ?? '';
+    expect(text).toMatch(/stay exactly where they are, with every method/);
+    expect(text).not.toMatch(/leaves them alone/); // the report's wobble is not claimed for this widget
+    for (const method of ['bfgs', 'gd', 'lm']) {
+      await page.$eval('#knight', (w, m) => w.setAttribute('method', m), method);
+      await page.waitForFunction((m) => (document.getElementById('knight')?.shadowRoot?.querySelector('.stats')?.textContent ?? '').startsWith(`${m} ·`), method);
+      const before = await probe(page, 'knight');
+      const from = before.targetsOnScreen[1];
+      await page.mouse.click(from.x, from.y);
+      await page.mouse.move(from.x, from.y);
+      await page.mouse.down();
+      for (let i = 1; i <= 10; i++) {
+        await page.mouse.move(from.x - 2 * i, from.y - 4 * i);
+        await nextFrame(page);
+      }
+      await page.mouse.up();
+      await nextFrame(page);
+      const after = await probe(page, 'knight');
+      expect(Math.hypot(...target(after, 1).map((c, i) => c - target(before, 1)[i]))).toBeGreaterThan(0); // the hand's target moved
+      for (let k = 0; k < after.tips.length / 3; k++) {
+        if (k === 1) continue;
+        const moved = Math.hypot(...[0, 1, 2].map((i) => after.tips[3 * k + i] - before.tips[3 * k + i]));
+        expect(moved, `${method}: effector ${k} moved`).toBeLessThan(1e-9);
+      }
+    }
+    mkdirSync(resultsDir, { recursive: true });
+    await page.locator('#knight').screenshot({ path: join(resultsDir, 'embed-knight-still.png') });
     expect(errors).toEqual([]);
   });
 
