@@ -8,7 +8,10 @@
 // 4. On a 390x844 phone the compare's results are readable in the expanded sheet.
 // 5. A long note (the character's recognition message) is one line on a desktop and a phone, its
 //    details behind a click, and it goes once a target is dragged.
-// Writes test-results/step-mode-after-drag.png, compare-after-drag.png and phone-compare.png.
+// 6. The first view: the lamp's selected target shows over its shade and the gizmo, the side plot
+//    says what will show there instead of an empty frame, and the first solve's time is a solve's,
+//    not the warm-up's.
+// Writes test-results/step-mode-after-drag.png, compare-after-drag.png, phone-compare.png and lamp-first-view.png.
 import { mkdirSync } from 'node:fs';
 import { join } from 'node:path';
 
@@ -148,4 +151,48 @@ describe('what a student sees', () => {
       expect(errors).toEqual([]);
     });
   }
+
+  it("the first view: the lamp's target shows, the plot says what comes, the first time is a solve's", async (ctx) => {
+    const { page, errors } = await openPage(env.browser, ctx);
+    await gotoRig(page, env.url, 'lamp');
+    await renderedFrames(page, 3);
+    // The first solve (0 iterations: the target sits on the tip) is timed warm.
+    const first = Number(await stat(page, 'ms'));
+    console.log(`[student] the lamp's first solve: ${first} ms, ${await statText(page, 'iterations')} iterations`);
+    expect(await statText(page, 'iterations')).toBe('0');
+    expect(first).toBeLessThan(1);
+    // The selected target (yellow) is seen at its place, inside the lamp's shade, under the gizmo.
+    const t = (await page.evaluate(() => window.ikPage?.targetScreen(0) ?? null))!;
+    const png = await page.screenshot({ clip: { x: t.x - 10, y: t.y - 10, width: 20, height: 20 } });
+    const yellow = await page.evaluate(async (b64) => {
+      const img = new Image();
+      img.src = `data:image/png;base64,${b64}`;
+      await img.decode();
+      const c = document.createElement('canvas');
+      [c.width, c.height] = [img.width, img.height];
+      const g = c.getContext('2d')!;
+      g.drawImage(img, 0, 0);
+      const d = g.getImageData(0, 0, c.width, c.height).data;
+      // The selected target's yellow, lit (209,184,123 .. 160,141,96): green well above blue, red near
+      // green. Not the lamp's salmon shade (239,154,147) nor the gizmo's orange (255,179,109).
+      let n = 0;
+      for (let i = 0; i < d.length; i += 4) if (d[i] > 150 && d[i + 1] - d[i + 2] > 40 && d[i] - d[i + 1] < 60) n++;
+      return n;
+    }, png.toString('base64'));
+    console.log(`[student] target-coloured pixels around the lamp's target: ${yellow}`);
+    expect(yellow).toBeGreaterThan(40);
+    // The side plot: a line saying what will show, no empty frame.
+    const plot = page.locator('#side > .plot');
+    expect(await plot.getAttribute('data-empty')).toBe('true');
+    expect(await plot.locator('.plot-note').textContent()).toMatch(/^Nothing solved yet: drag a target/);
+    expect(await plot.locator('.uplot').isVisible()).toBe(false);
+    mkdirSync(resultsDir, { recursive: true });
+    await page.screenshot({ path: join(resultsDir, 'lamp-first-view.png') });
+    // After a drag the plot draws (the lamp's one target holds the gizmo from the start).
+    await dragTargetAlongY(page, 0, -60 / (await page.evaluate(() => window.ikPage?.pixelsPerUnit() ?? NaN)));
+    await waitForConvergence(page);
+    await page.waitForFunction(() => document.querySelector<HTMLElement>('#side > .plot')?.dataset.empty === 'false');
+    expect(await plot.locator('.uplot').isVisible()).toBe(true);
+    expect(errors).toEqual([]);
+  });
 });

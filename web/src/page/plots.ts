@@ -25,13 +25,16 @@ export function methodColor(methods: MethodList, method: string): string {
 /** Reads a method's latest E history when the plot draws (null: keep the one shown). */
 export type HistoryReader = (method: string) => Float64Array | null;
 
+const NOTHING_YET = 'Nothing solved yet: drag a target, and E of each iteration of the solve shows here.';
+const NOTHING_TO_PLOT = 'Nothing to plot: E was 0 from the start (already on target), which a log scale cannot show.';
+
 export class ConvergencePlot {
   readonly element: HTMLElement;
   private plot: uPlot;
   /** The iteration axis is logarithmic (the checkbox under the plot). */
   logIterations = true;
   private readonly chart: HTMLElement;
-  /** "Nothing to plot", shown when every history is E = 0 throughout. */
+  /** What the plot cannot show: nothing solved yet (the chart hidden), or every history E = 0 throughout. */
   private readonly note: HTMLElement;
   private readonly histories = new Map<string, Float64Array>();
   /** Methods whose latest history is to be read from `read` at the next draw. */
@@ -50,6 +53,8 @@ export class ConvergencePlot {
     private readonly title = 'log E vs iteration (last solve per method)',
     private readonly height = 170,
     private readonly read: HistoryReader = () => null,
+    /** What the note says before any history: what will show here. */
+    private readonly nothingYet = NOTHING_YET,
   ) {
     this.element = document.createElement('div');
     this.element.className = 'plot';
@@ -64,9 +69,8 @@ export class ConvergencePlot {
     toggle.append(box, ' log iteration axis');
     this.note = document.createElement('p');
     this.note.className = 'plot-note';
-    this.note.textContent = 'Nothing to plot: E was 0 from the start (already on target), which a log scale cannot show.';
-    this.note.hidden = true;
     this.element.append(this.chart, this.note, toggle);
+    this.showNote([]);
     parent.append(this.element);
     this.plot = this.build(title, height);
     this.element.dataset.axis = 'log';
@@ -197,10 +201,22 @@ export class ConvergencePlot {
       this.followed.clear();
       const data = this.data();
       this.plot.setData(data);
-      this.note.hidden = this.histories.size === 0 || data.slice(1).some((ys) => ys.some((y) => y !== null));
+      this.showNote(data.slice(1));
       this.element.dataset.state = 'drawn';
     };
     this.frame = requestAnimationFrame(draw);
+  }
+
+  /**
+   * Before any solve the chart (an empty frame) gives way to a line saying what will show there;
+   * when every history is E = 0 throughout, a line says why nothing is drawn. `ys`: the data's series.
+   */
+  private showNote(ys: ReadonlyArray<ArrayLike<number | null | undefined>>): void {
+    const empty = this.histories.size === 0;
+    this.chart.hidden = empty;
+    this.note.textContent = empty ? this.nothingYet : NOTHING_TO_PLOT;
+    this.note.hidden = !empty && ys.some((y) => Array.from(y).some((v) => v !== null && v !== undefined));
+    this.element.dataset.empty = String(empty);
   }
 
   private data(): uPlot.AlignedData {

@@ -73,8 +73,9 @@ export class Handles {
 
   private readonly targetGeo = new SphereGeometry(1, 20, 14);
   private readonly tipGeo = new SphereGeometry(1, 12, 8);
-  private readonly targetMat = new MeshStandardMaterial({ color: 0xff4d6d, roughness: 0.35, emissive: 0x400010 });
-  private readonly targetSelMat = new MeshStandardMaterial({ color: 0xffd166, roughness: 0.35, emissive: 0x403000 });
+  // Targets draw over the model (a lamp's target sits inside its shade) and under the gizmo.
+  private readonly targetMat = new MeshStandardMaterial({ color: 0xff4d6d, roughness: 0.35, emissive: 0x400010, depthTest: false, transparent: true });
+  private readonly targetSelMat = new MeshStandardMaterial({ color: 0xffd166, roughness: 0.35, emissive: 0x403000, depthTest: false, transparent: true });
   private readonly tipMat = new MeshBasicMaterial({ color: 0xff9a3c, depthTest: false, transparent: true });
   private readonly lineMat = new LineBasicMaterial({ color: 0xff4d6d, depthTest: false, transparent: true, opacity: 0.8 });
   private readonly lines: LineSegments;
@@ -173,6 +174,7 @@ export class Handles {
       const t = new Mesh(this.targetGeo, this.targetMat);
       t.name = `target ${k}`;
       t.scale.setScalar(r);
+      t.renderOrder = 12;
       t.position.fromArray(targets, 3 * k);
       const axes = this.makeAxes();
       axes.name = `target ${k} axes`;
