@@ -19,7 +19,7 @@ import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 
 import { type BrowserSession, launchBrowser, openPage, renderedFrames, resultsDir } from './harness.js';
 import {
-  dragTargetAlongY, dragTowardsRoot, effectorNamed, gotoRig, selectTarget, stat, statText, swipe, targetAt, targetScreen, tipAt, usePageServer, waitForConvergence,
+  dragTargetAlongY, dragTowardsRoot, effectorNamed, gotoRig, panelControl, selectTarget, stat, statText, swipe, targetAt, targetScreen, tipAt, usePageServer, waitForConvergence,
 } from './page_helpers.js';
 
 /** Whether two client rectangles overlap. */
@@ -116,6 +116,13 @@ describe('what a student sees', () => {
     expect(last.y).toBeGreaterThanOrEqual(0);
     mkdirSync(resultsDir, { recursive: true });
     await page.screenshot({ path: join(resultsDir, 'phone-compare.png') });
+    // The compare's iteration cap reads whole in its box: 100000, not 10000.
+    const cap = (await panelControl(page, /^compare: iterations$/)).locator('input').first();
+    await cap.scrollIntoViewIfNeeded();
+    expect(await cap.inputValue()).toBe('100000');
+    const fits = await cap.evaluate((input) => [(input as HTMLInputElement).scrollWidth, (input as HTMLInputElement).clientWidth]);
+    console.log(`[student] the iteration box: ${fits[0]} px of text in ${fits[1]} px`);
+    expect(fits[0]).toBeLessThanOrEqual(fits[1]);
     expect(errors).toEqual([]);
   });
 
