@@ -154,7 +154,9 @@ describe('what a student sees', () => {
       } else {
         await dragTowardsRoot(page, await selectTarget(page, hand), 0.2);
       }
-      await page.waitForFunction(() => document.getElementById('message')?.hidden === true);
+      await page.waitForFunction(() => document.getElementById('message')?.dataset.dismissed === 'true');
+    expect(await note.isVisible()).toBe(false);
+    expect((await note.boundingBox())?.height ?? oneLine).toBe(oneLine); // its line stays: the view did not move
       expect(errors).toEqual([]);
     });
   }

@@ -83,7 +83,8 @@ export class PageApp {
       dragging: (on) => {
         el.root.dataset.dragging = String(on);
         this.history.dragging(on);
-        if (on && el.message.dataset.kind === 'info') this.showMessage('', 'info'); // a note goes once the user works
+        // A note goes once the user works; its line stays (empty), so the view does not move under the drag.
+        if (on && el.message.dataset.kind === 'info') el.message.dataset.dismissed = 'true';
       },
       redrawn: () => {
         if (this.controller.live?.selectedBone != null) this.selectionText.request(); // its angles changed
@@ -461,13 +462,15 @@ export class PageApp {
 
   /**
    * Shows `text` in the message line. A note ('info') reads as one line, its details behind a click
-   * on it, and goes when a target is dragged; an error shows whole and stays until the next message.
+   * on it, and goes when a target is dragged (its line stays, empty: the view keeps its place); an
+   * error shows whole and stays until the next message.
    */
   private showMessage(text: string, kind: 'info' | 'error'): void {
     const m = this.el.message;
     m.textContent = text;
     m.dataset.kind = kind;
     m.dataset.expanded = 'false';
+    m.dataset.dismissed = 'false';
     m.title = kind === 'info' && text ? 'click for the details (goes when you drag a target)' : '';
     m.hidden = text === '';
   }
