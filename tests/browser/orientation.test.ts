@@ -203,7 +203,7 @@ describe('orientation goals on the page', () => {
 
     // On again with the box, then the panel's reset clears it.
     await orientationBox(page).click();
-    expect((await orientation(page, hand)).axes).toBe(true);
+    await page.waitForFunction((k) => window.ikPage?.axesShown(k) === true, hand, { timeout: 5_000 }); // shown at the next frame's redraw
     await page.locator('.lil-controller', { has: page.locator('.lil-name', { hasText: /^reset pose/ }) }).locator('button').click();
     await renderedFrames(page);
     const reset = await orientation(page, hand);
