@@ -196,7 +196,7 @@ function program(allMethods: readonly string[], defaultMethods: readonly string[
     .addOption(new Option('--experiment <list>', `experiments: ${experiments.filter((e) => e !== 'tracik').join(', ')}, or track or tracik alone${merged}`).argParser(collect).default('random,incremental'))
     .addOption(single('--clips <list>', 'track: the animation clips to run, comma-separated, or all', 'all'))
     .addOption(single('--points <n>', 'track: tracked points, 3 (head and hands) or 6 (and the hips and feet)', '3'))
-    .addOption(new Option('--methods <list>', `methods: ${allMethods.join(', ')} (kdl: --engine native only)${merged}`).argParser(collect).default(defaultMethods.join(',')))
+    .addOption(new Option('--methods <list>', `methods: ${allMethods.join(', ')} (kdl, kdl_nr_jl: --engine native only)${merged}`).argParser(collect).default(defaultMethods.join(',')))
     .addOption(single('--samples <n>', `samples per experiment (at most ${MAX_SAMPLES}); per-method overrides like 1000,gd=100`, String(DEFAULT_SAMPLES)))
     .addOption(single('--seed <s>', 'seed of the target sets', '1'))
     .addOption(single('--gtol <x>', 'gradient tolerance (default: per rig, see README)'))

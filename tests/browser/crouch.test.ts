@@ -23,6 +23,8 @@ type Point = [number, number, number];
 
 const sub = (a: Point, b: Point): Point => [a[0] - b[0], a[1] - b[1], a[2] - b[2]];
 const distance = (a: Point, b: Point): number => Math.hypot(...sub(a, b));
+/** A pattern matching exactly `name` (every character taken literally). */
+const exactly = (name: string): RegExp => new RegExp(`^${name.replace(/[.*+?^${}()|[\]\\]/g, '\\$&')}$`);
 
 async function boneTip(page: Page, bone: number): Promise<Point> {
   const p = await page.evaluate((i) => window.ikPage?.boneTip(i) ?? null, bone);
@@ -52,9 +54,9 @@ async function crouch(page: Page, body: Body, label: string): Promise<void> {
     return b ? b.max[1] - b.min[1] : NaN;
   });
   const hipsBone = await boneNamed(page, body.hips);
-  const legs = await Promise.all(body.legs.map(async (l) => ({ upper: await boneNamed(page, l.upper), lower: await boneNamed(page, l.lower), foot: await effectorNamed(page, new RegExp(`^${l.foot.replace('.', '\\.')}$`)) })));
-  const head = await effectorNamed(page, new RegExp(`^${body.head.replace('.', '\\.')}$`));
-  const hips = await effectorNamed(page, new RegExp(`^${body.hips.replace('.', '\\.')}$`)); // the hips are a target of their own
+  const legs = await Promise.all(body.legs.map(async (l) => ({ upper: await boneNamed(page, l.upper), lower: await boneNamed(page, l.lower), foot: await effectorNamed(page, exactly(l.foot)) })));
+  const head = await effectorNamed(page, exactly(body.head));
+  const hips = await effectorNamed(page, exactly(body.hips)); // the hips are a target of their own
   const hipsStood = await boneTip(page, hipsBone);
   const feetStood = await Promise.all(legs.map((l) => tipAt(page, l.foot)));
   // The way the character faces: from the hips, the toes' side of the feet (the ankle's tip is
