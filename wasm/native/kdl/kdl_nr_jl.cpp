@@ -1,6 +1,7 @@
 #include "kdl_nr_jl.h"
 
 #include <chrono>
+#include <memory>
 #include <cmath>
 #include <kdl/chain.hpp>
 #include <kdl/chainfksolverpos_recursive.hpp>
@@ -43,8 +44,15 @@ struct KdlNrJl::State {
   KDL::JntArray q_min, q_max, q, result;
   Eigen::VectorXd angles;
   double length_scale = 1;  // L of the core's E with orientation goals (rig_reach, goals.h)
+  // KDL's solvers of the chain, made once: a query only runs them.
+  KDL::ChainFkSolverPos_recursive fk;
+  KDL::ChainIkSolverVel_pinv velocity;
+  KDL::ChainJntToJacSolver jacobian;
+  std::unique_ptr<KDL::ChainIkSolverPos_NR_JL> nr_jl;  // made once the limits are known
 
-  explicit State(const Rig& r) : rig(make_kdl_rig(r)), chain(chain_of(rig)) {
+  // `eps`: KDL's tolerance on each twist component (rig units and radians).
+  State(const Rig& r, double eps)
+      : rig(make_kdl_rig(r)), chain(chain_of(rig)), fk(chain), velocity(chain), jacobian(chain) {
     // Segment "b<i>.x0", "b<i>.z1" or "b<i>.x2" turns angle 3i + 0, 1 or 2 (kdl_rig.h).
     for (const KDL::Segment& seg : chain.segments) {
       if (seg.getJoint().getType() == KDL::Joint::Fixed) continue;
@@ -69,6 +77,7 @@ struct KdlNrJl::State {
       wrap_from.push_back(turns ? lo : NAN);
       wrap_to.push_back(hi);
     }
+    nr_jl = std::make_unique<KDL::ChainIkSolverPos_NR_JL>(chain, q_min, q_max, fk, velocity, 1, eps);
   }
 
   // The chain's joints at `from` (#angles, degrees), in radians.
@@ -89,7 +98,7 @@ struct KdlNrJl::State {
 };
 
 KdlNrJl::KdlNrJl(const Rig& rig, const SolverOptions& options)
-    : s_(std::make_unique<State>(rig)), options_(options) {}
+    : s_(std::make_unique<State>(rig, options.tip_tolerance > 0 ? options.tip_tolerance : kTracIkEps)), options_(options) {}
 
 KdlNrJl::~KdlNrJl() = default;
 
@@ -110,10 +119,6 @@ const KdlSummary& KdlNrJl::solve(const Eigen::VectorXd& start, const Eigen::Vect
   const Eigen::Matrix3d& R = orientations[0];
   const KDL::Frame goal(KDL::Rotation(R(0, 0), R(0, 1), R(0, 2), R(1, 0), R(1, 1), R(1, 2), R(2, 0), R(2, 1), R(2, 2)),
                         KDL::Vector(target[0], target[1], target[2]));
-  KDL::ChainFkSolverPos_recursive fk(s.chain);
-  KDL::ChainIkSolverVel_pinv velocity(s.chain);
-  const double eps = o.tip_tolerance > 0 ? o.tip_tolerance : kTracIkEps;
-  KDL::ChainIkSolverPos_NR_JL solver(s.chain, s.q_min, s.q_max, fk, velocity, 1, eps);
 
   const auto t0 = Clock::now();
   const bool timed = o.time_budget_s > 0 && std::isfinite(o.time_budget_s);
@@ -122,7 +127,7 @@ const KdlSummary& KdlNrJl::solve(const Eigen::VectorXd& start, const Eigen::Vect
   std::string reason = "max_iterations";
   while (out.iterations < o.max_iterations) {
     s.q = s.result;  // each call from the last one's result
-    rc = solver.CartToJnt(s.q, goal, s.result);
+    rc = s.nr_jl->CartToJnt(s.q, goal, s.result);
     ++out.iterations;
     if (rc >= 0) {
       reason = "converged_E";
@@ -136,16 +141,15 @@ const KdlSummary& KdlNrJl::solve(const Eigen::VectorXd& start, const Eigen::Vect
   s.to_angles(start, s.result);
   out.angles = s.angles;
   KDL::Frame at;
-  fk.JntToCart(s.result, at);
+  s.fk.JntToCart(s.result, at);
   const Eigen::Vector3d r(at.p.x() - target[0], at.p.y() - target[1], at.p.z() - target[2]);
   const KDL::Vector w = KDL::diff(at.M, goal.M);
   out.tip_distance = r.norm();
   out.rotation_error_deg = w.Norm() / kRadPerDeg;
   const Eigen::Vector3d rot(w.x(), w.y(), w.z());
   out.E = 0.5 * r.squaredNorm() + 0.5 * s.length_scale * s.length_scale * rot.squaredNorm();
-  KDL::ChainJntToJacSolver jacobian(s.chain);
   KDL::Jacobian J(s.chain.getNrOfJoints());
-  jacobian.JntToJac(s.result, J);
+  s.jacobian.JntToJac(s.result, J);
   out.gradient_norm = (J.data.topRows<3>().transpose() * r).norm() * kRadPerDeg;
   out.reached = rc >= 0;
   out.stop_reason = reason;
