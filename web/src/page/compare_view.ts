@@ -62,7 +62,7 @@ export class CompareView {
     this.body = table.createTBody();
     this.element.append(head, progress, table);
     parent.append(this.element);
-    this.plot = new ConvergencePlot(this.element, methods, 'log E vs iteration, every method from the same pose', 160, undefined, 'Each method’s E per iteration shows here as it finishes.');
+    this.plot = new ConvergencePlot(this.element, methods, 'log E vs iteration, every method from the same pose', 160, 'Each method’s E per iteration shows here as it finishes.');
   }
 
   /** Clears the table for a new comparison of `total` methods; `what` names the rig and settings. */

@@ -2,8 +2,7 @@
 // series per method the core registers, coloured by its place in that list. The iteration axis is
 // logarithmic by default (asinh: linear near 0, so iteration 0 is shown), or linear with the
 // checkbox under the plot: gd's thousands of iterations in paper mode flatten a linear axis. Redraws at most a
-// few times a second and only while on screen, so live dragging does not pay for it every frame;
-// a method's live history is copied out of WebAssembly only when the plot draws (follow()). The
+// few times a second and only while on screen, so live dragging does not pay for it every frame. The
 // element's data-state is 'waiting' while a change is not drawn yet, then 'drawn' (for tests). When
 // every history shown is E = 0 throughout (solves that started on target), a line under the plot
 // says there is nothing a log scale can show.
@@ -22,9 +21,6 @@ export function methodColor(methods: MethodList, method: string): string {
   return i < 0 ? '#aab' : PALETTE[i % PALETTE.length];
 }
 
-/** Reads a method's latest E history when the plot draws (null: keep the one shown). */
-export type HistoryReader = (method: string) => Float64Array | null;
-
 const NOTHING_YET = 'Nothing solved yet: drag a target, and E of each iteration of the solve shows here.';
 const NOTHING_TO_PLOT = 'Nothing to plot: E was 0 from the start (already on target), which a log scale cannot show.';
 
@@ -37,8 +33,6 @@ export class ConvergencePlot {
   /** What the plot cannot show: nothing solved yet (the chart hidden), or every history E = 0 throughout. */
   private readonly note: HTMLElement;
   private readonly histories = new Map<string, Float64Array>();
-  /** Methods whose latest history is to be read from `read` at the next draw. */
-  private readonly followed = new Set<string>();
   private readonly resizeObserver: ResizeObserver;
   private readonly visibility: IntersectionObserver;
   private visible = false;
@@ -46,13 +40,11 @@ export class ConvergencePlot {
   private lastDraw = 0;
   private frame = 0;
 
-  /** `read` gives the live histories follow() asks for; the compare plot, which only records, has none. */
   constructor(
     parent: HTMLElement,
     private readonly methods: MethodList,
     private readonly title = 'log E vs iteration (last solve per method)',
     private readonly height = 170,
-    private readonly read: HistoryReader = () => null,
     /** What the note says before any history: what will show here. */
     private readonly nothingYet = NOTHING_YET,
   ) {
@@ -144,21 +136,12 @@ export class ConvergencePlot {
 
   /** Shows `history` (E before iteration 1, then after each) as `method`'s last solve. */
   record(method: string, history: Float64Array): void {
-    this.followed.delete(method);
     this.histories.set(method, history);
-    this.changed();
-  }
-
-  /** `method` solved again: its history is read (HistoryReader) when the plot next draws. */
-  follow(method: string): void {
-    if (this.followed.has(method) && this.dirty) return;
-    this.followed.add(method);
     this.changed();
   }
 
   clear(): void {
     this.histories.clear();
-    this.followed.clear();
     this.changed();
   }
 
@@ -194,11 +177,6 @@ export class ConvergencePlot {
       }
       this.lastDraw = now;
       this.dirty = false;
-      for (const m of this.followed) {
-        const h = this.read(m);
-        if (h) this.histories.set(m, h);
-      }
-      this.followed.clear();
       const data = this.data();
       this.plot.setData(data);
       this.showNote(data.slice(1));

@@ -37,17 +37,24 @@ export class SolveReport {
   /** The stats and the plot go into `side`; `controller` shows the rig, `settings` name the method. */
   constructor(side: HTMLElement, methods: MethodList, private readonly controller: LiveController, private readonly settings: PageSettings) {
     this.stats = new StatsPanel(side);
-    this.plot = new ConvergencePlot(side, methods, undefined, undefined, (m) => {
-      const session = controller.live?.session;
-      return session && session.lastIterations(m) > 0 ? session.history(m) : null;
-    });
+    this.plot = new ConvergencePlot(side, methods);
+  }
+
+  /**
+   * The plot shows the method's last solve that ran iterations. Read now, not when the plot draws:
+   * by then a later solve that started on target (0 iterations) may have replaced it.
+   */
+  private plotLastSolve(): void {
+    const method = this.settings.method, session = this.controller.live?.session;
+    const history = session && session.lastIterations(method) > 0 ? session.history(method) : null;
+    if (history) this.plot.record(method, history);
   }
 
   /** A per-frame solve: its outcome, main-thread ms and the tips at the new pose (3 per effector). */
   solved(outcome: SolveOutcome, ms: number, tips: Float64Array): void {
     if (ms > (this.slowest?.ms ?? -1))
       this.slowest = { ms, solverMs: outcome.elapsedSeconds * 1000, iterations: outcome.iterations, stopReason: outcome.stopReason };
-    if (outcome.iterations > 0) this.plot.follow(this.settings.method);
+    this.plotLastSolve();
     this.stats.show(this.valuesOf(outcome, ms, tips));
   }
 
@@ -55,7 +62,7 @@ export class SolveReport {
   stepped(outcome: SolveOutcome, ms: number): void {
     const tips = this.controller.live?.session.tips();
     if (!tips) return;
-    this.plot.follow(this.settings.method);
+    this.plotLastSolve();
     this.stats.showStep(this.valuesOf(outcome, ms, tips));
   }
 
