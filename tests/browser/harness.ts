@@ -135,12 +135,18 @@ export async function openPage(
   return { page, errors };
 }
 
-/** Resolves after the page has run its next animation frame (a per-frame solve and a render). */
+/** Resolves after the page has run its next animation frame (a per-frame solve; the 3D view draws on demand). */
 export async function nextFrame(page: Page): Promise<void> {
   await page.evaluate(() => new Promise<void>((done) => requestAnimationFrame(() => done())));
 }
 
-/** Resolves after `n` animation frames: what the page changed before has been drawn and rendered. */
+/** Resolves after `n` frames drawn: what the page changed before is on screen. */
 export async function renderedFrames(page: Page, n = 2): Promise<void> {
-  for (let i = 0; i < n; i++) await nextFrame(page);
+  // The page's 3D view draws on demand: ask it for frames and wait until they are drawn.
+  const before = await page.evaluate(() => window.ikPage?.redraw() ?? null);
+  if (before === null) {
+    for (let i = 0; i < n; i++) await nextFrame(page);
+    return;
+  }
+  await page.waitForFunction((until) => (window.ikPage?.drawnFrames() ?? Infinity) >= until, before + n, { timeout: 30_000 });
 }

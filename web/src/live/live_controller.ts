@@ -137,7 +137,7 @@ export class LiveController {
     this.handles.setTargets(live.session.targets);
     this.handles.setPivot(live.view.boneBase(0, v));
     this.placePoles(false);
-    this.stage.frame(live.view.bounds());
+    this.stage.frame(live.view.bounds()); // and draws it
     // A first solve: it stops before a step (the targets sit on the tips), so the status says so.
     this.needsSolve = true;
     this.warmUp = true;
@@ -363,6 +363,7 @@ export class LiveController {
     if (this.solving && (this.needsSolve || this.handles.dragging)) tips = this.solve(live.session);
     if (this.needsRedraw) {
       this.needsRedraw = false;
+      this.stage.invalidate();
       live.redraw();
       const s = live.session;
       this.handles.sync(s.targets, tips ?? s.tips(), s.goals.orientation, s.goals.rotations);

@@ -59,6 +59,10 @@ export interface PageProbe {
   rootJoint(): [number, number, number] | null;
   /** The world box of the scene's object named `name` (a mesh of the model: its vertices as posed now), or null. */
   objectBounds(name: string): { min: [number, number, number]; max: [number, number, number] } | null;
+  /** Frames the 3D view has drawn since it was made (a still view draws one a second). */
+  drawnFrames(): number;
+  /** Asks the 3D view to draw its next frames now (as input does); returns drawnFrames() before. */
+  redraw(): number;
   /** The gizmo's mode: translate, rotate or swing. */
   gizmoMode(): string;
   /** Target k's orientation goal [x, y, z, w] (rig coordinates), or null when it has none. */
@@ -159,6 +163,11 @@ export function makeProbe(app: PageApp): PageProbe {
     },
     selectedTarget: () => controller.handles.selected,
     gizmoAxis: () => controller.handles.gizmo.axis,
+    drawnFrames: () => stage.drawnFrames,
+    redraw() {
+      stage.invalidate();
+      return stage.drawnFrames;
+    },
     selectedPole: () => controller.handles.selectedPole,
     poleHandles() {
       const s = session();

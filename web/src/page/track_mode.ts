@@ -347,6 +347,7 @@ export class TrackMode {
     }
     this.solves++;
     live.view.update(driver.poses(), driver.solver.bones, null);
+    if (this.clips?.playing != null || this.vr) this.controller.stage.invalidate(); // the avatar moves by itself
     this.gizmos.sync(this.points, driver.solver.tips());
     this.onSolved();
   }

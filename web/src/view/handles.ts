@@ -105,6 +105,11 @@ export class Handles {
     this.stopHoldingPresses = holdClickablePresses(stage.canvas, stage.camera, (ray) => this.claimPress(ray));
     const helper = this.gizmo.getHelper();
     stage.scene.add(helper);
+    // The gizmo picks against handles it places in updateMatrixWorld, which a drawn frame runs; a
+    // still view draws seldom (Stage), so a pointer that reaches the canvas places them first (a
+    // capture listener on the canvas runs before the gizmo's own).
+    const placeGizmo = (): void => helper.updateMatrixWorld();
+    for (const type of ['pointermove', 'pointerdown'] as const) stage.canvas.addEventListener(type, placeGizmo, { capture: true });
     const lineGeo = new BufferGeometry();
     lineGeo.setAttribute('position', new Float32BufferAttribute(new Float32Array(0), 3));
     this.lines = new LineSegments(lineGeo, this.lineMat);
@@ -154,6 +159,7 @@ export class Handles {
       this.gizmo.removeEventListener('dragging-changed', onDragging);
       this.gizmo.removeEventListener('objectChange', onChange);
       helper.removeFromParent();
+      for (const type of ['pointermove', 'pointerdown'] as const) stage.canvas.removeEventListener(type, placeGizmo, { capture: true });
     };
   }
 

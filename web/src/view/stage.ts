@@ -27,6 +27,23 @@ export interface ScreenPoint {
 
 export type FrameCallback = (seconds: number) => void;
 
+/**
+ * After anything that may change the picture (input, invalidate()), every frame is drawn for this
+ * long, ms (a drag's pointer moves keep it going).
+ */
+const ACTIVE_MS = 300;
+/**
+ * Otherwise a frame is drawn at most this often, ms: a still view costs the main thread next to
+ * nothing (a character drawn in software took 50 ms a frame at every animation frame, 200-370 ms
+ * with the cores busy, in the way of a compare's progress), and a change nobody announced still
+ * shows within a second.
+ */
+const IDLE_FRAME_MS = 1000;
+/** The input that may move something on screen for a while (a drag, an orbit, a zoom). */
+const WAKING_EVENTS = ['pointerdown', 'pointermove', 'pointerup', 'wheel', 'touchstart', 'touchmove'] as const;
+/** The input that may change the picture once (a shortcut): one frame is drawn. */
+const ONE_FRAME_EVENTS = ['keydown'] as const;
+
 export class Stage {
   readonly renderer: WebGLRenderer;
   readonly scene = new Scene();
@@ -37,6 +54,17 @@ export class Stage {
   private readonly resizeObserver: ResizeObserver;
   private readonly callbacks: FrameCallback[] = [];
   private last = 0;
+  /** Draw every frame until then (performance.now() ms). */
+  private activeUntil = 0;
+  private lastDraw = -Infinity;
+  /** Draw the next frame whatever the timing says. */
+  private drawNext = false;
+  private readonly wake = (): void => this.invalidate();
+  private readonly drawOnce = (): void => {
+    this.drawNext = true;
+  };
+  /** Frames drawn (for tests and tools). */
+  drawnFrames = 0;
 
   constructor(readonly container: HTMLElement) {
     this.renderer = new WebGLRenderer({ antialias: true, preserveDrawingBuffer: false });
@@ -66,7 +94,14 @@ export class Stage {
     this.resizeObserver = new ResizeObserver(() => this.resize());
     this.resizeObserver.observe(container);
     this.resize();
+    for (const type of WAKING_EVENTS) window.addEventListener(type, this.wake, { passive: true });
+    for (const type of ONE_FRAME_EVENTS) window.addEventListener(type, this.drawOnce, { passive: true });
     this.renderer.setAnimationLoop((t) => this.tick(t));
+  }
+
+  /** The picture may change: every frame is drawn for the next ACTIVE_MS (else one every IDLE_FRAME_MS). */
+  invalidate(): void {
+    this.activeUntil = performance.now() + ACTIVE_MS;
   }
 
   /** Where world point `p` is on screen now: client (CSS) pixels. */
@@ -114,6 +149,7 @@ export class Stage {
     this.camera.far = dist * 100;
     this.camera.updateProjectionMatrix();
     this.orbit.update();
+    this.invalidate();
     const size = Math.pow(10, Math.ceil(Math.log10(r * 4)));
     this.grid.scale.setScalar(size / 10);
     this.grid.position.set(sphere.center.x, box.min.y, sphere.center.z);
@@ -138,11 +174,14 @@ export class Stage {
     this.renderer.setSize(w, h, false);
     this.camera.aspect = w / h;
     this.camera.updateProjectionMatrix();
+    this.invalidate();
   }
 
   /** Stops the render loop and frees the renderer, its WebGL context and the grid. */
   dispose(): void {
     this.renderer.setAnimationLoop(null);
+    for (const type of WAKING_EVENTS) window.removeEventListener(type, this.wake);
+    for (const type of ONE_FRAME_EVENTS) window.removeEventListener(type, this.drawOnce);
     this.resizeObserver.disconnect();
     this.orbit.dispose();
     this.grid.geometry.dispose();
@@ -157,6 +196,17 @@ export class Stage {
     const dt = this.last ? Math.min((t - this.last) / 1000, 0.1) : 0;
     this.last = t;
     for (const cb of this.callbacks) cb(dt);
+    const now = performance.now();
+    if (!this.renderer.xr.isPresenting && !this.drawNext && now >= this.activeUntil && now - this.lastDraw < IDLE_FRAME_MS) {
+      // Not drawn, but posed: the gizmo places its handles in updateMatrixWorld, and a pointer's
+      // first move over it must find them where they are drawn.
+      this.scene.updateMatrixWorld();
+      this.camera.updateMatrixWorld();
+      return;
+    }
+    this.lastDraw = now;
+    this.drawNext = false;
+    this.drawnFrames++;
     this.renderer.render(this.scene, this.camera);
   }
 }
