@@ -1,8 +1,8 @@
 // One benchmark run: load and check the rigs, make the target sets, run every (rig, experiment,
 // method, engine) on them and summarise each into a row. Knows nothing of argv or output files.
-import type { IkCoreModule } from '../web/src/ik/module.js';
-import { IkRig } from '../web/src/ik/rig.js';
-import { defaultTolerances, dragTolerances, rigSize } from '../web/src/rig/tolerances.js';
+import type { IkCoreModule } from '#ik/module.js';
+import { IkRig } from '#ik/rig.js';
+import { defaultTolerances, dragTolerances, rigSize } from '#rig/tolerances.js';
 import { draggableEffectors } from './effectors.js';
 import { BenchError, errorLine } from './errors.js';
 import { flipLimbs, type FlipLimb } from './flips.js';

@@ -5,7 +5,7 @@
 // tangents); a clip's frame rate is the one its keyframes are spaced at.
 import { type Animation, type Node, NodeIO } from '@gltf-transform/core';
 
-import { fromTRS, invertAffine, multiply } from '../web/src/rig/mat4.js';
+import { fromTRS, invertAffine, multiply } from '#rig/mat4.js';
 import { BenchError } from './errors.js';
 
 /** One clip: its name, frame rate (per second) and frame count (from time 0 to its end). */

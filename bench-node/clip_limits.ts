@@ -4,9 +4,9 @@
 // pose the solver may find. The root bone's rotation is its world one (it has no parent).
 import { Matrix4, Quaternion, Vector3 } from 'three';
 
-import type { RigSpec } from '../web/src/ik/rig_spec.js';
-import { fromRowMajor } from '../web/src/three/row_major.js';
-import { xzxWithinLimits } from '../web/src/rig/xzx_angles.js';
+import type { RigSpec } from '#ik/rig_arrays.js';
+import { fromRowMajor } from '#view/row_major.js';
+import { xzxWithinLimits } from '#rig/xzx_angles.js';
 
 const X = new Vector3(1, 0, 0), Z = new Vector3(0, 0, 1), RAD = Math.PI / 180;
 

@@ -5,8 +5,8 @@ import { closeSync, existsSync, openSync, unlinkSync } from 'node:fs';
 import { availableParallelism, cpus } from 'node:os';
 import { fileURLToPath } from 'node:url';
 
-import { loadIkNode } from '../web/src/ik/node.js';
-import { IkSolver } from '../web/src/ik/solver.js';
+import { loadIkNode } from '#ik/node.js';
+import { IkSolver } from '#ik/solver.js';
 import { noGesturesNote, prepareRigs, runBench, totalSolves } from './bench.js';
 import { compareTable, readReferenceCsv } from './compare.js';
 import { BenchError, errorLine } from './errors.js';

@@ -4,9 +4,9 @@
 // on a recognised humanoid where its chain can keep both (web/src/live/pinned_frames.ts), the
 // frame it had when the path began. Our solvers get these goals on both engines (the native tool's --page-goals); the peers
 // take the positions alone.
-import type { EffectorGoal, Goals } from '../web/src/ik/goals.js';
-import type { RigSpec } from '../web/src/ik/rig_spec.js';
-import { framesKept } from '../web/src/live/pinned_frames.js';
+import type { EffectorGoal, Goals } from '#ik/goals.js';
+import type { RigSpec } from '#ik/rig_arrays.js';
+import { framesKept } from '#live/pinned_frames.js';
 
 export class DragGoals {
   private pins: Float64Array;

@@ -1,6 +1,6 @@
 // Which end effectors a drag or reach path can move while the others stay pinned, and the chains
 // that carry them. Bones are indices into the spec; effectors are indices into spec.effectors.
-import type { RigSpec } from '../web/src/ik/rig_spec.js';
+import type { RigSpec } from '#ik/rig_arrays.js';
 
 /** Per bone, the end effectors on it or below it (an effector listed twice counts twice). */
 function effectorsBelow(spec: RigSpec): Int32Array {

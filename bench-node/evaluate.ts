@@ -1,6 +1,6 @@
 // E, tip distances, the on-target test, wobble and jumps from end-effector positions and angles,
 // the same for every method and engine.
-import { largestTipDistance } from '../web/src/ik/tip_distance.js';
+import { largestTipDistance } from '#ik/tip_distance.js';
 
 /** E = 1/2 |tips - target|^2 (tips and target: 3 per end effector). */
 export function errorOf(tips: ArrayLike<number>, target: ArrayLike<number>): number {

@@ -10,16 +10,16 @@
 // parts is more than BENT_DEG (the plane is defined then), at both poses for the turn test.
 //
 // Anatomical direction (humanoids only; other rigs have no anatomy to hold, only the turn test):
-// the importer's bend axis of the role (web/src/rig/anatomy_axes.ts, which pole_limbs.ts turns
+// the importer's bend axis of the role (web/src/rig/anatomy/anatomy_axes.ts, which pole_limbs.ts turns
 // into the way the joint leaves the root-tip line: the elbow back so the forearm comes forward,
 // the knee forward so the shin goes back). A positive bend turns the lower bone about that axis, so
 // a limb bent the anatomical way has n along the axis carried by the upper bone: n . (R_upper a) > 0.
 // A limb bent with n . (R_upper a) < 0 bends against it.
-import { limbPoints } from '../web/src/live/pole_placement.js';
-import { poleLimbs } from '../web/src/live/pole_limbs.js';
-import type { RigSpec } from '../web/src/ik/rig_spec.js';
-import { cross, dot, norm, restAxis, sub, unit, type Vec3 } from '../web/src/rig/anatomy_vec.js';
-import type { HumanoidMap } from '../web/src/rig/humanoid_roles.js';
+import { limbPoints } from '#live/pole_placement.js';
+import { poleLimbs } from '#live/pole_limbs.js';
+import type { RigSpec } from '#ik/rig_arrays.js';
+import { cross, dot, norm, restAxis, sub, unit, type Vec3 } from '#rig/anatomy/anatomy_vec.js';
+import type { HumanoidMap } from '#rig/humanoid/humanoid_roles.js';
 
 /** A limb's bend plane turning more than this (degrees) in one step is a flip. */
 export const FLIP_TURN_DEG = 90;

@@ -10,15 +10,15 @@
 // A path runs through waypoints placed on the body at P(0) (gesturePaths), each leg split into equal
 // steps of at most GESTURE_STEP_SHARE of the height, so every step moves the target less than that.
 // The body: its up, forward and left directions from the importer's humanoid frame
-// (web/src/rig/anatomy_frame.ts), joints at P(0) from forward kinematics; `height` is the extent of
+// (web/src/rig/anatomy/anatomy_frame.ts), joints at P(0) from forward kinematics; `height` is the extent of
 // every bone's head and tip at P(0) along up, an arm's length the distance from the shoulder (the
 // upper arm's head) to the hand effector's tip, a leg's from the hip to the foot effector's tip.
 // Paths are chained like reach's (each step from the previous step's solution); whether a step can
 // be reached at all is reachability.ts's to decide, as for reach.
-import type { RigSpec } from '../web/src/ik/rig_spec.js';
-import { bodyFrame } from '../web/src/rig/anatomy_frame.js';
-import { add, dot, norm, scale, sub, type Vec3 } from '../web/src/rig/anatomy_vec.js';
-import type { HumanoidMap, HumanoidRole } from '../web/src/rig/humanoid_roles.js';
+import type { RigSpec } from '#ik/rig_arrays.js';
+import { bodyFrame } from '#rig/anatomy/anatomy_frame.js';
+import { add, dot, norm, scale, sub, type Vec3 } from '#rig/anatomy/anatomy_vec.js';
+import type { HumanoidMap, HumanoidRole } from '#rig/humanoid/humanoid_roles.js';
 import { jointPositions } from './jumps.js';
 import type { TargetSet } from './targets.js';
 

@@ -8,7 +8,7 @@
 // Poses are IkRig.poses() (16 row-major numbers per bone: the transform T_i from bone i's rest
 // frame to its posed one); a bone's head is T_i applied to its rest origin, its tip T_i applied to
 // rest origin + length * rest x axis (README "Conventions": tip = T_i * rest_i * (length, 0, 0)).
-import type { RigSpec } from '../web/src/ik/rig_spec.js';
+import type { RigSpec } from '#ik/rig_arrays.js';
 import type { TargetSet, TipsFn } from './targets.js';
 
 /** A joint moving more than this share of the rig size in one step may be a jump. */

@@ -10,7 +10,7 @@
 // An effector whose tip lies on that point has no direction and no paths. Paths are chained: each
 // step starts from the previous step's solution. Nothing makes these targets reachable (a step
 // sideways from a straight limb leaves its reach): reachability.ts decides that per step.
-import type { RigSpec } from '../web/src/ik/rig_spec.js';
+import type { RigSpec } from '#ik/rig_arrays.js';
 import { chainRootBone, draggableEffectors } from './effectors.js';
 import type { TargetSet } from './targets.js';
 

@@ -5,7 +5,7 @@
 // REACH_MARGIN^2 ftol): a step the reference meets only with more than that, on the edge of what
 // the limbs reach and the pinned tips' slack allows, counts as out of reach. Drag, random and
 // incremental targets are poses' tips, reachable by construction, and are never solved here.
-import type { RigSpec } from '../web/src/ik/rig_spec.js';
+import type { RigSpec } from '#ik/rig_arrays.js';
 import { isOnTarget } from './evaluate.js';
 import type { RunSettings } from './runner.js';
 import { runOnPool, type WorkerPool } from './run_wasm.js';

@@ -14,15 +14,15 @@ import { existsSync, realpathSync } from 'node:fs';
 import { extname, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
 
-import type { RigSpec } from '../web/src/ik/rig_spec.js';
-import type { HumanoidMap } from '../web/src/rig/humanoid_roles.js';
-import { specWithFileLimits, type RigFormat } from '../web/src/rig/load_rig.js';
-import { loadRigFromPath } from '../web/src/rig/load_rig_node.js';
+import type { RigSpec } from '#ik/rig_arrays.js';
+import type { HumanoidMap } from '#rig/humanoid/humanoid_roles.js';
+import { specWithFileLimits, type RigFormat } from '#rig/load_rig.js';
+import { loadRigFromPath } from '#rig/load_rig_node.js';
 import { BenchError, errorLine, quote } from './errors.js';
 
 export const projectModelsDir = fileURLToPath(new URL('../web/public/models/', import.meta.url));
 
-export { REFERENCE_SIZE, rigSize } from '../web/src/rig/tolerances.js';
+export { REFERENCE_SIZE, rigSize } from '#rig/tolerances.js';
 
 export interface BenchRig {
   /** The file's base name without extension: "knight". */

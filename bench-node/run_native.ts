@@ -8,8 +8,8 @@ import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { fileURLToPath } from 'node:url';
 
-import type { RigSpec } from '../web/src/ik/rig_spec.js';
-import { writeA7Rig } from './a7_writer.js';
+import type { RigSpec } from '#ik/rig_arrays.js';
+import { writeA7Rig } from '#rig/a7/a7_writer.js';
 import { pinnedFramesArgument } from './drag_goals.js';
 import { BenchError, quote } from './errors.js';
 import type { SolveResult } from './metrics.js';

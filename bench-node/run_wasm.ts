@@ -6,8 +6,8 @@
 import { readFileSync } from 'node:fs';
 import { Worker } from 'node:worker_threads';
 
-import type { RigSpec } from '../web/src/ik/rig_spec.js';
-import { wasmPath } from '../web/src/ik/node.js';
+import type { RigSpec } from '#ik/rig_arrays.js';
+import { wasmPath } from '#ik/node.js';
 import { BenchError } from './errors.js';
 import type { FlipLimb } from './flips.js';
 import type { SolveResult } from './metrics.js';

@@ -1,8 +1,8 @@
 // Which Runner solves a method: the peers' adapters (with the solvers' restart policy applied by
 // the harness, peers/restarting.ts), or our solvers through the WebAssembly API.
-import type { IkCoreModule } from '../web/src/ik/module.js';
-import { IkRig } from '../web/src/ik/rig.js';
-import type { RigSpec } from '../web/src/ik/rig_spec.js';
+import type { IkCoreModule } from '#ik/module.js';
+import { IkRig } from '#ik/rig.js';
+import type { RigSpec } from '#ik/rig_arrays.js';
 import { ClosedChainIkRunner } from './peers/closed_chain_ik.js';
 import { RestartingRunner } from './peers/restarting.js';
 import { ThreeCcdRunner } from './peers/three_ccd.js';

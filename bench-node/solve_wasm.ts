@@ -1,10 +1,10 @@
 // Our solvers through the WebAssembly API (web/src/ik/solver.ts), as a user calls them: one
 // IkSolver per (rig, method, options), solve(start, target) per target.
-import type { IkCoreModule } from '../web/src/ik/module.js';
-import { IkRig } from '../web/src/ik/rig.js';
-import type { RigSpec } from '../web/src/ik/rig_spec.js';
-import { IkSolver, type SolverOptions } from '../web/src/ik/solver.js';
-import type { Goals } from '../web/src/ik/goals.js';
+import type { IkCoreModule } from '#ik/module.js';
+import { IkRig } from '#ik/rig.js';
+import type { RigSpec } from '#ik/rig_arrays.js';
+import { IkSolver, type SolverOptions } from '#ik/solver.js';
+import type { Goals } from '#ik/goals.js';
 import { DragGoals } from './drag_goals.js';
 import { errorOf, largestChange, pinnedDeviation, tipDistance } from './evaluate.js';
 import type { SolveResult } from './metrics.js';

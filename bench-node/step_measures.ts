@@ -3,8 +3,8 @@
 // (flips.ts). The same for every engine and method: the wasm engine and the peers measure in their
 // worker from the angles they return, the native engine's steps in the main thread from the
 // angles its tool writes (the tool measures the joint move itself too: jump_move).
-import type { IkRig } from '../web/src/ik/rig.js';
-import type { RigSpec } from '../web/src/ik/rig_spec.js';
+import type { IkRig } from '#ik/rig.js';
+import type { RigSpec } from '#ik/rig_arrays.js';
 import { isFlip, type FlipLimb } from './flips.js';
 import { jointPositions, largestMove } from './jumps.js';
 import type { SolveResult } from './metrics.js';

@@ -22,7 +22,7 @@
 // Angles are degrees, P clamps to limits. The native tools and tests make random and incremental
 // sets with the same streams in C++ (wasm/native/protocol.h); tests/bench/protocol_agreement.test.ts
 // checks both give the same sets.
-import type { RigSpec } from '../web/src/ik/rig_spec.js';
+import type { RigSpec } from '#ik/rig_arrays.js';
 import { draggableEffectors, exclusiveAngles } from './effectors.js';
 import { fillGestures, gesturePaths, gestureSteps, type GestureBody } from './gestures.js';
 import { signedUnit, streamFor } from './prng.js';

@@ -18,7 +18,7 @@
 // within 1e-5 implies each of x, y, z within 1e-5.
 import { extname } from 'node:path';
 
-import type { RigSpec } from '../web/src/ik/rig_spec.js';
+import type { RigSpec } from '#ik/rig_arrays.js';
 import { BenchError, quote } from './errors.js';
 import type { BenchOptions } from './options.js';
 import type { RunSettings } from './runner.js';

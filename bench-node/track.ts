@@ -25,13 +25,13 @@ import { runInNewContext } from 'node:vm';
 
 import { Matrix4, Quaternion } from 'three';
 
-import { AvatarSolver, type AvatarInput, type TrackedPose } from '../web/src/avatar/avatar_solver.js';
-import { rotationAngleDeg } from '../web/src/ik/goals.js';
-import type { IkCoreModule } from '../web/src/ik/module.js';
-import type { RigSpec } from '../web/src/ik/rig_spec.js';
-import type { HumanoidMap, HumanoidRole } from '../web/src/rig/humanoid_roles.js';
-import { transformPoint } from '../web/src/rig/mat4.js';
-import { fromRowMajor } from '../web/src/three/row_major.js';
+import { AvatarSolver, type AvatarInput, type TrackedPose } from '#avatar/avatar_solver.js';
+import { rotationAngleDeg } from '#ik/goals.js';
+import type { IkCoreModule } from '#ik/module.js';
+import type { RigSpec } from '#ik/rig_arrays.js';
+import type { HumanoidMap, HumanoidRole } from '#rig/humanoid/humanoid_roles.js';
+import { transformPoint } from '#rig/mat4.js';
+import { fromRowMajor } from '#view/row_major.js';
 import { ClipFrames } from './clip_frames.js';
 import { limitExcessDeg } from './clip_limits.js';
 import { BenchError } from './errors.js';

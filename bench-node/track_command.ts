@@ -1,6 +1,6 @@
 // `npm run bench -- --rig FILE --experiment track [--clips NAME,...|all] [--points 3|6]`: every
 // rig's clips through the avatar solver (track.ts), a table on stdout, the rows as JSON and CSV.
-import type { IkCoreModule } from '../web/src/ik/module.js';
+import type { IkCoreModule } from '#ik/module.js';
 import { BenchError } from './errors.js';
 import type { BenchOptions } from './options.js';
 import { csvTable, writeJson, writeText } from './outputs.js';

@@ -6,7 +6,7 @@
 // lasts that long whatever the solves cost: a fixed 30 solves (about 0.1 ms of work on the lamp)
 // left V8's optimising tier unreached, and the lamp's timed median was 2x too slow (9.4 against
 // 4.7 us after 300 ms of warm-up, native 2.7 us).
-import type { RigSpec } from '../web/src/ik/rig_spec.js';
+import type { RigSpec } from '#ik/rig_arrays.js';
 import type { RotationsFn } from './pose_goals.js';
 import { streamFor } from './prng.js';
 import type { Runner } from './runner.js';

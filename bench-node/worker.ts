@@ -2,9 +2,9 @@
 // thread), then runs batches of solves with one Runner per (rig, settings) and replies per batch.
 import { parentPort, workerData } from 'node:worker_threads';
 
-import type { IkCoreModule } from '../web/src/ik/module.js';
-import { loadIk } from '../web/src/ik/module.js';
-import { IkRig } from '../web/src/ik/rig.js';
+import type { IkCoreModule } from '#ik/module.js';
+import { loadIk } from '#ik/module.js';
+import { IkRig } from '#ik/rig.js';
 import { errorOf, tipDistance } from './evaluate.js';
 import type { SolveResult } from './metrics.js';
 import { largestRotationErrorDeg, largestTwistComponent } from './pose_goals.js';

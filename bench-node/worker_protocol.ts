@@ -1,5 +1,5 @@
 // Messages between the main thread (run_wasm.ts) and the worker threads (worker.ts).
-import type { RigSpec } from '../web/src/ik/rig_spec.js';
+import type { RigSpec } from '#ik/rig_arrays.js';
 import type { FlipLimb } from './flips.js';
 import type { SolveResult } from './metrics.js';
 import type { RunSettings } from './runner.js';

@@ -7,7 +7,7 @@
 import { Command, InvalidArgumentError, Option } from 'commander';
 import { SingleBar } from 'cli-progress';
 
-import { loadIkNode } from '../web/src/ik/node.js';
+import { loadIkNode } from '#ik/node.js';
 import { FUZZ_KINDS, type FuzzKind } from '../tests/fuzz/case_id.js';
 import { deepChainSummary } from '../tests/fuzz/deep_chain.js';
 import { budgetSummary, countTable, exitCode, failureList } from '../tests/fuzz/report.js';

@@ -4,9 +4,9 @@
 // gives one line `rig: ...` on stderr and exit code 1; a usage error exit code 2.
 import { Command, CommanderError } from 'commander';
 
-import { HUMANOID_ROLES, type HumanoidRole } from '../web/src/rig/humanoid_roles.js';
-import { RigFormatError, type LoadedRig } from '../web/src/rig/load_rig.js';
-import { loadRigFromPath } from '../web/src/rig/load_rig_node.js';
+import { HUMANOID_ROLES, type HumanoidRole } from '#rig/humanoid/humanoid_roles.js';
+import { RigFormatError, type LoadedRig } from '#rig/load_rig.js';
+import { loadRigFromPath } from '#rig/load_rig_node.js';
 
 /** Limits of one bone, degrees per XZX angle; null = unbounded. */
 export interface BoneLimits {

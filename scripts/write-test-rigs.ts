@@ -1,7 +1,7 @@
 // Writes the project's own rigs in A7 format to build/test-rigs/NAME.json, and the list of their
 // names to build/test-rigs/names.txt, for the native tests (which cannot read .glb) and the
 // TypeScript tests that run on both rig sets: each web/public/models/NAME.glb read by
-// loadRigFromPath and written by bench-node/a7_writer.ts. A build product, never committed:
+// loadRigFromPath and written by web/src/rig/a7/a7_writer.ts. A build product, never committed:
 // `npm test` writes them before the native tests, and vitest's global setup before its suites, so
 // they always follow the current models and importer.
 //   npx tsx scripts/write-test-rigs.ts
@@ -9,8 +9,8 @@ import { mkdirSync, writeFileSync } from 'node:fs';
 import { resolve } from 'node:path';
 import { fileURLToPath, pathToFileURL } from 'node:url';
 
-import { writeA7Rig } from '../bench-node/a7_writer.js';
-import { loadRigFromPath } from '../web/src/rig/load_rig_node.js';
+import { writeA7Rig } from '#rig/a7/a7_writer.js';
+import { loadRigFromPath } from '#rig/load_rig_node.js';
 
 /** The project models written, by base name. */
 export const testRigNames = ['knight', 'lamp', 'robot-arm', 'hand', 'beast', 'character'] as const;

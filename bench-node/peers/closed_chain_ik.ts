@@ -18,7 +18,7 @@ import * as closedChainIk from 'closed-chain-ik/src/core/index.js';
 import { Goal, Joint, Link, Solver, SOLVE_STATUS_NAMES } from 'closed-chain-ik/src/core/index.js';
 import { Matrix4, Quaternion, Vector3 } from 'three';
 
-import type { RigSpec } from '../../web/src/ik/rig_spec.js';
+import type { RigSpec } from '#ik/rig_arrays.js';
 import { errorOf, isOnTarget, largestChange, pinnedDeviation, tipDistance } from '../evaluate.js';
 import type { SolveResult } from '../metrics.js';
 import { largestRotationErrorDeg, ORIENTATION_TOLERANCE_DEG, type RotationsFn } from '../pose_goals.js';

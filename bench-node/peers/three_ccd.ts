@@ -17,12 +17,12 @@
 import { Bone, BufferGeometry, Matrix4, MeshBasicMaterial, Object3D, Quaternion, Skeleton, SkinnedMesh, Vector3 } from 'three';
 import { CCDIKSolver, type IK } from 'three/examples/jsm/animation/CCDIKSolver.js';
 
-import type { RigSpec } from '../../web/src/ik/rig_spec.js';
+import type { RigSpec } from '#ik/rig_arrays.js';
 import { errorOf, isOnTarget, largestChange, pinnedDeviation, tipDistance } from '../evaluate.js';
 import type { SolveResult } from '../metrics.js';
 import type { Runner, RunSettings, SolveInput } from '../runner.js';
 import { project } from '../targets.js';
-import { xzxWithinLimits } from '../../web/src/rig/xzx_angles.js';
+import { xzxWithinLimits } from '#rig/xzx_angles.js';
 
 export const STALL_PASSES = 100;
 export const STALL_RATIO = 1e-3;

@@ -8,10 +8,10 @@
 import { resolve } from 'node:path';
 import { fileURLToPath, pathToFileURL } from 'node:url';
 
-import { loadIkNode } from '../../web/src/ik/node.js';
-import { IkRig } from '../../web/src/ik/rig.js';
-import { IkSolver } from '../../web/src/ik/solver.js';
-import { loadRigFromPath } from '../../web/src/rig/load_rig_node.js';
+import { loadIkNode } from '#ik/node.js';
+import { IkRig } from '#ik/rig.js';
+import { IkSolver } from '#ik/solver.js';
+import { loadRigFromPath } from '#rig/load_rig_node.js';
 import { streamFor } from '../prng.js';
 import { incrementalAngles } from '../targets.js';
 

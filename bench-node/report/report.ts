@@ -22,7 +22,7 @@ import { join, resolve } from 'node:path';
 import { Command, InvalidArgumentError } from 'commander';
 
 import { testRigNames } from '../../scripts/write-test-rigs.js';
-import { reportTolerances } from '../../web/src/rig/tolerances.js';
+import { reportTolerances } from '#rig/tolerances.js';
 import { parseReferenceCsv } from '../compare.js';
 import { charts } from './charts.js';
 import { draggingSection } from './dragging.js';

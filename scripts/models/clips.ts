@@ -6,11 +6,11 @@
 // turn), so a clip can say "bend the shin back 40 degrees" without knowing the joints' local axes.
 import type { Accessor, AnimationSampler, Buffer, Document, Node } from '@gltf-transform/core';
 
-import { type Quat, inverse, mul } from '../../web/src/rig/quat.js';
+import { type Quat, inverse, mul } from '#rig/quat.js';
 import { keptFrames } from './key_reduction.js';
 import { type Vec3, cross, dot, length, normalize } from './vec.js';
 
-export { type Quat, inverse, mul, rotate } from '../../web/src/rig/quat.js';
+export { type Quat, inverse, mul, rotate } from '#rig/quat.js';
 
 export interface ClipPose {
   /** Per joint name, its turn (armature coordinates); joints not listed keep their rest rotation. */

@@ -4,8 +4,8 @@
 // Everything is computed from the description alone, so the output is byte-for-byte reproducible.
 import { Document, type Material, type Node } from '@gltf-transform/core';
 
-import { chooseChainChild } from '../../web/src/rig/chain_child.js';
-import { fromTRS, invertAffine, multiply, transformPoint } from '../../web/src/rig/mat4.js';
+import { chooseChainChild } from '#rig/chain_child.js';
+import { fromTRS, invertAffine, multiply, transformPoint } from '#rig/mat4.js';
 import { addClips, type ClipDef, type ClipJoint, type Quat } from './clips.js';
 import { type Vec3, cross, dot, normalize, scale, sub } from './vec.js';
 

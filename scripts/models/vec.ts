@@ -1,7 +1,7 @@
 // 3-vectors as tuples, for the model generator: the importer's helpers plus a few of its own.
-import { add, norm, scale, sub, type Vec3 } from '../../web/src/rig/anatomy_vec.js';
+import { add, norm, scale, sub, type Vec3 } from '#rig/anatomy/anatomy_vec.js';
 
-export { add, cross, dot, scale, sub, type Vec3 } from '../../web/src/rig/anatomy_vec.js';
+export { add, cross, dot, scale, sub, type Vec3 } from '#rig/anatomy/anatomy_vec.js';
 export const length = norm;
 export const normalize = (a: Vec3): Vec3 => scale(a, 1 / length(a));
 /** a + t (b - a) */

@@ -10,7 +10,7 @@ import { join, resolve } from 'node:path';
 
 import { afterAll, describe, expect, it } from 'vitest';
 
-import { writeA7Rig } from '../../bench-node/a7_writer.js';
+import { writeA7Rig } from '../../web/src/rig/a7/a7_writer.js';
 import { prepareRigs } from '../../bench-node/bench.js';
 import { parseOptions } from '../../bench-node/options.js';
 import { checkOutputs } from '../../bench-node/outputs.js';

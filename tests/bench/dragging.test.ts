@@ -17,7 +17,7 @@ import { DRAG_PATH_STEPS, generateTargets, independentRanges, prefix, type Targe
 import type { IkCoreModule } from '../../web/src/ik/module.js';
 import { loadIkNode } from '../../web/src/ik/node.js';
 import { IkRig } from '../../web/src/ik/rig.js';
-import type { RigSpec } from '../../web/src/ik/rig_spec.js';
+import type { RigSpec } from '../../web/src/ik/rig_arrays.js';
 import { IkSolver } from '../../web/src/ik/solver.js';
 import { dragTolerances, rigSize } from '../../web/src/rig/tolerances.js';
 import { loadTestRig, rigsLike } from '../helpers/a7.js';

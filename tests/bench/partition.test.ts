@@ -3,14 +3,14 @@
 // native engine reads back bit for bit.
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 
-import { UNBOUNDED_DEG, writeA7Rig } from '../../bench-node/a7_writer.js';
+import { UNBOUNDED_DEG, writeA7Rig } from '../../web/src/rig/a7/a7_writer.js';
 import { decodeResults, encodeJob } from '../../bench-node/run_native.js';
 import { batchesOf } from '../../bench-node/run_wasm.js';
 import { generateTargets, type TargetSet } from '../../bench-node/targets.js';
 import type { IkCoreModule } from '../../web/src/ik/module.js';
 import { loadIkNode } from '../../web/src/ik/node.js';
 import { IkRig } from '../../web/src/ik/rig.js';
-import { parseA7Rig } from '../../web/src/rig/a7_rig.js';
+import { parseA7Rig } from '../../web/src/rig/a7/a7_rig.js';
 import { loadTestRig, rigsLike, testRigs } from '../helpers/a7.js';
 
 let ik: IkCoreModule;

@@ -8,7 +8,7 @@ import { generateTargets, independentRanges, project } from '../../bench-node/ta
 import type { IkCoreModule } from '../../web/src/ik/module.js';
 import { loadIkNode } from '../../web/src/ik/node.js';
 import { IkRig } from '../../web/src/ik/rig.js';
-import type { RigSpec } from '../../web/src/ik/rig_spec.js';
+import type { RigSpec } from '../../web/src/ik/rig_arrays.js';
 import { loadTestRig, maxAbsDiff, referenceTips, seeded, testRigs } from '../helpers/a7.js';
 import { sketchRig, straightLimb } from '../helpers/rig_builder.js';
 

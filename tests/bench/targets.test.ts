@@ -17,7 +17,7 @@ import {
 import type { IkCoreModule } from '../../web/src/ik/module.js';
 import { loadIkNode } from '../../web/src/ik/node.js';
 import { IkRig } from '../../web/src/ik/rig.js';
-import type { RigSpec } from '../../web/src/ik/rig_spec.js';
+import type { RigSpec } from '../../web/src/ik/rig_arrays.js';
 import { loadTestRig, maxAbsDiff, referenceTips, rigsLike, testRigs, type TestRig } from '../helpers/a7.js';
 import { sketchRig } from '../helpers/rig_builder.js';
 

@@ -21,7 +21,7 @@ import {
 } from '../../bench-node/tracik.js';
 import { publishedRow, TRACIK_PUBLISHED, tracikTable, withPublished, type PublishedRow } from '../../bench-node/tracik_table.js';
 import type { Row } from '../../bench-node/metrics.js';
-import type { RigSpec } from '../../web/src/ik/rig_spec.js';
+import type { RigSpec } from '../../web/src/ik/rig_arrays.js';
 import { loadIkNode } from '../../web/src/ik/node.js';
 import { IkRig } from '../../web/src/ik/rig.js';
 import { IkSolver } from '../../web/src/ik/solver.js';

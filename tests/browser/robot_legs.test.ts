@@ -5,7 +5,7 @@
 // controls, and the importer's message says so. The left leg's target dragged up 15% of the
 // height with the mouse (the gizmo's up arrow): the leg's end reaches it within δ (the page's
 // "on target within"), the foot's mesh comes up with it, held where it was relative to the leg's
-// end (web/src/rig/control_follow.ts), while the right foot, its mesh, the head and the hands stay
+// end (web/src/rig/humanoid/control_follow.ts), while the right foot, its mesh, the head and the hands stay
 // where they were within δ and the right foot turns by less than 3°. Writes
 // test-results/robot-leg-lift.png (the lifted leg, bones hidden).
 import { mkdirSync, writeFileSync } from 'node:fs';

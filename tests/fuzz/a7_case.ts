@@ -3,7 +3,7 @@
 import { existsSync, readdirSync, readFileSync } from 'node:fs';
 import { join } from 'node:path';
 
-import { writeA7Rig } from '../../bench-node/a7_writer.js';
+import { writeA7Rig } from '../../web/src/rig/a7/a7_writer.js';
 import { MAX_BONES } from '../../web/src/rig/rig_limits.js';
 import { a7Dir } from '../helpers/a7.js';
 import { mutateA7, type A7Doc } from './a7_mutators.js';

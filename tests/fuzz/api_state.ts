@@ -1,7 +1,7 @@
 // What an API case works on: one rig, its current solver, and what the fuzzer knows about them.
 import type { IkCoreModule } from '../../web/src/ik/module.js';
 import type { IkRig } from '../../web/src/ik/rig.js';
-import type { RigSpec } from '../../web/src/ik/rig_spec.js';
+import type { RigSpec } from '../../web/src/ik/rig_arrays.js';
 import type { IkSolver } from '../../web/src/ik/solver.js';
 import type { BudgetSample } from './case_id.js';
 

@@ -1,5 +1,5 @@
 // The outcome of a solve that returned: clean, silently wrong, or a reported numerical failure.
-import type { RigSpec } from '../../web/src/ik/rig_spec.js';
+import type { RigSpec } from '../../web/src/ik/rig_arrays.js';
 import type { SolverResult } from '../../web/src/ik/solver.js';
 import { OK, type Outcome } from './outcome.js';
 import { solveProblem } from './result_checks.js';

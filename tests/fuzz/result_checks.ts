@@ -1,6 +1,6 @@
 // Checks of what the API returned: each returns undefined for a clean value or one line saying
 // what is wrong (a silent wrong result).
-import type { RigSpec } from '../../web/src/ik/rig_spec.js';
+import type { RigSpec } from '../../web/src/ik/rig_arrays.js';
 import type { SolverResult } from '../../web/src/ik/solver.js';
 import { effectorTips, forwardKinematics } from './forward_kinematics.js';
 

@@ -2,7 +2,7 @@
 // core's error does not name the file), give the reference tips, and solve cleanly.
 import type { IkCoreModule } from '../../web/src/ik/module.js';
 import { IkRig } from '../../web/src/ik/rig.js';
-import type { RigSpec } from '../../web/src/ik/rig_spec.js';
+import type { RigSpec } from '../../web/src/ik/rig_arrays.js';
 import { IkSolver } from '../../web/src/ik/solver.js';
 import { attempt } from './attempt.js';
 import type { BudgetSample } from './case_id.js';

@@ -11,8 +11,8 @@ import { readFileSync } from 'node:fs';
 import { resolve } from 'node:path';
 
 import { testRigNames, testRigsDir } from '../../scripts/write-test-rigs.js';
-import type { RigSpec } from '../../web/src/ik/rig_spec.js';
-import { parseA7Rig } from '../../web/src/rig/a7_rig.js';
+import type { RigSpec } from '../../web/src/ik/rig_arrays.js';
+import { parseA7Rig } from '../../web/src/rig/a7/a7_rig.js';
 import { reportTolerances } from '../../web/src/rig/tolerances.js';
 import { A7_TAG, a7Dir, a7Present } from './a7_folder.js';
 

@@ -7,8 +7,8 @@ import { WebIO } from '@gltf-transform/core';
 import { character } from '../../scripts/models/character.js';
 import { buildDocument, type JointDef } from '../../scripts/models/model.js';
 import { cross, normalize, sub, type Vec3 } from '../../scripts/models/vec.js';
-import type { RigSpec } from '../../web/src/ik/rig_spec.js';
-import type { HumanoidMap, HumanoidRole, HumanoidSource } from '../../web/src/rig/humanoid_roles.js';
+import type { RigSpec } from '../../web/src/ik/rig_arrays.js';
+import type { HumanoidMap, HumanoidRole, HumanoidSource } from '../../web/src/rig/humanoid/humanoid_roles.js';
 import { loadRig, specWithFileLimits } from '../../web/src/rig/load_rig.js';
 import { testCharacterGlb } from './gltf_character.js';
 

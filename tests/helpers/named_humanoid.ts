@@ -2,7 +2,7 @@
 // names and arranges its own way (Biped hangs the thighs off the spine, Rigify puts a bone
 // between neck and head...), plus the helper bones real files carry (finger, end, twist and IK
 // bones), so that recognition has to pick the right ones.
-import type { HumanoidRole } from '../../web/src/rig/humanoid_roles.js';
+import type { HumanoidRole } from '../../web/src/rig/humanoid/humanoid_roles.js';
 import { type Vec3, add, mirrorX } from '../../scripts/models/vec.js';
 import type { SkeletonJoint } from './skeleton_glb.js';
 

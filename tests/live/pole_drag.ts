@@ -6,13 +6,13 @@
 import { resolve } from 'node:path';
 
 import type { IkCoreModule } from '../../web/src/ik/module.js';
-import type { RigSpec } from '../../web/src/ik/rig_spec.js';
+import type { RigSpec } from '../../web/src/ik/rig_arrays.js';
 import { budgetStop } from '../../web/src/live/live_solve.js';
 import { type PoleLimb, poleLimbs } from '../../web/src/live/pole_limbs.js';
 import { initialPole, limbPoints } from '../../web/src/live/pole_placement.js';
 import { IkSession } from '../../web/src/live/session.js';
-import type { SolveSettings } from '../../web/src/live/solver.js';
-import { add, cross, dot, norm, reject, scale, sub, unit, type Vec3 } from '../../web/src/rig/anatomy_vec.js';
+import type { SolveSettings } from '../../web/src/live/method_solver.js';
+import { add, cross, dot, norm, reject, scale, sub, unit, type Vec3 } from '../../web/src/rig/anatomy/anatomy_vec.js';
 import { loadRigFromPath } from '../../web/src/rig/load_rig_node.js';
 import { dragTolerances, rigSize } from '../../web/src/rig/tolerances.js';
 

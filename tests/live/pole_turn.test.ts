@@ -11,7 +11,7 @@ import { afterEach, beforeAll, describe, expect, it } from 'vitest';
 import type { IkCoreModule } from '../../web/src/ik/module.js';
 import { loadIkNode } from '../../web/src/ik/node.js';
 import { IkSession } from '../../web/src/live/session.js';
-import { sub } from '../../web/src/rig/anatomy_vec.js';
+import { sub } from '../../web/src/rig/anatomy/anatomy_vec.js';
 import { limb, limbEffector, type PoleRig, poleRig, polePoint, settle, swivelTo, turnedAboutLimb, worstTip } from './pole_drag.js';
 
 let ik: IkCoreModule;

@@ -9,10 +9,10 @@ import { afterEach, beforeAll, describe, expect, it } from 'vitest';
 
 import type { IkCoreModule } from '../../web/src/ik/module.js';
 import { loadIkNode } from '../../web/src/ik/node.js';
-import type { RigSpec } from '../../web/src/ik/rig_spec.js';
+import type { RigSpec } from '../../web/src/ik/rig_arrays.js';
 import { solveFrame } from '../../web/src/live/live_solve.js';
 import { IkSession } from '../../web/src/live/session.js';
-import type { SolveSettings } from '../../web/src/live/solver.js';
+import type { SolveSettings } from '../../web/src/live/method_solver.js';
 import { applyStillBody, STILL_BODY_WEIGHT, stillBodyStiffness } from '../../web/src/live/still_body.js';
 import { loadRig } from '../../web/src/rig/load_rig.js';
 import { dragTolerances, restHeight, rigSize } from '../../web/src/rig/tolerances.js';

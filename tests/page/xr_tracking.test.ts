@@ -20,7 +20,7 @@ import { rotationAngleDeg } from '../../web/src/ik/goals.js';
 import type { IkCoreModule } from '../../web/src/ik/module.js';
 import { loadIkNode } from '../../web/src/ik/node.js';
 import { IkRig } from '../../web/src/ik/rig.js';
-import { readRig, type RigSource } from '../../web/src/live/rig_source.js';
+import { readRig, type RigSource } from '../../web/src/view/rig_source.js';
 import { IkSession } from '../../web/src/live/session.js';
 import { AvatarDriver } from '../../web/src/page/avatar_driver.js';
 import { TrackedPoints } from '../../web/src/page/tracked_points.js';

@@ -4,7 +4,7 @@
 // An unnamed bone gets the name '' so the core calls it `bone 3`, not `bone 3 "bone 3"`.
 import { describe, expect, it } from 'vitest';
 
-import { parseA7Rig } from '../../web/src/rig/a7_rig.js';
+import { parseA7Rig } from '../../web/src/rig/a7/a7_rig.js';
 import { chainParents, loadError, treeA7 } from './synthetic_rigs.js';
 
 const three = chainParents(3);

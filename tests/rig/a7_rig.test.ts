@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
 
-import { parseA7Rig } from '../../web/src/rig/a7_rig.js';
+import { parseA7Rig } from '../../web/src/rig/a7/a7_rig.js';
 import { a7Names, loadA7, needsA7 } from '../helpers/a7.js';
 
 const rest3x4 = '[[1,0,0,0],[0,1,0,0],[0,0,1,0]]';

@@ -1,4 +1,4 @@
-// The rest pose from the skins' bind pose (web/src/rig/bind_pose.ts, issue 30): a file saved
+// The rest pose from the skins' bind pose (web/src/rig/gltf/bind_pose.ts, issue 30): a file saved
 // posed (its nodes turned, its inverse bind matrices still the unposed rest) imports with the same
 // rest, limits and notes as the unposed file, and its pose comes as start angles
 // (GltfRigInfo.startAngles) that put every joint where the file has it. A file saved in its bind
@@ -14,11 +14,11 @@ import type { IkCoreModule } from '../../web/src/ik/module.js';
 import { loadIkNode } from '../../web/src/ik/node.js';
 import { IkRig } from '../../web/src/ik/rig.js';
 import { IkSolver } from '../../web/src/ik/solver.js';
-import { readNodes, worldMatrices } from '../../web/src/rig/gltf_nodes.js';
+import { readNodes, worldMatrices } from '../../web/src/rig/gltf/gltf_nodes.js';
 import { loadRig, type LoadedRig } from '../../web/src/rig/load_rig.js';
 import { multiply } from '../../web/src/rig/mat4.js';
 import { dragTolerances, rigSize } from '../../web/src/rig/tolerances.js';
-import { posedGlb } from '../../web/src/three/pose_glb.js';
+import { posedGlb } from '../../web/src/view/pose_glb.js';
 import { maxAbsDiff, randomAngles, seeded } from '../helpers/a7.js';
 import { nodeIndex, packGlb, unpackGlb } from '../helpers/glb.js';
 import { testCharacterGlb } from '../helpers/gltf_character.js';

@@ -4,8 +4,8 @@
 // both. A real foot at the end of its leg stays the foot.
 import { describe, expect, it } from 'vitest';
 
-import { controlBones, limbChainEnd } from '../../web/src/rig/control_bones.js';
-import { effectorsByName } from '../../web/src/rig/effector_defaults.js';
+import { controlBones, limbChainEnd } from '../../web/src/rig/humanoid/control_bones.js';
+import { effectorsByName } from '../../web/src/rig/gltf/effector_defaults.js';
 import { loadRig, type LoadedRig } from '../../web/src/rig/load_rig.js';
 import { skeletonGlb, type SkeletonJoint } from '../helpers/skeleton_glb.js';
 import { robotRig } from './synthetic_rigs.js';

@@ -4,7 +4,7 @@
 // sized past its budget, are refused before anything big is built.
 import { describe, expect, it } from 'vitest';
 
-import { deepestBones } from '../../web/src/rig/effector_defaults.js';
+import { deepestBones } from '../../web/src/rig/gltf/effector_defaults.js';
 import { jsonBudgetProblem, MAX_JSON_CONTAINERS, MAX_JSON_DEPTH, MAX_JSON_VALUES } from '../../web/src/rig/json_budget.js';
 import { loadRig } from '../../web/src/rig/load_rig.js';
 import { effectorCountProblem, MAX_BONES, MAX_EFFECTORS, maxEffectors } from '../../web/src/rig/rig_limits.js';

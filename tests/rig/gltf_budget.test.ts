@@ -1,4 +1,4 @@
-// Budgets on the work a glTF file asks for (web/src/rig/gltf_budget.ts, json_budget.ts, the
+// Budgets on the work a glTF file asks for (web/src/rig/gltf/gltf_budget.ts, json_budget.ts, the
 // accessor-data cap in gltf_ranges.ts): small files that ask for millions of nodes or gigabytes of
 // zero-filled accessors are refused before anything big is built, naming the file and the limit;
 // `npm run rig` refuses the audit's two bombs within a bounded peak memory; the project's rigs sit
@@ -10,9 +10,9 @@ import { join, resolve } from 'node:path';
 
 import { afterAll, describe, expect, it } from 'vitest';
 
-import { MAX_GLTF_LIST_LENGTHS, MAX_GLTF_NESTED_LENGTHS } from '../../web/src/rig/gltf_budget.js';
-import { parseGltfContainer } from '../../web/src/rig/gltf_file.js';
-import { MAX_ACCESSOR_BYTES } from '../../web/src/rig/gltf_ranges.js';
+import { MAX_GLTF_LIST_LENGTHS, MAX_GLTF_NESTED_LENGTHS } from '../../web/src/rig/gltf/gltf_budget.js';
+import { parseGltfContainer } from '../../web/src/rig/gltf/gltf_file.js';
+import { MAX_ACCESSOR_BYTES } from '../../web/src/rig/gltf/gltf_ranges.js';
 import { jsonBudgetProblem, MAX_JSON_CONTAINERS } from '../../web/src/rig/json_budget.js';
 import { loadRig } from '../../web/src/rig/load_rig.js';
 import { MAX_BONES } from '../../web/src/rig/rig_limits.js';

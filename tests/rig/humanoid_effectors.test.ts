@@ -3,7 +3,7 @@
 // warning for effectors only the root moves; repeated skin warnings as one line.
 import { describe, expect, it } from 'vitest';
 
-import { effectorsByName } from '../../web/src/rig/effector_defaults.js';
+import { effectorsByName } from '../../web/src/rig/gltf/effector_defaults.js';
 import { loadRig, type LoadedRig } from '../../web/src/rig/load_rig.js';
 import { nodeIndex, packGlb, unpackGlb, type Json } from '../helpers/glb.js';
 import { humanoidJoints } from '../helpers/named_humanoid.js';

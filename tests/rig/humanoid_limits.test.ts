@@ -1,4 +1,4 @@
-// Anatomical limits of a humanoid (web/src/rig/humanoid_limits.ts) on characters built in the
+// Anatomical limits of a humanoid (web/src/rig/humanoid/humanoid_limits.ts) on characters built in the
 // tests without IK extras: which way each one faces, what is left alone, that the rest pose stays
 // put, and by forward kinematics that each joint's main bend moves its bone the anatomical way in
 // the character's own frame (as built, not as detected), whatever the joints' local axes.
@@ -9,11 +9,11 @@ import { beforeAll, describe, expect, it } from 'vitest';
 import type { IkCoreModule } from '../../web/src/ik/module.js';
 import { loadIkNode } from '../../web/src/ik/node.js';
 import { IkRig } from '../../web/src/ik/rig.js';
-import type { RigSpec } from '../../web/src/ik/rig_spec.js';
-import { bodyFrame } from '../../web/src/rig/anatomy_frame.js';
-import { jointOf, type Joint } from '../../web/src/rig/anatomy_ranges.js';
-import { humanoidLimits } from '../../web/src/rig/humanoid_limits.js';
-import { HUMANOID_ROLES, type HumanoidMap, type HumanoidRole } from '../../web/src/rig/humanoid_roles.js';
+import type { RigSpec } from '../../web/src/ik/rig_arrays.js';
+import { bodyFrame } from '../../web/src/rig/anatomy/anatomy_frame.js';
+import { jointOf, type Joint } from '../../web/src/rig/anatomy/anatomy_ranges.js';
+import { humanoidLimits } from '../../web/src/rig/humanoid/humanoid_limits.js';
+import { HUMANOID_ROLES, type HumanoidMap, type HumanoidRole } from '../../web/src/rig/humanoid/humanoid_roles.js';
 import { loadRigFromPath } from '../../web/src/rig/load_rig_node.js';
 import { blenderHumanoid, mapByNames, MIXAMO_NAMES, mixamoHumanoid, type TestHumanoid } from '../helpers/limits_characters.js';
 import { disposeAfterAll } from '../helpers/owned.js';

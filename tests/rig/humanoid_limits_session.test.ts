@@ -5,11 +5,11 @@ import { beforeAll, describe, expect, it } from 'vitest';
 
 import type { IkCoreModule } from '../../web/src/ik/module.js';
 import { loadIkNode } from '../../web/src/ik/node.js';
-import { LiveRig } from '../../web/src/live/live_rig.js';
-import type { RigSource } from '../../web/src/live/rig_source.js';
+import { LiveRig } from '../../web/src/view/live_rig.js';
+import type { RigSource } from '../../web/src/view/rig_source.js';
 import { IkSession } from '../../web/src/live/session.js';
-import type { SolveSettings } from '../../web/src/live/solver.js';
-import { humanoidLimits } from '../../web/src/rig/humanoid_limits.js';
+import type { SolveSettings } from '../../web/src/live/method_solver.js';
+import { humanoidLimits } from '../../web/src/rig/humanoid/humanoid_limits.js';
 import { mixamoHumanoid } from '../helpers/limits_characters.js';
 import { disposeAfterAll } from '../helpers/owned.js';
 

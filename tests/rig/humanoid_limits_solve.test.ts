@@ -10,7 +10,7 @@ import type { IkCoreModule } from '../../web/src/ik/module.js';
 import { loadIkNode } from '../../web/src/ik/node.js';
 import { IkRig } from '../../web/src/ik/rig.js';
 import { IkSolver } from '../../web/src/ik/solver.js';
-import { humanoidLimits } from '../../web/src/rig/humanoid_limits.js';
+import { humanoidLimits } from '../../web/src/rig/humanoid/humanoid_limits.js';
 import { dragTolerances, rigSize } from '../../web/src/rig/tolerances.js';
 import { randomAngles, seeded } from '../helpers/a7.js';
 import { blenderHumanoid, mixamoHumanoid, type TestHumanoid } from '../helpers/limits_characters.js';

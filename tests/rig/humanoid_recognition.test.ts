@@ -4,8 +4,8 @@
 // a VRM extension wins over names, and a rig without the hips and two limbs is no humanoid.
 import { describe, expect, it } from 'vitest';
 
-import { humanoidByName } from '../../web/src/rig/humanoid_recognition.js';
-import { HUMANOID_ROLES, type HumanoidRole } from '../../web/src/rig/humanoid_roles.js';
+import { humanoidByName } from '../../web/src/rig/humanoid/humanoid_recognition.js';
+import { HUMANOID_ROLES, type HumanoidRole } from '../../web/src/rig/humanoid/humanoid_roles.js';
 import { loadRig, type LoadedRig } from '../../web/src/rig/load_rig.js';
 import { nodeIndex, packGlb, unpackGlb } from '../helpers/glb.js';
 import { humanoidJoints, type HumanoidNaming } from '../helpers/named_humanoid.js';

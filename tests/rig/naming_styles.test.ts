@@ -4,9 +4,9 @@
 // the tree: a look-alike outside its chain takes no role.
 import { describe, expect, it } from 'vitest';
 
-import { humanoidByName } from '../../web/src/rig/humanoid_recognition.js';
-import { readBoneName } from '../../web/src/rig/humanoid_names.js';
-import { CORE_HUMANOID_ROLES, HUMANOID_ROLES, type HumanoidRole } from '../../web/src/rig/humanoid_roles.js';
+import { humanoidByName } from '../../web/src/rig/humanoid/humanoid_recognition.js';
+import { readBoneName } from '../../web/src/rig/humanoid/humanoid_names.js';
+import { CORE_HUMANOID_ROLES, HUMANOID_ROLES, type HumanoidRole } from '../../web/src/rig/humanoid/humanoid_roles.js';
 import { loadRig, type LoadedRig } from '../../web/src/rig/load_rig.js';
 import { skeletonGlb, type SkeletonJoint } from '../helpers/skeleton_glb.js';
 import { NAMING_STYLES, robotRig, styledHumanoid, styledRoles } from './synthetic_rigs.js';

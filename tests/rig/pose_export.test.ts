@@ -1,4 +1,4 @@
-// Pose export (web/src/three/pose_glb.ts): the original file with the bones' nodes posed, as one
+// Pose export (web/src/view/pose_glb.ts): the original file with the bones' nodes posed, as one
 // .glb. Checked by re-importing it (its rest pose is the posed rig), by three.js (bone world
 // positions and skinned vertices follow the pose), and by the Khronos glTF validator.
 import { readFileSync } from 'node:fs';
@@ -14,8 +14,8 @@ import { loadIkNode } from '../../web/src/ik/node.js';
 import { IkRig } from '../../web/src/ik/rig.js';
 import { loadRig, type LoadedRig } from '../../web/src/rig/load_rig.js';
 import { rigSize } from '../../web/src/rig/tolerances.js';
-import { bonesFromGltf } from '../../web/src/three/find_bones.js';
-import { decomposeLocal, posedGlb } from '../../web/src/three/pose_glb.js';
+import { bonesFromGltf } from '../../web/src/view/find_bones.js';
+import { decomposeLocal, posedGlb } from '../../web/src/view/pose_glb.js';
 import { maxAbsDiff, randomAngles, seeded } from '../helpers/a7.js';
 import { packGlb, unpackGlb } from '../helpers/glb.js';
 import { testCharacterGlb } from '../helpers/gltf_character.js';

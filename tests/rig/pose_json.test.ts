@@ -7,7 +7,7 @@ import { resolve } from 'node:path';
 
 import { beforeAll, describe, expect, it } from 'vitest';
 
-import type { RigSpec } from '../../web/src/ik/rig_spec.js';
+import type { RigSpec } from '../../web/src/ik/rig_arrays.js';
 import { loadRig } from '../../web/src/rig/load_rig.js';
 import { MAX_POSE_CHARS, PoseFormatError, poseFromJson, poseToJson, type PoseInput } from '../../web/src/rig/pose_json.js';
 import { loadA7, needsA7, randomAngles, seeded } from '../helpers/a7.js';

@@ -4,7 +4,7 @@
 // a scene has no model, and the error says so.
 import { afterEach, describe, expect, it, vi } from 'vitest';
 
-import { MAX_MODEL_TREE_DEPTH, readRig } from '../../web/src/live/rig_source.js';
+import { MAX_MODEL_TREE_DEPTH, readRig } from '../../web/src/view/rig_source.js';
 import { loadProjectRig, PROJECT_RIGS, projectRig } from '../../web/src/page/project_rigs.js';
 import { readUrlState } from '../../web/src/page/url_state.js';
 import { defaultTolerances } from '../../web/src/rig/tolerances.js';

@@ -44,7 +44,7 @@ export async function loadError(bytes: Uint8Array | string, file: string): Promi
 
 // Humanoids named in one naming style each, and robot-style rigs whose feet are control bones
 // (tests/rig/naming_styles.test.ts, control_bones.test.ts): joint lists for skeletonGlb.
-import type { HumanoidRole } from '../../web/src/rig/humanoid_roles.js';
+import type { HumanoidRole } from '../../web/src/rig/humanoid/humanoid_roles.js';
 import { humanoidJoints } from '../helpers/named_humanoid.js';
 import type { SkeletonJoint } from '../helpers/skeleton_glb.js';
 

@@ -1,4 +1,4 @@
-// The URDF importer (web/src/rig/urdf_model.ts, urdf_rig.ts, docs/urdf.md): the bones, limits and
+// The URDF importer (web/src/rig/urdf/urdf_model.ts, urdf_rig.ts, docs/urdf.md): the bones, limits and
 // rest frames it makes of small robots written here (urdf_samples.ts), the default chain, the
 // mesh warning, every refusal with its message (naming the file and the element), the hostile-input
 // caps, loadRigFromPath and `npm run rig -- FILE.urdf --chain`. Forward kinematics: urdf_fk.test.ts.
@@ -12,7 +12,7 @@ import { runRigInspect } from '../../scripts/rig_inspect.js';
 import { loadRig, RigFormatError, type LoadedRig } from '../../web/src/rig/load_rig.js';
 import { loadRigFromPath } from '../../web/src/rig/load_rig_node.js';
 import { MAX_BONES } from '../../web/src/rig/rig_limits.js';
-import { MAX_URDF_BYTES, MAX_URDF_DEPTH, MAX_URDF_TAGS } from '../../web/src/rig/urdf_model.js';
+import { MAX_URDF_BYTES, MAX_URDF_DEPTH, MAX_URDF_TAGS } from '../../web/src/rig/urdf/urdf_model.js';
 import { needsRobots, robotPath, sharedRobots } from '../helpers/robots.js';
 import { arm2, arm4, branched, urdfText, type SampleJoint } from './urdf_samples.js';
 

@@ -5,7 +5,7 @@
 import { Vector3 } from 'three';
 import { describe, expect, it } from 'vitest';
 
-import type { RigSpec } from '../../web/src/ik/rig_spec.js';
+import type { RigSpec } from '../../web/src/ik/rig_arrays.js';
 import { loadRig } from '../../web/src/rig/load_rig.js';
 import { RigView } from '../../web/src/view/rig_view.js';
 import { arm2, arm4, urdfText } from '../rig/urdf_samples.js';

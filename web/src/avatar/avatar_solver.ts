@@ -9,14 +9,14 @@
 // (foot_steps.ts), the foot in the air giving way to everything else. With six (the hips and
 // feet as well) the feet go where they are tracked.
 import type { IkCoreModule } from '../ik/module.js';
-import type { RigSpec } from '../ik/rig_spec.js';
+import type { RigSpec } from '../ik/rig_arrays.js';
 import { type PoleLimb, poleLimbs } from '../live/pole_limbs.js';
 import { initialPole } from '../live/pole_placement.js';
-import { floatingHipsSpec, floatingRootUnit, KNEES_STRAIGHT_DEG } from '../rig/floating_hips.js';
+import { floatingHipsSpec, floatingRootUnit, KNEES_STRAIGHT_DEG } from '../rig/humanoid/floating_hips.js';
 import { IkRig } from '../ik/rig.js';
 import { IkSession } from '../live/session.js';
-import type { SolveOutcome, SolveSettings } from '../live/solver.js';
-import type { HumanoidMap, HumanoidRole } from '../rig/humanoid_roles.js';
+import type { SolveOutcome, SolveSettings } from '../live/method_solver.js';
+import type { HumanoidMap, HumanoidRole } from '../rig/humanoid/humanoid_roles.js';
 import { dragTolerances, restHeight } from '../rig/tolerances.js';
 import { FootSteps } from './foot_steps.js';
 import { scatterAngles, type SubRig, subHumanoid, subRig } from './sub_rig.js';

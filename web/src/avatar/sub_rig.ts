@@ -1,10 +1,10 @@
 // The part of a rig that moves a few bones: those bones and every bone above them, as a rig of its
 // own. The avatar solves on it (a character's fingers, toes and eyes are a third to a half of its
 // bones, and no tracked point moves with them), then writes its angles back into the whole rig's,
-// whose other bones keep theirs. Rest transforms are per bone in world space (rig_spec.ts), so a
+// whose other bones keep theirs. Rest transforms are per bone in world space (rig_arrays.ts), so a
 // bone kept has the same rest, limits and length in both.
-import type { RigSpec } from '../ik/rig_spec.js';
-import type { HumanoidMap, HumanoidRole } from '../rig/humanoid_roles.js';
+import type { RigSpec } from '../ik/rig_arrays.js';
+import type { HumanoidMap, HumanoidRole } from '../rig/humanoid/humanoid_roles.js';
 
 export interface SubRig {
   /** The part's spec: its bones in the whole rig's order, parents renumbered; effectors as given. */

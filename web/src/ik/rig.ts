@@ -6,7 +6,7 @@
 // problem; the core reports its own refusals through takeError() (see wasm/bindings/js_arrays.h).
 import type { EmbindRig, IkCoreModule, RigSpecArrays } from './generated/ik_core.mjs';
 import { checkedInteger, coreError, toFloat64, toInt32 } from './inputs.js';
-import type { RigSpec } from './rig_spec.js';
+import type { RigSpec } from './rig_arrays.js';
 
 export type Numbers = ArrayLike<number>;
 

@@ -10,10 +10,10 @@
 import { Matrix4, Object3D, Quaternion, Vector3 } from 'three';
 
 import { AvatarSolver, type AvatarInput } from '../avatar/avatar_solver.js';
-import type { HumanoidRole } from '../rig/humanoid_roles.js';
+import type { HumanoidRole } from '../rig/humanoid/humanoid_roles.js';
 import type { AvatarSource } from './avatar_source.js';
 import { packageCore } from './package_core.js';
-import { PoseWriter } from '../three/pose_writer.js';
+import { PoseWriter } from '../view/pose_writer.js';
 import { skeletonRig, type SkeletonRig } from './skeleton_rig.js';
 import { TrackedBone } from './tracked_bone.js';
 
@@ -23,7 +23,7 @@ export type AvatarBone = 'hips' | 'head' | 'leftHand' | 'rightHand' | 'leftFoot'
 /** The tracked bones, in the solver's order. */
 const TRACKED = ['head', 'leftHand', 'rightHand'] as const;
 
-// web/src/rig/humanoid_roles.ts's HumanoidSource, spelled out so that the package's types stand
+// web/src/rig/humanoid/humanoid_roles.ts's HumanoidSource, spelled out so that the package's types stand
 // alone; assigning the project's to it fails the type check when the project's gains a source.
 /** How a humanoid was recognised: a VRM extension (1.0, 0.x) or a naming convention. */
 export type HumanoidSource = 'vrm1' | 'vrm0' | 'mixamo' | 'unreal' | 'rigify' | 'biped' | 'generic';

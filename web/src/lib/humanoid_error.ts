@@ -1,8 +1,8 @@
 // The Error for a skeleton recognised as no humanoid: which core roles the best naming convention
 // found no bone for, so that a developer knows which bones to rename (or to map in a VRM file).
-import type { RigSpec } from '../ik/rig_spec.js';
-import { humanoidByName } from '../rig/humanoid_recognition.js';
-import { CORE_HUMANOID_ROLES } from '../rig/humanoid_roles.js';
+import type { RigSpec } from '../ik/rig_arrays.js';
+import { humanoidByName } from '../rig/humanoid/humanoid_recognition.js';
+import { CORE_HUMANOID_ROLES } from '../rig/humanoid/humanoid_roles.js';
 
 /** The Error for `spec` (bone names and parents), named in the message as `where`. */
 export function notHumanoidError(spec: RigSpec, where: string): Error {

@@ -1,11 +1,11 @@
 // A loaded three.js character's skeleton as a glTF 2.0 document, so that the project's glTF
-// importer (web/src/rig/gltf_rig.ts) builds its rig: the same bone frames, humanoid recognition,
+// importer (web/src/rig/gltf/gltf_rig.ts) builds its rig: the same bone frames, humanoid recognition,
 // anatomical limits and IK extras as a file gets on the page. The nodes are the skins' joints and
 // the objects between them and `space`, the lowest object holding the model and every joint; the
 // document's scene space is `space`'s local coordinates, the rig's space.
 import type { Object3D, Skeleton, SkinnedMesh } from 'three';
 
-import type { JsonObject } from '../rig/gltf_json.js';
+import type { JsonObject } from '../rig/gltf/gltf_json.js';
 
 export interface SkeletonDocument {
   /** The glTF document: asset, nodes (name, matrix, children, extras.ik from userData.ik), skins (joints), one scene. */

@@ -3,9 +3,9 @@
 // own when given the GLTFLoader result, else the bone names: Mixamo, Unreal, Rigify, Biped, generic).
 import type { Object3D } from 'three';
 
-import type { RigSpec } from '../ik/rig_spec.js';
-import { importGltfRig, type GltfRigInfo } from '../rig/gltf_rig.js';
-import type { HumanoidMap } from '../rig/humanoid_roles.js';
+import type { RigSpec } from '../ik/rig_arrays.js';
+import { importGltfRig, type GltfRigInfo } from '../rig/gltf/gltf_rig.js';
+import type { HumanoidMap } from '../rig/humanoid/humanoid_roles.js';
 import type { AvatarSource } from './avatar_source.js';
 import { notHumanoidError } from './humanoid_error.js';
 import { objectLabel, skeletonDocument } from './skeleton_gltf.js';

@@ -9,9 +9,9 @@
 import { Matrix4, Quaternion, Vector3 } from 'three';
 
 import type { TrackedPose } from '../avatar/avatar_solver.js';
-import type { RigSpec } from '../ik/rig_spec.js';
-import type { GltfRigInfo } from '../rig/gltf_rig.js';
-import { fromRowMajor } from '../three/row_major.js';
+import type { RigSpec } from '../ik/rig_arrays.js';
+import type { GltfRigInfo } from '../rig/gltf/gltf_rig.js';
+import { fromRowMajor } from '../view/row_major.js';
 
 const _m = new Matrix4();
 const _t = new Vector3();

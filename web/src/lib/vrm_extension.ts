@@ -4,8 +4,8 @@
 // GLTFLoader's parser.associations and renumbered, and written back as a VRM 1.0 extension.
 import type { Object3D } from 'three';
 
-import type { JsonObject } from '../rig/gltf_json.js';
-import { readVrmHumanoid } from '../rig/humanoid_vrm.js';
+import type { JsonObject } from '../rig/gltf/gltf_json.js';
+import { readVrmHumanoid } from '../rig/humanoid/humanoid_vrm.js';
 import type { GltfParserLike } from './avatar_source.js';
 
 /**

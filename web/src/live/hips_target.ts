@@ -11,12 +11,12 @@
 //   as its rest: a root joint's rest is its node's place, bind_pose.ts).
 // A target whose goal is off follows its bone's tip after every solve, so it is drawn on the body
 // and picks up from there when it is dragged next. No three.js and no DOM.
-import { KNEES_STRAIGHT_DEG } from '../rig/floating_hips.js';
-import type { HumanoidMap } from '../rig/humanoid_roles.js';
+import { KNEES_STRAIGHT_DEG } from '../rig/humanoid/floating_hips.js';
+import type { HumanoidMap } from '../rig/humanoid/humanoid_roles.js';
 import { type PoleLimb, poleLimbs } from './pole_limbs.js';
 import { initialPole } from './pole_placement.js';
 import type { IkSession } from './session.js';
-import type { SolveSettings } from './solver.js';
+import type { SolveSettings } from './method_solver.js';
 
 /**
  * The trunk's pull towards each frame's start while the head or the hips are dragged (the solver

@@ -2,7 +2,7 @@
 // bounded by the frame's iteration cap and time budget, never restarting. Its time is main-thread
 // milliseconds around the call (JavaScript, the embind crossing and the WebAssembly solve).
 import type { IkSession } from './session.js';
-import type { SolveOutcome, SolveSettings } from './solver.js';
+import type { SolveOutcome, SolveSettings } from './method_solver.js';
 
 /**
  * Stop reasons after which the next frame goes on solving: the budget ran out, not the problem,

@@ -8,7 +8,7 @@
 // pose has degrees of freedom. A character's arm from the clavicle down has 10 such angles and
 // keeps its hand's frame while the head bows; a finger below the wrist has 3, so a hand's other
 // fingers keep only their tips' places while one finger is dragged and the wrist turns.
-import type { RigSpec } from '../ik/rig_spec.js';
+import type { RigSpec } from '../ik/rig_arrays.js';
 
 /** Angles an effector needs below the shared bones to keep its frame (a pose has 6 degrees of freedom). */
 export const FRAME_ANGLES = 6;

@@ -6,11 +6,11 @@
 //   lower-leg role; an effector with none above it (the head, a spine bone) gets no pole;
 // - any other rig: the effector bone's parent, when that parent has a parent itself; else none.
 // A limb whose upper or lower part has no length at rest has no bend to hint at and is skipped.
-import type { RigSpec } from '../ik/rig_spec.js';
-import { bendAxis } from '../rig/anatomy_axes.js';
-import { bodyFrame } from '../rig/anatomy_frame.js';
-import { cross, norm, restAxis, restOrigin, scale, sub, unit, type Vec3 } from '../rig/anatomy_vec.js';
-import type { HumanoidMap, HumanoidRole } from '../rig/humanoid_roles.js';
+import type { RigSpec } from '../ik/rig_arrays.js';
+import { bendAxis } from '../rig/anatomy/anatomy_axes.js';
+import { bodyFrame } from '../rig/anatomy/anatomy_frame.js';
+import { cross, norm, restAxis, restOrigin, scale, sub, unit, type Vec3 } from '../rig/anatomy/anatomy_vec.js';
+import type { HumanoidMap, HumanoidRole } from '../rig/humanoid/humanoid_roles.js';
 
 /** One limb that takes a pole. */
 export interface PoleLimb {
@@ -33,7 +33,7 @@ const FACING: Vec3 = [0, 0, 1];
 
 /**
  * The way limb `bone` bends by its own limits, for a rig without a humanoid map: its bend angle
- * (the middle one, about the bone's local Z: rig_spec.ts's XZX angles) reaching further one way
+ * (the middle one, about the bone's local Z: rig_arrays.ts's XZX angles) reaching further one way
  * than the other turns the tip that way about Z, towards Z x bone for a positive bend, and the
  * joint leaves the root-tip line the other way: bone x Z. Null when the range is even (a robot's
  * hinge) or the bone cannot bend.

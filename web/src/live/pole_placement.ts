@@ -1,8 +1,8 @@
 // Where a limb's pole handle starts, and the limb's three points at a pose. Poses are IkRig.poses():
 // 16 row-major numbers per bone, each bone's transform T_i from its rest frame to its current one
 // (the bone's frame in the rig is T_i * rest_i, as rig_view.ts draws it). Rig units throughout.
-import type { RigSpec } from '../ik/rig_spec.js';
-import { add, norm, reject, restAxis, restOrigin, scale, sub, unit, type Vec3 } from '../rig/anatomy_vec.js';
+import type { RigSpec } from '../ik/rig_arrays.js';
+import { add, norm, reject, restAxis, restOrigin, scale, sub, unit, type Vec3 } from '../rig/anatomy/anatomy_vec.js';
 import type { PoleLimb } from './pole_limbs.js';
 
 /**

@@ -5,10 +5,10 @@
 import { type Goals, orientationErrorsDeg, type PackedGoals } from '../ik/goals.js';
 import type { IkCoreModule } from '../ik/module.js';
 import { IkRig } from '../ik/rig.js';
-import type { RigSpec } from '../ik/rig_spec.js';
+import type { RigSpec } from '../ik/rig_arrays.js';
 import { EffectorGoals } from './effector_goals.js';
 import { framesKept } from './pinned_frames.js';
-import { MethodSolver, type SolveOutcome, type SolveSettings } from './solver.js';
+import { MethodSolver, type SolveOutcome, type SolveSettings } from './method_solver.js';
 
 export class IkSession {
   /** Sessions and solvers not yet disposed, over the whole page (a leak check for tests). */

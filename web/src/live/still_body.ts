@@ -9,9 +9,9 @@
 // leg can reach moves that leg only (the pull costs nothing there), and a target beyond the leg's
 // reach still brings the body along, since a solve that stalls off target drops the soft rows.
 // A recognised humanoid is left as it was (its hips float and its limits shape the motion).
-import type { RigSpec } from '../ik/rig_spec.js';
+import type { RigSpec } from '../ik/rig_arrays.js';
 import type { IkSession } from './session.js';
-import type { SolveSettings } from './solver.js';
+import type { SolveSettings } from './method_solver.js';
 
 /**
  * The rest pull's weight (the solver option restWeight): a turn of 1 radian of a held bone weighs

@@ -4,10 +4,10 @@
 // one wires them together and loads rigs.
 import type { IkCoreModule } from '../ik/module.js';
 import { errorText } from '../live/error_text.js';
-import { LiveController } from '../live/live_controller.js';
-import { LiveRig } from '../live/live_rig.js';
+import { LiveController } from '../view/live_controller.js';
+import { LiveRig } from '../view/live_rig.js';
 import { MethodList } from '../live/methods.js';
-import { readRig, type RigSource } from '../live/rig_source.js';
+import { readRig, type RigSource } from '../view/rig_source.js';
 import { Throttle } from '../live/throttle.js';
 import type { Handles } from '../view/handles.js';
 import type { ViewClick } from '../view/picking.js';

@@ -7,11 +7,11 @@ import { Quaternion, Vector3 } from 'three';
 
 import { type AvatarInput, AvatarSolver } from '../avatar/avatar_solver.js';
 import type { IkCoreModule } from '../ik/module.js';
-import type { RigSpec } from '../ik/rig_spec.js';
-import type { RigSource } from '../live/rig_source.js';
-import type { SolveOutcome } from '../live/solver.js';
-import { bodyFrame } from '../rig/anatomy_frame.js';
-import type { HumanoidMap, HumanoidRole } from '../rig/humanoid_roles.js';
+import type { RigSpec } from '../ik/rig_arrays.js';
+import type { RigSource } from '../view/rig_source.js';
+import type { SolveOutcome } from '../live/method_solver.js';
+import { bodyFrame } from '../rig/anatomy/anatomy_frame.js';
+import type { HumanoidMap, HumanoidRole } from '../rig/humanoid/humanoid_roles.js';
 import { TrackedPoints } from './tracked_points.js';
 
 /** The humanoid bones an avatar needs (AvatarSolver): the tracked head and hands, the planted feet, the hips. */

@@ -8,10 +8,10 @@ import { type GLTF, GLTFLoader } from 'three/addons/loaders/GLTFLoader.js';
 import { MeshoptDecoder } from 'three/addons/libs/meshopt_decoder.module.js';
 
 import { errorText } from '../live/error_text.js';
-import type { RigSource } from '../live/rig_source.js';
-import { parseGltfContainer } from '../rig/gltf_file.js';
-import { bonesFromGltf } from '../three/find_bones.js';
-import { fromRowMajor } from '../three/row_major.js';
+import type { RigSource } from '../view/rig_source.js';
+import { parseGltfContainer } from '../rig/gltf/gltf_file.js';
+import { bonesFromGltf } from '../view/find_bones.js';
+import { fromRowMajor } from '../view/row_major.js';
 import { disposeObject3D } from '../view/dispose_three.js';
 import { makeFaint } from '../view/faint_model.js';
 import { TRACKED_KEYS, type TrackedPoints } from './tracked_points.js';

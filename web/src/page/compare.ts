@@ -5,10 +5,10 @@
 // watched and cancelled (the box's cancel button, its ×, or C again). The live solve pauses
 // meanwhile. Where workers are missing the methods run on the main thread, one per task.
 import { errorText } from '../live/error_text.js';
-import type { LiveController } from '../live/live_controller.js';
+import type { LiveController } from '../view/live_controller.js';
 import type { MethodList } from '../live/methods.js';
 import type { IkSession } from '../live/session.js';
-import type { SolveSettings } from '../live/solver.js';
+import type { SolveSettings } from '../live/method_solver.js';
 import { compareRequest, type CompareEnd, type CompareReply, type CompareRow } from './compare_messages.js';
 import { CompareView } from './compare_view.js';
 import type { CompareStart, PageSettings } from './page_settings.js';

@@ -1,10 +1,10 @@
 // What the page and its compare worker (compare_worker.ts) say to each other. A compare is sent as
 // plain data (a rig spec, effectors, targets, goals, a start pose, settings), so the worker builds
 // its own WebAssembly session; rows come back one per method as each finishes.
-import type { RigSpec } from '../ik/rig_spec.js';
+import type { RigSpec } from '../ik/rig_arrays.js';
 import { EffectorGoals } from '../live/effector_goals.js';
 import type { IkSession } from '../live/session.js';
-import type { SolveOutcome, SolveSettings } from '../live/solver.js';
+import type { SolveOutcome, SolveSettings } from '../live/method_solver.js';
 
 /** One method's result in the compare table. */
 export interface CompareRow {

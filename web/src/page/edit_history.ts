@@ -3,8 +3,8 @@
 // off, a reset, a pose file loaded) and every rig load. A step keeps the rig it was made on (its
 // parsed file, so undoing a rig load shows the earlier rig again, built anew) and the pose, targets
 // and goals (pose_state.ts).
-import type { LiveController } from '../live/live_controller.js';
-import type { RigSource } from '../live/rig_source.js';
+import type { LiveController } from '../view/live_controller.js';
+import type { RigSource } from '../view/rig_source.js';
 import { capturePose, samePose, type PoseState } from '../live/pose_state.js';
 import { UndoHistory } from './undo_history.js';
 

@@ -2,7 +2,7 @@
 // solved joints written into its nodes, pose_glb.ts), the pose as JSON (angles and targets keyed by
 // bone name, or "#index" for bones without a name of their own such as an A7 rig's, pose_json.ts),
 // and a JSON pose file read back as a PoseState for the rig shown (its size checked before reading).
-import type { LiveRig } from '../live/live_rig.js';
+import type { LiveRig } from '../view/live_rig.js';
 import { poseWithOrientations, type PoseState } from '../live/pose_state.js';
 import { MAX_POSE_CHARS, PoseFormatError, poseFromJson, poseToJson } from '../rig/pose_json.js';
 
@@ -26,7 +26,7 @@ export function fileStem(name: string): string {
 export async function posedGlbBytes(live: LiveRig): Promise<Uint8Array> {
   const file = live.source.gltf;
   if (!file) throw new Error(glbExportProblem(live) ?? 'no glTF to pose');
-  const { posedGlb } = await import('../three/pose_glb.js');
+  const { posedGlb } = await import('../view/pose_glb.js');
   return posedGlb(file.bytes, file.fileName, file.info, file.spec, live.session.poses(), file.readSibling);
 }
 

@@ -1,6 +1,6 @@
 // The page's rigs: the project models under web/public/models/ (the rig menu and ?rig=), or a
-// file the user drops or chooses. Reading a file is web/src/live/rig_source.ts.
-import { loadRigUrl, readRig, type RigSource } from '../live/rig_source.js';
+// file the user drops or chooses. Reading a file is web/src/view/rig_source.ts.
+import { loadRigUrl, readRig, type RigSource } from '../view/rig_source.js';
 import { RigFormatError, type LoadRigOptions } from '../rig/load_rig.js';
 import { MAX_RIG_FILE_BYTES } from '../rig/rig_limits.js';
 import { findSibling, type PathFile } from './dropped_files.js';
@@ -55,7 +55,7 @@ export async function loadProjectRig(key: string, base: string | URL = document.
 /**
  * Loads a user's file; a URDF's meshes are taken from `others`, the files given with it
  * (dropped_files.ts findSibling); a .gltf's side files cannot be reached and must be embedded. A file over
- * MAX_RIG_FILE_BYTES is refused before it is read; the importer's caps (web/src/rig/gltf_budget.ts)
+ * MAX_RIG_FILE_BYTES is refused before it is read; the importer's caps (web/src/rig/gltf/gltf_budget.ts)
  * refuse the rest before three.js's GLTFLoader sees the file. `options.chain` picks a URDF's chain.
  * Throws an Error naming the file.
  */

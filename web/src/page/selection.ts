@@ -3,9 +3,9 @@
 // all as text, never HTML), and
 // making its tip an end effector or not. The selected target from the keyboard: Tab and Shift+Tab
 // step through the targets, Esc lets the gizmo go (a click on a target selects it: handles.ts).
-import type { RigSpec } from '../ik/rig_spec.js';
-import type { LiveController } from '../live/live_controller.js';
-import type { LiveRig } from '../live/live_rig.js';
+import type { RigSpec } from '../ik/rig_arrays.js';
+import type { LiveController } from '../view/live_controller.js';
+import type { LiveRig } from '../view/live_rig.js';
 import type { Handles } from '../view/handles.js';
 import { unbounded } from '../view/limits_view.js';
 

@@ -4,9 +4,9 @@
 import { Vector3 } from 'three';
 
 import { largestTipDistance } from '../ik/tip_distance.js';
-import type { LiveController } from '../live/live_controller.js';
+import type { LiveController } from '../view/live_controller.js';
 import type { MethodList } from '../live/methods.js';
-import type { SolveOutcome } from '../live/solver.js';
+import type { SolveOutcome } from '../live/method_solver.js';
 import type { PageSettings } from './page_settings.js';
 import { ConvergencePlot } from './plots.js';
 import { StatsPanel, type StatsValues } from './stats.js';

@@ -3,10 +3,10 @@
 // shows as a ghost, and the step-info box says what the iteration did: E before and after and the
 // step's length |ΔA| in degrees. Dragging a target, or any change, starts a new solve.
 import { errorText } from '../live/error_text.js';
-import type { LiveController } from '../live/live_controller.js';
+import type { LiveController } from '../view/live_controller.js';
 import type { MethodList } from '../live/methods.js';
 import type { IkSession } from '../live/session.js';
-import type { SolveOutcome } from '../live/solver.js';
+import type { SolveOutcome } from '../live/method_solver.js';
 import { statusWords } from '../live/status_words.js';
 import type { PageSettings } from './page_settings.js';
 

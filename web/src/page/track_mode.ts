@@ -14,9 +14,9 @@ import { Vector3 } from 'three';
 
 import type { IkCoreModule } from '../ik/module.js';
 import { errorText } from '../live/error_text.js';
-import type { LiveController } from '../live/live_controller.js';
-import type { LiveRig } from '../live/live_rig.js';
-import type { SolveOutcome } from '../live/solver.js';
+import type { LiveController } from '../view/live_controller.js';
+import type { LiveRig } from '../view/live_rig.js';
+import type { SolveOutcome } from '../live/method_solver.js';
 import type { GizmoMode } from '../view/handles.js';
 import type { ViewClick } from '../view/picking.js';
 import { AvatarDriver, avatarProblem } from './avatar_driver.js';

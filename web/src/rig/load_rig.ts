@@ -1,12 +1,13 @@
 // One entry point for every rig format, shared by the page and Node (no DOM, no node:fs):
 // .json = A7 course format, .glb / .gltf = glTF 2.0 skinned character, .urdf = a robot's serial
 // chain (docs/urdf.md).
-import type { RigSpec } from '../ik/rig_spec.js';
-import { parseA7Rig, RigFormatError } from './a7_rig.js';
-import type { SiblingReader } from './gltf_file.js';
-import { importGltfRig, type GltfRigInfo } from './gltf_rig.js';
-import { parseUrdfModel } from './urdf_model.js';
-import { urdfRigSpec, type UrdfRigInfo } from './urdf_rig.js';
+import type { RigSpec } from '../ik/rig_arrays.js';
+import { parseA7Rig } from './a7/a7_rig.js';
+import { RigFormatError } from './rig_format_error.js';
+import type { SiblingReader } from './gltf/gltf_file.js';
+import { importGltfRig, type GltfRigInfo } from './gltf/gltf_rig.js';
+import { parseUrdfModel } from './urdf/urdf_model.js';
+import { urdfRigSpec, type UrdfRigInfo } from './urdf/urdf_rig.js';
 
 export type { GltfRigInfo, SiblingReader, UrdfRigInfo };
 export { RigFormatError };

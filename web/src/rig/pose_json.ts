@@ -22,7 +22,7 @@
 // naming the bone when one changes). Writing refuses what reading would refuse (the checks are
 // shared: pose_checks.ts). Numbers are written in JavaScript's shortest round-trip form, so a pose
 // written and read back gives the same angles bit for bit.
-import type { RigSpec } from '../ik/rig_spec.js';
+import type { RigSpec } from '../ik/rig_arrays.js';
 import { jsonBudgetProblem } from './json_budget.js';
 import { effectorsProblem, numbersProblem, orientationProblem, shown, targetProblem } from './pose_checks.js';
 import { poseBoneKeys } from './pose_keys.js';

@@ -1,7 +1,7 @@
 // Unit quaternions [x, y, z, w] as plain arrays, for code without three.js (the avatar's feet, the
 // model generator's clips, the glTF rest and posed-file writer): the product, the inverse, the turn
 // of a vector, and a rotation matrix's quaternion.
-import type { Vec3 } from './anatomy_vec.js';
+import type { Vec3 } from './anatomy/anatomy_vec.js';
 
 /** A unit quaternion [x, y, z, w]. */
 export type Quat = [number, number, number, number];

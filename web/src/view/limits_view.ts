@@ -13,7 +13,7 @@ import {
   MeshBasicMaterial,
 } from 'three';
 
-import type { RigSpec } from '../ik/rig_spec.js';
+import type { RigSpec } from '../ik/rig_arrays.js';
 import type { RigView } from './rig_view.js';
 
 const COLORS = [0xff6b6b, 0x5ee07a, 0x5aa8ff];

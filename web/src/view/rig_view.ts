@@ -17,10 +17,10 @@ import {
   Vector3,
 } from 'three';
 
-import type { RigSpec } from '../ik/rig_spec.js';
-import { fromRowMajor } from '../three/row_major.js';
+import type { RigSpec } from '../ik/rig_arrays.js';
+import { fromRowMajor } from './row_major.js';
 
-/** A skinned mesh posed from the rig's bone poses (the glTF write-back of web/src/three/). */
+/** A skinned mesh posed from the rig's bone poses (the glTF write-back of web/src/view/). */
 export interface MeshBinding {
   readonly object: Object3D;
   /** `poses`: IkRig.poses(angles), 16 row-major numbers per bone. */

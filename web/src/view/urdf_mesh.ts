@@ -8,7 +8,7 @@
 import { Group, LoadingManager, Matrix4, type Object3D } from 'three';
 import URDFLoader, { type URDFLink, type URDFRobot } from 'urdf-loader';
 
-import { fromRowMajor } from '../three/row_major.js';
+import { fromRowMajor } from './row_major.js';
 import type { MeshBinding } from './rig_view.js';
 
 /** What binds a URDF file's links to the rig of one of its chains. */

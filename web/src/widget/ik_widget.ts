@@ -9,10 +9,10 @@
 // HTML. The frame loop, the solve and the gizmo are web/src/live/'s LiveController, as on the page.
 import type { IkCoreModule } from '../ik/module.js';
 import { errorText } from '../live/error_text.js';
-import { LiveController, type FrameSettings } from '../live/live_controller.js';
-import { LiveRig } from '../live/live_rig.js';
+import { LiveController, type FrameSettings } from '../view/live_controller.js';
+import { LiveRig } from '../view/live_rig.js';
 import { MethodList } from '../live/methods.js';
-import { loadRigUrl } from '../live/rig_source.js';
+import { loadRigUrl } from '../view/rig_source.js';
 import { widgetCore } from './core.js';
 import { findBone, parseGoalKinds } from './goal_kinds.js';
 import { widgetProbe, type WidgetProbe } from './probe.js';

@@ -5,7 +5,7 @@ import { Vector3 } from 'three';
 
 import { orientationErrorsDeg } from '../ik/goals.js';
 
-import type { LiveController } from '../live/live_controller.js';
+import type { LiveController } from '../view/live_controller.js';
 import type { ScreenPoint } from '../view/stage.js';
 
 export interface WidgetProbe {

@@ -2,7 +2,7 @@
 // words, what it reached (status_words.ts). The words' sentence is the line's tooltip; their kind
 // and whether every effector is on target are data attributes, for styling and tests. The words
 // and attributes change at once; the numbers are written a few times a second (Throttle).
-import type { SolveOutcome } from '../live/solver.js';
+import type { SolveOutcome } from '../live/method_solver.js';
 import { statusWords, type StatusWords } from '../live/status_words.js';
 import { Throttle } from '../live/throttle.js';
 
