@@ -1,6 +1,6 @@
 import { defineConfig } from 'vitest/config';
 
-import { A7_TAG, a7Present, a7Required } from './tests/helpers/a7_folder.js';
+import { A7_TAG, a7Present, a7Required } from './scripts/a7_folder.js';
 import { ROBOTS_TAG, robotsPresent } from './tests/helpers/robots_folder.js';
 
 export default defineConfig({

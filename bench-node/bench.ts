@@ -21,7 +21,8 @@ import { runOnPool, WorkerPool } from './run_wasm.js';
 import type { RunSettings } from './runner.js';
 import { addFlips, StepMeasurer } from './step_measures.js';
 import { tracikSettings } from './tracik.js';
-import { generateTargets, hasReachability, isDragging, prefix, project, type Experiment, type TargetSet } from './targets.js';
+import { hasReachability, isDragging, prefix, project, type Experiment, type TargetSet } from './target_set.js';
+import { generateTargets } from './targets.js';
 
 export interface PreparedRig extends BenchRig {
   /** Rig units (rigSize). */

@@ -15,8 +15,7 @@ import { parseOptions } from './options.js';
 import { checkOutputs, csvTable, writeCsv, writeJson, writeMarkdown, writeText, type RunInfo } from './outputs.js';
 import { makeProgress } from './progress.js';
 import { resolveRigPaths } from './rigs.js';
-import { engineRatioTable, groupRows, renderTable, resultsTable, type Table } from './table.js';
-import { timeToSuccessTable } from './time_to_success.js';
+import { engineRatioTable, groupRows, renderTable, resultsTable, timeToSuccessTable, type Table } from './table.js';
 import { tracikCsvColumns, tracikTable, withPublished } from './tracik_table.js';
 import { runTrackCommand } from './track_command.js';
 

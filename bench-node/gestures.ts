@@ -20,7 +20,7 @@ import { bodyFrame } from '#rig/anatomy/anatomy_frame.js';
 import { add, dot, norm, scale, sub, type Vec3 } from '#rig/anatomy/anatomy_vec.js';
 import type { HumanoidMap, HumanoidRole } from '#rig/humanoid/humanoid_roles.js';
 import { jointPositions } from './jumps.js';
-import type { TargetSet } from './targets.js';
+import type { TargetSet } from './target_set.js';
 
 /** Largest target step of a gesture, as a share of the humanoid's height. */
 export const GESTURE_STEP_SHARE = 0.005;

@@ -4,7 +4,7 @@
 // solves orientations (three.js CCD moves tips only).
 import { BenchError } from './errors.js';
 import type { GoalsKind } from './pose_goals.js';
-import type { Experiment } from './targets.js';
+import type { Experiment } from './target_set.js';
 
 /** Methods that solve tip positions only: refused with --goals pose, and left out of its --methods default. */
 export const positionOnlyMethods: readonly string[] = ['three-ccd'];

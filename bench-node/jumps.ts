@@ -9,7 +9,7 @@
 // frame to its posed one); a bone's head is T_i applied to its rest origin, its tip T_i applied to
 // rest origin + length * rest x axis (README "Conventions": tip = T_i * rest_i * (length, 0, 0)).
 import type { RigSpec } from '#ik/rig_arrays.js';
-import type { TargetSet, TipsFn } from './targets.js';
+import type { TargetSet, TipsFn } from './target_set.js';
 
 /** A joint moving more than this share of the rig size in one step may be a jump. */
 export const JUMP_JOINT_SHARE = 0.05;

@@ -23,7 +23,7 @@ import { isOnTarget, type OnTargetTest } from './evaluate.js';
 import { countJumps } from './jumps.js';
 import type { GoalsKind } from './pose_goals.js';
 import { interquartileMean, maxOf, mean, median, quantile } from './statistics.js';
-import { isDragging, type Experiment } from './targets.js';
+import { isDragging, type Experiment } from './target_set.js';
 import { timeToSuccess, type TimeToSuccess } from './time_to_success.js';
 
 /**

@@ -11,7 +11,7 @@ import { Command, CommanderError, Option } from 'commander';
 import { BenchError, quote } from './errors.js';
 import { checkGoals } from './goals_option.js';
 import { goalsKinds, type GoalsKind } from './pose_goals.js';
-import { experiments, type Experiment } from './targets.js';
+import { experiments, type Experiment } from './target_set.js';
 import { applyTracik, checkChain } from './tracik.js';
 import { WARM_UP_MS } from './warm_up.js';
 

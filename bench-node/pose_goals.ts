@@ -4,7 +4,7 @@
 // ORIENTATION_TOLERANCE_DEG of its target, judged from the returned angles' forward kinematics.
 // Quaternions are [x, y, z, w], 4 per end effector in the rig's effector order.
 import type { Goals } from '#ik/goals.js';
-import type { TargetSet } from './targets.js';
+import type { TargetSet } from './target_set.js';
 
 /** What each effector's target is: its tip's position (the protocol's), or the tip frame's whole pose. */
 export type GoalsKind = 'position' | 'pose';

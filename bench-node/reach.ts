@@ -12,7 +12,7 @@
 // sideways from a straight limb leaves its reach): reachability.ts decides that per step.
 import type { RigSpec } from '#ik/rig_arrays.js';
 import { chainRootBone, draggableEffectors } from './effectors.js';
-import type { TargetSet } from './targets.js';
+import type { TargetSet } from './target_set.js';
 
 /** Steps per reach path. */
 export const REACH_PATH_STEPS = 40;

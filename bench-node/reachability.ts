@@ -9,7 +9,7 @@ import type { RigSpec } from '#ik/rig_arrays.js';
 import { isOnTarget } from './evaluate.js';
 import type { RunSettings } from './runner.js';
 import { runOnPool, type WorkerPool } from './run_wasm.js';
-import type { TargetSet } from './targets.js';
+import type { TargetSet } from './target_set.js';
 
 /** The reference solve's method and time budget (seconds). */
 export const REFERENCE_METHOD = 'lm';

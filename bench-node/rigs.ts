@@ -22,6 +22,9 @@ import { BenchError, errorLine, quote } from './errors.js';
 
 export const projectModelsDir = fileURLToPath(new URL('../web/public/models/', import.meta.url));
 
+/** The project's rigs (web/public/models/NAME.glb), by base name. */
+export const projectRigNames = ['knight', 'lamp', 'robot-arm', 'hand', 'beast', 'character'] as const;
+
 export { REFERENCE_SIZE, rigSize } from '#rig/tolerances.js';
 
 export interface BenchRig {

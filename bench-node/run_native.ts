@@ -15,7 +15,7 @@ import { BenchError, quote } from './errors.js';
 import type { SolveResult } from './metrics.js';
 import { batchesOf } from './run_wasm.js';
 import type { RunSettings } from './runner.js';
-import type { TargetSet } from './targets.js';
+import type { TargetSet } from './target_set.js';
 
 /**
  * The native tool: build/native/ik_bench_native, or ik_bench_native in the build folder named by

@@ -12,7 +12,7 @@ import { BenchError } from './errors.js';
 import type { FlipLimb } from './flips.js';
 import type { SolveResult } from './metrics.js';
 import type { RunSettings } from './runner.js';
-import { independentRanges, type TargetSet } from './targets.js';
+import { independentRanges, type TargetSet } from './target_set.js';
 import type { WorkerInit, WorkerReply, WorkerTask } from './worker_protocol.js';
 
 /** Batches per worker a target set is cut into (more: better balance, more messages). */

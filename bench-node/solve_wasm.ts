@@ -10,7 +10,7 @@ import { errorOf, largestChange, pinnedDeviation, tipDistance } from './evaluate
 import type { SolveResult } from './metrics.js';
 import { largestRotationErrorDeg, largestTwistComponent, poseGoals } from './pose_goals.js';
 import type { Runner, RunSettings, SolveInput } from './runner.js';
-import { project } from './targets.js';
+import { project } from './target_set.js';
 
 export class WasmSolverRunner implements Runner {
   private readonly rig: IkRig;

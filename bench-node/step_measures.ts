@@ -8,7 +8,7 @@ import type { RigSpec } from '#ik/rig_arrays.js';
 import { isFlip, type FlipLimb } from './flips.js';
 import { jointPositions, largestMove } from './jumps.js';
 import type { SolveResult } from './metrics.js';
-import type { TargetSet } from './targets.js';
+import type { TargetSet } from './target_set.js';
 
 export interface StepMeasures {
   /** The largest distance (rig units) a bone's head or tip moved from the start pose to the solution. */

@@ -1,6 +1,7 @@
 // Tables: the report's columns per rig and experiment, in plain text (aligned) or Markdown.
 import type { Row } from './metrics.js';
-import { isDragging } from './targets.js';
+import { isDragging } from './target_set.js';
+import type { TimeToSuccess } from './time_to_success.js';
 
 export type TableFormat = 'text' | 'markdown';
 
@@ -158,4 +159,29 @@ export function renderTable(table: Table, format: TableFormat): string {
       .join('  ')
       .trimEnd();
   return [table.title, line(table.headers), widths.map((w) => '-'.repeat(w)).join('  '), ...table.rows.map(line)].join('\n') + '\n';
+}
+
+/** A row as timeToSuccessTable() reads it. */
+export interface TimedRow extends TimeToSuccess {
+  rig: string;
+  experiment: string;
+  method: string;
+  engine: string;
+  success_rate: number;
+}
+
+/** One table of every row's time to success (after the results tables). */
+export function timeToSuccessTable(rows: readonly TimedRow[]): Table | undefined {
+  if (rows.length === 0) return undefined;
+  const headers = ['rig', 'experiment', 'method', 'engine', 'success', 't_success median', 't_success p95', '≤ 1 ms', '≤ 10 ms', '≤ 100 ms'];
+  return {
+    title: 'time to success (successful solves only; shares of all reachable samples)',
+    headers,
+    numeric: headers.map((_, i) => i >= 4),
+    rows: rows.map((r) => [
+      r.rig, r.experiment, r.method, r.engine, formatPercent(r.success_rate),
+      formatNumber(r.t_success_median_s), formatNumber(r.t_success_p95_s),
+      formatPercent(r.success_within_1ms), formatPercent(r.success_within_10ms), formatPercent(r.success_within_100ms),
+    ]),
+  };
 }

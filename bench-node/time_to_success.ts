@@ -3,7 +3,6 @@
 // faster than one that succeeds. Per row: the median and p95 time of the successful solves, and the
 // share of the (reachable) samples solved within 1, 10 and 100 ms. Times in seconds.
 import { median, quantile } from './statistics.js';
-import { formatNumber, formatPercent, type Table } from './table.js';
 
 /** The budgets of the "solved within" columns, seconds. */
 export const SUCCESS_BUDGETS_S = [1e-3, 1e-2, 1e-1] as const;
@@ -31,30 +30,5 @@ export function timeToSuccess(seconds: readonly number[], succeeded: readonly bo
     success_within_1ms: within(SUCCESS_BUDGETS_S[0]),
     success_within_10ms: within(SUCCESS_BUDGETS_S[1]),
     success_within_100ms: within(SUCCESS_BUDGETS_S[2]),
-  };
-}
-
-/** A row as timeToSuccessTable() reads it. */
-export interface TimedRow extends TimeToSuccess {
-  rig: string;
-  experiment: string;
-  method: string;
-  engine: string;
-  success_rate: number;
-}
-
-/** One table of every row's time to success (after the results tables). */
-export function timeToSuccessTable(rows: readonly TimedRow[]): Table | undefined {
-  if (rows.length === 0) return undefined;
-  const headers = ['rig', 'experiment', 'method', 'engine', 'success', 't_success median', 't_success p95', '≤ 1 ms', '≤ 10 ms', '≤ 100 ms'];
-  return {
-    title: 'time to success (successful solves only; shares of all reachable samples)',
-    headers,
-    numeric: headers.map((_, i) => i >= 4),
-    rows: rows.map((r) => [
-      r.rig, r.experiment, r.method, r.engine, formatPercent(r.success_rate),
-      formatNumber(r.t_success_median_s), formatNumber(r.t_success_p95_s),
-      formatPercent(r.success_within_1ms), formatPercent(r.success_within_10ms), formatPercent(r.success_within_100ms),
-    ]),
   };
 }

@@ -20,9 +20,9 @@ import { extname } from 'node:path';
 
 import type { RigSpec } from '#ik/rig_arrays.js';
 import { BenchError, quote } from './errors.js';
-import type { BenchOptions } from './options.js';
+import type { GoalsKind } from './pose_goals.js';
 import type { RunSettings } from './runner.js';
-import { project, type TargetSet } from './targets.js';
+import { project, type TargetSet } from './target_set.js';
 
 /** The experiment's name. */
 export const TRACIK = 'tracik';
@@ -84,6 +84,14 @@ export function isChain(chain: string): boolean {
 
 const usage = (message: string): BenchError => new BenchError(message, 2);
 
+/** What applyTracik reads and sets of the bench's options (BenchOptions, options.ts). */
+export interface TracikOptions {
+  experiments: readonly string[];
+  goals: GoalsKind;
+  samples: Record<string, number>;
+  timeoutSeconds: number;
+}
+
 /**
  * The options of a tracik run (`given(name)`: whether the option was on the command line): it
  * runs alone, with pose goals (--goals position is refused), TRAC-IK's tolerances (--ftol is
@@ -91,7 +99,7 @@ const usage = (message: string): BenchError => new BenchError(message, 2);
  * and TRACIK_TIMEOUT_S per query unless --samples and --timeout say otherwise. Throws a usage
  * error (one line); changes nothing for a run without tracik.
  */
-export function applyTracik(opts: BenchOptions, given: (option: string) => boolean): void {
+export function applyTracik(opts: TracikOptions, given: (option: string) => boolean): void {
   if (!opts.experiments.includes(TRACIK)) return;
   if (opts.experiments.length > 1) throw usage(`--experiment: tracik runs alone, not with ${opts.experiments.filter((e) => e !== TRACIK).join(', ')}`);
   if (given('goals') && opts.goals !== 'pose') throw usage('--goals: the tracik experiment targets whole poses (--goals pose, its default)');

@@ -10,7 +10,8 @@ import type { RigSpec } from '#ik/rig_arrays.js';
 import type { RotationsFn } from './pose_goals.js';
 import { streamFor } from './prng.js';
 import type { Runner } from './runner.js';
-import { project, randomAngles, type TipsFn } from './targets.js';
+import { project, type TipsFn } from './target_set.js';
+import { randomAngles } from './targets.js';
 
 /** The default warm-up, milliseconds. */
 export const WARM_UP_MS = 300;

@@ -1,5 +1,5 @@
 // `npm run fuzz -- --cases N [--seed S] [--kind a7,gltf,api] [--case K]`: feeds the rig loaders
-// and the solver API careless and hostile input (tests/fuzz/), prints the outcome counts per kind,
+// and the solver API careless and hostile input (scripts/fuzz/), prints the outcome counts per kind,
 // the time budget's worst ratio, the stack-leak check, the time to load a 10,000-bone chain, and
 // every failing case with the command that replays it.
 // Exit code 1 on any crash, hang, unclear error, silent wrong result or read outside the model folder, a stack
@@ -8,11 +8,11 @@ import { Command, InvalidArgumentError, Option } from 'commander';
 import { SingleBar } from 'cli-progress';
 
 import { loadIkNode } from '#ik/node.js';
-import { FUZZ_KINDS, type FuzzKind } from '../tests/fuzz/case_id.js';
-import { deepChainSummary } from '../tests/fuzz/deep_chain.js';
-import { budgetSummary, countTable, exitCode, failureList } from '../tests/fuzz/report.js';
-import { runFuzz } from '../tests/fuzz/run_fuzz.js';
-import { stackLeakCheck } from '../tests/fuzz/stack_leak.js';
+import { FUZZ_KINDS, type FuzzKind } from './fuzz/case_id.js';
+import { deepChainSummary } from './fuzz/deep_chain.js';
+import { budgetSummary, countTable, exitCode, failureList } from './fuzz/report.js';
+import { runFuzz } from './fuzz/run_fuzz.js';
+import { stackLeakCheck } from './fuzz/stack_leak.js';
 
 function integer(min: number): (text: string) => number {
   return (text) => {

@@ -19,6 +19,9 @@ fi
 echo "== type check"
 npx tsc -p tsconfig.json
 
+echo "== layers (dependency-cruiser: no import up the layers, no cycle; .dependency-cruiser.cjs)"
+npm run --silent lint:deps
+
 echo "== vitest"
 npx vitest run "$@"
 

@@ -11,9 +11,7 @@ import { fileURLToPath, pathToFileURL } from 'node:url';
 
 import { writeA7Rig } from '#rig/a7/a7_writer.js';
 import { loadRigFromPath } from '#rig/load_rig_node.js';
-
-/** The project models written, by base name. */
-export const testRigNames = ['knight', 'lamp', 'robot-arm', 'hand', 'beast', 'character'] as const;
+import { projectRigNames } from '../bench-node/rigs.js';
 
 const root = resolve(fileURLToPath(new URL('.', import.meta.url)), '..');
 
@@ -22,19 +20,19 @@ export const testRigsDir = resolve(root, 'build/test-rigs');
 
 /**
  * Writes every project model as A7 JSON into testRigsDir, then the list of their base names
- * (testRigNames, one a line) to testRigsDir/names.txt, which the native tests read; returns the
+ * (projectRigNames, one a line) to testRigsDir/names.txt, which the native tests read; returns the
  * rig files' paths.
  */
 export async function writeTestRigs(): Promise<string[]> {
   mkdirSync(testRigsDir, { recursive: true });
   const paths: string[] = [];
-  for (const name of testRigNames) {
+  for (const name of projectRigNames) {
     const { spec } = await loadRigFromPath(resolve(root, `web/public/models/${name}.glb`));
     const path = resolve(testRigsDir, `${name}.json`);
     writeFileSync(path, `${writeA7Rig(spec)}\n`);
     paths.push(path);
   }
-  writeFileSync(resolve(testRigsDir, 'names.txt'), testRigNames.map((name) => `${name}\n`).join(''));
+  writeFileSync(resolve(testRigsDir, 'names.txt'), projectRigNames.map((name) => `${name}\n`).join(''));
   return paths;
 }
 

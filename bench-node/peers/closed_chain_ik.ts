@@ -24,7 +24,7 @@ import type { SolveResult } from '../metrics.js';
 import { largestRotationErrorDeg, ORIENTATION_TOLERANCE_DEG, type RotationsFn } from '../pose_goals.js';
 import type { Runner, RunSettings, SolveInput } from '../runner.js';
 import { REFERENCE_SIZE } from '../rigs.js';
-import { project } from '../targets.js';
+import { project } from '../target_set.js';
 import { topologicalOrder } from './three_ccd.js';
 
 /** Iterations per Solver.solve() call; the time budget is checked between calls. */

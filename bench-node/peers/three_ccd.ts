@@ -21,7 +21,7 @@ import type { RigSpec } from '#ik/rig_arrays.js';
 import { errorOf, isOnTarget, largestChange, pinnedDeviation, tipDistance } from '../evaluate.js';
 import type { SolveResult } from '../metrics.js';
 import type { Runner, RunSettings, SolveInput } from '../runner.js';
-import { project } from '../targets.js';
+import { project } from '../target_set.js';
 import { xzxWithinLimits } from '#rig/xzx_angles.js';
 
 export const STALL_PASSES = 100;

@@ -21,9 +21,9 @@ import { join, resolve } from 'node:path';
 
 import { Command, InvalidArgumentError } from 'commander';
 
-import { testRigNames } from '../../scripts/write-test-rigs.js';
 import { reportTolerances } from '#rig/tolerances.js';
 import { parseReferenceCsv } from '../compare.js';
+import { projectRigNames } from '../rigs.js';
 import { charts } from './charts.js';
 import { draggingSection } from './dragging.js';
 import { measure, type Measurements } from './measure.js';
@@ -101,7 +101,7 @@ try {
     samples: opts.samples,
     gdSamples: Math.min(100, opts.samples),
     a7Rigs: a7Names.map((n) => join(opts.a7Dir, `${n}.json`)),
-    projectRigs: testRigNames,
+    projectRigs: projectRigNames,
     work,
   });
   const verdicts = new Verdicts();

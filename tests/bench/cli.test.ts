@@ -21,7 +21,7 @@ import type { IkCoreModule } from '../../web/src/ik/module.js';
 import { loadIkNode } from '../../web/src/ik/node.js';
 import { IkSolver } from '../../web/src/ik/solver.js';
 import { rigsLike } from '../helpers/a7.js';
-import { sketchRig, straightLimb } from '../helpers/rig_builder.js';
+import { sketchRig, straightLimb } from '../../scripts/rig_files/rig_builder.js';
 import { benchHere, type Outcome } from './bench_here.js';
 
 const root = resolve(import.meta.dirname, '../..');

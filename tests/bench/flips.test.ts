@@ -14,7 +14,7 @@ import { loadRigFromPath } from '../../web/src/rig/load_rig_node.js';
 import type { HumanoidMap } from '../../web/src/rig/humanoid/humanoid_roles.js';
 import { seeded } from '../helpers/a7.js';
 import { mixamoCharacterGlb } from '../helpers/limits_characters.js';
-import { sketchRig } from '../helpers/rig_builder.js';
+import { sketchRig } from '../../scripts/rig_files/rig_builder.js';
 
 const ik = await loadIkNode();
 

@@ -14,7 +14,7 @@ import { loadIkNode } from '../../web/src/ik/node.js';
 import { IkRig } from '../../web/src/ik/rig.js';
 import { rigSize } from '../../web/src/rig/tolerances.js';
 import { loadTestRig, maxAbsDiff, rigsLike } from '../helpers/a7.js';
-import { straightLimb } from '../helpers/rig_builder.js';
+import { straightLimb } from '../../scripts/rig_files/rig_builder.js';
 
 const ik = await loadIkNode();
 // Two bones of length 1 along +x from the origin: tips (1,0,0) and (2,0,0) at rest, size 1.

@@ -4,13 +4,14 @@ import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 
 import { chainRootBone, draggableEffectors } from '../../bench-node/effectors.js';
 import { orthonormalFrame, REACH_PATH_STEPS, REACH_SHARE, reachPaths, restBase, type Vec3 } from '../../bench-node/reach.js';
-import { generateTargets, independentRanges, project } from '../../bench-node/targets.js';
+import { independentRanges, project } from '../../bench-node/target_set.js';
+import { generateTargets } from '../../bench-node/targets.js';
 import type { IkCoreModule } from '../../web/src/ik/module.js';
 import { loadIkNode } from '../../web/src/ik/node.js';
 import { IkRig } from '../../web/src/ik/rig.js';
 import type { RigSpec } from '../../web/src/ik/rig_arrays.js';
 import { loadTestRig, maxAbsDiff, referenceTips, seeded, testRigs } from '../helpers/a7.js';
-import { sketchRig, straightLimb } from '../helpers/rig_builder.js';
+import { sketchRig, straightLimb } from '../../scripts/rig_files/rig_builder.js';
 
 let ik: IkCoreModule;
 const rigs: IkRig[] = [];

@@ -5,21 +5,14 @@ import { createHash } from 'node:crypto';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 
 import { draggableEffectors, exclusiveAngles } from '../../bench-node/effectors.js';
-import {
-  DRAG_PATH_STEPS,
-  generateTargets,
-  independentRanges,
-  INCREMENTAL_STEP_DEG,
-  prefix,
-  type Experiment,
-  type TargetSet,
-} from '../../bench-node/targets.js';
+import { independentRanges, prefix, type Experiment, type TargetSet } from '../../bench-node/target_set.js';
+import { DRAG_PATH_STEPS, generateTargets, INCREMENTAL_STEP_DEG } from '../../bench-node/targets.js';
 import type { IkCoreModule } from '../../web/src/ik/module.js';
 import { loadIkNode } from '../../web/src/ik/node.js';
 import { IkRig } from '../../web/src/ik/rig.js';
 import type { RigSpec } from '../../web/src/ik/rig_arrays.js';
 import { loadTestRig, maxAbsDiff, referenceTips, rigsLike, testRigs, type TestRig } from '../helpers/a7.js';
-import { sketchRig } from '../helpers/rig_builder.js';
+import { sketchRig } from '../../scripts/rig_files/rig_builder.js';
 
 let ik: IkCoreModule;
 const rigs: IkRig[] = [];

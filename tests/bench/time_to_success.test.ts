@@ -3,7 +3,8 @@
 import { describe, expect, it } from 'vitest';
 
 import { summarize, type SolveResult } from '../../bench-node/metrics.js';
-import { timeToSuccess, timeToSuccessTable } from '../../bench-node/time_to_success.js';
+import { timeToSuccessTable } from '../../bench-node/table.js';
+import { timeToSuccess } from '../../bench-node/time_to_success.js';
 
 const solve = (seconds: number, E: number): SolveResult => ({
   E, tipDistance: Math.sqrt(2 * E), iterations: 1, seconds, stopReason: E < 1e-4 ? 'converged_E' : 'zero_step',

@@ -8,7 +8,7 @@ import { join } from 'node:path';
 import type { Page } from 'playwright-core';
 import { describe, expect, it } from 'vitest';
 
-import { a7Dir, a7MissingMessage, a7Present, a7Required } from '../helpers/a7_folder.js';
+import { a7Dir, a7MissingMessage, a7Present, a7Required } from '../../scripts/a7_folder.js';
 import { manyNodesGltf, zeroAccessorGlb } from '../rig/hostile_rigs.js';
 import { openPage, renderedFrames, resultsDir } from './harness.js';
 import { dragBy, dragTowardsRoot, gotoRig, panelControl, selectTarget, usePageServer, waitForConvergence, waitForSettled } from './page_helpers.js';

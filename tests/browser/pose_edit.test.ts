@@ -10,7 +10,7 @@ import { join } from 'node:path';
 import type { Page } from 'playwright-core';
 import { describe, expect, it } from 'vitest';
 
-import { treeA7 } from '../rig/synthetic_rigs.js';
+import { treeA7 } from '../../scripts/rig_files/tree_rigs.js';
 import { openPage, renderedFrames, resultsDir } from './harness.js';
 import { dragBy, effectorNamed, gotoRig, panelControl, selectTarget, usePageServer, waitForConvergence } from './page_helpers.js';
 

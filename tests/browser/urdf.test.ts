@@ -14,7 +14,7 @@ import { join } from 'node:path';
 import type { Page } from 'playwright-core';
 import { describe, expect, it } from 'vitest';
 
-import { a7Required } from '../helpers/a7_folder.js';
+import { a7Required } from '../../scripts/a7_folder.js';
 import { robotsDir, robotsMissingMessage, robotsPresent } from '../helpers/robots_folder.js';
 import { openPage, renderedFrames, resultsDir } from './harness.js';
 import { dragTargetAlongY, gotoRig, panelControl, selectTarget, targetAt, tipAt, usePageServer, waitForConvergence } from './page_helpers.js';

@@ -7,10 +7,10 @@
 import { describe, expect, it } from 'vitest';
 
 import { loadIkNode } from '../../web/src/ik/node.js';
-import { FUZZ_KINDS } from './case_id.js';
-import { budgetSummary, countOutcomes, countTable, failureList } from './report.js';
-import { runFuzz } from './run_fuzz.js';
-import { stackLeakCheck } from './stack_leak.js';
+import { FUZZ_KINDS } from '../../scripts/fuzz/case_id.js';
+import { budgetSummary, countOutcomes, countTable, failureList } from '../../scripts/fuzz/report.js';
+import { runFuzz } from '../../scripts/fuzz/run_fuzz.js';
+import { stackLeakCheck } from '../../scripts/fuzz/stack_leak.js';
 
 const SEED = 1;
 const CASES_PER_KIND = 200;

@@ -2,8 +2,8 @@
 // run as a severe outcome does, not only the words on the page.
 import { describe, expect, it } from 'vitest';
 
-import type { BudgetSample, CaseReport } from './case_id.js';
-import { budgetSummary, exitCode, failureList } from './report.js';
+import type { BudgetSample, CaseReport } from '../../scripts/fuzz/case_id.js';
+import { budgetSummary, exitCode, failureList } from '../../scripts/fuzz/report.js';
 
 /** An api case that ended `kind`, with one solve of a 10 ms budget taking `ratio` times it. */
 function report(kind: CaseReport['outcome']['kind'], ratio: number): CaseReport {

@@ -10,11 +10,12 @@
 import { readFileSync } from 'node:fs';
 import { resolve } from 'node:path';
 
-import { testRigNames, testRigsDir } from '../../scripts/write-test-rigs.js';
+import { projectRigNames } from '../../bench-node/rigs.js';
+import { testRigsDir } from '../../scripts/write-test-rigs.js';
 import type { RigSpec } from '../../web/src/ik/rig_arrays.js';
 import { parseA7Rig } from '../../web/src/rig/a7/a7_rig.js';
 import { reportTolerances } from '../../web/src/rig/tolerances.js';
-import { A7_TAG, a7Dir, a7Present } from './a7_folder.js';
+import { A7_TAG, a7Dir, a7Present } from '../../scripts/a7_folder.js';
 
 export { a7Dir };
 /** seeded(seed): numbers in [0, 1) from mulberry32; randomAngles(spec, rand): the random experiment's angles. */
@@ -51,7 +52,7 @@ export interface TestRig {
 
 /** The project's rigs, then the report's when a7Dir exists. */
 export const testRigs: readonly TestRig[] = [
-  ...testRigNames.map((name) => ({ name, a7: false, label: `project ${name}`, path: resolve(testRigsDir, `${name}.json`) })),
+  ...projectRigNames.map((name) => ({ name, a7: false, label: `project ${name}`, path: resolve(testRigsDir, `${name}.json`) })),
   ...(a7Present ? a7Names.map((name) => ({ name, a7: true, label: `A7 ${name}`, path: a7Path(name) })) : []),
 ];
 

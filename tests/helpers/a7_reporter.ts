@@ -2,7 +2,7 @@
 // robots), counting the tests tagged with its tag that were skipped (or, under CI, failed) for it.
 import type { Reporter, TestModule } from 'vitest/node';
 
-import { a7Required } from './a7_folder.js';
+import { a7Required } from '../../scripts/a7_folder.js';
 import { sharedFolders } from './shared_folders.js';
 
 export default class A7Reporter implements Reporter {

@@ -10,7 +10,7 @@ import { cross, normalize, sub, type Vec3 } from '../../scripts/models/vec.js';
 import type { RigSpec } from '../../web/src/ik/rig_arrays.js';
 import type { HumanoidMap, HumanoidRole, HumanoidSource } from '../../web/src/rig/humanoid/humanoid_roles.js';
 import { loadRig, specWithFileLimits } from '../../web/src/rig/load_rig.js';
-import { testCharacterGlb } from './gltf_character.js';
+import { testCharacterGlb } from '../../scripts/rig_files/gltf_character.js';
 
 export interface MixamoOptions {
   /** Turn of the whole character about +Y, degrees (0: facing +Z, 180: -Z, 90: +X). */
@@ -66,7 +66,7 @@ export const MIXAMO_NAMES: Partial<Record<HumanoidRole, string>> = {
   }),
 };
 
-/** Role -> joint name of the Blender-named test character (tests/helpers/gltf_character.ts). */
+/** Role -> joint name of the Blender-named test character (scripts/rig_files/gltf_character.ts). */
 export const BLENDER_NAMES: Partial<Record<HumanoidRole, string>> = {
   hips: 'hips', spine: 'spine', chest: 'chest', neck: 'neck', head: 'head',
   ...sided('L', 'R', {

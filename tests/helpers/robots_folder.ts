@@ -5,7 +5,7 @@
 import { existsSync } from 'node:fs';
 import { resolve } from 'node:path';
 
-import { repoRoot } from './a7_folder.js';
+import { repoRoot } from '../../scripts/a7_folder.js';
 
 export const robotsDir = resolve(repoRoot, process.env.IK_ROBOTS_DIR || '../shared/robots');
 export const robotsPresent = existsSync(robotsDir);

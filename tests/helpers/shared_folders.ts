@@ -2,7 +2,7 @@
 // setup file and the reporter: a test tagged with a folder's tag fails under CI without it
 // (a7_setup.ts) and is skipped otherwise (vitest.config.ts), and one line after the run counts
 // those tests (a7_reporter.ts).
-import { A7_TAG, a7Dir, a7MissingMessage, a7Present } from './a7_folder.js';
+import { A7_TAG, a7Dir, a7MissingMessage, a7Present } from '../../scripts/a7_folder.js';
 import { ROBOTS_TAG, robotsDir, robotsMissingMessage, robotsPresent } from './robots_folder.js';
 
 export interface SharedFolder {

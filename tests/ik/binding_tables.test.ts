@@ -15,7 +15,7 @@ import { loadIkNode } from '../../web/src/ik/node.js';
 import { IkRig } from '../../web/src/ik/rig.js';
 import { IkSolver, type SolverResult } from '../../web/src/ik/solver.js';
 import { disposeAfterAll } from '../helpers/owned.js';
-import { straightLimb } from '../helpers/rig_builder.js';
+import { straightLimb } from '../../scripts/rig_files/rig_builder.js';
 
 let ik: IkCoreModule;
 const keep = disposeAfterAll();

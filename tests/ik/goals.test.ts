@@ -11,7 +11,7 @@ import { IkSolver } from '../../web/src/ik/solver.js';
 import { dragTolerances, rigSize } from '../../web/src/rig/tolerances.js';
 import { loadTestRig, randomAngles, seeded, testRigs } from '../helpers/a7.js';
 import { disposeAfterAll } from '../helpers/owned.js';
-import { sketchRig, straightLimb } from '../helpers/rig_builder.js';
+import { sketchRig, straightLimb } from '../../scripts/rig_files/rig_builder.js';
 
 let ik: IkCoreModule;
 const keep = disposeAfterAll();

@@ -7,7 +7,7 @@ import type { IkCoreModule } from '../../web/src/ik/module.js';
 import { loadIkNode } from '../../web/src/ik/node.js';
 import { IkRig } from '../../web/src/ik/rig.js';
 import { loadRig } from '../../web/src/rig/load_rig.js';
-import { testCharacterGlb } from '../helpers/gltf_character.js';
+import { testCharacterGlb } from '../../scripts/rig_files/gltf_character.js';
 
 let ik: IkCoreModule;
 let rig: IkRig;

@@ -13,7 +13,7 @@ import { IkRig } from '../../web/src/ik/rig.js';
 import { IkSolver } from '../../web/src/ik/solver.js';
 import { IkSession } from '../../web/src/live/session.js';
 import { disposeAfterAll } from '../helpers/owned.js';
-import { sketchRig } from '../helpers/rig_builder.js';
+import { sketchRig } from '../../scripts/rig_files/rig_builder.js';
 
 let ik: IkCoreModule;
 const keep = disposeAfterAll();

@@ -9,7 +9,7 @@ import { loadIkNode } from '../../web/src/ik/node.js';
 import { capturePose, restorePose, samePose } from '../../web/src/live/pose_state.js';
 import { IkSession } from '../../web/src/live/session.js';
 import { disposeAfterAll } from '../helpers/owned.js';
-import { sketchRig, straightLimb } from '../helpers/rig_builder.js';
+import { sketchRig, straightLimb } from '../../scripts/rig_files/rig_builder.js';
 
 let ik: IkCoreModule;
 const keep = disposeAfterAll();

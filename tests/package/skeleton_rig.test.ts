@@ -13,7 +13,7 @@ import { beforeAll, describe, expect, it } from 'vitest';
 import { skeletonRig, type SkeletonRig } from '../../web/src/lib/skeleton_rig.js';
 import type { LoadedRig } from '../../web/src/rig/load_rig.js';
 import { loadRigFromPath } from '../../web/src/rig/load_rig_node.js';
-import { packGlb, unpackGlb } from '../helpers/glb.js';
+import { packGlb, unpackGlb } from '../../scripts/rig_files/glb.js';
 import { parseGlb, skinnedMeshes } from '../helpers/three_gltf.js';
 
 const path = resolve(import.meta.dirname, '../../web/public/models/character.glb');

@@ -5,7 +5,8 @@
 import { describe, expect, it } from 'vitest';
 
 import { parseA7Rig } from '../../web/src/rig/a7/a7_rig.js';
-import { chainParents, loadError, treeA7 } from './synthetic_rigs.js';
+import { chainParents, treeA7 } from '../../scripts/rig_files/tree_rigs.js';
+import { loadError } from './synthetic_rigs.js';
 
 const three = chainParents(3);
 const rest = (rows: number[][]): Record<string, unknown> => ({ rest_T: rows });

@@ -20,13 +20,14 @@ import { multiply } from '../../web/src/rig/mat4.js';
 import { dragTolerances, rigSize } from '../../web/src/rig/tolerances.js';
 import { posedGlb } from '../../web/src/view/pose_glb.js';
 import { maxAbsDiff, randomAngles, seeded } from '../helpers/a7.js';
-import { nodeIndex, packGlb, unpackGlb } from '../helpers/glb.js';
-import { testCharacterGlb } from '../helpers/gltf_character.js';
+import { nodeIndex, packGlb, unpackGlb } from '../../scripts/rig_files/glb.js';
+import { testCharacterGlb } from '../../scripts/rig_files/gltf_character.js';
 import { MIXAMO_NAMES } from '../helpers/limits_characters.js';
 import { humanoidJoints } from '../helpers/named_humanoid.js';
 import { disposeAfterAll } from '../helpers/owned.js';
 import { skeletonGlb } from '../helpers/skeleton_glb.js';
-import { loadError, treeGlb, turnedGlb } from './synthetic_rigs.js';
+import { treeGlb } from '../../scripts/rig_files/tree_rigs.js';
+import { loadError, turnedGlb } from './synthetic_rigs.js';
 
 const modelsDir = resolve(import.meta.dirname, '../../web/public/models');
 const expectedDir = resolve(import.meta.dirname, 'expected');

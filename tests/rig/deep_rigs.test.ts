@@ -8,8 +8,9 @@ import { deepestBones } from '../../web/src/rig/gltf/effector_defaults.js';
 import { jsonBudgetProblem, MAX_JSON_CONTAINERS, MAX_JSON_DEPTH, MAX_JSON_VALUES } from '../../web/src/rig/json_budget.js';
 import { loadRig } from '../../web/src/rig/load_rig.js';
 import { effectorCountProblem, MAX_BONES, MAX_EFFECTORS, maxEffectors } from '../../web/src/rig/rig_limits.js';
-import { packGlb } from '../helpers/glb.js';
-import { chainParents, loadError, treeA7, treeGlb, treeGltf } from './synthetic_rigs.js';
+import { packGlb } from '../../scripts/rig_files/glb.js';
+import { chainParents, treeA7, treeGlb, treeGltf } from '../../scripts/rig_files/tree_rigs.js';
+import { loadError } from './synthetic_rigs.js';
 
 const N = 10_000;
 const text = (s: string): Uint8Array => new TextEncoder().encode(s);

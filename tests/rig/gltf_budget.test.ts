@@ -16,9 +16,10 @@ import { MAX_ACCESSOR_BYTES } from '../../web/src/rig/gltf/gltf_ranges.js';
 import { jsonBudgetProblem, MAX_JSON_CONTAINERS } from '../../web/src/rig/json_budget.js';
 import { loadRig } from '../../web/src/rig/load_rig.js';
 import { MAX_BONES } from '../../web/src/rig/rig_limits.js';
-import { packGlb } from '../helpers/glb.js';
+import { packGlb } from '../../scripts/rig_files/glb.js';
 import { manyNodesGltf, zeroAccessorGlb } from './hostile_rigs.js';
-import { loadError, treeGltf } from './synthetic_rigs.js';
+import { treeGltf } from '../../scripts/rig_files/tree_rigs.js';
+import { loadError } from './synthetic_rigs.js';
 
 const root = resolve(import.meta.dirname, '../..');
 const modelsDir = resolve(root, 'web/public/models');

@@ -8,8 +8,8 @@ import { beforeAll, describe, expect, it } from 'vitest';
 
 import { loadRig, RigFormatError } from '../../web/src/rig/load_rig.js';
 import { loadRigFromPath } from '../../web/src/rig/load_rig_node.js';
-import { nodeIndex, packGlb, unpackGlb, type Json } from '../helpers/glb.js';
-import { testCharacterGlb } from '../helpers/gltf_character.js';
+import { nodeIndex, packGlb, unpackGlb, type Json } from '../../scripts/rig_files/glb.js';
+import { testCharacterGlb } from '../../scripts/rig_files/gltf_character.js';
 
 let glb: Uint8Array;
 beforeAll(async () => {

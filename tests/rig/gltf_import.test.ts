@@ -19,8 +19,8 @@ import { loadRig, type LoadedRig } from '../../web/src/rig/load_rig.js';
 import { loadRigFromPath } from '../../web/src/rig/load_rig_node.js';
 import { rigSize } from '../../web/src/rig/tolerances.js';
 import { maxAbsDiff, randomAngles, referenceTips, seeded } from '../helpers/a7.js';
-import { packGlb, unpackGlb, nodeIndex, type Json } from '../helpers/glb.js';
-import { armorJoints, testCharacterGlb, testJoints } from '../helpers/gltf_character.js';
+import { packGlb, unpackGlb, nodeIndex, type Json } from '../../scripts/rig_files/glb.js';
+import { armorJoints, testCharacterGlb, testJoints } from '../../scripts/rig_files/gltf_character.js';
 
 const modelsDir = resolve(import.meta.dirname, '../../web/public/models');
 let ik: IkCoreModule;

@@ -1,8 +1,8 @@
 // Small files that ask for a lot (the hostile-input audit's memory bombs), built in memory so no
 // big file is committed: a .gltf of millions of empty nodes, and a few-KB .glb whose mesh
 // attributes are accessors without a bufferView (all zeros) of 512 MiB each.
-import { packGlb } from '../helpers/glb.js';
-import { treeGltf } from './synthetic_rigs.js';
+import { packGlb } from '../../scripts/rig_files/glb.js';
+import { treeGltf } from '../../scripts/rig_files/tree_rigs.js';
 
 /** .gltf text of `count` empty nodes (about 3 bytes each), with a one-joint skin so it looks like a rig. */
 export function manyNodesGltf(count: number): Uint8Array {

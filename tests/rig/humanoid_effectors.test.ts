@@ -5,10 +5,10 @@ import { describe, expect, it } from 'vitest';
 
 import { effectorsByName } from '../../web/src/rig/gltf/effector_defaults.js';
 import { loadRig, type LoadedRig } from '../../web/src/rig/load_rig.js';
-import { nodeIndex, packGlb, unpackGlb, type Json } from '../helpers/glb.js';
+import { nodeIndex, packGlb, unpackGlb, type Json } from '../../scripts/rig_files/glb.js';
 import { humanoidJoints } from '../helpers/named_humanoid.js';
 import { skeletonGlb, type SkeletonJoint, type SkeletonOptions } from '../helpers/skeleton_glb.js';
-import { chainParents, treeGlb } from './synthetic_rigs.js';
+import { chainParents, treeGlb } from '../../scripts/rig_files/tree_rigs.js';
 
 const effectorNames = (rig: LoadedRig): string[] => Array.from(rig.spec.effectors, (b) => rig.spec.names[b]);
 

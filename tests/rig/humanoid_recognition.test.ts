@@ -7,7 +7,7 @@ import { describe, expect, it } from 'vitest';
 import { humanoidByName } from '../../web/src/rig/humanoid/humanoid_recognition.js';
 import { HUMANOID_ROLES, type HumanoidRole } from '../../web/src/rig/humanoid/humanoid_roles.js';
 import { loadRig, type LoadedRig } from '../../web/src/rig/load_rig.js';
-import { nodeIndex, packGlb, unpackGlb } from '../helpers/glb.js';
+import { nodeIndex, packGlb, unpackGlb } from '../../scripts/rig_files/glb.js';
 import { humanoidJoints, type HumanoidNaming } from '../helpers/named_humanoid.js';
 import { skeletonGlb } from '../helpers/skeleton_glb.js';
 

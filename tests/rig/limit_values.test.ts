@@ -6,9 +6,10 @@ import { beforeAll, describe, expect, it } from 'vitest';
 
 import { loadRig } from '../../web/src/rig/load_rig.js';
 import { isUnbounded, limitProblem } from '../../web/src/rig/limit_degrees.js';
-import { nodeIndex, packGlb, unpackGlb } from '../helpers/glb.js';
-import { testCharacterGlb } from '../helpers/gltf_character.js';
-import { chainParents, loadError, treeA7 } from './synthetic_rigs.js';
+import { nodeIndex, packGlb, unpackGlb } from '../../scripts/rig_files/glb.js';
+import { testCharacterGlb } from '../../scripts/rig_files/gltf_character.js';
+import { chainParents, treeA7 } from '../../scripts/rig_files/tree_rigs.js';
+import { loadError } from './synthetic_rigs.js';
 
 let glb: Uint8Array;
 beforeAll(async () => {

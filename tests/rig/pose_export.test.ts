@@ -17,8 +17,8 @@ import { rigSize } from '../../web/src/rig/tolerances.js';
 import { bonesFromGltf } from '../../web/src/view/find_bones.js';
 import { decomposeLocal, posedGlb } from '../../web/src/view/pose_glb.js';
 import { maxAbsDiff, randomAngles, seeded } from '../helpers/a7.js';
-import { packGlb, unpackGlb } from '../helpers/glb.js';
-import { testCharacterGlb } from '../helpers/gltf_character.js';
+import { packGlb, unpackGlb } from '../../scripts/rig_files/glb.js';
+import { testCharacterGlb } from '../../scripts/rig_files/gltf_character.js';
 import { applyRowMajor, parseGlb, skinnedMeshes, skinnedVertexWorld, vertexInfluences } from '../helpers/three_gltf.js';
 
 const modelsDir = resolve(import.meta.dirname, '../../web/public/models');

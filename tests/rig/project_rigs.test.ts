@@ -8,8 +8,8 @@ import { MAX_MODEL_TREE_DEPTH, readRig } from '../../web/src/view/rig_source.js'
 import { loadProjectRig, PROJECT_RIGS, projectRig } from '../../web/src/page/project_rigs.js';
 import { readUrlState } from '../../web/src/page/url_state.js';
 import { defaultTolerances } from '../../web/src/rig/tolerances.js';
-import { packGlb } from '../helpers/glb.js';
-import { chainParents, treeGlb, treeGltf } from './synthetic_rigs.js';
+import { packGlb } from '../../scripts/rig_files/glb.js';
+import { chainParents, treeGlb, treeGltf } from '../../scripts/rig_files/tree_rigs.js';
 
 const PROTOTYPE_KEYS = ['constructor', '__proto__', 'toString', 'hasOwnProperty', 'valueOf'];
 

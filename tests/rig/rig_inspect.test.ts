@@ -14,8 +14,8 @@ import { afterAll, describe, expect, it } from 'vitest';
 import { reportJson, rigReport, runRigInspect } from '../../scripts/rig_inspect.js';
 import { loadRig } from '../../web/src/rig/load_rig.js';
 import { a7Path, needsA7 } from '../helpers/a7.js';
-import { packGlb } from '../helpers/glb.js';
-import { treeGltf } from './synthetic_rigs.js';
+import { packGlb } from '../../scripts/rig_files/glb.js';
+import { treeGltf } from '../../scripts/rig_files/tree_rigs.js';
 
 const root = resolve(import.meta.dirname, '../..');
 const modelsDir = resolve(root, 'web/public/models');

@@ -11,8 +11,8 @@ import { join } from 'node:path';
 import { beforeAll, describe, expect, it } from 'vitest';
 
 import { loadRigFromPath } from '../../web/src/rig/load_rig_node.js';
-import { unpackGlb, type Json } from '../helpers/glb.js';
-import { testCharacterGlb } from '../helpers/gltf_character.js';
+import { unpackGlb, type Json } from '../../scripts/rig_files/glb.js';
+import { testCharacterGlb } from '../../scripts/rig_files/gltf_character.js';
 
 let json: Json;
 let bin: Uint8Array;

@@ -16,7 +16,7 @@ import { rigSize } from '../../web/src/rig/tolerances.js';
 import { bonesByName, bonesFromGltf } from '../../web/src/view/find_bones.js';
 import { PoseWriter } from '../../web/src/view/pose_writer.js';
 import { maxAbsDiff, randomAngles, seeded } from '../helpers/a7.js';
-import { testCharacterGlb } from '../helpers/gltf_character.js';
+import { testCharacterGlb } from '../../scripts/rig_files/gltf_character.js';
 import { applyRowMajor, parseGlb, skinnedMeshes, skinnedVertexWorld, vertexInfluences } from '../helpers/three_gltf.js';
 
 const modelsDir = resolve(import.meta.dirname, '../../web/public/models');

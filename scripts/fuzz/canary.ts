@@ -3,7 +3,7 @@
 import type { IkCoreModule } from '../../web/src/ik/module.js';
 import { IkRig } from '../../web/src/ik/rig.js';
 import { IkSolver } from '../../web/src/ik/solver.js';
-import { straightLimb } from '../helpers/rig_builder.js';
+import { straightLimb } from '../rig_files/rig_builder.js';
 import { solveProblem } from './result_checks.js';
 
 /** undefined when a two-bone rig builds, solves to its target and is freed; else what went wrong. */

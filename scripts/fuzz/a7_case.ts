@@ -5,7 +5,7 @@ import { join } from 'node:path';
 
 import { writeA7Rig } from '../../web/src/rig/a7/a7_writer.js';
 import { MAX_BONES } from '../../web/src/rig/rig_limits.js';
-import { a7Dir } from '../helpers/a7.js';
+import { a7Dir } from '../a7_folder.js';
 import { mutateA7, type A7Doc } from './a7_mutators.js';
 import { mutateBytes } from './byte_mutators.js';
 import type { FileCase } from './file_case.js';

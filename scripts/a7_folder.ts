@@ -6,7 +6,7 @@
 import { existsSync } from 'node:fs';
 import { resolve } from 'node:path';
 
-export const repoRoot = resolve(import.meta.dirname, '../..');
+export const repoRoot = resolve(import.meta.dirname, '..');
 export const a7Dir = resolve(repoRoot, process.env.IK_A7_DIR || '../shared/rigs/a7');
 export const a7Present = existsSync(a7Dir);
 export const a7Required = Boolean(process.env.CI);

@@ -3,8 +3,8 @@
 import { readdirSync, readFileSync } from 'node:fs';
 import { join, resolve } from 'node:path';
 
-import { unpackGlb, type Json } from '../helpers/glb.js';
-import { testCharacterGlb } from '../helpers/gltf_character.js';
+import { unpackGlb, type Json } from '../rig_files/glb.js';
+import { testCharacterGlb } from '../rig_files/gltf_character.js';
 
 export interface GltfBase {
   name: string;

@@ -4,9 +4,9 @@
 // skeleton (the second lists a subset of joints in another order), and no IK extras.
 import { Document, WebIO, type Node } from '@gltf-transform/core';
 
-import { boneAxes, quaternionFromAxes } from '../../scripts/models/model.js';
-import { block, frustum } from '../../scripts/models/shapes.js';
-import { type Vec3, mirrorX } from '../../scripts/models/vec.js';
+import { boneAxes, quaternionFromAxes } from '../models/model.js';
+import { block, frustum } from '../models/shapes.js';
+import { type Vec3, mirrorX } from '../models/vec.js';
 import { fromTRS, invertAffine, multiply } from '../../web/src/rig/mat4.js';
 
 interface TestJoint {

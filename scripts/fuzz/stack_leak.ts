@@ -5,7 +5,7 @@
 import type { IkCoreModule } from '../../web/src/ik/module.js';
 import { IkRig } from '../../web/src/ik/rig.js';
 import { IkSolver } from '../../web/src/ik/solver.js';
-import { straightLimb } from '../helpers/rig_builder.js';
+import { straightLimb } from '../rig_files/rig_builder.js';
 import { canaryProblem } from './canary.js';
 import { classifyThrown } from './classify_error.js';
 

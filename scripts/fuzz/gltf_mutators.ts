@@ -3,7 +3,7 @@
 // other absurd limits, node cycles and second parents, very deep and very wide joint hierarchies,
 // huge counts, wrong buffer offsets and strides, degenerate transforms, bad bind-matrix
 // accessors, bad skins.
-import type { Json } from '../helpers/glb.js';
+import type { Json } from '../rig_files/glb.js';
 import { INFINITY_MARK } from './json_text.js';
 import type { Rand } from './random.js';
 

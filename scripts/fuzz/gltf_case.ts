@@ -2,7 +2,7 @@
 // as a data: uri; then glTF-specific and generic JSON mutations, a size bomb, byte damage, a
 // buffer uri leading outside the folder or to a hostile side file, or a hostile path instead of
 // the file.
-import { packGlbText } from '../helpers/glb.js';
+import { packGlbText } from '../rig_files/glb.js';
 import { mutateBytes } from './byte_mutators.js';
 import { plantBomb } from './gltf_bombs.js';
 import type { FileCase } from './file_case.js';

@@ -4,7 +4,7 @@
 import type { IkCoreModule } from '../../web/src/ik/module.js';
 import { IkRig } from '../../web/src/ik/rig.js';
 import { loadRig } from '../../web/src/rig/load_rig.js';
-import { chainParents, treeA7, treeGlb } from '../rig/synthetic_rigs.js';
+import { chainParents, treeA7, treeGlb } from '../rig_files/tree_rigs.js';
 import { BROKEN } from './report.js';
 
 const BONES = 10_000;

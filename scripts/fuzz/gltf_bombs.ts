@@ -3,7 +3,7 @@
 // and accessor-sum bombs (many accessors without a bufferView, each of a size a real file may
 // have, whose zeros together run to tens of GiB for a reader such as three.js that builds every
 // accessor). A file past what any rig needs must be refused, and quickly (the hang limit).
-import type { Json } from '../helpers/glb.js';
+import type { Json } from '../rig_files/glb.js';
 import type { Rand } from './random.js';
 
 export interface Bomb {
