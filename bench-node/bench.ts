@@ -16,7 +16,7 @@ import { addOrientations, ORIENTATION_TOLERANCE_DEG } from './pose_goals.js';
 import { markReachable, REFERENCE_METHOD } from './reachability.js';
 import { loadBenchRig, type BenchRig } from './rigs.js';
 import { checkNativeTool, runNative } from './run_native.js';
-import { effectiveRestarts } from './runners.js';
+import { effectiveRestarts } from './make_runner.js';
 import { runOnPool, WorkerPool } from './run_wasm.js';
 import type { RunSettings } from './runner.js';
 import { addFlips, StepMeasurer } from './step_measures.js';

@@ -8,7 +8,7 @@ import { fileURLToPath } from 'node:url';
 import { loadIkNode } from '#ik/node.js';
 import { IkSolver } from '#ik/solver.js';
 import { noGesturesNote, prepareRigs, runBench, totalSolves } from './bench.js';
-import { compareTable, readReferenceCsv } from './compare.js';
+import { compareTable, readReferenceCsv } from './reference_csv.js';
 import { BenchError, errorLine } from './errors.js';
 import type { Row } from './metrics.js';
 import { parseOptions } from './options.js';

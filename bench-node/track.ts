@@ -1,4 +1,4 @@
-// The track experiment (issue 29): a humanoid glTF's animation clips drive the avatar solver
+// The track experiment: a humanoid glTF's animation clips drive the avatar solver
 // (web/src/avatar/avatar_solver.ts) through the tracked points a headset and two controllers
 // give, the head's and the hands' poses, frame by frame at the clip's own rate, each frame solved
 // from the last one's result; the whole body is compared with the clip's.

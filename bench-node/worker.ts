@@ -8,7 +8,7 @@ import { IkRig } from '#ik/rig.js';
 import { errorOf, tipDistance } from './evaluate.js';
 import type { SolveResult } from './metrics.js';
 import { largestRotationErrorDeg, largestTwistComponent } from './pose_goals.js';
-import { makeRunner } from './runners.js';
+import { makeRunner } from './make_runner.js';
 import { StepMeasurer } from './step_measures.js';
 import type { Runner } from './runner.js';
 import { warmUp } from './warm_up.js';

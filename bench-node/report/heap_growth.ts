@@ -1,4 +1,4 @@
-// Memory check (issue 6): the WebAssembly heap after 10^6 solves is the size it was after 10^3.
+// Memory check: the WebAssembly heap after 10^6 solves is the size it was after 10^3.
 // Solves incremental targets (bench-node/targets.ts's steps) on the project's lamp with the
 // default method through IkSolver, creating and disposing a rig and a solver every 1000 solves as
 // a page would on reloads.

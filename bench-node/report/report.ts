@@ -1,4 +1,4 @@
-// npm run bench:report: runs the whole issue-6 measurement set and writes docs/benchmarks.md
+// npm run bench:report: runs the whole measurement set and writes docs/benchmarks.md
 // with its tables, ratios and two SVG charts (docs/benchmarks-time.svg, -success.svg).
 // Every number comes from this run, on this machine (measure.ts). Sets:
 //   1. the default method (lm, restarts on) on the five A7 rigs and every project rig,
@@ -22,7 +22,7 @@ import { join, resolve } from 'node:path';
 import { Command, InvalidArgumentError } from 'commander';
 
 import { reportTolerances } from '#rig/tolerances.js';
-import { parseReferenceCsv } from '../compare.js';
+import { parseReferenceCsv } from '../reference_csv.js';
 import { projectRigNames } from '../rigs.js';
 import { charts } from './charts.js';
 import { draggingSection } from './dragging.js';

@@ -1,6 +1,6 @@
 // Sections 1-6 and the raw rows of docs/benchmarks.md (bench:report; section 7 is dragging.ts).
 // Each section checks its targets through `verdicts`, which collects what was missed.
-import type { ReferenceRow } from '../compare.js';
+import type { ReferenceRow } from '../reference_csv.js';
 import type { Row } from '../metrics.js';
 import { heapGrowthText } from './heap_growth.js';
 import { pct, table, us } from './markdown.js';

@@ -1,4 +1,4 @@
-// The character's animation clips (issue 29): the motions a tracked avatar must follow, made from
+// The character's animation clips: the motions a tracked avatar must follow, made from
 // the skeleton alone so that `npm run models` gives the same bytes every time. Each clip starts in
 // the T-pose (the rig's rest) and eases into a relaxed stance (arms down, elbows a little bent)
 // over its first second, as a user puts on a headset and lets the arms fall:

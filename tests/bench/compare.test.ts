@@ -6,7 +6,7 @@ import { join, resolve } from 'node:path';
 
 import { describe, expect, it } from 'vitest';
 
-import { compareTable, findReference, parseReferenceCsv, readReferenceCsv } from '../../bench-node/compare.js';
+import { compareTable, findReference, parseReferenceCsv, readReferenceCsv } from '../../bench-node/reference_csv.js';
 import type { Row } from '../../bench-node/metrics.js';
 import { needsA7, paperDir } from '../helpers/a7.js';
 

@@ -1,4 +1,4 @@
-// Ten avatars on one page (issue 29): the character loaded ten times into AvatarSolver, each driven
+// Ten avatars on one page: the character loaded ten times into AvatarSolver, each driven
 // by its own upper-body motion (the spine, neck, arms swaying on sines within their limits, as the
 // avatar test's sway), every update() on the main thread. The test checks that the avatars keep
 // their heads and hands on their tracked poses (98% of the frames), and prints the main-thread time per frame for all

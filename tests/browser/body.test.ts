@@ -1,4 +1,4 @@
-// The body moves as a body (issue 27), as a user drags from the rest pose with real mouse events:
+// The body moves as a body, as a user drags from the rest pose with real mouse events:
 // a hand pulled past its reach leaves the head and the other hand on their targets at every
 // frame and says "out of reach"; the knight's hand turned 88 degrees keeps its position and names
 // the orientation when that cannot be met. With the panel's "strict priority" off, the pinned

@@ -1,4 +1,4 @@
-// A still body on a rig without a humanoid map (issue 30): the fox-like quadruped of
+// A still body on a rig without a humanoid map: the fox-like quadruped of
 // quadruped_model.ts (root bone on the floor, no limits, the paws and the head its effectors, the
 // tail none), opened through the file input. A paw's target dragged up 15% of the height with the
 // mouse (the gizmo's up arrow): the paw ends on its target (within δ, the page's "on target

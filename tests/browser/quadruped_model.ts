@@ -1,4 +1,4 @@
-// A fox-like quadruped for the still-body tests (issue 30): a .glb built in memory with
+// A fox-like quadruped for the still-body tests: a .glb built in memory with
 // glTF-Transform, bones only (one skin, bind pose, no mesh). Meters, Y up, facing +Z, 0.9 high.
 // Like the glTF sample Fox, its root joint sits on the floor under the body, the body bone (the
 // hips) carries the tail, the hind legs and the spine, and the spine carries the neck, the head

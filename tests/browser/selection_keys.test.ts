@@ -1,4 +1,4 @@
-// Selection you can always make (issue 30), on the project character with real mouse and keyboard:
+// Selection you can always make, on the project character with real mouse and keyboard:
 // with the left foot's target selected, the right foot's target lies under the gizmo's handles (the
 // gizmo's own hover says so), and a click on it selects it all the same, moving nothing; a drag
 // that starts there on the gizmo's axis still drags the gizmo's target. Tab and Shift+Tab step

@@ -1,4 +1,4 @@
-// What a student and a teacher see (issue 33), in Chromium at 1280x800.
+// What a student and a teacher see, in Chromium at 1280x800.
 // 1. Step mode tells the truth after a drag: on the knight, hand.L selected, S pressed (step mode
 //    on), its target dragged up 120 px: the stats say the pose is not solved for the new target,
 //    with the hand's real distance from it, until S takes an iteration towards it.

@@ -1,4 +1,4 @@
-// Track mode on the page (issue 29), on the project character: the Track panel's "track mode" box puts
+// Track mode on the page, on the project character: the Track panel's "track mode" box puts
 // three gizmos on the head and hands; the left hand's gizmo dragged with the mouse, the avatar's
 // left hand ends on it (within 0.1% of the height, δ) while the head and the right hand stay on
 // theirs and the feet stay where they were planted; leaving the mode brings the drag mode's rig

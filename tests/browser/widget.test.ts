@@ -1,7 +1,7 @@
 // The widget as a course page uses it: the single-file build (dist/widget/ik-widget.js) served
 // as static files next to web/embed-example.html and the project models; no bundler on the page.
 // A click or a tap on any target selects it; dragging it solves onto it and the status says so. The
-// example's text says what its knight shows (issue 33): a dragged hand moves no other effector.
+// example's text says what its knight shows: a dragged hand moves no other effector.
 // Writes test-results/embed-knight-still.png.
 import { mkdirSync } from 'node:fs';
 import { join } from 'node:path';

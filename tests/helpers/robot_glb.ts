@@ -1,4 +1,4 @@
-// A stylised robot built like three.js's RobotExpressive (issue 30), as .glb bytes for the browser
+// A stylised robot built like three.js's RobotExpressive, as .glb bytes for the browser
 // test tests/browser/robot_legs.test.ts. Its skeleton as that file has it: a root bone "Bone"
 // holding Body > Hips > Abdomen > Torso > Neck > Head, ShoulderL > UpperArmL > LowerArmL > Palm2L
 // > Middle1L, the legs off the body beside the hips (Body > UpperLegL > LowerLegL, the lower leg

@@ -1,4 +1,4 @@
-// Pinned means pinned (issue 27): while one target is dragged, the other end effectors keep the
+// Pinned means pinned: while one target is dragged, the other end effectors keep the
 // pose they had when the drag began, their frames as well as their places. On the project's
 // humanoids the head target is lowered by a tenth of the rig size in 20 steps, each solved as
 // the page solves a frame (the head yields, the others pinned); the hands must not turn more

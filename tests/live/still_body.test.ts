@@ -1,4 +1,4 @@
-// A still body on a rig without a humanoid map (issue 30; web/src/live/still_body.ts), through the
+// A still body on a rig without a humanoid map (web/src/live/still_body.ts), through the
 // WebAssembly core in Node. Which bones are free while a paw or the head is dragged (the chain up
 // to where another effector's chain joins it), when the rest pull is on, and a paw lift on the
 // browser test's quadruped (tests/browser/quadruped_model.ts) solved as the page solves frames:

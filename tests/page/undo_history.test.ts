@@ -1,11 +1,11 @@
-// Undo and redo as stacks (web/src/page/undo_history.ts) and the key names shortcuts match
+// Undo and redo as stacks (web/src/page/undo_stacks.ts) and the key names shortcuts match
 // (keyboard.ts): steps come back in reverse order, a new edit clears the redo, at least 100 steps
 // are kept (the oldest dropped past the limit), and a step that could not be shown is put back.
 import { describe, expect, it } from 'vitest';
 
-import { UNDO_STEPS } from '../../web/src/page/edit_history.js';
+import { UNDO_STEPS } from '../../web/src/page/page_history.js';
 import { keyName } from '../../web/src/page/keyboard.js';
-import { UndoHistory } from '../../web/src/page/undo_history.js';
+import { UndoHistory } from '../../web/src/page/undo_stacks.js';
 
 describe('UndoHistory', () => {
   it('undoes and redoes in order; a new edit clears the redo', () => {

@@ -1,4 +1,4 @@
-// The rest pose from the skins' bind pose (web/src/rig/gltf/bind_pose.ts, issue 30): a file saved
+// The rest pose from the skins' bind pose (web/src/rig/gltf/bind_pose.ts): a file saved
 // posed (its nodes turned, its inverse bind matrices still the unposed rest) imports with the same
 // rest, limits and notes as the unposed file, and its pose comes as start angles
 // (GltfRigInfo.startAngles) that put every joint where the file has it. A file saved in its bind

@@ -1,4 +1,4 @@
-// Control bones (issue 30): IK targets and poles, and feet or hands named as a limb's end but
+// Control bones: IK targets and poles, and feet or hands named as a limb's end but
 // hanging off the root beside the limbs (Blender IK controls, RobotExpressive's FootL), are no
 // end effectors nor humanoid bones; the limb's own end takes their place, and the warnings name
 // both. A real foot at the end of its leg stays the foot.

@@ -1,5 +1,5 @@
 // Control bones named as a foot or hand follow their limb's end in the pose written to the mesh
-// (web/src/rig/humanoid/control_follow.ts, issue 30): which bones follow which, and the poses they get.
+// (web/src/rig/humanoid/control_follow.ts): which bones follow which, and the poses they get.
 import { describe, expect, it } from 'vitest';
 
 import { followLimbEnds, limbEndFollowers } from '../../web/src/rig/humanoid/control_follow.js';

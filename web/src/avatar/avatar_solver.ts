@@ -1,4 +1,4 @@
-// A whole body from three tracked points (issue 29): the head's and both hands' positions and
+// A whole body from three tracked points: the head's and both hands' positions and
 // orientations in, every joint out, on any recognised humanoid. The rig floats (its hips move,
 // rig.h FloatingRoot), its feet stay planted, its knees take poles while it
 // crouches, and each update() is one solve from the last pose, as the page solves a frame:

@@ -1,4 +1,4 @@
-// Where the avatar's feet stand (issue 29): planted until the body leaves them behind, then one
+// Where the avatar's feet stand: planted until the body leaves them behind, then one
 // foot at a time steps to where the stance puts it. With three tracked points nothing tells where
 // the feet are; they stay where they stood (no sliding) while the hips are within reach of them
 // and the head faces their way. When the hips' floor point is more than STEP_DISTANCE of the

@@ -1,4 +1,4 @@
-// The hips target of a floating humanoid in drag mode (issue 30; floating_hips.ts). The hips are
+// The hips target of a floating humanoid in drag mode (floating_hips.ts). The hips are
 // an end effector, and what is dragged decides what the body carries:
 // - the hips: they go where their target is dragged, the feet stay planted, and the head and hands
 //   come along (their position goals are off; their frames stay pinned as in any drag);

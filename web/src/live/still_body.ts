@@ -1,4 +1,4 @@
-// A still body while one target is dragged on a rig without a humanoid map (issue 30). The per-frame
+// A still body while one target is dragged on a rig without a humanoid map. The per-frame
 // solve takes the least change that meets the goals, and on a rig whose root bone sits on the
 // floor (a fox) a turn of the root or the spine is the cheapest way to move a paw: lifting one paw
 // moved the hips and swung the tail. Here the bones that the dragged chain does not have to itself

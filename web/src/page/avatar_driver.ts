@@ -1,4 +1,4 @@
-// The avatar of the rig the page shows (issue 29): an AvatarSolver (web/src/avatar/) on the rig's
+// The avatar of the rig the page shows: an AvatarSolver (web/src/avatar/) on the rig's
 // recognised humanoid, always with its anatomical limits, one solve per frame from the last pose,
 // timed. It keeps how the avatar stood when it was made (where the gizmos, a clip and a headset's
 // calibration start from), says whether the feet stand where they are planted, and carries a

@@ -1,7 +1,7 @@
 // The compare worker: loads the WebAssembly core once, and for each CompareRequest builds a session
 // on the rig, solves from the same start with every method in turn, and posts a 'started' before
 // and a 'row' after each method, then 'done'. The page stays responsive meanwhile; cancelling a
-// compare terminates the worker (compare.ts makes a new one for the next).
+// compare terminates the worker (compare_methods.ts makes a new one for the next).
 import { loadIk, type IkCoreModule } from '../ik/module.js';
 import { errorText } from '../live/error_text.js';
 import { IkSession } from '../live/session.js';

@@ -1,4 +1,4 @@
-// Track mode (issue 29): the whole body follows three tracked points, the head and both hands,
+// Track mode: the whole body follows three tracked points, the head and both hands,
 // through the avatar solver (AvatarDriver), one solve every frame from the last pose (as a tracker
 // streams: a foot's step goes on while the points rest), drawn on the rig's view as the page draws
 // poses. The points come from three gizmos (TrackGizmos), or from a

@@ -1,4 +1,4 @@
-// From a headset's poses to the avatar's tracked points (issue 29): the viewer (head) and the two
+// From a headset's poses to the avatar's tracked points: the viewer (head) and the two
 // controllers' grips, in an XR reference space (meters, +Y up, the viewer looking along its -Z),
 // become the head's and hands' positions and bone frames in rig coordinates.
 //

@@ -1,4 +1,4 @@
-// A URDF robot's meshes drawn on its rig (issue 31): urdf-loader reads the file's visuals (meshes,
+// A URDF robot's meshes drawn on its rig: urdf-loader reads the file's visuals (meshes,
 // boxes, cylinders, spheres, their origins and materials), the mesh files come from `files` (the
 // folder the user dropped, already read), and each link's visuals then ride with the chain bone
 // that moves the link: the nearest revolute joint of the chain above it (a camera on the upper arm

@@ -1,5 +1,5 @@
 // Control bones that carry a limb's geometry follow the limb's end in the pose written to the mesh
-// (issue 30). A rig like three.js's RobotExpressive hangs its feet (FootL, FootR: Blender IK
+//. A rig like three.js's RobotExpressive hangs its feet (FootL, FootR: Blender IK
 // targets, control_bones.ts) off the root, beside the legs, and its foot meshes hang off those
 // control bones, not off the legs. The importer makes the leg's own end the end effector in their
 // place; the solver moves that end and leaves the control bone where the root puts it, so a lifted

@@ -1,4 +1,4 @@
-// A humanoid whose hips move (issues 29 and 30): the core's floating root (rig.h FloatingRoot)
+// A humanoid whose hips move: the core's floating root (rig.h FloatingRoot)
 // under the hips, the hips bone turning and tilting as a pelvis does, and the root's move weighed
 // as a body's (the solver option rootUnit). The avatar (avatar_solver.ts) and the page's drag mode
 // (live_rig.ts) both take it from here. The A7 rigs and the report's experiments never float.

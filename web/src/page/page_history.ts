@@ -6,7 +6,7 @@
 import type { LiveController } from '../view/live_controller.js';
 import type { RigSource } from '../view/rig_source.js';
 import { capturePose, samePose, type PoseState } from '../live/pose_state.js';
-import { UndoHistory } from './undo_history.js';
+import { UndoHistory } from './undo_stacks.js';
 
 /** Steps kept (the issue asks for at least 100). */
 export const UNDO_STEPS = 200;
