@@ -3,7 +3,7 @@
 // solves a drag onto its target (saying that its timer is coarse without cross-origin isolation),
 // and the embed example's widgets load from ik-widget.js.
 import { execFileSync } from 'node:child_process';
-import { existsSync } from 'node:fs';
+import { existsSync, readdirSync, readFileSync } from 'node:fs';
 import { join } from 'node:path';
 
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
@@ -31,6 +31,17 @@ describe('the static build (dist/site/)', () => {
     for (const file of ['index.html', 'embed-example.html', 'ik-widget.js', 'models/knight.glb']) expect(existsSync(join(site, file)), file).toBe(true);
     const assets = execFileSync('ls', [join(site, 'assets')], { encoding: 'utf8' });
     expect(assets).toMatch(/\.wasm/);
+  });
+
+  it("keeps the test probes out of the page's bundle: a chunk of their own, fetched only under automation or with ?probe", () => {
+    const html = readFileSync(join(site, 'index.html'), 'utf8');
+    const entry = html.match(/src="\/?(assets\/index-[^"]+\.js)"/)?.[1];
+    if (!entry) throw new Error('index.html names no entry script');
+    const scripts = readdirSync(join(site, 'assets')).filter((f) => f.endsWith('.js'));
+    const withProbe = scripts.filter((f) => readFileSync(join(site, 'assets', f), 'utf8').includes('gizmoAxis')); // a probe's method
+    expect(withProbe).toHaveLength(1);
+    expect(withProbe[0]).toMatch(/^probe-/);
+    expect(readFileSync(join(site, entry), 'utf8')).not.toContain('gizmoAxis');
   });
 
   it('served by a plain static server, the page loads a rig and solves a drag', async (ctx) => {

@@ -3,8 +3,6 @@ import './page/page.css';
 
 import { loadIk } from './ik/module.js';
 import { PageApp } from './page/app.js';
-import { makeProbe } from './page/probe.js';
-import { makeTrackProbe } from './page/track_probe.js';
 
 function slot(id: string): HTMLElement {
   const el = document.getElementById(id);
@@ -25,8 +23,13 @@ try {
     stepInfo: slot('step-info'),
     selection: slot('selection'),
   });
-  window.ikPage = makeProbe(app);
-  window.ikTrack = makeTrackProbe(app);
+  // The test probes (window.ikPage, window.ikTrack) are a chunk of their own, fetched only under
+  // automation (navigator.webdriver: the browser tests) or with ?probe in the URL.
+  if (navigator.webdriver || new URLSearchParams(location.search).has('probe')) {
+    const [{ makeProbe }, { makeTrackProbe }] = await Promise.all([import('./page/probe.js'), import('./page/track_probe.js')]);
+    window.ikPage = makeProbe(app);
+    window.ikTrack = makeTrackProbe(app);
+  }
   await app.start();
 } catch (e) {
   root.dataset.state = 'error';
