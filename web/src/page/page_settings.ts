@@ -1,7 +1,7 @@
 // What the page's panel edits: the per-frame solve's settings (FrameSettings, read by the
 // LiveController every frame), compare's and step mode's, and the display options, with their
 // starting values.
-import type { FrameSettings } from '../view/live_controller.js';
+import { FRAME_DEFAULTS, type FrameSettings } from '../view/live_controller.js';
 import type { GizmoMode } from '../view/handles.js';
 
 export type ClickAction = 'toggle effector' | 'select only';
@@ -40,8 +40,7 @@ export function initialSettings(rig: string, method: string): PageSettings {
     method,
     gradientTolerance: 1e-7,
     tipTolerance: 1e-3,
-    maxIterations: 50,
-    timeBudgetMs: 3,
+    ...FRAME_DEFAULTS,
     restarts: 0,
     paperMode: false,
     strictPriority: true,

@@ -9,7 +9,7 @@
 // HTML. The frame loop, the solve and the gizmo are web/src/live/'s LiveController, as on the page.
 import type { IkCoreModule } from '../ik/module.js';
 import { errorText } from '../live/error_text.js';
-import { LiveController, type FrameSettings } from '../view/live_controller.js';
+import { FRAME_DEFAULTS, LiveController, type FrameSettings } from '../view/live_controller.js';
 import { LiveRig } from '../view/live_rig.js';
 import { MethodList } from '../live/methods.js';
 import { loadRigUrl } from '../view/rig_source.js';
@@ -52,7 +52,7 @@ export class IkWidget extends HTMLElement {
   private methods: MethodList | null = null;
   private controller: LiveController | null = null;
   /** The per-frame solve: the `method` attribute, the rig's drag tolerances, 50 iterations or 3 ms. */
-  private readonly settings: FrameSettings = { method: '', gradientTolerance: 0, tipTolerance: 0, maxIterations: 50, timeBudgetMs: 3, paperMode: false };
+  private readonly settings: FrameSettings = { method: '', gradientTolerance: 0, tipTolerance: 0, ...FRAME_DEFAULTS, paperMode: false };
   private token = 0;
 
   constructor() {
