@@ -45,8 +45,8 @@ const MAX_TARGET_NUMBERS = 2 ** 26;
 
 /**
  * Loads every rig and checks it in the WebAssembly core; fills in tolerances. Drag and reach use
- * the page's drag tolerances (dragTolerances); --gtol replaces their gradient tolerance, and
- * --ftol their tip test by E < ftol. Any error is a BenchError naming the --rig entry.
+ * the page's drag tolerances (dragTolerances); --gradient-tolerance replaces their gradient tolerance, and
+ * --error-tolerance their tip test by E < ftol. Any error is a BenchError naming the --rig entry.
  */
 export async function prepareRigs(opts: BenchOptions, ik: IkCoreModule): Promise<PreparedRig[]> {
   const out: PreparedRig[] = [];

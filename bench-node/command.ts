@@ -79,7 +79,7 @@ function tryOutputs(outputs: ReadonlyArray<readonly [flag: string, file: string 
 async function main(argv: string[], io: CommandIo): Promise<number> {
   // The core's methods are the ones --methods knows: its module comes first.
   const ik = await loadIkNode();
-  const opts = parseOptions(argv, io.isTTY, IkSolver.methods(ik));
+  const opts = parseOptions(argv, io.isTTY, IkSolver.methods(ik), io.err);
   if (!opts) return 0;
   const outputs = [['--json', opts.json], ['--csv', opts.csv], ['--markdown', opts.markdown]] as const;
   checkOutputs(outputs, [...resolveRigPaths(opts.rigs), ...(opts.compare ? [opts.compare] : [])]);

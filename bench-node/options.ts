@@ -199,9 +199,9 @@ function program(allMethods: readonly string[], defaultMethods: readonly string[
     .addOption(new Option('--methods <list>', `methods: ${allMethods.join(', ')} (kdl, kdl_nr_jl: --engine native only)${merged}`).argParser(collect).default(defaultMethods.join(',')))
     .addOption(single('--samples <n>', `samples per experiment (at most ${MAX_SAMPLES}); per-method overrides like 1000,gd=100`, String(DEFAULT_SAMPLES)))
     .addOption(single('--seed <s>', 'seed of the target sets', '1'))
-    .addOption(single('--gtol <x>', 'gradient tolerance (default: per rig, see README)'))
-    .addOption(single('--ftol <y>', 'E tolerance, also the success threshold (default: per rig; drag and reach: a tip distance, see README)'))
-    .addOption(single('--timeout <seconds>', `time budget per solve (at most ${MAX_TIMEOUT_SECONDS})`, '1'))
+    .addOption(single('--gradient-tolerance <x>', 'gradient tolerance (default: per rig, see README; was --gtol)'))
+    .addOption(single('--error-tolerance <y>', 'E tolerance, also the success threshold (default: per rig; drag and reach: a tip distance, see README; was --ftol)'))
+    .addOption(single('--time-budget <seconds>', `time budget per solve (at most ${MAX_TIMEOUT_SECONDS}; was --timeout)`, '1'))
     .addOption(single('--restarts <n>', `restarts per solve for every method, peers included, within the time budget (random and incremental; default: the solvers' default; at most ${MAX_RESTARTS})`))
     .option('--paper', "the report's original algorithms (solver paper mode)", false)
     .addOption(single('--goals <kind>', `targets per end effector: position (the protocol's tip positions) or pose (tip position and frame orientation)`, 'position'))
@@ -227,9 +227,9 @@ interface RawOptions {
   methods: string | string[];
   samples: string;
   seed: string;
-  gtol?: string;
-  ftol?: string;
-  timeout: string;
+  gradientTolerance?: string;
+  errorTolerance?: string;
+  timeBudget: string;
   restarts?: string;
   paper: boolean;
   goals: string;
@@ -246,12 +246,27 @@ interface RawOptions {
   points: string;
 }
 
+/** The flags renamed to the core's option names, the old name still taken: old -> new. */
+export const RENAMED_FLAGS: Readonly<Record<string, string>> = { '--gtol': '--gradient-tolerance', '--ftol': '--error-tolerance', '--timeout': '--time-budget' };
+
+/** `argv` with each renamed flag (--gtol x, --gtol=x) under its new name; `note` gets a line saying so for each. */
+function renamedFlags(argv: string[], note: (text: string) => void): string[] {
+  return argv.map((arg) => {
+    const [flag, ...value] = arg.split('=');
+    const renamed = RENAMED_FLAGS[flag];
+    if (renamed === undefined) return arg;
+    note(`bench: ${flag} is now ${renamed}\n`);
+    return [renamed, ...value].join('=');
+  });
+}
+
 /**
  * Parses argv (without node and the script); `ownMethods` are the core's methods (IkSolver.methods),
- * the default first. Returns undefined after printing help. Throws BenchError (exit code 2) with
+ * the default first; `note` gets a line per renamed flag used (RENAMED_FLAGS). Returns undefined after printing help. Throws BenchError (exit code 2) with
  * one line for any problem.
  */
-export function parseOptions(argv: string[], isTTY: boolean, ownMethods: readonly string[]): BenchOptions | undefined {
+export function parseOptions(argv: string[], isTTY: boolean, ownMethods: readonly string[], note: (text: string) => void = () => {}): BenchOptions | undefined {
+  argv = renamedFlags(argv, note);
   const allMethods = [...ownMethods, ...nativeOnlyMethods, ...peerMethods];
   const cmd = program(allMethods, [...ownMethods, ...peerMethods]);
   let helped = false;
@@ -278,9 +293,9 @@ export function parseOptions(argv: string[], isTTY: boolean, ownMethods: readonl
     samples: parseSamples(raw.samples, allMethods),
     samplesGiven: cmd.getOptionValueSource('samples') !== 'default',
     seed: integerIn('--seed', raw.seed, 0, 0xffffffff),
-    gtol: raw.gtol === undefined ? undefined : positiveNumber('--gtol', raw.gtol),
-    ftol: raw.ftol === undefined ? undefined : positiveNumber('--ftol', raw.ftol),
-    timeoutSeconds: positiveNumber('--timeout', raw.timeout, MAX_TIMEOUT_SECONDS),
+    gtol: raw.gradientTolerance === undefined ? undefined : positiveNumber('--gradient-tolerance', raw.gradientTolerance),
+    ftol: raw.errorTolerance === undefined ? undefined : positiveNumber('--error-tolerance', raw.errorTolerance),
+    timeoutSeconds: positiveNumber('--time-budget', raw.timeBudget, MAX_TIMEOUT_SECONDS),
     restarts: raw.restarts === undefined ? undefined : integerIn('--restarts', raw.restarts, 0, MAX_RESTARTS),
     paper: raw.paper,
     humanoidLimits: raw.humanoidLimits,

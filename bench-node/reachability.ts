@@ -1,7 +1,7 @@
 // Which reach steps can be reached at all, decided before any timing by an untimed reference
 // solve per step: lm with its default restarts and a 1 s budget, each step starting from the
 // reference's own solution of the previous step (chained like the path). A step is reachable when
-// that solve puts every tip within REACH_MARGIN of the run's tip tolerance (with --ftol: E below
+// that solve puts every tip within REACH_MARGIN of the run's tip tolerance (with --error-tolerance: E below
 // REACH_MARGIN^2 ftol): a step the reference meets only with more than that, on the edge of what
 // the limbs reach and the pinned tips' slack allows, counts as out of reach. Drag, random and
 // incremental targets are poses' tips, reachable by construction, and are never solved here.

@@ -28,14 +28,14 @@ import { project, type TargetSet } from './target_set.js';
 export const TRACIK = 'tracik';
 /** Queries when --samples is not given (TRAC-IK's 10,000). */
 export const TRACIK_SAMPLES = 10_000;
-/** Time per query when --timeout is not given, seconds (TRAC-IK's 5 ms). */
+/** Time per query when --time-budget is not given, seconds (TRAC-IK's 5 ms). */
 export const TRACIK_TIMEOUT_S = 0.005;
 /** Position (rig units: metres for a URDF) and rotation (radians) tolerance: TRAC-IK's 1e-5. */
 export const TRACIK_TOLERANCE = 1e-5;
 /** The rotation tolerance as the core takes it: degrees of the angle between the frames. */
 export const TRACIK_ROTATION_TOLERANCE_DEG = (TRACIK_TOLERANCE * 180) / Math.PI;
 /**
- * Gradient tolerance of our solvers (rig units^2 per degree) when --gtol is not given: far below
+ * Gradient tolerance of our solvers (rig units^2 per degree) when --gradient-tolerance is not given: far below
  * the gradient of a pose 1e-5 off its target (about 1e-7 on a 1 m arm), so that the gradient
  * test (a stationary point: restart) never ends a run that is converging onto the target.
  */
@@ -94,19 +94,19 @@ export interface TracikOptions {
 
 /**
  * The options of a tracik run (`given(name)`: whether the option was on the command line): it
- * runs alone, with pose goals (--goals position is refused), TRAC-IK's tolerances (--ftol is
- * refused; --gtol is our solvers' gradient tolerance, default TRACIK_GTOL), TRACIK_SAMPLES queries
- * and TRACIK_TIMEOUT_S per query unless --samples and --timeout say otherwise. Throws a usage
+ * runs alone, with pose goals (--goals position is refused), TRAC-IK's tolerances (--error-tolerance
+ * is refused; --gradient-tolerance is our solvers' gradient tolerance, default TRACIK_GTOL),
+ * TRACIK_SAMPLES queries and TRACIK_TIMEOUT_S per query unless --samples and --time-budget say otherwise. Throws a usage
  * error (one line); changes nothing for a run without tracik.
  */
 export function applyTracik(opts: TracikOptions, given: (option: string) => boolean): void {
   if (!opts.experiments.includes(TRACIK)) return;
   if (opts.experiments.length > 1) throw usage(`--experiment: tracik runs alone, not with ${opts.experiments.filter((e) => e !== TRACIK).join(', ')}`);
   if (given('goals') && opts.goals !== 'pose') throw usage('--goals: the tracik experiment targets whole poses (--goals pose, its default)');
-  if (given('ftol')) throw usage("--ftol: the tracik experiment has TRAC-IK's tolerances (1e-5 on positions and on rotations, radians)");
+  if (given('errorTolerance')) throw usage("--error-tolerance: the tracik experiment has TRAC-IK's tolerances (1e-5 on positions and on rotations, radians)");
   opts.goals = 'pose';
   if (!given('samples')) for (const method of Object.keys(opts.samples)) opts.samples[method] = TRACIK_SAMPLES;
-  if (!given('timeout')) opts.timeoutSeconds = TRACIK_TIMEOUT_S;
+  if (!given('timeBudget')) opts.timeoutSeconds = TRACIK_TIMEOUT_S;
 }
 
 /** Checks --chain: BASE:TIP, and every rig a URDF file (the other formats have no chains to choose). */
@@ -120,7 +120,7 @@ export function checkChain(chain: string | undefined, rigs: readonly string[]): 
 /**
  * The solver settings of the protocol (the rest as every experiment's: bench.ts runSettings):
  * pose goals, on target with every tip within TRACIK_TOLERANCE and every frame within
- * TRACIK_TOLERANCE radians, our solvers' gradient tolerance `gtol` (--gtol; default TRACIK_GTOL).
+ * TRACIK_TOLERANCE radians, our solvers' gradient tolerance `gtol` (--gradient-tolerance; default TRACIK_GTOL).
  */
 export function tracikSettings(gtol: number | undefined): Pick<RunSettings, 'gtol' | 'tipTolerance' | 'orientationToleranceDeg' | 'goals'> {
   return { gtol: gtol ?? TRACIK_GTOL, tipTolerance: TRACIK_TOLERANCE, orientationToleranceDeg: TRACIK_ROTATION_TOLERANCE_DEG, goals: 'pose' };

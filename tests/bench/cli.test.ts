@@ -70,7 +70,7 @@ describe('errors: one line on stderr, non-zero exit', () => {
     [['--rig', knight, '--engine', 'gpu'], 2, /--engine: unknown engine "gpu"/],
     [['--rig', knight, '--samples', 'many'], 2, /--samples: "many" is not an integer in 1\.\.1000000/],
     [['--rig', knight, '--samples', '10,foo=3'], 2, /--samples: unknown method "foo"/],
-    [['--rig', knight, '--timeout', '-1'], 2, /--timeout: "-1" is not a positive number/],
+    [['--rig', knight, '--time-budget', '-1'], 2, /--time-budget: "-1" is not a positive number/],
     [['--rig', knight, '--workers', '0'], 2, /--workers: "0" is not an integer in 1\.\./],
     [['--rig', knight, '--compare', join(dir, 'none.csv')], 1, /--compare .*none\.csv: no such file/],
     [['--rig', knight, '--compare', badCsv], 1, /--compare .*bad\.csv: no "experiment" column/],
@@ -89,7 +89,7 @@ describe('errors: one line on stderr, non-zero exit', () => {
 });
 
 describe('careless values: a usage error naming the option and the value', () => {
-  const options = ['--rig', '--experiment', '--methods', '--samples', '--seed', '--gtol', '--ftol', '--timeout', '--engine',
+  const options = ['--rig', '--experiment', '--methods', '--samples', '--seed', '--gradient-tolerance', '--error-tolerance', '--time-budget', '--engine',
     '--workers', '--json', '--csv', '--markdown', '--compare', '--warm-up'];
   it.each(options.flatMap((flag) => ['', '  '].map((value) => [flag, value])))('%s %j: empty value', async (flag, value) => {
     const rig = flag === '--rig' ? [] : ['--rig', knight];
@@ -112,14 +112,14 @@ describe('careless values: a usage error naming the option and the value', () =>
     [['--seed', ' 5'], /--seed: " 5" is not an integer/],
     [['--workers', '1000'], /--workers: "1000" is not an integer in 1\.\.\d+ \(4 per core, 64 at most\)/],
     [['--workers', '65'], /--workers: "65" is not an integer in 1\.\.\d+/],
-    [['--timeout', 'NaN'], /--timeout: "NaN" is not a positive number of at most 3600/],
-    [['--timeout', '0'], /--timeout: "0" is not a positive number/],
-    [['--timeout', '3601'], /--timeout: "3601" is not a positive number of at most 3600/],
-    [['--timeout', '1e308'], /--timeout: "1e308" is not a positive number/],
-    [['--gtol', 'NaN'], /--gtol: "NaN" is not a positive number/],
-    [['--gtol', '-1e-4'], /--gtol: "-1e-4" is not a positive number/],
-    [['--ftol', 'Infinity'], /--ftol: "Infinity" is not a positive number/],
-    [['--ftol', '0'], /--ftol: "0" is not a positive number/],
+    [['--time-budget', 'NaN'], /--time-budget: "NaN" is not a positive number of at most 3600/],
+    [['--time-budget', '0'], /--time-budget: "0" is not a positive number/],
+    [['--time-budget', '3601'], /--time-budget: "3601" is not a positive number of at most 3600/],
+    [['--time-budget', '1e308'], /--time-budget: "1e308" is not a positive number/],
+    [['--gradient-tolerance', 'NaN'], /--gradient-tolerance: "NaN" is not a positive number/],
+    [['--gradient-tolerance', '-1e-4'], /--gradient-tolerance: "-1e-4" is not a positive number/],
+    [['--error-tolerance', 'Infinity'], /--error-tolerance: "Infinity" is not a positive number/],
+    [['--error-tolerance', '0'], /--error-tolerance: "0" is not a positive number/],
     [['--warm-up', '-1'], /--warm-up: "-1" is not an integer in 0\.\.60000$/],
     [['--experiment', 'random,Drag'], /--experiment: unknown experiment "Drag" \(known: random, incremental, drag, reach, gestures, tracik, track\)/],
     [['--methods', `lm,${'y'.repeat(500)}`], /--methods: unknown method "y{57}\.\.\." \(known:/],
@@ -130,6 +130,16 @@ describe('careless values: a usage error naming the option and the value', () =>
   it.each(['0x10', '1e3', '1.0', '+5', '0b11', '5_000', '١٢'])('--seed, --samples, --restarts, --workers and --warm-up take only decimal digits, not %j', async (value) => {
     for (const flag of ['--seed', '--samples', '--restarts', '--workers', '--warm-up'])
       expectOneLineError(await benchHere('--rig', knight, flag, value), 2, new RegExp(`^bench: ${flag}: ${JSON.stringify(value).replace(/[.+]/g, '\\$&')} is not an integer in `));
+  });
+
+  it('takes the old names of the renamed flags (--gtol, --ftol, --timeout), saying the new name once each', async () => {
+    const old = await benchHere('--rig', knight, '--gtol', '-1', '--ftol=1e-6', '--timeout', '1');
+    expect(old.stderr).toContain('bench: --gtol is now --gradient-tolerance\n');
+    expect(old.stderr).toContain('bench: --ftol is now --error-tolerance\n');
+    expect(old.stderr).toContain('bench: --timeout is now --time-budget\n');
+    // The value went to the new flag: its check names it.
+    expect(old.stderr).toMatch(/^bench: --gradient-tolerance: "-1" is not a positive number/m);
+    expect(old.code).toBe(2);
   });
 
   it('takes plain decimal integers, leading zeros included', () => {
@@ -146,7 +156,7 @@ describe('careless values: a usage error naming the option and the value', () =>
   });
 
   it.each([
-    ['--seed', '5', '6'], ['--samples', '10', '20'], ['--timeout', '1', '2'], ['--workers', '1', '2'], ['--engine', 'wasm', 'native'],
+    ['--seed', '5', '6'], ['--samples', '10', '20'], ['--time-budget', '1', '2'], ['--workers', '1', '2'], ['--engine', 'wasm', 'native'],
     ['--json', 'a.json', 'b.json'], ['--goals', 'pose', 'position'], ['--warm-up', '0', '10'],
   ])('refuses %s given twice instead of keeping the last', async (flag, first, second) => {
     expectOneLineError(await benchHere('--rig', knight, flag, first, `${flag}=${second}`), 2,
@@ -293,7 +303,7 @@ describe('a small run', () => {
     const csv = join(dir, 'out.csv');
     const md = join(dir, 'out.md');
     const file = join(dir, 'smoke.json');
-    const r = bench('--rig', knight, '--samples', '5', '--methods', 'three-ccd,closed-chain-ik', '--timeout', '0.05', '--workers', '2',
+    const r = bench('--rig', knight, '--samples', '5', '--methods', 'three-ccd,closed-chain-ik', '--time-budget', '0.05', '--workers', '2',
       '--warm-up', '20', '--json', file, '--csv', csv, '--markdown', md);
     expect(r.stderr).toBe('');
     expect(r.code).toBe(0);
@@ -365,7 +375,7 @@ describe('the reach experiment', () => {
     writeFileSync(limb, writeA7Rig(straightLimb()));
     const outOfReach = Array.from({ length: 40 }, (_, i) => Math.hypot(2, 0.02 * (i + 1)) - 2 >= REACH_MARGIN * 0.001).filter(Boolean).length;
     expect(outOfReach).toBe(38);
-    const rows = await runJson(['--rig', limb, '--experiment', 'reach', '--methods', 'lm', '--engine', 'wasm,native', '--timeout', '0.2']);
+    const rows = await runJson(['--rig', limb, '--experiment', 'reach', '--methods', 'lm', '--engine', 'wasm,native', '--time-budget', '0.2']);
     expect(rows.map((row) => row.engine)).toEqual(['wasm', 'native']);
     for (const row of rows) {
       expect(row).toMatchObject({ experiment: 'reach', samples: 120, unreachable: 2 * outOfReach });

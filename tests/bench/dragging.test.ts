@@ -52,12 +52,12 @@ describe('settings', () => {
     }
   });
 
-  it('--ftol makes drag and reach use E < ftol; --gtol replaces their gradient tolerance', async () => {
-    const f = await settingsOf('--ftol', '1e-7');
+  it('--error-tolerance makes drag and reach use E < ftol; --gradient-tolerance replaces their gradient tolerance', async () => {
+    const f = await settingsOf('--error-tolerance', '1e-7');
     expect(f.reach.tipTolerance).toBe(0);
     expect(f.reach.ftol).toBe(1e-7);
     expect(f.drag.gtol).toBe(dragTolerances(f.drag.rigSize).gradientTolerance);
-    const g = await settingsOf('--gtol', '1e-9');
+    const g = await settingsOf('--gradient-tolerance', '1e-9');
     expect(g.drag.gtol).toBe(1e-9);
     expect(g.reach.gtol).toBe(1e-9);
     expect(g.reach.tipTolerance).toBe(dragTolerances(g.reach.rigSize).tipTolerance);

@@ -82,7 +82,7 @@ describe('--goals pose on the WebAssembly engine', () => {
     // generous time budget), so the count is a real test.
     const samples = 20;
     const { rows, run } = await runJson('--rig', knight.path, '--goals', 'pose', '--methods', 'bfgs', '--samples', String(samples),
-      '--experiment', 'random', '--restarts', '0', '--timeout', '60');
+      '--experiment', 'random', '--restarts', '0', '--time-budget', '60');
     const [{ gtol, ftol }] = run.rigs as Array<{ gtol: number; ftol: number }>;
     // The same solves through the public API, judged by the API's own forward kinematics.
     const spec = loadTestRig(knight);

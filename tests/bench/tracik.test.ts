@@ -52,13 +52,13 @@ async function runJson(...args: string[]): Promise<{ stdout: string; rows: Json[
 const parse = (...args: string[]) => parseOptions(['--rig', 'robot-arm', ...args], false, methods)!;
 
 describe('tracik options', () => {
-  it('defaults to the protocol: pose goals, 10,000 queries, 5 ms each; --samples and --timeout override', () => {
+  it('defaults to the protocol: pose goals, 10,000 queries, 5 ms each; --samples and --time-budget override', () => {
     const o = parse('--experiment', 'tracik');
     expect(o.goals).toBe('pose');
     expect(o.samples.lm).toBe(TRACIK_SAMPLES);
     expect(o.timeoutSeconds).toBe(TRACIK_TIMEOUT_S);
     expect(o.methods).not.toContain('three-ccd');
-    const p = parse('--experiment', 'tracik', '--samples', '50', '--timeout', '0.01', '--goals', 'pose');
+    const p = parse('--experiment', 'tracik', '--samples', '50', '--time-budget', '0.01', '--goals', 'pose');
     expect([p.samples.lm, p.timeoutSeconds]).toEqual([50, 0.01]);
     expect(parse('--samples', '50').timeoutSeconds).toBe(1); // other experiments keep theirs
   });
@@ -66,7 +66,7 @@ describe('tracik options', () => {
   it.each([
     [['--experiment', 'tracik,random'], /^bench: --experiment: tracik runs alone, not with random$/],
     [['--experiment', 'tracik', '--goals', 'position'], /^bench: --goals: the tracik experiment targets whole poses/],
-    [['--experiment', 'tracik', '--ftol', '0.001'], /^bench: --ftol: the tracik experiment has TRAC-IK's tolerances/],
+    [['--experiment', 'tracik', '--error-tolerance', '0.001'], /^bench: --error-tolerance: the tracik experiment has TRAC-IK's tolerances/],
     [['--experiment', 'tracik', '--methods', 'three-ccd'], /^bench: --goals pose: three-ccd solves tip positions only/],
     [['--experiment', 'tracik', '--paper'], /^bench: --goals pose: paper mode/],
     [['--chain', 'a:b'], /^bench: --chain: "robot-arm" is no URDF file \(\.urdf\): only URDF rigs have chains to choose$/],
@@ -135,7 +135,7 @@ describe('tracik success: TRAC-IK tolerances on the pose from forward kinematics
   it('counts exactly the solves whose returned pose meets both tolerances by forward kinematics (wasm lm)', async () => {
     // A long budget makes the solves deterministic, so the API's solves are the bench's.
     const samples = 30;
-    const { rows } = await runJson('--rig', 'robot-arm', '--experiment', 'tracik', '--methods', 'lm', '--samples', String(samples), '--timeout', '60');
+    const { rows } = await runJson('--rig', 'robot-arm', '--experiment', 'tracik', '--methods', 'lm', '--samples', String(samples), '--time-budget', '60');
     const { spec } = await loadBenchRig('robot-arm');
     const rig = new IkRig(ik, spec);
     const settings = tracikSettings(undefined);
