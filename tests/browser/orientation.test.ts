@@ -177,6 +177,7 @@ describe('orientation goals on the page', () => {
     for (const k of others) expect((await orientation(page, k)).axes).toBe(false);
 
     await page.keyboard.press('o');
+    await page.waitForFunction((k) => window.ikPage?.axesShown(k) === true, hand, { timeout: 5_000 }); // shown at the next frame's redraw
     const on = await orientation(page, hand);
     if (!on.goal || !on.tip) throw new Error('O set no orientation goal');
     expect(angleDeg(on.goal, on.tip)).toBeLessThan(1e-3); // at the hand's current frame: nothing jumps
