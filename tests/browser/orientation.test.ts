@@ -155,6 +155,7 @@ describe('orientation goals on the page', () => {
 
     // With an orientation goal, swinging carries it along: the goal turns by the same 20° about the vertical.
     await page.keyboard.press('o');
+    await page.waitForFunction((k) => window.ikPage?.axesShown(k) === true, hand, { timeout: 5_000 }); // set at the next frame
     const held = (await orientation(page, hand)).goal;
     if (!held) throw new Error('O set no orientation goal');
     await page.evaluate(() => window.ikPage?.turnGizmo([0, 1, 0], 20, 8));
