@@ -197,6 +197,7 @@ describe('orientation goals on the page', () => {
 
     // The panel's box turns it off.
     await orientationBox(page).click();
+    await page.waitForFunction((k) => window.ikPage?.axesShown(k) === false, hand, { timeout: 5_000 }); // hidden at the next frame's redraw
     const off = await orientation(page, hand);
     expect(off.goal).toBeNull();
     expect(off.axes).toBe(false);

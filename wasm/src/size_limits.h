@@ -50,6 +50,10 @@ constexpr int kMaxHistory = 1000000;
 // Backtracking trials of one line search (outside paper mode).
 constexpr int kMaxBacktracks = 1000;
 
+// Steps a solve takes before its time budget holds (steps_before_budget): each may run past the
+// budget, so a few; a frame needs one.
+constexpr int kMaxStepsBeforeBudget = 10;
+
 // Largest magnitude of a coordinate, rig units: a bone length, a rest translation, a target, a
 // pole, the goals' length scale. The importers' cap (web/src/rig/rig_limits.ts MAX_COORDINATE):
 // far past any model in any unit, far below where squared distances (E) overflow.

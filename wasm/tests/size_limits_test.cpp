@@ -135,5 +135,23 @@ TEST(SizeLimits, AnIterationCutShortByTheBudgetReportsTimeout) {
   EXPECT_EQ(s.iterations, 0);
 }
 
+// With steps_before_budget (the page's per-frame solve takes 1), the same budget lets that many
+// steps finish before it stops the solve: a frame on a machine too slow for its budget still moves.
+TEST(SizeLimits, StepsBeforeBudgetFinishBeforeTheBudgetHolds) {
+  Kinematics kin(straight_chain(2000, {1999, 1000}));
+  const Eigen::VectorXd target = (Eigen::VectorXd(6) << 900, 900, 0, 500, 500, 0).finished();
+  for (int steps : {1, 3}) {
+    SolverOptions o;
+    o.time_budget_s = 1e-9;
+    o.restarts = 0;
+    o.steps_before_budget = steps;
+    auto solver = make_solver("lm", kin, o);
+    const SolverSummary& s = solver->solve(Eigen::VectorXd::Zero(kin.num_angles()), target);
+    EXPECT_EQ(s.stop_reason, StopReason::timeout) << steps;
+    EXPECT_EQ(s.iterations, steps);
+    EXPECT_LT(s.E, s.initial_E);
+  }
+}
+
 }  // namespace
 }  // namespace ik

@@ -80,6 +80,11 @@ StopReason Solver::begin(const Eigen::Ref<const Eigen::VectorXd>& angles, const 
   const bool continues = chain_index_ > 0 && angles.size() == summary_.angles.size() && incoming_ == goals_ &&
                          angles == summary_.angles;
   if (!continues) chain_index_ = 0;
+  // The last solve's budget cut its run short, and this one starts from its answer towards the
+  // same goals with the same options: the run goes on from where it had got to (go_on()).
+  const bool resumes_cut = cut_run_ && !options_changed_ && angles.size() == summary_.angles.size() &&
+                           incoming_ == goals_ && angles == summary_.angles;
+  cut_run_ = options_changed_ = false;
   opt_ = next_opt_;
   clock_.reset(opt_.time_budget_s);
   summary_.iterations = summary_.function_evaluations = summary_.jacobian_evaluations = summary_.restarts = 0;
@@ -111,12 +116,22 @@ StopReason Solver::begin(const Eigen::Ref<const Eigen::VectorXd>& angles, const 
     summary_.elapsed_s = clock_.spent();
     return summary_.stop_reason;
   }
+  if (resumes_cut && go_on(close)) return summary_.stop_reason;
   // A drag's next frame starts where the last solve ended: how far its targets moved since (-1:
   // not such a frame). Read before the new goals replace the last ones.
   const double target_change =
       angles.size() == summary_.angles.size() && angles == summary_.angles ? incoming_.largest_change_from(goals_) : -1;
+  // The last solve's budget stopped it off target and this one goes on from there (a drag's
+  // frames on a machine too slow to finish one within its budget): that counts as a run stopped
+  // off target, and the soft rows start lowered as move_on() lowers them. Else each frame began
+  // with them at full weight, and a pole held a dragged hand 0.12 of the character's height off
+  // its target for hundreds of frames, a step a frame.
+  const bool cut_short = target_change >= 0 && (summary_.stop_reason == StopReason::timeout ||
+                                                summary_.stop_reason == StopReason::max_iterations);
+  const double cut_soft_scale = goals_.soft_scale();
   // Workspace: sized here only, so that step() never allocates.
   goals_ = incoming_;
+  if (cut_short && goals_.has_soft() && !opt_.paper_mode) goals_.set_soft_scale(lowered_soft_scale(cut_soft_scale));
   if (m_ != goals_.rows() || n_ != kin_.num_angles() || effectors_ != kin_.rig().effectors || layout_ != goals_.layout())
     resize_workspace();
   pattern_.set_root_weight(opt_.root_unit * opt_.root_unit);
@@ -199,7 +214,10 @@ StopReason Solver::begin(const Eigen::Ref<const Eigen::VectorXd>& angles, const 
   }
   if (close || !running()) clock_.close();  // otherwise the first step's time runs from this call's start
   summary_.elapsed_s = clock_.spent();
-  if (!running()) conclude();
+  if (!running()) {
+    keep_cut_run();
+    conclude();
+  }
   return summary_.stop_reason;
 }
 
@@ -236,6 +254,8 @@ void Solver::resize_workspace() {
   moved_from_.resize(n_);
   heading_to_.resize(n_);
   partway_.resize(n_);
+  cut_at_.resize(n_);
+  cut_run_ = false;
   heading_ = false;
   nearest_.resize(n_);
   stuck_.resize(n_);
@@ -296,12 +316,15 @@ bool Solver::advance(Clock::time_point begin) {
   if (reason == StopReason::running) {
     if (summary_.iterations >= opt_.max_iterations)
       reason = StopReason::max_iterations;
-    else if (clock_.used_up())
+    else if (summary_.iterations >= opt_.steps_before_budget && clock_.used_up())
       reason = StopReason::timeout;
   }
   summary_.stop_reason = settle(reason);
   summary_.elapsed_s = clock_.spent();
-  if (reason != StopReason::running) conclude();
+  if (reason != StopReason::running) {
+    keep_cut_run();
+    conclude();
+  }
   return reason == StopReason::running;
 }
 

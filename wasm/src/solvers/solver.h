@@ -107,7 +107,10 @@ class Solver {
 
   // Replaces the options. They take effect at the next start(), which checks them; a solve in
   // progress keeps the options it started with.
-  void set_options(const SolverOptions& options) { next_opt_ = options; }
+  void set_options(const SolverOptions& options) {
+    next_opt_ = options;
+    options_changed_ = true;
+  }
 
   // Begins a solve from `angles` (#angles, degrees; projected into the limits) towards `target`
   // (#residuals, rig units). Sizes the workspace if the rig's effectors changed since the last
@@ -186,8 +189,11 @@ class Solver {
   bool time_is_up();
   // The iteration gave up because deadline() passed: its `stuck` reports timeout, not zero_step.
   void gave_up_for_time() { cut_short_ = true; }
-  // When the time budget runs out (never, without a budget).
-  Deadline deadline() const { return clock_.deadline(); }
+  // When the time budget runs out (never, without a budget, or before the solve's first
+  // opt_.steps_before_budget accepted steps).
+  Deadline deadline() const {
+    return summary_.iterations < opt_.steps_before_budget ? Deadline() : clock_.deadline();
+  }
   // Is the current iterate (E_, r_) on target (the test of converged_E)?
   bool on_target() const;
 
@@ -236,6 +242,8 @@ class Solver {
   // below 1e-3: dropped for the rest of the solve) and goes on from the current point (a new
   // run; E_, r_ and the best point's E re-evaluated).
   void lower_soft_terms();
+  // The soft rows' scale after `scale` when a run stops off target: 10x lower, 0 below 1e-3.
+  static double lowered_soft_scale(double scale);
   // Once per solve, with the soft rows dropped and the run stopped off target: a new run from
   // the start angles without them (the plain solve), so that soft rows never lower the success rate.
   void retry_without_soft_terms();
@@ -313,6 +321,18 @@ class Solver {
   Eigen::VectorXd heading_to_, partway_;
   bool heading_ = false;
   bool resumed_ = false;  // this solve resumed such a move
+  // A solve its budget stopped (timeout, max_iterations) keeps the point its run had got to
+  // (an escape or a restart partway down, perhaps still above the answer it returned); the next
+  // solve from that answer towards the same goals runs on from there (a slow machine's frames,
+  // each too short to finish a run, would otherwise try the same run again every frame).
+  Eigen::VectorXd cut_at_;
+  bool cut_run_ = false;
+  bool options_changed_ = false;  // set_options() since the last start
+  void keep_cut_run();
+  // Goes on with the cut run from cut_at_ (begin() when it resumes one): the method's state, the
+  // soft rows' scale, the goals given up and the restarts tried are the run's. False (nothing
+  // changed but the pose) when E or its gradient is not finite there.
+  bool go_on(bool close);
   // Everything a solve does when it stops, in order: back from a run of the goals as equals
   // (end_together()), the nearest answer a search found (take_nearest()), the out_of_reach flags
   // (finish()), the speed bound (bound_motion()), the summary's rules (keep_contract()).

@@ -51,9 +51,13 @@ bool Solver::descends_further() const {
   return restarts_left() && !on_target() && gradient_norm_ >= kStationaryFraction * opt_.gradient_tolerance;
 }
 
+double Solver::lowered_soft_scale(double scale) {
+  scale *= kSoftShrink;
+  return scale < kSoftFloor ? 0.0 : scale;
+}
+
 void Solver::lower_soft_terms() {
-  const double scale = goals_.soft_scale() * kSoftShrink;
-  goals_.set_soft_scale(scale < kSoftFloor ? 0.0 : scale);
+  goals_.set_soft_scale(lowered_soft_scale(goals_.soft_scale()));
   restarts_.begin_run();
   settling_.begin_run();
   reset();

@@ -11,6 +11,7 @@
 import type { IkCoreModule } from '../ik/module.js';
 import type { RigSpec } from '../ik/rig_arrays.js';
 import { type PoleLimb, poleLimbs } from '../live/pole_limbs.js';
+import { FRAME_STEPS_BEFORE_BUDGET } from '../live/live_solve.js';
 import { initialPole } from '../live/pole_placement.js';
 import { floatingHipsSpec, floatingRootUnit, KNEES_STRAIGHT_DEG } from '../rig/humanoid/floating_hips.js';
 import { IkRig } from '../ik/rig.js';
@@ -148,7 +149,7 @@ export class AvatarSolver {
       throw e;
     }
     const drag = dragTolerances(h);
-    this.settings = { ...drag, maxIterations: FRAME_ITERATIONS, timeBudgetMs: FRAME_BUDGET_MS, restarts: 0, paperMode: false, strictPriority: true, lmInitialMu: FRAME_MU, minIterations: FRAME_MIN_ITERATIONS, lmMaxRejections: FRAME_REJECTIONS, rootUnit: floatingRootUnit(h) };
+    this.settings = { ...drag, maxIterations: FRAME_ITERATIONS, timeBudgetMs: FRAME_BUDGET_MS, restarts: 0, paperMode: false, strictPriority: true, lmInitialMu: FRAME_MU, minIterations: FRAME_MIN_ITERATIONS, stepsBeforeBudget: FRAME_STEPS_BEFORE_BUDGET, lmMaxRejections: FRAME_REJECTIONS, rootUnit: floatingRootUnit(h) };
     const s = this.session;
     // Every effector holds its frame: the tracked ones the tracker's, the feet where they stand;
     // the hips have no goal until they are tracked.

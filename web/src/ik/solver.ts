@@ -56,6 +56,11 @@ export interface SolverOptions {
   minIterations?: number;
   /** Time budget of one solve, seconds (time spent inside start/step); 0 or Infinity: none. Default 1. */
   timeBudgetSeconds?: number;
+  /**
+   * Accepted steps a solve takes before timeBudgetSeconds can stop it (within maxIterations), 0..10:
+   * a per-frame solve on a slow machine still moves; 0: the budget holds from the start. Default 0.
+   */
+  stepsBeforeBudget?: number;
   /** E values kept per solve for errorHistory(). Default 10000. */
   historyCapacity?: number;
   /** Reproduce the original program (finite differences, its line searches). Default false. */

@@ -5,6 +5,14 @@ import type { IkSession } from './session.js';
 import type { SolveOutcome, SolveSettings } from './method_solver.js';
 
 /**
+ * Accepted steps every per-frame solve takes before its time budget can stop it (the solver option
+ * stepsBeforeBudget): on a machine too slow for one step within the budget (a phone, a loaded
+ * laptop: CPU throttled 8 times, the character's arm with pole handles took 0 steps a frame) the
+ * pose still moves every frame; a step of the project's largest rig takes well under a frame.
+ */
+export const FRAME_STEPS_BEFORE_BUDGET = 1;
+
+/**
  * Stop reasons after which the next frame goes on solving: the budget ran out, not the problem,
  * or the joints' speed bound (maxJointMove) stopped the body partway to its answer.
  */

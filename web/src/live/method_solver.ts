@@ -35,6 +35,8 @@ export interface SolveSettings {
   lmInitialMu?: number;
   /** Iterations a solve takes before on target ends it (the solver option minIterations). Default 0. */
   minIterations?: number;
+  /** Accepted steps a solve takes before its time budget can stop it (the solver option stepsBeforeBudget). Default 0. */
+  stepsBeforeBudget?: number;
   /** Rejected steps after which an lm iteration is stuck (the solver option lmMaxRejections). Default 30. */
   lmMaxRejections?: number;
   /** A floating root's move (rig units) that a step weighs as a joint's degree (the solver option rootUnit). Default 1. */
@@ -117,6 +119,7 @@ export class MethodSolver {
       maxJointMove: s.maxJointMove ?? 0,
       lmInitialMu: s.lmInitialMu ?? 1,
       minIterations: s.minIterations ?? 0,
+      stepsBeforeBudget: s.stepsBeforeBudget ?? 0,
       lmMaxRejections: s.lmMaxRejections ?? 30,
       rootUnit: s.rootUnit ?? 1,
       restWeight: s.restWeight ?? 0,

@@ -14,7 +14,7 @@ import { listenForClicks, type ViewClick } from './picking.js';
 import { Stage } from './stage.js';
 import { errorText } from '../live/error_text.js';
 import type { LiveRig } from './live_rig.js';
-import { solveFrame, type FrameTiming } from '../live/live_solve.js';
+import { FRAME_STEPS_BEFORE_BUDGET, solveFrame, type FrameTiming } from '../live/live_solve.js';
 import { poleLimbs } from '../live/pole_limbs.js';
 import { initialPole } from '../live/pole_placement.js';
 import { restorePose, type PoseState } from '../live/pose_state.js';
@@ -100,7 +100,7 @@ export class LiveController {
    * lamp's first solve read 6.7 ms for 0 iterations in Chromium; warmed, 0.07 ms).
    */
   private warmUp = false;
-  private readonly solveSettings: SolveSettings = { gradientTolerance: 0, tipTolerance: 0, maxIterations: 0, timeBudgetMs: 0, restarts: 0, paperMode: false };
+  private readonly solveSettings: SolveSettings = { gradientTolerance: 0, tipTolerance: 0, maxIterations: 0, timeBudgetMs: 0, restarts: 0, paperMode: false, stepsBeforeBudget: FRAME_STEPS_BEFORE_BUDGET };
   private readonly stopClicks: () => void;
   private polesOn = false;
   /** The limbs' joints (elbow, knee) at the last redraw, 3 per pole, rig units: where the pole lines start. */
