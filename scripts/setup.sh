@@ -2,7 +2,8 @@
 # Installs what the project needs on a fresh Debian machine and builds the WebAssembly.
 # Idempotent: each step is skipped when its result is already there.
 #   scripts/setup.sh            apt packages for the build, npm packages, the WebAssembly
-#   scripts/setup.sh --native   also the native build (GoogleTest) tools and Orocos KDL (the bench's kdl)
+#   scripts/setup.sh --native   also the native build tools (g++, GoogleTest, clang-format), Orocos KDL
+#                               (the bench's kdl) and build/native (Release: the tools and the suites)
 #   scripts/setup.sh --browser  also Chromium for the browser tests
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -18,8 +19,11 @@ for arg in "$@"; do
 done
 
 packages=(emscripten node-acorn libeigen3-dev cmake ninja-build)
-# liborocos-kdl-dev: Orocos KDL, the native bench's kdl method (optional for CMake: without it, no kdl)
-[ "$want_native" = 1 ] && packages+=(g++ googletest libgtest-dev nlohmann-json3-dev liborocos-kdl-dev)
+# liborocos-kdl-dev: Orocos KDL, the native bench's kdl method (optional for CMake: without it, no kdl).
+# clang-format: scripts/test.sh checks the C++ under wasm/ against .clang-format. The sanitizer
+# build of the tests (scripts/test-sanitize.sh) needs nothing more: g++ brings AddressSanitizer's
+# and UndefinedBehaviorSanitizer's runtimes (libasan, libubsan).
+[ "$want_native" = 1 ] && packages+=(g++ googletest libgtest-dev nlohmann-json3-dev liborocos-kdl-dev clang-format)
 [ "$want_browser" = 1 ] && packages+=(chromium)
 
 missing=()
@@ -54,6 +58,11 @@ fi
 cmake --build build/wasm
 
 if [ "$want_native" = 1 ]; then
-  [ -f build/native/build.ninja ] || cmake -S wasm -B build/native -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
+  # Release: the tools (the bench's native engine) and the GoogleTest suites, every warning an
+  # error (IK_WERROR). A build/native configured before that setting is configured again.
+  if [ ! -f build/native/build.ninja ] || ! grep -q '^IK_WERROR:BOOL=ON$' build/native/CMakeCache.txt \
+    || grep -q '^IK_TESTS:BOOL=OFF$' build/native/CMakeCache.txt; then
+    cmake -S wasm -B build/native -G Ninja -DCMAKE_BUILD_TYPE=Release -DIK_TESTS=ON -DIK_WERROR=ON >/dev/null
+  fi
   cmake --build build/native
 fi

@@ -1,11 +1,17 @@
 #!/usr/bin/env bash
-# npm test: install what is missing, build both targets, then run every test:
-# native GoogleTest, the TypeScript type check, vitest (WebAssembly in Node, then the browser).
+# npm test: install what is missing, build both targets, then run every test: the C++ format
+# check, native GoogleTest (build/native, Release, warnings as errors), the TypeScript type check,
+# the layers, vitest (WebAssembly in Node, then the browser). The same GoogleTest suites under
+# AddressSanitizer and UndefinedBehaviorSanitizer: npm run test:sanitize (scripts/test-sanitize.sh).
 # The report's A7 rigs are read from $IK_A7_DIR (default ../shared/rigs/a7); without that folder
 # the suites that need them are skipped, each layer printing one line, unless CI is set.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh --native --browser
+
+echo "== C++ format (clang-format, .clang-format)"
+mapfile -t cxx_files < <(find wasm/src wasm/bindings wasm/native wasm/tests wasm/tools -name '*.cpp' -o -name '*.h' | sort)
+clang-format --dry-run --Werror "${cxx_files[@]}"
 
 echo "== native tests (GoogleTest)"
 npx tsx scripts/write-test-rigs.ts >/dev/null  # the project's rigs in A7 format, for the native tests

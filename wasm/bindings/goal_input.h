@@ -1,8 +1,8 @@
 // Goals as they cross from JavaScript: per end effector, in the rig's effector order, the kGoalStride
 // numbers [positionWeight, orientationWeight, qx, qy, qz, qw, yields] (a weight of 0: no such goal; the
 // quaternion is the target orientation of the effector bone's frame in rig coordinates, any
-// nonzero length; yields 1: EffectorGoal::yields, else 0). The positions come from the solve's target (3 per effector, rig units), so
-// a drag that only moves targets writes the same buffer as a plain solve. Bend hints cross as
+// nonzero length; yields 1: EffectorGoal::yields, else 0). The positions come from the solve's target (3 per effector,
+// rig units), so a drag that only moves targets writes the same buffer as a plain solve. Bend hints cross as
 // kPoleStride numbers each, [bone, x, y, z, weight] (rig units); stiffness as one number per bone
 // or none (all 1).
 #pragma once
@@ -42,7 +42,8 @@ class GoalInput {
         return std::string("the ") + what + " of end effector " + std::to_string(e) + "'s goal";
       };
       if (!std::isfinite(g[0]) || g[0] < 0) throw RigError(field("position weight") + " must be a finite number >= 0");
-      if (!std::isfinite(g[1]) || g[1] < 0) throw RigError(field("orientation weight") + " must be a finite number >= 0");
+      if (!std::isfinite(g[1]) || g[1] < 0)
+        throw RigError(field("orientation weight") + " must be a finite number >= 0");
       EffectorGoal& goal = goals_.effectors[e];
       goal.position = g[0] > 0;
       goal.position_weight = g[0];

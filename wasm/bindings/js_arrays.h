@@ -14,13 +14,22 @@
 
 #include <exception>
 #include <new>
-#include <utility>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "rig.h"
+#include "size_limits.h"
+
+// wasm/CMakeLists.txt links the module with -sMAXIMUM_MEMORY=IK_WASM_MAXIMUM_MEMORY: the cap the
+// core's limits and the messages below are written for (size_limits.h).
+static_assert(IK_WASM_MAXIMUM_MEMORY == ik::kMaxWasmMemoryBytes,
+              "the link's MAXIMUM_MEMORY (wasm/CMakeLists.txt) and kMaxWasmMemoryBytes (size_limits.h) differ");
 
 namespace ik::js {
+
+// "2 GiB": the most memory the module has (kMaxWasmMemoryBytes).
+inline std::string wasm_memory_cap() { return std::to_string(kMaxWasmMemoryBytes >> 30) + " GiB"; }
 
 // The message of the last failed binding call ("" if none since the last take_error()).
 inline std::string& last_error() {
@@ -41,7 +50,7 @@ Result guarded(Body body, Result failure) {
   try {
     return body();
   } catch (const std::bad_alloc&) {
-    last_error() = "out of memory (the WebAssembly heap is at most 2 GiB)";
+    last_error() = "out of memory (the WebAssembly heap is at most " + wasm_memory_cap() + ")";
   } catch (const std::exception& e) {
     last_error() = e.what();
   } catch (...) {

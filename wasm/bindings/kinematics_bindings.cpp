@@ -79,65 +79,77 @@ Eigen::Map<const Eigen::VectorXd> RigBinding::read_target(const val& target) {
 }
 
 val RigBinding::tips(const val& angles) {
-  return guarded([&] {
-    tips_.resize(kin_.num_residuals());
-    Eigen::Map<Eigen::VectorXd> tips(tips_.data(), tips_.size());
-    kin_.tips(read_angles(angles), tips);
-    return copy_out(tips_.data(), tips_.size());
-  }, val::null());
+  return guarded(
+      [&] {
+        tips_.resize(kin_.num_residuals());
+        Eigen::Map<Eigen::VectorXd> tips(tips_.data(), tips_.size());
+        kin_.tips(read_angles(angles), tips);
+        return copy_out(tips_.data(), tips_.size());
+      },
+      val::null());
 }
 
 val RigBinding::bone_tips(const val& angles) {
-  return guarded([&] {
-    kin_.forward(read_angles(angles));
-    std::vector<double>& out = scratch_;
-    out.resize(3 * kin_.num_bones());
-    for (int i = 0; i < kin_.num_bones(); ++i) Eigen::Map<Eigen::Vector3d>(out.data() + 3 * i) = kin_.tip(i);
-    return copy_out(out.data(), out.size());
-  }, val::null());
+  return guarded(
+      [&] {
+        kin_.forward(read_angles(angles));
+        std::vector<double>& out = scratch_;
+        out.resize(3 * kin_.num_bones());
+        for (int i = 0; i < kin_.num_bones(); ++i) Eigen::Map<Eigen::Vector3d>(out.data() + 3 * i) = kin_.tip(i);
+        return copy_out(out.data(), out.size());
+      },
+      val::null());
 }
 
 val RigBinding::tip_rotations(const val& angles) {
-  return guarded([&] {
-    kin_.forward(read_angles(angles));
-    std::vector<double>& out = scratch_;
-    out.resize(4 * kin_.num_effectors());
-    for (int e = 0; e < kin_.num_effectors(); ++e) {
-      const Eigen::Quaterniond q(kin_.tip_rotation(kin_.rig().effectors[e]));
-      Eigen::Map<Eigen::Vector4d>(out.data() + 4 * e) = q.coeffs();  // x, y, z, w
-    }
-    return copy_out(out.data(), out.size());
-  }, val::null());
+  return guarded(
+      [&] {
+        kin_.forward(read_angles(angles));
+        std::vector<double>& out = scratch_;
+        out.resize(4 * kin_.num_effectors());
+        for (int e = 0; e < kin_.num_effectors(); ++e) {
+          const Eigen::Quaterniond q(kin_.tip_rotation(kin_.rig().effectors[e]));
+          Eigen::Map<Eigen::Vector4d>(out.data() + 4 * e) = q.coeffs();  // x, y, z, w
+        }
+        return copy_out(out.data(), out.size());
+      },
+      val::null());
 }
 
 val RigBinding::poses(const val& angles) {
-  return guarded([&] {
-    kin_.forward(read_angles(angles));
-    std::vector<double>& out = scratch_;
-    out.resize(16 * kin_.num_bones());
-    for (int i = 0; i < kin_.num_bones(); ++i)
-      Eigen::Map<Eigen::Matrix<double, 4, 4, Eigen::RowMajor>>(out.data() + 16 * i) = kin_.pose(i).matrix();
-    return copy_out(out.data(), out.size());
-  }, val::null());
+  return guarded(
+      [&] {
+        kin_.forward(read_angles(angles));
+        std::vector<double>& out = scratch_;
+        out.resize(16 * kin_.num_bones());
+        for (int i = 0; i < kin_.num_bones(); ++i)
+          Eigen::Map<Eigen::Matrix<double, 4, 4, Eigen::RowMajor>>(out.data() + 16 * i) = kin_.pose(i).matrix();
+        return copy_out(out.data(), out.size());
+      },
+      val::null());
 }
 
 val RigBinding::jacobian(const val& angles) {
-  return guarded([&] {
-    tips_.resize(kin_.num_residuals());
-    Eigen::Map<Eigen::VectorXd> tips(tips_.data(), tips_.size());
-    kin_.jacobian(read_angles(angles), tips, jacobian_buffer());
-    return row_major_copy();
-  }, val::null());
+  return guarded(
+      [&] {
+        tips_.resize(kin_.num_residuals());
+        Eigen::Map<Eigen::VectorXd> tips(tips_.data(), tips_.size());
+        kin_.jacobian(read_angles(angles), tips, jacobian_buffer());
+        return row_major_copy();
+      },
+      val::null());
 }
 
 val RigBinding::finite_difference_jacobian(const val& angles, double h_deg, bool clamp) {
-  return guarded([&] {
-    if (!(h_deg > 0)) throw RigError("finite difference step must be > 0 degrees");
-    const auto a = read_angles(angles);
-    Eigen::VectorXd scratch(kin_.num_angles()), plus(kin_.num_residuals()), minus(kin_.num_residuals());
-    ik::finite_difference_jacobian(kin_, a, h_deg, clamp, scratch, plus, minus, jacobian_buffer());
-    return row_major_copy();
-  }, val::null());
+  return guarded(
+      [&] {
+        if (!(h_deg > 0)) throw RigError("finite difference step must be > 0 degrees");
+        const auto a = read_angles(angles);
+        Eigen::VectorXd scratch(kin_.num_angles()), plus(kin_.num_residuals()), minus(kin_.num_residuals());
+        ik::finite_difference_jacobian(kin_, a, h_deg, clamp, scratch, plus, minus, jacobian_buffer());
+        return row_major_copy();
+      },
+      val::null());
 }
 
 val RigBinding::row_major_copy() {
@@ -149,59 +161,69 @@ val RigBinding::row_major_copy() {
 }
 
 double RigBinding::objective(const val& angles, const val& target) {
-  return guarded([&] {
-    const auto a = read_angles(angles);
-    const auto t = read_target(target);
-    tips_.resize(kin_.num_residuals());
-    Eigen::Map<Eigen::VectorXd> r(tips_.data(), tips_.size());
-    return ik::objective(kin_, a, t, r);
-  }, std::numeric_limits<double>::quiet_NaN());
+  return guarded(
+      [&] {
+        const auto a = read_angles(angles);
+        const auto t = read_target(target);
+        tips_.resize(kin_.num_residuals());
+        Eigen::Map<Eigen::VectorXd> r(tips_.data(), tips_.size());
+        return ik::objective(kin_, a, t, r);
+      },
+      std::numeric_limits<double>::quiet_NaN());
 }
 
 val RigBinding::gradient(const val& angles, const val& target) {
-  return guarded([&] {
-    const auto a = read_angles(angles);
-    const auto t = read_target(target);
-    tips_.resize(kin_.num_residuals());
-    Eigen::Map<Eigen::VectorXd> r(tips_.data(), tips_.size());
-    Eigen::Map<Eigen::MatrixXd> jac = jacobian_buffer();
-    scratch_.resize(kin_.num_angles());
-    Eigen::Map<Eigen::VectorXd> g(scratch_.data(), scratch_.size());
-    objective_and_gradient(kin_, a, t, r, jac, g);
-    return copy_out(scratch_.data(), scratch_.size());
-  }, val::null());
+  return guarded(
+      [&] {
+        const auto a = read_angles(angles);
+        const auto t = read_target(target);
+        tips_.resize(kin_.num_residuals());
+        Eigen::Map<Eigen::VectorXd> r(tips_.data(), tips_.size());
+        Eigen::Map<Eigen::MatrixXd> jac = jacobian_buffer();
+        scratch_.resize(kin_.num_angles());
+        Eigen::Map<Eigen::VectorXd> g(scratch_.data(), scratch_.size());
+        objective_and_gradient(kin_, a, t, r, jac, g);
+        return copy_out(scratch_.data(), scratch_.size());
+      },
+      val::null());
 }
 
 val RigBinding::project(const val& angles) {
-  return guarded([&] {
-    read_angles(angles);  // checked, into angles_
-    Eigen::Map<Eigen::VectorXd> a(angles_.data(), angles_.size());
-    kin_.project(a);
-    return copy_out(angles_.data(), angles_.size());
-  }, val::null());
+  return guarded(
+      [&] {
+        read_angles(angles);  // checked, into angles_
+        Eigen::Map<Eigen::VectorXd> a(angles_.data(), angles_.size());
+        kin_.project(a);
+        return copy_out(angles_.data(), angles_.size());
+      },
+      val::null());
 }
 
 val RigBinding::restart_start(double k, double seed) {
-  return guarded([&] {
-    if (!(k >= 1 && k <= kMaxRestartIndex && k == std::floor(k)))
-      throw RigError("a restart index is an integer in 1.." + std::to_string(kMaxRestartIndex));
-    if (!(seed >= 0 && seed <= 4294967295.0 && seed == std::floor(seed)))
-      throw RigError("a seed is an integer in [0, 2^32)");
-    const int n = kin_.num_angles();
-    const QuasiRandom sequence(n, static_cast<std::uint32_t>(seed));
-    Eigen::VectorXd unit(n), start(n);
-    Restarts::start_of(sequence, static_cast<long>(k), kin_.lower(), kin_.upper(), unit, start);
-    return copy_out(start.data(), start.size());
-  }, val::null());
+  return guarded(
+      [&] {
+        if (!(k >= 1 && k <= kMaxRestartIndex && k == std::floor(k)))
+          throw RigError("a restart index is an integer in 1.." + std::to_string(kMaxRestartIndex));
+        if (!(seed >= 0 && seed <= 4294967295.0 && seed == std::floor(seed)))
+          throw RigError("a seed is an integer in [0, 2^32)");
+        const int n = kin_.num_angles();
+        const QuasiRandom sequence(n, static_cast<std::uint32_t>(seed));
+        Eigen::VectorXd unit(n), start(n);
+        Restarts::start_of(sequence, static_cast<long>(k), kin_.lower(), kin_.upper(), unit, start);
+        return copy_out(start.data(), start.size());
+      },
+      val::null());
 }
 
 bool RigBinding::set_effectors(const val& effectors) {
-  return guarded([&] {
-    std::vector<int> list;
-    copy_in(effectors, list, "effectors");
-    kin_.set_effectors(list);
-    return true;
-  }, false);
+  return guarded(
+      [&] {
+        std::vector<int> list;
+        copy_in(effectors, list, "effectors");
+        kin_.set_effectors(list);
+        return true;
+      },
+      false);
 }
 
 val RigBinding::effectors() const {

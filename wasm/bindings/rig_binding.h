@@ -24,10 +24,10 @@ class RigBinding {
   int num_bones() const { return kin_.num_bones(); }
   int num_angles() const { return kin_.num_angles(); }
   int num_effectors() const { return kin_.num_effectors(); }
-  emscripten::val effectors() const;             // Int32Array(n) of bone indices
+  emscripten::val effectors() const;                     // Int32Array(n) of bone indices
   bool set_effectors(const emscripten::val& effectors);  // false (the old list kept) if refused
-  emscripten::val lower() const;                 // Float64Array(3m), degrees
-  emscripten::val upper() const;                 // Float64Array(3m), degrees
+  emscripten::val lower() const;                         // Float64Array(3m), degrees
+  emscripten::val upper() const;                         // Float64Array(3m), degrees
 
   // All take angles as 3m numbers in degrees.
   emscripten::val tips(const emscripten::val& angles);       // Float64Array(3n)
@@ -35,12 +35,12 @@ class RigBinding {
   // Float64Array(4n): each effector bone's frame rotation (Kinematics::tip_rotation) as a unit
   // quaternion x, y, z, w (the orientation an orientation goal targets).
   emscripten::val tip_rotations(const emscripten::val& angles);
-  emscripten::val poses(const emscripten::val& angles);      // Float64Array(16m), row-major T_i
-  emscripten::val jacobian(const emscripten::val& angles);   // Float64Array(3n*3m), row-major, per degree
+  emscripten::val poses(const emscripten::val& angles);     // Float64Array(16m), row-major T_i
+  emscripten::val jacobian(const emscripten::val& angles);  // Float64Array(3n*3m), row-major, per degree
   emscripten::val finite_difference_jacobian(const emscripten::val& angles, double h_deg, bool clamp);
-  double objective(const emscripten::val& angles, const emscripten::val& target);  // E, NaN on failure
+  double objective(const emscripten::val& angles, const emscripten::val& target);          // E, NaN on failure
   emscripten::val gradient(const emscripten::val& angles, const emscripten::val& target);  // Float64Array(3m)
-  emscripten::val project(const emscripten::val& angles);    // clamped copy, Float64Array(3m)
+  emscripten::val project(const emscripten::val& angles);  // clamped copy, Float64Array(3m)
   // The start of the solvers' k-th restart (k >= 1) with option seed `seed`: Float64Array(3m),
   // degrees, inside the limits (restarts.h), for harnesses that restart other solvers alike.
   emscripten::val restart_start(double k, double seed);

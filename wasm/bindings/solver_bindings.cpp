@@ -64,10 +64,12 @@ class SolverBinding {
   // Replaces the options (same object shape as create()'s); they apply from the next start().
   // False (the old options kept) for a malformed object.
   bool set_options(const val& options) {
-    return guarded([&] {
-      solver_->set_options(read_options(options));
-      return true;
-    }, false);
+    return guarded(
+        [&] {
+          solver_->set_options(read_options(options));
+          return true;
+        },
+        false);
   }
 
   // The options of the current solve, every field.
@@ -84,14 +86,16 @@ class SolverBinding {
   // sizes settle). False (the old goals kept) if refused.
   bool set_goals(const val& packed, int packed_length, const val& poles, int poles_length, const val& stiffness,
                  int stiffness_length, double length_scale) {
-    return guarded([&] {
-      copy_known(packed, packed_length, goal_numbers_);
-      copy_known(poles, poles_length, pole_numbers_);
-      copy_known(stiffness, stiffness_length, stiffness_numbers_);
-      goal_input_.set(rig_.kinematics(), goal_numbers_, pole_numbers_, stiffness_numbers_, length_scale);
-      has_goals_ = true;
-      return true;
-    }, false);
+    return guarded(
+        [&] {
+          copy_known(packed, packed_length, goal_numbers_);
+          copy_known(poles, poles_length, pole_numbers_);
+          copy_known(stiffness, stiffness_length, stiffness_numbers_);
+          goal_input_.set(rig_.kinematics(), goal_numbers_, pole_numbers_, stiffness_numbers_, length_scale);
+          has_goals_ = true;
+          return true;
+        },
+        false);
   }
 
   // Back to plain position goals of weight 1.
@@ -102,10 +106,12 @@ class SolverBinding {
   // Begins a solve: angles (3 per bone, degrees), target (3 per end effector, rig units).
   // Returns the stop reason after the start ("running" unless already converged), "" on failure.
   std::string start(const val& angles, const val& target) {
-    return guarded([&] {
-      begin(angles, target);
-      return std::string(stop_reason_name(solver_->summary().stop_reason));
-    }, std::string());
+    return guarded(
+        [&] {
+          begin(angles, target);
+          return std::string(stop_reason_name(solver_->summary().stop_reason));
+        },
+        std::string());
   }
 
   // One iteration; true while still running. No allocation on the C++ side.
@@ -156,41 +162,46 @@ class SolverBinding {
   // the start angles and the result numbers after the target (see IoStat). Returns the stop
   // reason as its enumerator index (stop_reasons() names them), or -1 on failure.
   val io_view() {
-    return guarded([&] {
-      const Kinematics& kin = rig_.kinematics();
-      const size_t size = static_cast<size_t>(kin.num_angles() + kin.num_residuals()) + kIoStats;
-      if (io_.size() != size) io_.assign(size, 0.0);  // kept otherwise: a view asked anew after growth reads the result
-      io_n_ = kin.num_angles();
-      io_m_ = kin.num_residuals();
-      return val(emscripten::typed_memory_view(io_.size(), io_.data()));
-    }, val::null());
+    return guarded(
+        [&] {
+          const Kinematics& kin = rig_.kinematics();
+          const size_t size = static_cast<size_t>(kin.num_angles() + kin.num_residuals()) + kIoStats;
+          if (io_.size() != size)
+            io_.assign(size, 0.0);  // kept otherwise: a view asked anew after growth reads the result
+          io_n_ = kin.num_angles();
+          io_m_ = kin.num_residuals();
+          return val(emscripten::typed_memory_view(io_.size(), io_.data()));
+        },
+        val::null());
   }
 
   int solve_io() {
-    return guarded([&] {
-      const Kinematics& kin = rig_.kinematics();
-      check_length(io_n_, kin.num_angles(), "angles");
-      check_length(io_m_, kin.num_residuals(), "target");
-      const SolverSummary& s = solve_on(io_.data(), io_.data() + io_n_);
-      std::copy(s.angles.data(), s.angles.data() + io_n_, io_.begin());
-      double* stats = io_.data() + io_n_ + io_m_;
-      stats[kE] = s.E;
-      stats[kInitialE] = s.initial_E;
-      stats[kGradNorm] = s.gradient_norm;
-      stats[kIterations] = s.iterations;
-      stats[kFunctionEvaluations] = s.function_evaluations;
-      stats[kJacobianEvaluations] = s.jacobian_evaluations;
-      stats[kRestarts] = s.restarts;
-      stats[kElapsed] = s.elapsed_s;
-      stats[kTipDistance] = s.tip_distance;
-      stats[kReached] = s.reached ? 1 : 0;
-      stats[kEscapes] = s.escapes;
-      stats[kChainRestarts] = s.chain_restarts;
-      stats[kOutOfReach] = s.out_of_reach ? 1 : 0;
-      stats[kOrientationOutOfReach] = s.orientation_out_of_reach ? 1 : 0;
-      stats[kGoalsGivenUp] = s.goals_given_up;
-      return static_cast<int>(s.stop_reason);
-    }, -1);
+    return guarded(
+        [&] {
+          const Kinematics& kin = rig_.kinematics();
+          check_length(io_n_, kin.num_angles(), "angles");
+          check_length(io_m_, kin.num_residuals(), "target");
+          const SolverSummary& s = solve_on(io_.data(), io_.data() + io_n_);
+          std::copy(s.angles.data(), s.angles.data() + io_n_, io_.begin());
+          double* stats = io_.data() + io_n_ + io_m_;
+          stats[kE] = s.E;
+          stats[kInitialE] = s.initial_E;
+          stats[kGradNorm] = s.gradient_norm;
+          stats[kIterations] = s.iterations;
+          stats[kFunctionEvaluations] = s.function_evaluations;
+          stats[kJacobianEvaluations] = s.jacobian_evaluations;
+          stats[kRestarts] = s.restarts;
+          stats[kElapsed] = s.elapsed_s;
+          stats[kTipDistance] = s.tip_distance;
+          stats[kReached] = s.reached ? 1 : 0;
+          stats[kEscapes] = s.escapes;
+          stats[kChainRestarts] = s.chain_restarts;
+          stats[kOutOfReach] = s.out_of_reach ? 1 : 0;
+          stats[kOrientationOutOfReach] = s.orientation_out_of_reach ? 1 : 0;
+          stats[kGoalsGivenUp] = s.goals_given_up;
+          return static_cast<int>(s.stop_reason);
+        },
+        -1);
   }
 
   // The stop reasons' names, indexed by solve_io()'s return value.
@@ -204,16 +215,41 @@ class SolverBinding {
   // Where solve_io() writes each result number, after the target; io_stats() names them in this
   // order, so JavaScript reads the offsets from here instead of repeating them.
   enum IoStat {
-    kE, kInitialE, kGradNorm, kIterations, kFunctionEvaluations, kJacobianEvaluations, kRestarts, kElapsed,
-    kTipDistance, kReached, kEscapes, kChainRestarts, kOutOfReach, kOrientationOutOfReach, kGoalsGivenUp, kIoStats
+    kE,
+    kInitialE,
+    kGradNorm,
+    kIterations,
+    kFunctionEvaluations,
+    kJacobianEvaluations,
+    kRestarts,
+    kElapsed,
+    kTipDistance,
+    kReached,
+    kEscapes,
+    kChainRestarts,
+    kOutOfReach,
+    kOrientationOutOfReach,
+    kGoalsGivenUp,
+    kIoStats
   };
 
   // The result numbers' names (as in the result object), indexed by IoStat.
   static val io_stats() {
-    static const char* const kNames[kIoStats] = {
-        "E", "initialE", "gradNorm", "iterations", "functionEvaluations", "jacobianEvaluations", "restarts",
-        "elapsedSeconds", "tipDistance", "reached", "escapes", "chainRestarts", "outOfReach",
-        "orientationOutOfReach", "goalsGivenUp"};
+    static const char* const kNames[kIoStats] = {"E",
+                                                 "initialE",
+                                                 "gradNorm",
+                                                 "iterations",
+                                                 "functionEvaluations",
+                                                 "jacobianEvaluations",
+                                                 "restarts",
+                                                 "elapsedSeconds",
+                                                 "tipDistance",
+                                                 "reached",
+                                                 "escapes",
+                                                 "chainRestarts",
+                                                 "outOfReach",
+                                                 "orientationOutOfReach",
+                                                 "goalsGivenUp"};
     val names = val::array();
     for (const char* name : kNames) names.call<void>("push", std::string(name));
     return names;
@@ -268,7 +304,8 @@ class SolverBinding {
 
   static void check_length(int given, int expected, const char* what) {
     if (given != expected)
-      throw RigError(std::string(what) + " has " + std::to_string(given) + " values, expected " + std::to_string(expected));
+      throw RigError(std::string(what) + " has " + std::to_string(given) + " values, expected " +
+                     std::to_string(expected));
   }
 
   RigBinding& rig_;

@@ -83,7 +83,8 @@ inline std::string with_js_option_names(const std::string& message) {
   const SolverOptions any;  // only the names are read
   for_each_option(any, [&](const OptionInfo& info, const auto&) {
     const std::string cpp = std::string("option ") + info.name + " ";
-    if (message.rfind(cpp, 0) == 0) result = std::string("solver option ") + info.js_name + " " + message.substr(cpp.size());
+    if (message.rfind(cpp, 0) == 0)
+      result = std::string("solver option ") + info.js_name + " " + message.substr(cpp.size());
   });
   return result;
 }

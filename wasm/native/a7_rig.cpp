@@ -20,8 +20,10 @@ Eigen::Matrix4d read_rest(const json& rows, const std::string& where) {
     throw RigError(where + " must be a 3x4 or 4x4 row-major matrix");
   Eigen::Matrix4d m = Eigen::Matrix4d::Identity();
   for (size_t r = 0; r < rows.size(); ++r) {
-    if (!rows[r].is_array() || rows[r].size() != 4) throw RigError(where + " row " + std::to_string(r) + " must have 4 numbers");
-    for (int c = 0; c < 4; ++c) m(r, c) = number(rows[r][c], where + "[" + std::to_string(r) + "][" + std::to_string(c) + "]");
+    if (!rows[r].is_array() || rows[r].size() != 4)
+      throw RigError(where + " row " + std::to_string(r) + " must have 4 numbers");
+    for (int c = 0; c < 4; ++c)
+      m(r, c) = number(rows[r][c], where + "[" + std::to_string(r) + "][" + std::to_string(c) + "]");
   }
   return m;
 }

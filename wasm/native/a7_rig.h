@@ -1,5 +1,5 @@
 // Reads an A7 course rig (JSON, format in PROTOCOL.md) into the rig model. Native builds only:
-// the web front ends parse rigs in TypeScript (web/src/rig/a7_rig.ts) and pass arrays through the
+// the web front ends parse rigs in TypeScript (web/src/rig/a7/a7_rig.ts) and pass arrays through the
 // bindings; tests/bench/protocol_agreement.test.ts reads every test rig both ways.
 #pragma once
 

@@ -29,7 +29,8 @@ double largest_rotation_error_deg(Kinematics& kin, const Eigen::Ref<const Eigen:
   kin.forward(angles);
   double worst = 0;
   for (int e = 0; e < kin.num_effectors(); ++e) {
-    const Eigen::Matrix3d R = rotation_of(quaternions.data() + 4 * e).transpose() * kin.tip_rotation(kin.rig().effectors[e]);
+    const Eigen::Matrix3d R =
+        rotation_of(quaternions.data() + 4 * e).transpose() * kin.tip_rotation(kin.rig().effectors[e]);
     const Eigen::Quaterniond d(R);  // 2 atan2(|v|, |w|): accurate near 0 as well
     worst = std::max(worst, 2 * std::atan2(d.vec().norm(), std::abs(d.w())) / kRadPerDeg);
   }

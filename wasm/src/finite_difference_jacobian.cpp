@@ -4,10 +4,10 @@
 
 namespace ik {
 
-void finite_difference_jacobian(Kinematics& kin, const Eigen::Ref<const Eigen::VectorXd>& angles,
-                                 double h_deg, bool clamp_to_limits, Eigen::Ref<Eigen::VectorXd> scratch,
-                                 Eigen::Ref<Eigen::VectorXd> tips_plus, Eigen::Ref<Eigen::VectorXd> tips_minus,
-                                 Eigen::Ref<Eigen::MatrixXd> jac) {
+void finite_difference_jacobian(Kinematics& kin, const Eigen::Ref<const Eigen::VectorXd>& angles, double h_deg,
+                                bool clamp_to_limits, Eigen::Ref<Eigen::VectorXd> scratch,
+                                Eigen::Ref<Eigen::VectorXd> tips_plus, Eigen::Ref<Eigen::VectorXd> tips_minus,
+                                Eigen::Ref<Eigen::MatrixXd> jac) {
   scratch = angles;
   for (int j = 0; j < kin.num_angles(); ++j) {
     double hi = angles[j] + h_deg, lo = angles[j] - h_deg;

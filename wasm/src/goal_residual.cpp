@@ -29,9 +29,9 @@ double goal_objective(Kinematics& kin, const GoalSet& goals, const Eigen::Ref<co
   }
   for (int p = 0; p < goals.num_poles(); ++p) {
     const GoalSet::Pole& g = goals.pole(p);
-    residual.segment<3>(hard + 3 * p) = pole_residual(kin.joint_origin(g.parent), kin.joint_origin(g.bone),
-                                                      kin.tip(g.bone), g.point, g.bend_floor,
-                                                      goals.soft_scale() * g.scale);
+    residual.segment<3>(hard + 3 * p) =
+        pole_residual(kin.joint_origin(g.parent), kin.joint_origin(g.bone), kin.tip(g.bone), g.point, g.bend_floor,
+                      goals.soft_scale() * g.scale);
   }
   rest_residual(goals, angles, residual.tail(3 * goals.num_rest()));
   return 0.5 * residual.squaredNorm();

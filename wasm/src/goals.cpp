@@ -101,7 +101,8 @@ void GoalSet::set_rest(const Kinematics& kin, double weight, bool from_start,
   rest_scale_.clear();
   layout_.resize(blocks_.size() + poles_.size());
   const int n = kin.num_angles();
-  if (!(std::isfinite(weight) && weight > 0) || start.size() != n || static_cast<int>(on_chain_.size()) != kin.num_bones())
+  if (!(std::isfinite(weight) && weight > 0) || start.size() != n ||
+      static_cast<int>(on_chain_.size()) != kin.num_bones())
     return;
   for (int b = 0; b < kin.num_bones(); ++b) {
     const double stiffness = stiffness_.empty() ? 1.0 : stiffness_[b];
@@ -162,7 +163,8 @@ std::string GoalSet::set(const Kinematics& kin, const Goals& goals) {
     };
     if (g.position && !valid_weight(g.position_weight))
       return which("position weight") + " must be a finite number >= 0";
-    if (g.position && point_problem(g.position_target)) return which("position target") + point_problem(g.position_target);
+    if (g.position && point_problem(g.position_target))
+      return which("position target") + point_problem(g.position_target);
     if (g.orientation && !valid_weight(g.orientation_weight))
       return which("orientation weight") + " must be a finite number >= 0";
     if (g.orientation && !is_rotation(g.orientation_target)) return which("orientation target") + " is not a rotation";
@@ -219,7 +221,8 @@ std::string GoalSet::set(const Kinematics& kin, const Goals& goals) {
     pole.point = p.point;
     pole.scale = p.weight * length;
     // |M - S| and |T - M| at rest: the rest heads' distance and the bone's length.
-    const double upper = (kin.rig().bones[p.bone].rest.block<3, 1>(0, 3) - kin.rig().bones[parent].rest.block<3, 1>(0, 3)).norm();
+    const double upper =
+        (kin.rig().bones[p.bone].rest.block<3, 1>(0, 3) - kin.rig().bones[parent].rest.block<3, 1>(0, 3)).norm();
     const double shorter = std::min(upper, kin.rig().bones[p.bone].length);
     pole.bend_floor = kBendFloorShare * (shorter > 0 ? shorter : length);
     poles_.push_back(pole);
@@ -249,7 +252,8 @@ bool GoalSet::operator==(const GoalSet& other) const {
   if (plain_) return target_.size() == other.target_.size() && target_ == other.target_;
   for (int b = 0; b < num_blocks(); ++b) {
     const Block &x = blocks_[b], &y = other.blocks_[b];
-    if (x.scale != y.scale || x.position != y.position || x.rotation != y.rotation || x.yields != y.yields) return false;
+    if (x.scale != y.scale || x.position != y.position || x.rotation != y.rotation || x.yields != y.yields)
+      return false;
   }
   return true;
 }

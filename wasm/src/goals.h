@@ -30,10 +30,10 @@ namespace ik {
 struct EffectorGoal {
   bool position = true;
   Eigen::Vector3d position_target = Eigen::Vector3d::Zero();  // x_b, rig units
-  double position_weight = 1;                                  // w_p >= 0, relative (see Goals)
+  double position_weight = 1;                                 // w_p >= 0, relative (see Goals)
   bool orientation = false;
   Eigen::Matrix3d orientation_target = Eigen::Matrix3d::Identity();  // R_target, a rotation (world)
-  double orientation_weight = 1;                                      // w_o >= 0, relative (see Goals)
+  double orientation_weight = 1;                                     // w_o >= 0, relative (see Goals)
   // Strict priority (solver option strict_priority): this effector's goals give way first when
   // not every goal can be met (the one a user drags, while the others stay pinned). The solve
   // holds the other goals from its start and brings these as close as their freedom allows.
@@ -45,9 +45,9 @@ struct EffectorGoal {
 // lie on the side of the S-T axis where `point` lies (the knee points at it); a soft term,
 // zero when it does (pole_residual.h).
 struct PoleGoal {
-  int bone = 0;                                      // a bone with a parent
+  int bone = 0;                                     // a bone with a parent
   Eigen::Vector3d point = Eigen::Vector3d::Zero();  // the pole, rig units (world)
-  double weight = 1;                                 // 0..kMaxSoftWeight; 0: no pole
+  double weight = 1;                                // 0..kMaxSoftWeight; 0: no pole
 };
 
 // Limits (size_limits.h, checked by GoalSet::set()): points within +-kMaxCoordinate, the length
@@ -83,8 +83,8 @@ class GoalSet {
   struct Pole {
     int bone = 0, parent = 0;
     Eigen::Vector3d point = Eigen::Vector3d::Zero();
-    double scale = 1;        // w L, rig units
-    double bend_floor = 1;   // delta of pole_residual.h, rig units
+    double scale = 1;       // w L, rig units
+    double bend_floor = 1;  // delta of pole_residual.h, rig units
   };
 
   // Plain position goals of weight 1 at `target` (3 per effector, rig units), taken as given:

@@ -87,11 +87,11 @@ void Kinematics::forward(const Eigen::Ref<const Eigen::VectorXd>& angles) {
     // any other value still rotate).
     const int locked = zero_locked_[i];
     const double a0 = angles[3 * i], a1 = angles[3 * i + 1], a2 = angles[3 * i + 2];
-    axes_[i].col(0) = r.col(0);                        // first x axis, before any rotation
+    axes_[i].col(0) = r.col(0);  // first x axis, before any rotation
     if (!(locked & 1) || a0 != 0) rotate_columns(r, 1, 2, a0 * kRadPerDeg);
-    axes_[i].col(1) = r.col(2);                        // z axis after Rx(a0)
+    axes_[i].col(1) = r.col(2);  // z axis after Rx(a0)
     if (!(locked & 2) || a1 != 0) rotate_columns(r, 0, 1, a1 * kRadPerDeg);
-    axes_[i].col(2) = r.col(0);                        // second x axis after Rx(a0) Rz(a1)
+    axes_[i].col(2) = r.col(0);  // second x axis after Rx(a0) Rz(a1)
     if (!(locked & 4) || a2 != 0) rotate_columns(r, 1, 2, a2 * kRadPerDeg);
     frame_[i].linear() = r;
     frame_[i].translation() = joint.translation();

@@ -92,15 +92,15 @@ class Kinematics {
   void precompute_chains();
 
   Rig rig_;
-  std::vector<int> order_;                 // bones, parents before children
-  std::vector<std::vector<int>> chains_;   // per end effector: root..its bone
-  std::vector<Eigen::Isometry3d> rest_;    // rest_i
+  std::vector<int> order_;                // bones, parents before children
+  std::vector<std::vector<int>> chains_;  // per end effector: root..its bone
+  std::vector<Eigen::Isometry3d> rest_;   // rest_i
   std::vector<Eigen::Isometry3d> rest_inv_;
   std::vector<Eigen::Isometry3d> from_parent_;  // rest_parent^-1 * rest_i (rest_i for a root)
-  std::vector<Eigen::Isometry3d> frame_;   // T_parent * rest_i * Rx Rz Rx: canonical bone -> world
-  std::vector<Eigen::Matrix3d> axes_;      // world joint axes (x, z, x) per bone
-  std::vector<unsigned char> zero_locked_;  // per bone, bit k: angle k is locked at 0 (min == max == 0)
-  std::vector<unsigned char> movable_;      // per bone, bit k: angle k is movable (min < max)
+  std::vector<Eigen::Isometry3d> frame_;        // T_parent * rest_i * Rx Rz Rx: canonical bone -> world
+  std::vector<Eigen::Matrix3d> axes_;           // world joint axes (x, z, x) per bone
+  std::vector<unsigned char> zero_locked_;      // per bone, bit k: angle k is locked at 0 (min == max == 0)
+  std::vector<unsigned char> movable_;          // per bone, bit k: angle k is movable (min < max)
   Eigen::VectorXd lower_, upper_;
 };
 

@@ -13,9 +13,8 @@ double objective(Kinematics& kin, const Eigen::Ref<const Eigen::VectorXd>& angle
 }
 
 double objective_and_gradient(Kinematics& kin, const Eigen::Ref<const Eigen::VectorXd>& angles,
-                              const Eigen::Ref<const Eigen::VectorXd>& target,
-                              Eigen::Ref<Eigen::VectorXd> residual, Eigen::Ref<Eigen::MatrixXd> jac,
-                              Eigen::Ref<Eigen::VectorXd> gradient) {
+                              const Eigen::Ref<const Eigen::VectorXd>& target, Eigen::Ref<Eigen::VectorXd> residual,
+                              Eigen::Ref<Eigen::MatrixXd> jac, Eigen::Ref<Eigen::VectorXd> gradient) {
   kin.jacobian(angles, residual, jac);
   residual -= target;
   gradient.noalias() = jac.transpose() * residual;
@@ -24,7 +23,8 @@ double objective_and_gradient(Kinematics& kin, const Eigen::Ref<const Eigen::Vec
 
 double largest_tip_distance(const Eigen::Ref<const Eigen::VectorXd>& residual) {
   double largest2 = 0;
-  for (Eigen::Index k = 0; k + 2 < residual.size(); k += 3) largest2 = std::max(largest2, residual.segment<3>(k).squaredNorm());
+  for (Eigen::Index k = 0; k + 2 < residual.size(); k += 3)
+    largest2 = std::max(largest2, residual.segment<3>(k).squaredNorm());
   return std::sqrt(largest2);
 }
 

@@ -15,9 +15,8 @@ double objective(Kinematics& kin, const Eigen::Ref<const Eigen::VectorXd>& angle
 // E, the residual, the analytic Jacobian (#residuals x #angles, per degree) and the gradient
 // grad E = J^T r (#angles, rig units^2 per degree). Returns E. No allocation.
 double objective_and_gradient(Kinematics& kin, const Eigen::Ref<const Eigen::VectorXd>& angles,
-                              const Eigen::Ref<const Eigen::VectorXd>& target,
-                              Eigen::Ref<Eigen::VectorXd> residual, Eigen::Ref<Eigen::MatrixXd> jac,
-                              Eigen::Ref<Eigen::VectorXd> gradient);
+                              const Eigen::Ref<const Eigen::VectorXd>& target, Eigen::Ref<Eigen::VectorXd> residual,
+                              Eigen::Ref<Eigen::MatrixXd> jac, Eigen::Ref<Eigen::VectorXd> gradient);
 
 // The largest distance of an end effector's tip from its target: max over the residual's
 // 3-vectors r_k = x_k - x_b,k of |r_k| (rig units). No allocation.

@@ -24,7 +24,7 @@ namespace ik {
 namespace {
 
 struct Normalised {
-  Eigen::Vector3d value;  // x / n(|x|)
+  Eigen::Vector3d value;     // x / n(|x|)
   Eigen::Matrix3d jacobian;  // d value / d x
 };
 
@@ -107,8 +107,8 @@ Eigen::Vector3d evaluate(const Eigen::Vector3d& S, const Eigen::Vector3d& M, con
   Dv << vn.jacobian * (Kv - Pu), vn.jacobian * Pu, -vn.jacobian * Kv;
   Dq << qn.jacobian * (Kp - Pu), Eigen::Matrix3d::Zero(), -qn.jacobian * Kp;
   // dY for Y = vn . (u x qn): w^T dvn + (vn x u)^T dqn - (vn x qn)^T du.
-  const Eigen::Matrix<double, 1, 9> dY = w.transpose() * Dv + vn.value.cross(u).transpose() * Dq -
-                                         vn.value.cross(qn.value).transpose() * Du;
+  const Eigen::Matrix<double, 1, 9> dY =
+      w.transpose() * Dv + vn.value.cross(u).transpose() * Dq - vn.value.cross(qn.value).transpose() * Du;
   const Eigen::Matrix<double, 3, 9> D =
       s * (g * (Dq - Dv) + (kTilt / (2 * g)) * diff * dY) + u * reach.jacobian + reach.value * Du;
   out->shoulder = D.leftCols<3>();

@@ -1,7 +1,6 @@
 #include "rig.h"
 
 #include <Eigen/LU>
-
 #include <cmath>
 #include <sstream>
 
@@ -31,8 +30,7 @@ static_assert(kMaxCoordinate == 1e9, "the messages below say 1e9");
 void check_rest(const Rig& rig, int i) {
   const Eigen::Matrix4d& m = rig.bones[i].rest;
   if (!m.allFinite()) fail(rig, i, "rest_T has a non-finite entry");
-  if ((m.row(3) - Eigen::RowVector4d(0, 0, 0, 1)).norm() > 1e-9)
-    fail(rig, i, "rest_T bottom row is not (0, 0, 0, 1)");
+  if ((m.row(3) - Eigen::RowVector4d(0, 0, 0, 1)).norm() > 1e-9) fail(rig, i, "rest_T bottom row is not (0, 0, 0, 1)");
   const Eigen::Matrix3d r = m.topLeftCorner<3, 3>();
   if ((r.transpose() * r - Eigen::Matrix3d::Identity()).norm() > 1e-6)
     fail(rig, i, "rest_T is not rigid (its rotation part is not orthonormal)");
@@ -50,8 +48,7 @@ void check_limits(const Rig& rig, int i) {
   const Bone& b = rig.bones[i];
   static const char* kAxis[3] = {"xzx_min/xzx_max[0]", "xzx_min/xzx_max[1]", "xzx_min/xzx_max[2]"};
   for (int k = 0; k < 3; ++k) {
-    if (std::isnan(b.min_deg[k]) || std::isnan(b.max_deg[k]))
-      fail(rig, i, std::string(kAxis[k]) + " is NaN");
+    if (std::isnan(b.min_deg[k]) || std::isnan(b.max_deg[k])) fail(rig, i, std::string(kAxis[k]) + " is NaN");
     // Past +-kMaxLimitDeg a limit means "none" (A7 files write -1e10); a lower limit above it, or
     // an upper one below its negative, leaves no usable angle.
     if (b.min_deg[k] > kMaxLimitDeg || b.max_deg[k] < -kMaxLimitDeg) {

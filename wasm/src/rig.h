@@ -13,10 +13,10 @@ namespace ik {
 constexpr double kUnbounded = std::numeric_limits<double>::infinity();
 
 struct Bone {
-  std::string name;       // for error messages and display; may be empty
-  int parent = -1;        // index into Rig::bones, -1 for a root
-  Eigen::Matrix4d rest = Eigen::Matrix4d::Identity();  // canonical bone -> rest bone, rigid
-  double length = 0;      // tip of the canonical bone is (length, 0, 0)
+  std::string name;                                                  // for error messages and display; may be empty
+  int parent = -1;                                                   // index into Rig::bones, -1 for a root
+  Eigen::Matrix4d rest = Eigen::Matrix4d::Identity();                // canonical bone -> rest bone, rigid
+  double length = 0;                                                 // tip of the canonical bone is (length, 0, 0)
   Eigen::Vector3d min_deg = Eigen::Vector3d::Constant(-kUnbounded);  // XZX lower limits, degrees
   Eigen::Vector3d max_deg = Eigen::Vector3d::Constant(kUnbounded);   // XZX upper limits, degrees
 };

@@ -1,9 +1,19 @@
 // The largest problems the core accepts. Each limit keeps one call (a rig build, one solver
 // iteration) bounded in memory and time, so that a careless or hostile input gets a clear error
-// instead of exhausting the 4 GiB of WebAssembly memory or running for minutes. README "Limits".
+// instead of exhausting the WebAssembly memory (kMaxWasmMemoryBytes) or running for minutes.
+// README "Limits".
 #pragma once
 
 namespace ik {
+
+// The most memory the WebAssembly module may grow to: 2 GiB. The build is 32-bit WebAssembly
+// (wasm32) with -sALLOW_MEMORY_GROWTH=1, and such a memory stops growing at Emscripten's
+// MAXIMUM_MEMORY, which wasm/CMakeLists.txt sets to this value (IK_WASM_MAXIMUM_MEMORY; the
+// bindings check the two agree). 2 GiB is also Emscripten's default: a wasm32 memory could reach
+// 4 GiB, but only with pointers treated as unsigned throughout the JavaScript glue (Emscripten's
+// CAN_ADDRESS_2GB), and the limits below keep one call's workspace to tens of MiB anyway. The
+// bindings name this cap when an allocation fails (js_arrays.h).
+constexpr long long kMaxWasmMemoryBytes = 2LL << 30;
 
 // Bones of one rig (a 10,000-bone chain builds in milliseconds). At this size one iteration of
 // lm or gd on a chain (the forward kinematics and Jacobian of every bone) costs a few

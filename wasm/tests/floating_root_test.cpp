@@ -158,7 +158,7 @@ TEST(FloatingRoot, RootUnitWeighsTheRootsMoveAgainstTheJoints) {
   };
   double joints_free = 0, joints_held = 0;
   const double free_move = root_move(1.0, joints_free), held_move = root_move(0.01, joints_held);
-  EXPECT_GT(free_move, 0.049);  // the hands' 0.05 (measured: all of it, the joints 0.001 degrees)
+  EXPECT_GT(free_move, 0.049);            // the hands' 0.05 (measured: all of it, the joints 0.001 degrees)
   EXPECT_LT(held_move, 0.5 * free_move);  // measured 0.012, the joints up to 1.2 degrees
   EXPECT_GT(joints_held, 100 * joints_free);
 

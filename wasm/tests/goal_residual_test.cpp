@@ -1,13 +1,12 @@
 // What the solvers read from a goal residual (goal_residual.h): tip distances from the position
 // rows only, orientation errors in degrees, "off target" per block, and the tip Hessian's weights
 // that make J^T J + C the exact Hessian of E for weighted position goals.
-#include "goal_residual.h"
-
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
 
 #include "a7_fixtures.h"
+#include "goal_residual.h"
 #include "small_rigs.h"
 #include "solvers/tip_hessian.h"
 

@@ -1,8 +1,7 @@
 // GoalSet (goals.h): the block layout, plain goals, weights of 0 and what set() refuses.
-#include "goals.h"
-
 #include <gtest/gtest.h>
 
+#include "goals.h"
 #include "small_rigs.h"
 
 namespace ik {

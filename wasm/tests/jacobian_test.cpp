@@ -82,10 +82,11 @@ void expect_clamped_differences_inside_the_limits(const Rig& rig) {
   Eigen::VectorXd tips(kin.num_residuals());
   kin.jacobian(a, tips, jac);
   for (int j = 0; j < kin.num_angles(); ++j) {
-    if (kin.lower()[j] == kin.upper()[j])
+    if (kin.lower()[j] == kin.upper()[j]) {
       EXPECT_EQ(fd.col(j).norm(), 0.0) << "fixed angle " << j << " cannot move";
-    else
+    } else {
       EXPECT_LE((fd.col(j) - jac.col(j)).cwiseAbs().maxCoeff(), 1e-6 * jac.cwiseAbs().maxCoeff()) << "angle " << j;
+    }
   }
 }
 

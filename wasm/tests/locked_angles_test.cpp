@@ -16,6 +16,7 @@
 #include "goal_residual.h"
 #include "goals.h"
 #include "kinematics.h"
+#include "solvers/registered_methods.h"
 #include "solvers/solver_registry.h"
 
 namespace ik {
@@ -111,9 +112,9 @@ TEST(LockedAngles, ForwardKinematicsEqualsTheThreeRotations) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   for (int trial = 0; trial < 200; ++trial) {
     Eigen::VectorXd a = random_angles(kin, rng);
-    if (trial % 4 == 1) a[4] = a[23] = -0.0;             // a locked angle at -0 skips too
-    if (trial % 4 == 2) a[1] = 12.5, a[8] = -40;         // unprojected values on locked angles still turn
-    if (trial == 3) a[5] = nan;                          // so does NaN: the pose is NaN as before
+    if (trial % 4 == 1) a[4] = a[23] = -0.0;      // a locked angle at -0 skips too
+    if (trial % 4 == 2) a[1] = 12.5, a[8] = -40;  // unprojected values on locked angles still turn
+    if (trial == 3) a[5] = nan;                   // so does NaN: the pose is NaN as before
     kin.forward(a);
     const ReferencePose ref = reference_pose(rig, a);
     for (int i = 0; i < kin.num_bones(); ++i) {
@@ -122,7 +123,9 @@ TEST(LockedAngles, ForwardKinematicsEqualsTheThreeRotations) {
       EXPECT_TRUE(same_matrix(kin.tip(i), ref.frame[i] * Eigen::Vector3d(rig.bones[i].length, 0, 0)));
       for (int k = 0; k < 3; ++k) EXPECT_TRUE(same_matrix(kin.joint_axis(i, k), ref.axes[i].col(k)));
     }
-    if (trial == 3) EXPECT_TRUE(std::isnan(kin.tip(7).x()));
+    if (trial == 3) {
+      EXPECT_TRUE(std::isnan(kin.tip(7).x()));
+    }
   }
 }
 
@@ -156,12 +159,15 @@ TEST(LockedAngles, SolverJacobianHasTheMovableColumnsOnly) {
       for (int j = 0; j < kin.num_angles(); ++j) {
         const bool moves = kin.lower()[j] < kin.upper()[j];
         for (int r = 0; r < rows; ++r) {
-          if (moves)
+          if (moves) {
             EXPECT_EQ(movable(r, j), all(r, j)) << "angle " << j;  // bit for bit
-          else
+          } else {
             EXPECT_EQ(movable(r, j), 0.0) << "angle " << j;
+          }
         }
-        if (!moves && j < 3 * 7) EXPECT_GT(all.col(j).head(rows).norm(), 0) << "angle " << j;  // the full one has them
+        if (!moves && j < 3 * 7) {
+          EXPECT_GT(all.col(j).head(rows).norm(), 0) << "angle " << j;  // the full one has them
+        }
       }
     }
   }
@@ -194,7 +200,7 @@ TEST(LockedAngles, EveryMethodReachesPoseTargets) {
     g.effectors[0].orientation = true;
     g.effectors[0].orientation_target = kin.tip_rotation(7);
   }
-  for (const char* method : {"lm", "gn", "newton", "bfgs", "gd"}) {
+  for (const std::string& method : test::kMethods) {
     SolverOptions options;
     options.time_budget_s = 0;
     options.max_iterations = 3000;
@@ -210,11 +216,15 @@ TEST(LockedAngles, EveryMethodReachesPoseTargets) {
       print.add(s.iterations);
       print.add(s.function_evaluations);
       for (int i = 0; i < s.angles.size(); ++i)
-        if (!(kin.lower()[i] < kin.upper()[i])) EXPECT_EQ(s.angles[i], 0.0) << method;
+        if (!(kin.lower()[i] < kin.upper()[i])) {
+          EXPECT_EQ(s.angles[i], 0.0) << method;
+        }
     }
     std::cout << "[ locked   ] " << method << " reached " << reached << "/" << targets.size() << " in " << iterations
               << " iterations, fingerprint " << std::hex << print.hash << std::dec << "\n";
-    if (std::string(method) != "gd") EXPECT_GE(reached, 57) << method;
+    if (method != "gd") {
+      EXPECT_GE(reached, 57) << method;
+    }
   }
 }
 

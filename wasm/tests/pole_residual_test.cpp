@@ -88,7 +88,8 @@ TEST(PoleResidual, StraightLimbHasAFiniteResidualThatBendsTowardsThePole) {
   ASSERT_GT(g.norm(), 0);
   const Eigen::VectorXd b = a - 1e-3 * g;
   kin.forward(b);
-  const Eigen::Vector3d u = (kin.tip(1) - kin.joint_origin(0)).normalized(), d = kin.joint_origin(1) - kin.joint_origin(0);
+  const Eigen::Vector3d u = (kin.tip(1) - kin.joint_origin(0)).normalized(),
+                        d = kin.joint_origin(1) - kin.joint_origin(0);
   EXPECT_GT((d - d.dot(u) * u).y(), 1e-6);
   EXPECT_LT(test::goal_jacobian_error(kin, set, a, 1e-4), 1e-6);
 }

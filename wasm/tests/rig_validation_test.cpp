@@ -92,10 +92,9 @@ TEST_F(A7ReportRigs, ReadsTheFiveRigs) {
 }
 
 TEST(A7Reader, TakesTheLastBoneAsEffectorWithoutIkConstraints) {
-  const Rig rig = parse_a7_rig(
-      R"({"bones":[{"parent_id":-1,"rest_T":[[1,0,0,0],[0,1,0,0],[0,0,1,0]]},)"
-      R"({"parent_id":0,"rest_T":[[1,0,0,0],[0,1,0,0],[0,0,1,0]]}]})",
-      "rig.json");
+  const Rig rig = parse_a7_rig(R"({"bones":[{"parent_id":-1,"rest_T":[[1,0,0,0],[0,1,0,0],[0,0,1,0]]},)"
+                               R"({"parent_id":0,"rest_T":[[1,0,0,0],[0,1,0,0],[0,0,1,0]]}]})",
+                               "rig.json");
   EXPECT_EQ(rig.effectors, std::vector<int>{1});
 }
 
@@ -110,7 +109,8 @@ TEST(A7Reader, ErrorsNameTheFileAndField) {
   };
   EXPECT_NE(message("{ not json").find("rig.json: bad JSON"), std::string::npos);
   EXPECT_NE(message("{}").find("rig.json: no \"bones\" array"), std::string::npos);
-  EXPECT_NE(message(R"({"bones":[{"parent_id":-1,"rest_T":[[1,0,0],[0,1,0,0],[0,0,1,0]]}]})").find("rig.json: bones[0].rest_T row 0"),
+  EXPECT_NE(message(R"({"bones":[{"parent_id":-1,"rest_T":[[1,0,0],[0,1,0,0],[0,0,1,0]]}]})")
+                .find("rig.json: bones[0].rest_T row 0"),
             std::string::npos);
   EXPECT_NE(message(R"({"bones":[{"parent_id":-1,"length":"x","rest_T":[[1,0,0,0],[0,1,0,0],[0,0,1,0]]}]})")
                 .find("bones[0].length is not a number"),

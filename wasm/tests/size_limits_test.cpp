@@ -54,7 +54,8 @@ TEST(SizeLimits, ACycleDeepInALongChainIsNamed) {
 }
 
 TEST(SizeLimits, TooManyBonesOrEffectorsAreRefused) {
-  EXPECT_NE(error_of(straight_chain(kMaxBones + 1, {0})).find("bones; the core takes at most 16384"), std::string::npos);
+  EXPECT_NE(error_of(straight_chain(kMaxBones + 1, {0})).find("bones; the core takes at most 16384"),
+            std::string::npos);
   std::vector<int> effectors;
   for (int i = 0; i <= kMaxEffectors; ++i) effectors.push_back(i);
   EXPECT_NE(error_of(straight_chain(100, effectors)).find("65 end effectors; the core takes at most 64"),

@@ -2,7 +2,6 @@
 #pragma once
 
 #include <Eigen/Core>
-
 #include <utility>
 #include <vector>
 
@@ -19,7 +18,8 @@ inline Eigen::Matrix4d translation(double x, double y, double z) {
 
 // Appends a bone to `rig` whose rest transform translates to `at` (rig units, no turn), of
 // `length` along its rest x axis, every angle within +-`limit` degrees. Returns its index.
-inline int add_bone(Rig& rig, int parent, const Eigen::Vector3d& at, double length, double limit, const char* name = "") {
+inline int add_bone(Rig& rig, int parent, const Eigen::Vector3d& at, double length, double limit,
+                    const char* name = "") {
   Bone b;
   b.name = name;
   b.parent = parent;

@@ -1,11 +1,11 @@
 // The SO(3) log map and the inverse right Jacobian (so3.h), against Eigen's AngleAxis and
 // central differences, near 0, in general and near pi.
-#include "so3.h"
-
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
 #include <random>
+
+#include "so3.h"
 
 namespace ik {
 namespace {

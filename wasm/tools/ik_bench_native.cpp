@@ -90,18 +90,20 @@ struct Args {
 };
 
 [[noreturn]] void usage(const std::string& problem) {
-  throw std::invalid_argument(problem +
-                              "\nusage: ik_bench_native --rig RIG.json --method NAME --input JOB.bin --output "
-                              "RESULTS.jsonl [--gtol X] [--ftol Y] [--tip-tol Z] [--timeout S] [--paper] [--restarts N]\n"
-                              "       [--max-joint-move D] [--page-goals ROWS]\n"
-                              "       [--goals position|pose] [--orientation-tol DEG]\n"
-                              "       ik_bench_native --list-methods");
+  throw std::invalid_argument(
+      problem +
+      "\nusage: ik_bench_native --rig RIG.json --method NAME --input JOB.bin --output "
+      "RESULTS.jsonl [--gtol X] [--ftol Y] [--tip-tol Z] [--timeout S] [--paper] [--restarts N]\n"
+      "       [--max-joint-move D] [--page-goals ROWS]\n"
+      "       [--goals position|pose] [--orientation-tol DEG]\n"
+      "       ik_bench_native --list-methods");
 }
 
 double number_arg(const std::string& flag, const char* text) {
   char* end = nullptr;
   const double x = std::strtod(text, &end);
-  if (end == text || *end != '\0' || !std::isfinite(x) || x < 0) usage(flag + ": \"" + text + "\" is not a number >= 0");
+  if (end == text || *end != '\0' || !std::isfinite(x) || x < 0)
+    usage(flag + ": \"" + text + "\" is not a number >= 0");
   return x;
 }
 
@@ -119,18 +121,25 @@ Args parse_args(int argc, char** argv) {
     }
     if (i + 1 >= argc) usage(flag + " needs a value");
     const char* value = argv[++i];
-    if (flag == "--rig") a.rig = value;
-    else if (flag == "--method") a.method = value;
-    else if (flag == "--input") a.input = value;
-    else if (flag == "--output") a.output = value;
-    else if (flag == "--gtol") a.options.gradient_tolerance = number_arg(flag, value);
-    else if (flag == "--ftol") a.options.error_tolerance = number_arg(flag, value);
-    else if (flag == "--tip-tol") a.options.tip_tolerance = number_arg(flag, value);
+    if (flag == "--rig")
+      a.rig = value;
+    else if (flag == "--method")
+      a.method = value;
+    else if (flag == "--input")
+      a.input = value;
+    else if (flag == "--output")
+      a.output = value;
+    else if (flag == "--gtol")
+      a.options.gradient_tolerance = number_arg(flag, value);
+    else if (flag == "--ftol")
+      a.options.error_tolerance = number_arg(flag, value);
+    else if (flag == "--tip-tol")
+      a.options.tip_tolerance = number_arg(flag, value);
     else if (flag == "--orientation-tol") {
       a.options.orientation_tolerance_deg = number_arg(flag, value);
       if (a.options.orientation_tolerance_deg <= 0) usage(flag + ": \"" + value + "\" is not a number > 0");
-    }
-    else if (flag == "--max-joint-move") a.options.max_joint_move = number_arg(flag, value);
+    } else if (flag == "--max-joint-move")
+      a.options.max_joint_move = number_arg(flag, value);
     else if (flag == "--page-goals") {
       std::string rows = value;
       for (size_t at = 0; at <= rows.size();) {
@@ -138,15 +147,16 @@ Args parse_args(int argc, char** argv) {
         a.page_goals.push_back(rows.substr(at, comma - at));
         at = comma + 1;
       }
-    }
-    else if (flag == "--timeout") a.options.time_budget_s = number_arg(flag, value);
-    else if (flag == "--restarts") a.options.restarts = static_cast<int>(number_arg(flag, value));
+    } else if (flag == "--timeout")
+      a.options.time_budget_s = number_arg(flag, value);
+    else if (flag == "--restarts")
+      a.options.restarts = static_cast<int>(number_arg(flag, value));
     else if (flag == "--goals") {
       const std::string kind = value;
       if (kind != "position" && kind != "pose") usage("--goals: \"" + kind + "\" is not position or pose");
       a.pose = kind == "pose";
-    }
-    else usage("unknown option " + flag);
+    } else
+      usage("unknown option " + flag);
   }
   if (!a.list_methods && (a.rig.empty() || a.method.empty() || a.input.empty() || a.output.empty()))
     usage("--rig, --method, --input and --output are required");
@@ -175,15 +185,16 @@ Job read_job(const std::string& path) {
   if (job.count < 0 || job.num_angles <= 0 || job.num_residuals <= 0 || job.num_orientations < 0)
     throw std::runtime_error(path + ": bad header");
   job.records.resize(static_cast<size_t>(job.count) * job.stride());
-  in.read(reinterpret_cast<char*>(job.records.data()), static_cast<std::streamsize>(job.records.size() * sizeof(double)));
+  in.read(reinterpret_cast<char*>(job.records.data()),
+          static_cast<std::streamsize>(job.records.size() * sizeof(double)));
   if (!in) throw std::runtime_error(path + ": truncated");
   return job;
 }
 
 // Largest distance (rig units) of an effector other than `skip` (-1: none) from its target, with
 // `kin` posed at `angles`; `tips` is workspace.
-double largest_distance(ik::Kinematics& kin, const Eigen::VectorXd& angles, const Eigen::Ref<const Eigen::VectorXd>& target,
-                        int skip, Eigen::VectorXd& tips) {
+double largest_distance(ik::Kinematics& kin, const Eigen::VectorXd& angles,
+                        const Eigen::Ref<const Eigen::VectorXd>& target, int skip, Eigen::VectorXd& tips) {
   kin.tips(angles, tips);
   double worst = 0;
   for (int e = 0; e < kin.num_effectors(); ++e)
@@ -241,8 +252,8 @@ void joint_positions(ik::Kinematics& kin, const Eigen::VectorXd& angles, Eigen::
 
 // The largest distance (rig units) any joint (the head or the tip of a bone) moves from the pose at
 // `from` to the pose at `to`; `a` and `b` are workspace.
-double largest_joint_move(ik::Kinematics& kin, const Eigen::VectorXd& from, const Eigen::VectorXd& to, Eigen::VectorXd& a,
-                          Eigen::VectorXd& b) {
+double largest_joint_move(ik::Kinematics& kin, const Eigen::VectorXd& from, const Eigen::VectorXd& to,
+                          Eigen::VectorXd& a, Eigen::VectorXd& b) {
   joint_positions(kin, from, a);
   joint_positions(kin, to, b);
   double worst = 0;
@@ -282,7 +293,8 @@ class Method {
         nr_jl_ = std::make_unique<ik::kdl::KdlNrJl>(kin.rig(), args.options);
       return;
 #else
-      throw std::invalid_argument("method " + args.method + ": this build has no Orocos KDL (install liborocos-kdl-dev: "
+      throw std::invalid_argument("method " + args.method +
+                                  ": this build has no Orocos KDL (install liborocos-kdl-dev: "
                                   "scripts/setup.sh --native, then rebuild build/native)");
 #endif
     }
@@ -311,15 +323,27 @@ class Method {
                                      : pose ? kdl_->solve(start, target, rotations_)
                                             : kdl_->solve(start, target);
       seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-      return {s.angles, s.E, s.gradient_norm, s.iterations, s.function_evaluations, s.jacobian_evaluations, s.stop_reason,
+      return {s.angles,
+              s.E,
+              s.gradient_norm,
+              s.iterations,
+              s.function_evaluations,
+              s.jacobian_evaluations,
+              s.stop_reason,
               s.stop_reason != "invalid_input"};
     }
 #endif
     const ik::SolverSummary& s = goals ? solver_->solve(start, *goals) : solver_->solve(start, target);
     last_goals_ = goals;
     seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    return {s.angles, s.E, s.gradient_norm, s.iterations, s.function_evaluations, s.jacobian_evaluations,
-            ik::stop_reason_name(s.stop_reason), s.stop_reason != ik::StopReason::invalid_input};
+    return {s.angles,
+            s.E,
+            s.gradient_norm,
+            s.iterations,
+            s.function_evaluations,
+            s.jacobian_evaluations,
+            ik::stop_reason_name(s.stop_reason),
+            s.stop_reason != ik::StopReason::invalid_input};
   }
 
   // Wobble during a solve of `iterations` iterations from `start` that ended `after` (rig units)
@@ -354,7 +378,7 @@ class Method {
   const Args& args_;
   ik::Kinematics& kin_;
   std::unique_ptr<ik::Solver> solver_;
-  ik::Goals goals_;                          // pose goals of the current solve
+  ik::Goals goals_;                         // pose goals of the current solve
   std::vector<Eigen::Matrix3d> rotations_;  // their orientations, for kdl
 #ifdef IK_HAVE_KDL
   std::unique_ptr<ik::kdl::KdlSolver> kdl_;
@@ -366,10 +390,11 @@ void run(const Args& args) {
   if (args.list_methods) return list_methods();
   ik::Kinematics kin(ik::load_a7_rig(args.rig));
   ik::Kinematics observer(kin.rig());  // poses for wobble, so the solver's own rig is never disturbed
-  Method method(args, kin);  // first: an unknown method is the first error
+  Method method(args, kin);            // first: an unknown method is the first error
   const Job job = read_job(args.input);
   const int num_orientations = args.pose ? 4 * kin.num_effectors() : 0;
-  if (job.num_angles != kin.num_angles() || job.num_residuals != kin.num_residuals() || job.num_orientations != num_orientations)
+  if (job.num_angles != kin.num_angles() || job.num_residuals != kin.num_residuals() ||
+      job.num_orientations != num_orientations)
     throw std::runtime_error(args.input + ": sizes do not match the rig (" + std::to_string(kin.num_angles()) +
                              " angles, " + std::to_string(kin.num_residuals()) + " residuals, " +
                              std::to_string(num_orientations) + " orientation numbers)");
@@ -425,11 +450,18 @@ void run(const Args& args) {
       after = largest_distance(observer, previous, target, dragged, tips);
       during = method.wobble(observer, start, target, dragged, iterations, after, tips);
     }
-    nlohmann::json line = {{"E", E}, {"gradient_norm", gradient_norm}, {"iterations", iterations},
-                                 {"function_evaluations", fevals}, {"jacobian_evaluations", jevals},
-                                 {"seconds", seconds}, {"stop_reason", reason}, {"wobble_during", during},
-                                 {"wobble_after", after}, {"tip_distance", tip_distance}, {"jump_deg", jump},
-                                 {"jump_move", jump_move}};
+    nlohmann::json line = {{"E", E},
+                           {"gradient_norm", gradient_norm},
+                           {"iterations", iterations},
+                           {"function_evaluations", fevals},
+                           {"jacobian_evaluations", jevals},
+                           {"seconds", seconds},
+                           {"stop_reason", reason},
+                           {"wobble_during", during},
+                           {"wobble_after", after},
+                           {"tip_distance", tip_distance},
+                           {"jump_deg", jump},
+                           {"jump_move", jump_move}};
     if (dragged >= 0 && valid) line["angles"] = std::vector<double>(previous.data(), previous.data() + previous.size());
     if (args.pose) {  // judged from forward kinematics of the returned angles, as the bench does
       line["rot_err_deg"] = valid ? ik::bench::largest_rotation_error_deg(observer, previous, orientations) : nan;

@@ -61,8 +61,8 @@ int main(int argc, char** argv) {
       ik::finite_difference_jacobian(kin, poses[i % poses.size()], 1e-7, true, scratch, plus, minus, jac);
       sink += jac(0, 3);
     });
-    std::printf("rig %s: %d bones, %d effectors, Jacobian %dx%d\n", argv[1], kin.num_bones(),
-                kin.num_effectors(), kin.num_residuals(), kin.num_angles());
+    std::printf("rig %s: %d bones, %d effectors, Jacobian %dx%d\n", argv[1], kin.num_bones(), kin.num_effectors(),
+                kin.num_residuals(), kin.num_angles());
     std::printf("analytic Jacobian:          median %.3f us\n", analytic);
     std::printf("central differences (paper): median %.3f us\n", differences);
     std::printf("ratio differences / analytic: %.1fx%s\n", differences / analytic, sink == 12345.678 ? " " : "");

@@ -16,7 +16,8 @@
 
 namespace {
 
-nlohmann::json rows(const std::vector<ik::protocol::TargetCase>& cases, Eigen::VectorXd ik::protocol::TargetCase::*field) {
+nlohmann::json rows(const std::vector<ik::protocol::TargetCase>& cases,
+                    Eigen::VectorXd ik::protocol::TargetCase::*field) {
   nlohmann::json out = nlohmann::json::array();
   for (const ik::protocol::TargetCase& c : cases) {
     const Eigen::VectorXd& v = c.*field;
@@ -36,8 +37,10 @@ int main(int argc, char** argv) {
   std::uint32_t seed = 1;
   for (int i = 2; i + 1 < argc; i += 2) {
     const std::string flag = argv[i];
-    if (flag == "--samples") samples = std::atoi(argv[i + 1]);
-    else if (flag == "--seed") seed = static_cast<std::uint32_t>(std::strtoul(argv[i + 1], nullptr, 10));
+    if (flag == "--samples")
+      samples = std::atoi(argv[i + 1]);
+    else if (flag == "--seed")
+      seed = static_cast<std::uint32_t>(std::strtoul(argv[i + 1], nullptr, 10));
     else {
       std::fprintf(stderr, "protocol_targets: unknown option %s\n", flag.c_str());
       return 2;
@@ -47,7 +50,8 @@ int main(int argc, char** argv) {
     const std::string path = argv[1];
     ik::Kinematics kin(ik::load_a7_rig(path));
     const double size = ik::protocol::rig_size(kin.rig());
-    const ik::protocol::Tolerances tol = ik::protocol::report_tolerances(std::filesystem::path(path).stem().string(), true, size);
+    const ik::protocol::Tolerances tol =
+        ik::protocol::report_tolerances(std::filesystem::path(path).stem().string(), true, size);
     nlohmann::json doc = {{"size", size}, {"gtol", tol.gradient}, {"ftol", tol.error}};
     for (const char* experiment : {"random", "incremental"}) {
       const auto cases = ik::protocol::target_set(kin, experiment, samples, seed);

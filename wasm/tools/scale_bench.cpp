@@ -90,8 +90,9 @@ int main(int argc, char** argv) {
     }
   }
   nlohmann::json rows = nlohmann::json::array();
-  if (!json) std::printf("%-6s %6s %7s %9s %14s %22s %10s %8s\n", "shape", "bones", "angles", "effectors",
-                   "us/iteration", "ns/(angle x effector)", "iter med", "success");
+  if (!json)
+    std::printf("%-6s %6s %7s %9s %14s %22s %10s %8s\n", "shape", "bones", "angles", "effectors", "us/iteration",
+                "ns/(angle x effector)", "iter med", "success");
   for (const char* shape : {"chain", "tree"}) {
     for (int n : sizes) {
       ik::Kinematics kin(std::string(shape) == "chain" ? chain(n) : tree(n));
@@ -119,9 +120,13 @@ int main(int argc, char** argv) {
       const double us = median(per_iteration);
       const double product = static_cast<double>(kin.num_angles()) * kin.num_effectors();
       if (json)
-        rows.push_back({{"shape", shape}, {"bones", kin.num_bones()}, {"angles", kin.num_angles()},
-                        {"effectors", kin.num_effectors()}, {"us_per_iteration", us},
-                        {"ns_per_angle_effector", 1000 * us / product}, {"iterations_median", median(iterations)},
+        rows.push_back({{"shape", shape},
+                        {"bones", kin.num_bones()},
+                        {"angles", kin.num_angles()},
+                        {"effectors", kin.num_effectors()},
+                        {"us_per_iteration", us},
+                        {"ns_per_angle_effector", 1000 * us / product},
+                        {"iterations_median", median(iterations)},
                         {"success_rate", static_cast<double>(successes) / solves}});
       else
         std::printf("%-6s %6d %7d %9d %14.3f %22.3f %10.0f %7.0f%%\n", shape, kin.num_bones(), kin.num_angles(),

@@ -65,22 +65,30 @@ struct Row {
 
 // The rows as a table for people: times in microseconds, success in percent.
 void print_table(const std::vector<Row>& rows) {
-  std::printf("%-11s %-6s %5s %8s %8s %10s %10s %10s %10s %10s %7s %7s %10s\n", "set", "method", "n", "it_med", "it_avg",
-              "t_med_us", "t_avg_us", "E_avg", "E_iqm", "E_max", "success", "rs_avg", "t_p95_us");
+  std::printf("%-11s %-6s %5s %8s %8s %10s %10s %10s %10s %10s %7s %7s %10s\n", "set", "method", "n", "it_med",
+              "it_avg", "t_med_us", "t_avg_us", "E_avg", "E_iqm", "E_max", "success", "rs_avg", "t_p95_us");
   for (const Row& r : rows)
     std::printf("%-11s %-6s %5d %8.1f %8.2f %10.2f %10.2f %10.3g %10.3g %10.3g %6.1f%% %7.2f %10.2f\n", r.set.c_str(),
-                r.method.c_str(), r.samples, r.iterations_median, r.iterations_mean, 1e6 * r.t_median_s, 1e6 * r.t_mean_s,
-                r.E_avg, r.E_iqm, r.E_max, 100.0 * r.success_rate, r.restarts_mean, 1e6 * r.t_p95_s);
+                r.method.c_str(), r.samples, r.iterations_median, r.iterations_mean, 1e6 * r.t_median_s,
+                1e6 * r.t_mean_s, r.E_avg, r.E_iqm, r.E_max, 100.0 * r.success_rate, r.restarts_mean, 1e6 * r.t_p95_s);
 }
 
 // The rows as one JSON array, the field names of the header comment.
 void print_json(const std::vector<Row>& rows) {
   nlohmann::json out = nlohmann::json::array();
   for (const Row& r : rows)
-    out.push_back({{"set", r.set}, {"method", r.method}, {"samples", r.samples},
-                   {"iterations_median", r.iterations_median}, {"iterations_mean", r.iterations_mean},
-                   {"t_median_s", r.t_median_s}, {"t_mean_s", r.t_mean_s}, {"t_p95_s", r.t_p95_s}, {"E_avg", r.E_avg},
-                   {"E_iqm", r.E_iqm}, {"E_max", r.E_max}, {"success_rate", r.success_rate},
+    out.push_back({{"set", r.set},
+                   {"method", r.method},
+                   {"samples", r.samples},
+                   {"iterations_median", r.iterations_median},
+                   {"iterations_mean", r.iterations_mean},
+                   {"t_median_s", r.t_median_s},
+                   {"t_mean_s", r.t_mean_s},
+                   {"t_p95_s", r.t_p95_s},
+                   {"E_avg", r.E_avg},
+                   {"E_iqm", r.E_iqm},
+                   {"E_max", r.E_max},
+                   {"success_rate", r.success_rate},
                    {"restarts_mean", r.restarts_mean}});
   std::printf("%s\n", out.dump().c_str());
 }
@@ -89,10 +97,11 @@ void print_json(const std::vector<Row>& rows) {
 
 int main(int argc, char** argv) {
   if (argc < 2) {
-    std::fprintf(stderr,
-                 "usage: solver_speed RIG.json [--methods a,b] [--set incremental|random|both] [--samples N]\n"
-                 "                    [--gd-samples N] [--paper] [--restarts N] [--stall N] [--gn-cutoff C] [--seed S]\n"
-                 "                    [--no-escape] [--json]\n");
+    std::fprintf(
+        stderr,
+        "usage: solver_speed RIG.json [--methods a,b] [--set incremental|random|both] [--samples N]\n"
+        "                    [--gd-samples N] [--paper] [--restarts N] [--stall N] [--gn-cutoff C] [--seed S]\n"
+        "                    [--no-escape] [--json]\n");
     return 2;
   }
   const std::string path = argv[1];
@@ -111,17 +120,28 @@ int main(int argc, char** argv) {
       }
       return argv[++i];
     };
-    if (flag == "--methods") methods = split(value());
-    else if (flag == "--set") set = value();
-    else if (flag == "--samples") samples = std::atoi(value().c_str());
-    else if (flag == "--gd-samples") gd_samples = std::atoi(value().c_str());
-    else if (flag == "--restarts") restarts = std::atoi(value().c_str());
-    else if (flag == "--stall") stall = std::atoi(value().c_str());
-    else if (flag == "--gn-cutoff") gn_cutoff = std::atof(value().c_str());
-    else if (flag == "--seed") seed = static_cast<std::uint32_t>(std::strtoul(value().c_str(), nullptr, 10));
-    else if (flag == "--paper") paper = true;
-    else if (flag == "--no-escape") escape = false;
-    else if (flag == "--json") json = true;
+    if (flag == "--methods")
+      methods = split(value());
+    else if (flag == "--set")
+      set = value();
+    else if (flag == "--samples")
+      samples = std::atoi(value().c_str());
+    else if (flag == "--gd-samples")
+      gd_samples = std::atoi(value().c_str());
+    else if (flag == "--restarts")
+      restarts = std::atoi(value().c_str());
+    else if (flag == "--stall")
+      stall = std::atoi(value().c_str());
+    else if (flag == "--gn-cutoff")
+      gn_cutoff = std::atof(value().c_str());
+    else if (flag == "--seed")
+      seed = static_cast<std::uint32_t>(std::strtoul(value().c_str(), nullptr, 10));
+    else if (flag == "--paper")
+      paper = true;
+    else if (flag == "--no-escape")
+      escape = false;
+    else if (flag == "--json")
+      json = true;
     else {
       std::fprintf(stderr, "unknown option %s\n", flag.c_str());
       return 2;
@@ -163,7 +183,8 @@ int main(int argc, char** argv) {
           restart_counts.push_back(s.restarts);
           errors.push_back(s.E);
           successes += s.E < options.error_tolerance;
-          const bool inside = ((s.angles - kin.lower()).array() >= 0).all() && ((kin.upper() - s.angles).array() >= 0).all();
+          const bool inside =
+              ((s.angles - kin.lower()).array() >= 0).all() && ((kin.upper() - s.angles).array() >= 0).all();
           if (s.stop_reason == ik::StopReason::invalid_input || s.stop_reason == ik::StopReason::numerical_failure ||
               !inside) {
             std::fprintf(stderr, "%s %s: %s %s\n", method.c_str(), which.c_str(), ik::stop_reason_name(s.stop_reason),
@@ -174,13 +195,15 @@ int main(int argc, char** argv) {
         std::vector<double> sorted = seconds;
         std::sort(sorted.begin(), sorted.end());
         rows.push_back({which, method, count, median(iterations), mean(iterations), median(seconds), mean(seconds),
-                        sorted[static_cast<size_t>(0.95 * (sorted.size() - 1))], mean(errors), interquartile_mean(errors),
-                        *std::max_element(errors.begin(), errors.end()), static_cast<double>(successes) / count,
-                        mean(restart_counts)});
+                        sorted[static_cast<size_t>(0.95 * (sorted.size() - 1))], mean(errors),
+                        interquartile_mean(errors), *std::max_element(errors.begin(), errors.end()),
+                        static_cast<double>(successes) / count, mean(restart_counts)});
       }
     }
-    if (json) print_json(rows);
-    else print_table(rows);
+    if (json)
+      print_json(rows);
+    else
+      print_table(rows);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "%s\n", e.what());
     return 1;

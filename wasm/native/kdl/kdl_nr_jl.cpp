@@ -1,13 +1,13 @@
 #include "kdl_nr_jl.h"
 
 #include <chrono>
-#include <memory>
 #include <cmath>
 #include <kdl/chain.hpp>
 #include <kdl/chainfksolverpos_recursive.hpp>
 #include <kdl/chainiksolverpos_nr_jl.hpp>
 #include <kdl/chainiksolvervel_pinv.hpp>
 #include <kdl/chainjnttojacsolver.hpp>
+#include <memory>
 #include <stdexcept>
 #include <string>
 
@@ -91,14 +91,16 @@ struct KdlNrJl::State {
     for (size_t j = 0; j < angle_of_joint.size(); ++j) {
       double deg = joints(j) / kRadPerDeg;
       const double lo = wrap_from[j];
-      if (!std::isnan(lo) && (deg < lo || deg > wrap_to[j])) deg = lo + std::fmod(std::fmod(deg - lo, 360.0) + 360.0, 360.0);
+      if (!std::isnan(lo) && (deg < lo || deg > wrap_to[j]))
+        deg = lo + std::fmod(std::fmod(deg - lo, 360.0) + 360.0, 360.0);
       angles[angle_of_joint[j]] = deg;
     }
   }
 };
 
 KdlNrJl::KdlNrJl(const Rig& rig, const SolverOptions& options)
-    : s_(std::make_unique<State>(rig, options.tip_tolerance > 0 ? options.tip_tolerance : kTracIkEps)), options_(options) {}
+    : s_(std::make_unique<State>(rig, options.tip_tolerance > 0 ? options.tip_tolerance : kTracIkEps)),
+      options_(options) {}
 
 KdlNrJl::~KdlNrJl() = default;
 

@@ -97,13 +97,14 @@ struct KdlSolver::State {
     q_next.resize(rig.num_joints());
     qdot.resize(rig.num_joints());
     jac.resize(rig.num_joints());
-    Eigen::MatrixXd weights = Eigen::MatrixXd::Zero(2 * m, 2 * m);  // 6 rows per effector
+    Eigen::MatrixXd weights = Eigen::MatrixXd::Zero(2 * m, 2 * m);                    // 6 rows per effector
     for (int e = 0; e < m / 3; ++e) weights.block<3, 3>(6 * e, 6 * e).setIdentity();  // rotation rows: 0
     vel.setWeightTS(weights);
     position_weights = weights;
     length_scale = rig_reach(Kinematics(r_in));
     pose_weights = weights;
-    for (int e = 0; e < m / 3; ++e) pose_weights.block<3, 3>(6 * e + 3, 6 * e + 3) = length_scale * Eigen::Matrix3d::Identity();
+    for (int e = 0; e < m / 3; ++e)
+      pose_weights.block<3, 3>(6 * e + 3, 6 * e + 3) = length_scale * Eigen::Matrix3d::Identity();
     rot = Eigen::VectorXd::Zero(m);
     rot_q = Eigen::VectorXd::Zero(m);
     reach_ = reach(r_in);
@@ -168,9 +169,9 @@ struct KdlSolver::State {
   // the largest joint change (radians).
   double step() {
     for (size_t e = 0; e < rig.tip_segments.size(); ++e)
-      twists[rig.tip_segments[e]] = KDL::Twist(KDL::Vector(-r_q[3 * e], -r_q[3 * e + 1], -r_q[3 * e + 2]),
-                                               goal_rotations.empty() ? KDL::Vector::Zero()
-                                                                      : KDL::Vector(rot_q[3 * e], rot_q[3 * e + 1], rot_q[3 * e + 2]));
+      twists[rig.tip_segments[e]] = KDL::Twist(
+          KDL::Vector(-r_q[3 * e], -r_q[3 * e + 1], -r_q[3 * e + 2]),
+          goal_rotations.empty() ? KDL::Vector::Zero() : KDL::Vector(rot_q[3 * e], rot_q[3 * e + 1], rot_q[3 * e + 2]));
     vel.CartToJnt(q, twists, qdot);
     const double largest = qdot.data.size() ? qdot.data.cwiseAbs().maxCoeff() : 0.0;
     if (!std::isfinite(largest)) return 0;  // a failed solve moves nothing
@@ -201,8 +202,8 @@ const KdlSummary& KdlSolver::solve(const Eigen::VectorXd& start, const Eigen::Ve
   out = KdlSummary();
   bool bad_orientations = !orientations.empty() && orientations.size() != s.rig.tip_segments.size();
   for (const Eigen::Matrix3d& R : orientations) bad_orientations = bad_orientations || !R.allFinite();
-  if (start.size() != s.rig.num_angles() || targets.size() != s.r.size() || !start.allFinite() || !targets.allFinite() ||
-      bad_orientations) {
+  if (start.size() != s.rig.num_angles() || targets.size() != s.r.size() || !start.allFinite() ||
+      !targets.allFinite() || bad_orientations) {
     out.stop_reason = "invalid_input";
     out.message = "start, targets or orientations: wrong length or not finite";
     out.angles = start;
@@ -210,7 +211,9 @@ const KdlSummary& KdlSolver::solve(const Eigen::VectorXd& start, const Eigen::Ve
   }
   s.set_orientations(orientations);
   const bool timed = o.time_budget_s > 0 && std::isfinite(o.time_budget_s);
-  auto out_of_time = [&] { return timed && std::chrono::duration<double>(Clock::now() - t0).count() >= o.time_budget_s; };
+  auto out_of_time = [&] {
+    return timed && std::chrono::duration<double>(Clock::now() - t0).count() >= o.time_budget_s;
+  };
   // With pose goals: the position rows' E (or the tip test), and every frame within the tolerance.
   const bool pose = !orientations.empty();
   auto on_target = [&](double E) {
@@ -244,9 +247,12 @@ const KdlSummary& KdlSolver::solve(const Eigen::VectorXd& start, const Eigen::Ve
     consider(E);
     std::string run_end;
     while (run_end.empty()) {
-      if (on_target(E)) run_end = "converged_E";
-      else if (out.iterations >= o.max_iterations) run_end = "max_iterations";
-      else if (out_of_time()) run_end = "timeout";
+      if (on_target(E))
+        run_end = "converged_E";
+      else if (out.iterations >= o.max_iterations)
+        run_end = "max_iterations";
+      else if (out_of_time())
+        run_end = "timeout";
       if (!run_end.empty()) break;
       const double moved = s.step();
       ++out.jacobian_evaluations;
@@ -284,8 +290,8 @@ const KdlSummary& KdlSolver::solve(const Eigen::VectorXd& start, const Eigen::Ve
     }
     reason = run_end;
     const long restarts = o.paper_mode ? 0 : o.restarts;  // as the core: none in paper mode
-    const bool again = run_end == "zero_step" && s.restarts.used() < restarts && !out_of_time() &&
-                       out.iterations < o.max_iterations;
+    const bool again =
+        run_end == "zero_step" && s.restarts.used() < restarts && !out_of_time() && out.iterations < o.max_iterations;
     if (!again) break;
     s.restarts.next_start(s.lower, s.upper, s.angles);
     ++out.restarts;

@@ -22,17 +22,17 @@
 namespace ik::kdl {
 
 struct KdlSummary {
-  Eigen::VectorXd angles;    // best angles found (#angles, degrees, inside the limits)
-  double E = 0;              // 1/2 |tips - targets|^2 at `angles`, rig units^2 (pose goals: plus
-                             // 1/2 L^2 |rotation vectors|^2, as the core's E with orientation goals)
-  double gradient_norm = 0;  // |J^T r| at `angles`, rig units^2 per degree
-  double tip_distance = 0;   // largest distance of a tip from its target at `angles`, rig units
+  Eigen::VectorXd angles;         // best angles found (#angles, degrees, inside the limits)
+  double E = 0;                   // 1/2 |tips - targets|^2 at `angles`, rig units^2 (pose goals: plus
+                                  // 1/2 L^2 |rotation vectors|^2, as the core's E with orientation goals)
+  double gradient_norm = 0;       // |J^T r| at `angles`, rig units^2 per degree
+  double tip_distance = 0;        // largest distance of a tip from its target at `angles`, rig units
   double rotation_error_deg = 0;  // pose goals: largest angle of a frame from its target, degrees
-  bool reached = false;      // `angles` is on target
-  int iterations = 0;        // Newton-Raphson steps (a restart counts as one)
+  bool reached = false;           // `angles` is on target
+  int iterations = 0;             // Newton-Raphson steps (a restart counts as one)
   int function_evaluations = 0, jacobian_evaluations = 0, restarts = 0;
-  std::string stop_reason;   // converged_E, zero_step, max_iterations, timeout or invalid_input
-  std::string message;       // why, for invalid_input
+  std::string stop_reason;  // converged_E, zero_step, max_iterations, timeout or invalid_input
+  std::string message;      // why, for invalid_input
 };
 
 class KdlSolver {

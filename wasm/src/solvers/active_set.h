@@ -62,7 +62,8 @@ class ActiveSet {
         if (mask_[i] == 0) continue;
         const double d = proposed(i);
         const double to = angles[i] + d;
-        const bool past_lower = to < lower[i], past_upper = to > upper[i];
+        const bool past_lower = to < lower[i];
+        const bool past_upper = to > upper[i];
         const bool on_limit = angles[i] <= lower[i] || angles[i] >= upper[i];
         if (!(past_lower || past_upper) || (fix == Fix::on_limit_only && !on_limit)) {
           step_[i] = d;

@@ -36,7 +36,8 @@ class DampedBfgs final : public Solver {
     const int k = static_cast<int>(movable_.size());
     H_.resize(k, k);
     B_.resize(k, k);
-    for (Eigen::VectorXd* v : {&compact_direction_, &s_, &y_, &g_old_, &Bs_, &r_update_, &Hr_, &gf_, &mask_}) v->resize(k);
+    for (Eigen::VectorXd* v : {&compact_direction_, &s_, &y_, &g_old_, &Bs_, &r_update_, &Hr_, &gf_, &mask_})
+      v->resize(k);
     direction_.setZero(n);
   }
 

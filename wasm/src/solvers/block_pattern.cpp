@@ -34,7 +34,8 @@ void BlockPattern::build(const Kinematics& kin, const GoalSet& goals) {
       for (int k = 0; k < blocks_; ++k) blocks_of_.push_back(k);
       continue;
     }
-    blocks_of_.insert(blocks_of_.end(), bone_blocks.begin() + per_bone[j / 3], bone_blocks.begin() + per_bone[j / 3 + 1]);
+    blocks_of_.insert(blocks_of_.end(), bone_blocks.begin() + per_bone[j / 3],
+                      bone_blocks.begin() + per_bone[j / 3 + 1]);
   }
   start_[n] = static_cast<int>(blocks_of_.size());
 }
@@ -53,10 +54,12 @@ void BlockPattern::accumulate(const Eigen::MatrixXd& J, int j, Eigen::MatrixXd& 
 
 void BlockPattern::symmetrize(Eigen::MatrixXd& normal) const {
   for (int e = 0; e < blocks_; ++e)
-    for (int f = e + 1; f < blocks_; ++f) normal.block<3, 3>(3 * f, 3 * e) = normal.block<3, 3>(3 * e, 3 * f).transpose();
+    for (int f = e + 1; f < blocks_; ++f)
+      normal.block<3, 3>(3 * f, 3 * e) = normal.block<3, 3>(3 * e, 3 * f).transpose();
 }
 
-void BlockPattern::take_out(const Eigen::MatrixXd& J, int i, double d, Eigen::VectorXd& rhs, Eigen::MatrixXd& reduced) const {
+void BlockPattern::take_out(const Eigen::MatrixXd& J, int i, double d, Eigen::VectorXd& rhs,
+                            Eigen::MatrixXd& reduced) const {
   const double w = weight(i);
   for (int p = start_[i]; p < start_[i + 1]; ++p) {
     const int e = blocks_of_[p];
@@ -71,7 +74,8 @@ void BlockPattern::take_out(const Eigen::MatrixXd& J, int i, double d, Eigen::Ve
 
 double BlockPattern::dot(const Eigen::MatrixXd& J, int i, const Eigen::VectorXd& y) const {
   double sum = 0;
-  for (int p = start_[i]; p < start_[i + 1]; ++p) sum += block(J, blocks_of_[p], i).dot(y.segment<3>(3 * blocks_of_[p]));
+  for (int p = start_[i]; p < start_[i + 1]; ++p)
+    sum += block(J, blocks_of_[p], i).dot(y.segment<3>(3 * blocks_of_[p]));
   return sum;
 }
 

@@ -41,7 +41,7 @@ class BlockPattern {
 
  private:
   int blocks_ = 0;
-  int root_start_ = 0;        // the first floating-root column (the number of columns without one)
+  int root_start_ = 0;  // the first floating-root column (the number of columns without one)
   double root_weight_ = 1.0;
   // Per angle j: the blocks it moves, blocks_of_[start_[j]..start_[j+1]), ascending.
   std::vector<int> start_, blocks_of_;

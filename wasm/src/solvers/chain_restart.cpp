@@ -43,7 +43,8 @@ void ChainRestart::mark(const Kinematics& kin, const Eigen::Ref<const Eigen::Vec
   }
 }
 
-bool ChainRestart::beyond_reach(const Kinematics& kin, int e, const GoalSet& goals, double slack, bool held_fixed) const {
+bool ChainRestart::beyond_reach(const Kinematics& kin, int e, const GoalSet& goals, double slack,
+                                bool held_fixed) const {
   Eigen::Vector3d target;
   if (goals.plain()) {
     target = goals.plain_target().segment<3>(3 * e);
@@ -76,7 +77,8 @@ bool ChainRestart::beyond_any(const Kinematics& kin, const Eigen::Ref<const Eige
 
 bool ChainRestart::propose(const Kinematics& kin, const Eigen::Ref<const Eigen::VectorXd>& best,
                            const Eigen::Ref<const Eigen::VectorXd>& r, const GoalSet& goals, double slack,
-                           bool held_fixed, const QuasiRandom& sequence, long attempt, Eigen::Ref<Eigen::VectorXd> start) {
+                           bool held_fixed, const QuasiRandom& sequence, long attempt,
+                           Eigen::Ref<Eigen::VectorXd> start) {
   mark(kin, r, goals);
   std::fill(moved_.begin(), moved_.end(), 0);
   bool any = false;
@@ -96,7 +98,8 @@ bool ChainRestart::propose(const Kinematics& kin, const Eigen::Ref<const Eigen::
   start = best;
   for (int b = 0; b < kin.num_bones(); ++b) {
     if (!moved_[b] || (exclusive && kept_[b])) continue;
-    for (int k = 3 * b; k < 3 * b + 3; ++k) start[k] = std::isinf(radius) ? anywhere_[k] : start[k] + radius * (2 * unit_[k] - 1);
+    for (int k = 3 * b; k < 3 * b + 3; ++k)
+      start[k] = std::isinf(radius) ? anywhere_[k] : start[k] + radius * (2 * unit_[k] - 1);
   }
   kin.project(start);
   return true;

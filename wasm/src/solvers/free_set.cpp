@@ -4,9 +4,8 @@
 
 namespace ik {
 
-FreeAngles find_free_angles(const Eigen::VectorXd& angles, const Eigen::VectorXd& lower,
-                            const Eigen::VectorXd& upper, const Eigen::VectorXd& gradient, std::vector<int>& free,
-                            Eigen::VectorXd& mask) {
+FreeAngles find_free_angles(const Eigen::VectorXd& angles, const Eigen::VectorXd& lower, const Eigen::VectorXd& upper,
+                            const Eigen::VectorXd& gradient, std::vector<int>& free, Eigen::VectorXd& mask) {
   FreeAngles found;
   double norm2 = 0;
   for (Eigen::Index i = 0; i < angles.size(); ++i) {

@@ -16,8 +16,7 @@ struct FreeAngles {
 // From `angles`, `lower` and `upper` (#angles each, degrees) and the gradient `gradient` (#angles,
 // rig units^2 per degree): writes the free angles' indices, ascending, to free[0..count) (free
 // holds #angles) and 1 (free) or 0 (blocked) per angle to `mask` (#angles). No allocation.
-FreeAngles find_free_angles(const Eigen::VectorXd& angles, const Eigen::VectorXd& lower,
-                            const Eigen::VectorXd& upper, const Eigen::VectorXd& gradient, std::vector<int>& free,
-                            Eigen::VectorXd& mask);
+FreeAngles find_free_angles(const Eigen::VectorXd& angles, const Eigen::VectorXd& lower, const Eigen::VectorXd& upper,
+                            const Eigen::VectorXd& gradient, std::vector<int>& free, Eigen::VectorXd& mask);
 
 }  // namespace ik

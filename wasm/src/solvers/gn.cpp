@@ -34,7 +34,9 @@ class GaussNewton final : public Solver {
  private:
   // The SVD of the whole Jacobian (paper mode, or more than kMaxResiduals residuals) grows with
   // #angles times #residuals squared.
-  int angle_limit(int residuals) const override { return residuals > kMaxResiduals ? dense_angle_limit(residuals) : kNoAngleLimit; }
+  int angle_limit(int residuals) const override {
+    return residuals > kMaxResiduals ? dense_angle_limit(residuals) : kNoAngleLimit;
+  }
 
   void resize(int residuals, int angles) override {
     jac_.resize(residuals, angles);
@@ -48,12 +50,14 @@ class GaussNewton final : public Solver {
     step_k_.resize(angles);
     if (residuals <= kMaxResiduals) {
       normal_.resize(residuals, residuals);
-      eigen_ = Eigen::SelfAdjointEigenSolver<SmallMatrix>(residuals);
       projected_m_.resize(residuals);
       y_.resize(residuals);
     } else {
       angle_normal_.resize(angles, angles);
-      angle_llt_ = Eigen::LLT<Eigen::MatrixXd>(angles);
+      // Sized by factorising a zero matrix (it stops at the first pivot), so compute() allocates
+      // nothing; not by assigning Eigen::LLT<Eigen::MatrixXd>(angles), which copied the info() and
+      // norm that Eigen's sizing constructor leaves uninitialised.
+      angle_llt_.compute(Eigen::MatrixXd::Zero(angles, angles));
     }
   }
 
@@ -104,8 +108,9 @@ class GaussNewton final : public Solver {
     // (the original's igl::pinv tolerance).
     const auto& s = svd_.singularValues();
     if (!s.allFinite()) return false;
-    const double relative = opt_.paper_mode ? std::max(jac_.rows(), jac_.cols()) * std::numeric_limits<double>::epsilon()
-                                            : opt_.gn_singular_cutoff;
+    const double relative = opt_.paper_mode
+                                ? std::max(jac_.rows(), jac_.cols()) * std::numeric_limits<double>::epsilon()
+                                : opt_.gn_singular_cutoff;
     const double cutoff = relative * s.maxCoeff();
     projected_.noalias() = svd_.matrixU().transpose() * rhs;
     for (Eigen::Index i = 0; i < s.size(); ++i) projected_[i] = s[i] < cutoff || s[i] == 0 ? 0.0 : projected_[i] / s[i];
@@ -156,8 +161,8 @@ class GaussNewton final : public Solver {
   bool angle_size_direction(const Eigen::VectorXd& mask, const Eigen::VectorXd& rhs) {
     jac_.noalias() = J_ * mask.asDiagonal();
     angle_normal_.noalias() = jac_.transpose() * jac_;
-    const double shift = opt_.gn_singular_cutoff * opt_.gn_singular_cutoff * angle_normal_.trace() +
-                         std::numeric_limits<double>::min();
+    const double shift =
+        opt_.gn_singular_cutoff * opt_.gn_singular_cutoff * angle_normal_.trace() + std::numeric_limits<double>::min();
     angle_normal_.diagonal().array() += shift;
     angle_llt_.compute(angle_normal_);
     if (angle_llt_.info() != Eigen::Success) return false;
@@ -171,7 +176,7 @@ class GaussNewton final : public Solver {
   using SmallMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxResiduals, kMaxResiduals>;
   using SmallVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxResiduals, 1>;
   SmallMatrix normal_;
-  Eigen::SelfAdjointEigenSolver<SmallMatrix> eigen_;
+  Eigen::SelfAdjointEigenSolver<SmallMatrix> eigen_;  // fixed storage (kMaxResiduals): needs no sizing
   SmallVector projected_m_, y_;
   Eigen::MatrixXd jac_;
   Eigen::MatrixXd angle_normal_;  // angle-size path (soft rows)

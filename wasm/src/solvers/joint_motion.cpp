@@ -32,7 +32,8 @@ double JointMotion::largest_move(const Kinematics& kin) const {
 }
 
 double JointMotion::limit(Kinematics& kin, const Eigen::Ref<const Eigen::VectorXd>& start,
-                          const Eigen::Ref<const Eigen::VectorXd>& end, double bound, Eigen::Ref<Eigen::VectorXd> out) const {
+                          const Eigen::Ref<const Eigen::VectorXd>& end, double bound,
+                          Eigen::Ref<Eigen::VectorXd> out) const {
   double low = 0, high = 1;  // largest_move at low is within the bound, at high beyond it
   for (int i = 0; i < kBisections; ++i) {
     const double t = 0.5 * (low + high);

@@ -31,8 +31,8 @@ class JointMotion {
   // to `out` the point start + t (end - start) for the largest t in [0, 1) found by bisection
   // whose largest_move() is at most `bound` (t = 0 when none is), and leaves `kin` posed there.
   // Returns t. No allocation.
-  double limit(Kinematics& kin, const Eigen::Ref<const Eigen::VectorXd>& start, const Eigen::Ref<const Eigen::VectorXd>& end,
-               double bound, Eigen::Ref<Eigen::VectorXd> out) const;
+  double limit(Kinematics& kin, const Eigen::Ref<const Eigen::VectorXd>& start,
+               const Eigen::Ref<const Eigen::VectorXd>& end, double bound, Eigen::Ref<Eigen::VectorXd> out) const;
 
  private:
   std::vector<Eigen::Vector3d> heads_, tips_;  // per bone, at the start

@@ -17,15 +17,15 @@ struct BacktrackingOptions {
   // slope = grad . (trial - A) on the projected trial (Calamai & More); false: alpha grad . p, the
   // unprojected slope the original program used.
   bool projected_slope = true;
-  int max_tries = 60;       // trials before giving up
-  Deadline deadline;        // gives up once it passes (checked every few trials)
+  int max_tries = 60;  // trials before giving up
+  Deadline deadline;   // gives up once it passes (checked every few trials)
 };
 
 struct BacktrackingResult {
-  bool found = false;  // a trial was accepted; false when the step became 0 or max_tries failed
-  double step = 0;     // the accepted alpha (0 if none)
-  double E = 0;        // E at the accepted trial
-  int evaluations = 0; // E evaluations made (forward kinematics)
+  bool found = false;      // a trial was accepted; false when the step became 0 or max_tries failed
+  double step = 0;         // the accepted alpha (0 if none)
+  double E = 0;            // E at the accepted trial
+  int evaluations = 0;     // E evaluations made (forward kinematics)
   bool timed_out = false;  // gave up because the deadline passed
 };
 

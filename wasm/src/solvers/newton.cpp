@@ -48,11 +48,14 @@ class ProjectedNewton final : public Solver {
     H_.resize(n, n);
     modified_.resize(n, n);
     shifted_.resize(n, n);
-    llt_ = Eigen::LLT<Eigen::MatrixXd>(n);
+    // Each LLT sized by factorising a zero matrix (it stops at the first pivot), so compute()
+    // allocates nothing. Not `llt_ = Eigen::LLT<Eigen::MatrixXd>(n)`: Eigen's sizing constructor
+    // leaves info() and the kept norm uninitialised, and the assignment copied them.
+    llt_.compute(Eigen::MatrixXd::Zero(n, n));
     Jm_.resize(m, n);
     Y_.resize(m, n);
     normal_.resize(m, m);
-    normal_llt_ = Eigen::LLT<Eigen::MatrixXd>(m);
+    normal_llt_.compute(Eigen::MatrixXd::Zero(m, m));
     rhs_.resize(n);
     step_.resize(n);
     work_.resize(n);
@@ -103,15 +106,10 @@ class ProjectedNewton final : public Solver {
       if (attempt > 0 && time_is_up()) return Progress::stuck;
       const double mu = damping_.shift(relative_error2, opt_.lm_damping_floor, s);
       switch (newton_step(mu)) {
-        case Step::indefinite:
-          damping_.grow_for_indefinite();
-          continue;
-        case Step::not_finite:
-          return fail("the Newton step is not finite");
-        case Step::out_of_time:
-          return Progress::stuck;
-        case Step::ok:
-          break;
+        case Step::indefinite: damping_.grow_for_indefinite(); continue;
+        case Step::not_finite: return fail("the Newton step is not finite");
+        case Step::out_of_time: return Progress::stuck;
+        case Step::ok: break;
       }
       if (trial_ == a_) return Progress::stuck;  // the step is 0
       const double E_trial = evaluate(trial_, r_trial_);

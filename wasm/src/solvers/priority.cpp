@@ -34,7 +34,8 @@ void Priority::resize(const GoalSet& goals, int angles) {
 }
 
 void Priority::note_start(const GoalSet& goals, const Eigen::Ref<const Eigen::VectorXd>& r, const GoalTolerance& tol) {
-  for (int b = 0; b < goals.num_blocks(); ++b) off_at_start_[b] = tol.tip > 0 && tol.orientation_deg > 0 && block_share(goals, r, b, tol) > 1;
+  for (int b = 0; b < goals.num_blocks(); ++b)
+    off_at_start_[b] = tol.tip > 0 && tol.orientation_deg > 0 && block_share(goals, r, b, tol) > 1;
 }
 
 bool Priority::effector_off_at_start(const GoalSet& goals, int e) const {
@@ -68,7 +69,8 @@ void Priority::give_up_yielding(const GoalSet& goals) {
   }
 }
 
-bool Priority::give_up_next(const GoalSet& goals, const Eigen::Ref<const Eigen::VectorXd>& r, const GoalTolerance& tol) {
+bool Priority::give_up_next(const GoalSet& goals, const Eigen::Ref<const Eigen::VectorXd>& r,
+                            const GoalTolerance& tol) {
   if (!(tol.tip > 0 && tol.orientation_deg > 0) || held_share(goals, r, tol) <= 1 ||
       given_up_count_ + 1 >= goals.num_blocks())
     return false;
@@ -91,7 +93,8 @@ bool Priority::give_up_next(const GoalSet& goals, const Eigen::Ref<const Eigen::
   return true;
 }
 
-double Priority::held_share(const GoalSet& goals, const Eigen::Ref<const Eigen::VectorXd>& r, const GoalTolerance& tol) const {
+double Priority::held_share(const GoalSet& goals, const Eigen::Ref<const Eigen::VectorXd>& r,
+                            const GoalTolerance& tol) const {
   double worst = 0;
   for (int b = 0; b < goals.num_blocks(); ++b)
     if (!given_up_[b]) worst = std::max(worst, block_share(goals, r, b, tol));
@@ -139,9 +142,10 @@ bool Priority::prepare(const Kinematics& kin, const Eigen::MatrixXd& J, const Bl
   return std::isfinite(scale_);
 }
 
-Priority::Status Priority::step(const Kinematics& kin, const Eigen::MatrixXd& J, const BlockPattern& pattern, const Eigen::Ref<const Eigen::VectorXd>& a,
-                                const Eigen::Ref<const Eigen::VectorXd>& r, double lambda, double floor,
-                                const Deadline& deadline, Eigen::Ref<Eigen::VectorXd> trial) {
+Priority::Status Priority::step(const Kinematics& kin, const Eigen::MatrixXd& J, const BlockPattern& pattern,
+                                const Eigen::Ref<const Eigen::VectorXd>& a, const Eigen::Ref<const Eigen::VectorXd>& r,
+                                double lambda, double floor, const Deadline& deadline,
+                                Eigen::Ref<Eigen::VectorXd> trial) {
   const int m = static_cast<int>(normal_.rows());
   reduced_ = normal_;
   rhs_ = r;

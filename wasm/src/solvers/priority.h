@@ -82,8 +82,10 @@ class Priority {
   double held_E(const GoalSet& goals, const Eigen::Ref<const Eigen::VectorXd>& r) const;
   double given_up_E(const GoalSet& goals, const Eigen::Ref<const Eigen::VectorXd>& r) const;
   // Is a given-up position goal off target at `r`? Is a given-up orientation goal?
-  bool position_given_up(const GoalSet& goals, const Eigen::Ref<const Eigen::VectorXd>& r, const GoalTolerance& tol) const;
-  bool orientation_given_up(const GoalSet& goals, const Eigen::Ref<const Eigen::VectorXd>& r, const GoalTolerance& tol) const;
+  bool position_given_up(const GoalSet& goals, const Eigen::Ref<const Eigen::VectorXd>& r,
+                         const GoalTolerance& tol) const;
+  bool orientation_given_up(const GoalSet& goals, const Eigen::Ref<const Eigen::VectorXd>& r,
+                            const GoalTolerance& tol) const;
 
   // Jf Jf^T over the movable angles of `kin` (lower < upper) with the Jacobian `J` (rows x
   // angles, rig units per degree) of sparsity `pattern`. Returns false if it is not finite.
@@ -94,9 +96,9 @@ class Priority {
   enum class Status { ok, failed, out_of_time };
   // Writes `trial` = P(a + d) for the priority step from `a` (degrees) with residual `r`, damping
   // `lambda` on the given-up rows (rig units^2, like Jf Jf^T) and `floor` added on the held ones.
-  Status step(const Kinematics& kin, const Eigen::MatrixXd& J, const BlockPattern& pattern, const Eigen::Ref<const Eigen::VectorXd>& a,
-              const Eigen::Ref<const Eigen::VectorXd>& r, double lambda, double floor, const Deadline& deadline,
-              Eigen::Ref<Eigen::VectorXd> trial);
+  Status step(const Kinematics& kin, const Eigen::MatrixXd& J, const BlockPattern& pattern,
+              const Eigen::Ref<const Eigen::VectorXd>& a, const Eigen::Ref<const Eigen::VectorXd>& r, double lambda,
+              double floor, const Deadline& deadline, Eigen::Ref<Eigen::VectorXd> trial);
   // The decrease of 1/2 |r|^2 over the held rows (`held`) or the others that the linear model
   // predicts for the last step(): -r . Jd - 1/2 |Jd|^2 over those rows, rig units^2.
   double predicted_decrease(const Eigen::Ref<const Eigen::VectorXd>& r, bool held) const;
@@ -105,8 +107,7 @@ class Priority {
   // leaving out the angles on a limit that it pushes outward (rig units^2 per degree): 0 at the
   // lexicographic closest point. After prepare() at the same point.
   double reduced_gradient_norm(const Kinematics& kin, const Eigen::MatrixXd& J, const BlockPattern& pattern,
-                               const Eigen::Ref<const Eigen::VectorXd>& a,
-                               const Eigen::Ref<const Eigen::VectorXd>& r);
+                               const Eigen::Ref<const Eigen::VectorXd>& a, const Eigen::Ref<const Eigen::VectorXd>& r);
 
  private:
   // Was effector e off target at the start (one of its blocks beyond its tolerance)?
@@ -118,7 +119,7 @@ class Priority {
   std::vector<char> off_at_start_;  // per hard block: beyond its tolerance at the solve's start
   int given_up_count_ = 0;
   int suspended_count_ = 0;  // given_up_count_ while suspended
-  int held_rows_ = 0;  // hard rows: the blocks' rows; rows past them (soft) are never held
+  int held_rows_ = 0;        // hard rows: the blocks' rows; rows past them (soft) are never held
   std::vector<int> movable_;
   double scale_ = 1;
   Eigen::MatrixXd normal_, reduced_, shifted_, held_normal_;

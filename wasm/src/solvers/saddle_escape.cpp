@@ -31,7 +31,8 @@ void SaddleEscape::resize(const Kinematics& kin, int residuals) {
   weights_.resize(kin.num_residuals());
 }
 
-void SaddleEscape::choose_angles(const Kinematics& kin, const GoalSet& goals, const Eigen::Ref<const Eigen::VectorXd>& r) {
+void SaddleEscape::choose_angles(const Kinematics& kin, const GoalSet& goals,
+                                 const Eigen::Ref<const Eigen::VectorXd>& r) {
   for (int c = 0; c < count_; ++c) position_[index_[c]] = -1;
   count_ = 0;
   const double largest = largest_goal_distance(goals, r);
@@ -50,8 +51,7 @@ void SaddleEscape::choose_angles(const Kinematics& kin, const GoalSet& goals, co
   }
 }
 
-EscapeResult SaddleEscape::find(Kinematics& kin, const GoalSet& goals,
-                                const Eigen::Ref<const Eigen::VectorXd>& angles,
+EscapeResult SaddleEscape::find(Kinematics& kin, const GoalSet& goals, const Eigen::Ref<const Eigen::VectorXd>& angles,
                                 const Eigen::Ref<const Eigen::VectorXd>& r, double E,
                                 const Eigen::Ref<const Eigen::MatrixXd>& J, Eigen::Ref<Eigen::VectorXd> trial,
                                 Eigen::Ref<Eigen::VectorXd> residual) {
@@ -85,7 +85,8 @@ EscapeResult SaddleEscape::find(Kinematics& kin, const GoalSet& goals,
 
   double E_plus = 0, E_minus = 0;
   const bool plus = search(kin, goals, angles, E, lambda, +1, trial, residual, E_plus, result.evaluations);
-  const bool minus = search(kin, goals, angles, E, lambda, -1, other_trial_, other_residual_, E_minus, result.evaluations);
+  const bool minus =
+      search(kin, goals, angles, E, lambda, -1, other_trial_, other_residual_, E_minus, result.evaluations);
   if (!plus && !minus) return result;
   result.found = true;
   if (plus && (!minus || E_plus <= E_minus)) {
@@ -98,10 +99,9 @@ EscapeResult SaddleEscape::find(Kinematics& kin, const GoalSet& goals,
   return result;
 }
 
-bool SaddleEscape::search(Kinematics& kin, const GoalSet& goals,
-                          const Eigen::Ref<const Eigen::VectorXd>& angles, double E, double curvature, double sign,
-                          Eigen::Ref<Eigen::VectorXd> trial, Eigen::Ref<Eigen::VectorXd> residual, double& E_trial,
-                          int& evaluations) {
+bool SaddleEscape::search(Kinematics& kin, const GoalSet& goals, const Eigen::Ref<const Eigen::VectorXd>& angles,
+                          double E, double curvature, double sign, Eigen::Ref<Eigen::VectorXd> trial,
+                          Eigen::Ref<Eigen::VectorXd> residual, double& E_trial, int& evaluations) {
   double step = sign * kFirstStepDeg;
   for (int i = 0; i <= kMaxHalvings; ++i, step *= 0.5) {
     trial = angles + step * direction_;

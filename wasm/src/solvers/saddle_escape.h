@@ -30,10 +30,10 @@
 namespace ik {
 
 struct EscapeResult {
-  bool found = false;   // a lower point along negative curvature (trial and residual hold it)
-  double E = 0;         // E there
-  double curvature = 0; // the smallest eigenvalue of the Hessian block, rig units^2 per degree^2
-  int evaluations = 0;  // E evaluations made (forward kinematics)
+  bool found = false;    // a lower point along negative curvature (trial and residual hold it)
+  double E = 0;          // E there
+  double curvature = 0;  // the smallest eigenvalue of the Hessian block, rig units^2 per degree^2
+  int evaluations = 0;   // E evaluations made (forward kinematics)
 };
 
 class SaddleEscape {
@@ -48,19 +48,17 @@ class SaddleEscape {
   // E = `E` and Jacobian `J` (#residuals x #angles, per degree) towards `goals`. On success
   // writes the lower point to `trial` and its residual to `residual`; `kin` is then posed at
   // an arbitrary trial point. No allocation.
-  EscapeResult find(Kinematics& kin, const GoalSet& goals,
-                    const Eigen::Ref<const Eigen::VectorXd>& angles, const Eigen::Ref<const Eigen::VectorXd>& r,
-                    double E, const Eigen::Ref<const Eigen::MatrixXd>& J, Eigen::Ref<Eigen::VectorXd> trial,
-                    Eigen::Ref<Eigen::VectorXd> residual);
+  EscapeResult find(Kinematics& kin, const GoalSet& goals, const Eigen::Ref<const Eigen::VectorXd>& angles,
+                    const Eigen::Ref<const Eigen::VectorXd>& r, double E, const Eigen::Ref<const Eigen::MatrixXd>& J,
+                    Eigen::Ref<Eigen::VectorXd> trial, Eigen::Ref<Eigen::VectorXd> residual);
 
  private:
   // The angles H is formed over (index_[0..count_)); position_[angle] is its place or -1.
   void choose_angles(const Kinematics& kin, const GoalSet& goals, const Eigen::Ref<const Eigen::VectorXd>& r);
   // Backtracking along sign * direction_; the accepted point in `trial` / `residual`.
-  bool search(Kinematics& kin, const GoalSet& goals,
-              const Eigen::Ref<const Eigen::VectorXd>& angles, double E, double curvature, double sign,
-              Eigen::Ref<Eigen::VectorXd> trial, Eigen::Ref<Eigen::VectorXd> residual, double& E_trial,
-              int& evaluations);
+  bool search(Kinematics& kin, const GoalSet& goals, const Eigen::Ref<const Eigen::VectorXd>& angles, double E,
+              double curvature, double sign, Eigen::Ref<Eigen::VectorXd> trial, Eigen::Ref<Eigen::VectorXd> residual,
+              double& E_trial, int& evaluations);
 
   using SmallMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxAngles, kMaxAngles>;
   SmallMatrix hessian_;

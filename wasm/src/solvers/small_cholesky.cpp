@@ -21,8 +21,8 @@ bool small_cholesky(Eigen::Ref<Eigen::MatrixXd> a, int n) {
 
 void small_cholesky_solve(const Eigen::Ref<const Eigen::MatrixXd>& factor, int n, Eigen::Ref<Eigen::VectorXd> b) {
   const auto L = factor.topLeftCorner(n, n).triangularView<Eigen::Lower>();
-  L.solveInPlace(b.head(n));                // L y = b
-  L.transpose().solveInPlace(b.head(n));    // L^T x = y
+  L.solveInPlace(b.head(n));              // L y = b
+  L.transpose().solveInPlace(b.head(n));  // L^T x = y
 }
 
 }  // namespace ik

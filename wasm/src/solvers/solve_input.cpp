@@ -31,8 +31,8 @@ std::string check_coordinates(const Eigen::Ref<const Eigen::VectorXd>& v, const 
 
 }  // namespace
 
-std::string check_solve_input(const Kinematics& kin, const SolverOptions& options, const char* method, int angle_limit, int rows,
-                              const Eigen::Ref<const Eigen::VectorXd>& angles,
+std::string check_solve_input(const Kinematics& kin, const SolverOptions& options, const char* method, int angle_limit,
+                              int rows, const Eigen::Ref<const Eigen::VectorXd>& angles,
                               const Eigen::Ref<const Eigen::VectorXd>& target, bool has_target) {
   std::string problem = check_options(options);
   if (!problem.empty()) return problem;
@@ -45,7 +45,9 @@ std::string check_solve_input(const Kinematics& kin, const SolverOptions& option
   if (kin.num_angles() > angle_limit)
     return std::string(method) + (options.paper_mode ? " in paper mode" : "") + " takes rigs of at most " +
            std::to_string(angle_limit) + " angles (" + std::to_string(angle_limit / 3) + " bones)" +
-           (rows > kDenseRows ? " with goals of " + std::to_string(rows) + " residual rows (poles and a rest pull add rows)" : "") +
+           (rows > kDenseRows
+                ? " with goals of " + std::to_string(rows) + " residual rows (poles and a rest pull add rows)"
+                : "") +
            "; this one has " + std::to_string(kin.num_angles()) +
            (options.paper_mode ? ": turn paper mode off" : ": use lm or gd");
   problem = check_finite(angles, "angles");

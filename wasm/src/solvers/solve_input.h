@@ -16,8 +16,8 @@ namespace ik {
 // residual rows), a non-finite
 // angle or target, a target coordinate past +-kMaxCoordinate. `has_target` false: there is no
 // target vector (goals, checked by GoalSet::set) and `target` is ignored. No allocation when there is no problem.
-std::string check_solve_input(const Kinematics& kin, const SolverOptions& options, const char* method, int angle_limit, int rows,
-                              const Eigen::Ref<const Eigen::VectorXd>& angles,
+std::string check_solve_input(const Kinematics& kin, const SolverOptions& options, const char* method, int angle_limit,
+                              int rows, const Eigen::Ref<const Eigen::VectorXd>& angles,
                               const Eigen::Ref<const Eigen::VectorXd>& target, bool has_target = true);
 
 }  // namespace ik

@@ -77,8 +77,8 @@ StopReason Solver::begin(const Eigen::Ref<const Eigen::VectorXd>& angles, const 
   incoming_.set_rest(kin_, next_opt_.rest_weight, next_opt_.rest_from_start, angles);
   // A solve from where the previous one ended, towards the same goals (a held drag whose frame
   // budget ran out), goes on along the chain restarts instead of trying the same ones again.
-  const bool continues = chain_index_ > 0 && angles.size() == summary_.angles.size() && incoming_ == goals_ &&
-                         angles == summary_.angles;
+  const bool continues =
+      chain_index_ > 0 && angles.size() == summary_.angles.size() && incoming_ == goals_ && angles == summary_.angles;
   if (!continues) chain_index_ = 0;
   // The last solve's budget cut its run short, and this one starts from its answer towards the
   // same goals with the same options: the run goes on from where it had got to (go_on()).
@@ -96,18 +96,20 @@ StopReason Solver::begin(const Eigen::Ref<const Eigen::VectorXd>& angles, const 
   const int limit = std::min(angle_limit(rows), opt_.paper_mode ? kMaxPaperAngles : kNoAngleLimit);
   summary_.message = goals_problem;
   if (summary_.message.empty())
-    summary_.message =
-        check_solve_input(kin_, opt_, name(), limit, rows, angles, incoming_.plain_target(), incoming_.plain_positions());
+    summary_.message = check_solve_input(kin_, opt_, name(), limit, rows, angles, incoming_.plain_target(),
+                                         incoming_.plain_positions());
   if (summary_.message.empty() && opt_.paper_mode && (opt_.rest_weight > 0 || incoming_.num_poles() > 0))
-    summary_.message = "paper mode takes no bend hints (poles) and no rest pull (restWeight > 0): the original "
-                       "program's objective has neither; turn paper mode off for them";
+    summary_.message =
+        "paper mode takes no bend hints (poles) and no rest pull (restWeight > 0): the original "
+        "program's objective has neither; turn paper mode off for them";
   if (summary_.message.empty() && static_cast<long long>(rows) * kin_.num_angles() > kMaxMatrixEntries)
     summary_.message = "the goals' Jacobian would have " + std::to_string(rows) + " x " +
                        std::to_string(kin_.num_angles()) + " entries, more than " + std::to_string(kMaxMatrixEntries) +
                        " (fewer bones with a rest pull: restWeight 0 or stiffness 0)";
   if (summary_.message.empty() && opt_.paper_mode && !incoming_.plain())
-    summary_.message = "paper mode takes position goals of weight 1 only (the original program's objective); "
-                       "turn paper mode off for orientation goals or weights";
+    summary_.message =
+        "paper mode takes position goals of weight 1 only (the original program's objective); "
+        "turn paper mode off for orientation goals or weights";
   if (!summary_.message.empty()) {
     summary_.stop_reason = StopReason::invalid_input;
     summary_.initial_E = summary_.E = summary_.gradient_norm = summary_.tip_distance =
@@ -132,7 +134,8 @@ StopReason Solver::begin(const Eigen::Ref<const Eigen::VectorXd>& angles, const 
   // Workspace: sized here only, so that step() never allocates.
   goals_ = incoming_;
   if (cut_short && goals_.has_soft() && !opt_.paper_mode) goals_.set_soft_scale(lowered_soft_scale(cut_soft_scale));
-  if (m_ != goals_.rows() || n_ != kin_.num_angles() || effectors_ != kin_.rig().effectors || layout_ != goals_.layout())
+  if (m_ != goals_.rows() || n_ != kin_.num_angles() || effectors_ != kin_.rig().effectors ||
+      layout_ != goals_.layout())
     resize_workspace();
   pattern_.set_root_weight(opt_.root_unit * opt_.root_unit);
   priority_.clear();
@@ -283,9 +286,7 @@ bool Solver::advance(Clock::time_point begin) {
         reason = StopReason::numerical_failure;
         summary_.message = failure_ ? failure_ : "numerical failure";
         break;
-      case Progress::stuck:
-        reason = cut_short_ ? StopReason::timeout : StopReason::zero_step;
-        break;
+      case Progress::stuck: reason = cut_short_ ? StopReason::timeout : StopReason::zero_step; break;
       case Progress::moved:
         ++summary_.iterations;
         if (goals_.soft_on()) previous_E = before;
@@ -362,7 +363,8 @@ bool Solver::backtrack(const Eigen::Ref<const Eigen::VectorXd>& direction, doubl
   search.max_tries = opt_.paper_mode ? kPaperMaxBacktracks : opt_.max_backtracks;
   search.projected_slope = !opt_.paper_mode;
   search.deadline = deadline();
-  const BacktrackingResult found = projected_backtracking(kin_, goals_, a_, E_, g_, direction, search, trial_, r_trial_);
+  const BacktrackingResult found =
+      projected_backtracking(kin_, goals_, a_, E_, g_, direction, search, trial_, r_trial_);
   summary_.function_evaluations += found.evaluations;
   cut_short_ = cut_short_ || found.timed_out;
   if (!found.found) return false;
@@ -399,10 +401,8 @@ StopReason Solver::settle(StopReason reason) const {
       if (summary_.reached) return StopReason::converged_E;
       return summary_.gradient_norm < opt_.gradient_tolerance ? StopReason::converged_grad : StopReason::zero_step;
     case StopReason::max_iterations:
-    case StopReason::timeout:
-      return summary_.reached ? StopReason::converged_E : reason;
-    default:
-      return reason;
+    case StopReason::timeout: return summary_.reached ? StopReason::converged_E : reason;
+    default: return reason;
   }
 }
 
@@ -433,8 +433,8 @@ StopReason Solver::check_stop(double previous_E) const {
   // With soft rows on, on target is not yet the end: the run goes on towards the soft terms'
   // optimum until |g| is under the gradient tolerance or a step lowers E by less than
   // kSoftStallShare of it (a slow method's steps near that optimum).
-  if (on_target() && (!goals_.soft_on() || gradient_norm_ < opt_.gradient_tolerance ||
-                      previous_E - E_ < kSoftStallShare * previous_E))
+  if (on_target() &&
+      (!goals_.soft_on() || gradient_norm_ < opt_.gradient_tolerance || previous_E - E_ < kSoftStallShare * previous_E))
     return StopReason::converged_E;
   // Goals given up: the closest point once the held goals are met and the given-up rows'
   // gradient within their freedom vanishes.
@@ -489,10 +489,10 @@ bool Solver::settles() {
   // that could be given up, one that will not get nearer than the tolerance (a slow method still
   // closing on a reachable target has not; a single goal keeps the stationarity test).
   const bool strict = opt_.strict_priority && goals_.num_blocks() > 1;
-  settling_.set_ended(priority_.active()
-                          ? settling_.stalled(threshold) || settling_.settled(threshold, tol.tip)
-                          : strict && ((settling_.stalled(threshold) && chain_restart_.beyond_any(kin_, r_, goals_, tol.tip, false)) ||
-                                       settling_.settled(threshold, kFarShare * tol.tip)));
+  settling_.set_ended(priority_.active() ? settling_.stalled(threshold) || settling_.settled(threshold, tol.tip)
+                                         : strict && ((settling_.stalled(threshold) &&
+                                                       chain_restart_.beyond_any(kin_, r_, goals_, tol.tip, false)) ||
+                                                      settling_.settled(threshold, kFarShare * tol.tip)));
   return settling_.ended();
 }
 

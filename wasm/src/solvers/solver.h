@@ -63,35 +63,35 @@ enum class StopReason {
 const char* stop_reason_name(StopReason reason);
 
 struct SolverSummary {
-  Eigen::VectorXd angles;       // best angles found (#angles, degrees, inside the limits)
-  double initial_E = 0;         // E at the start angles (after projection into the limits)
-  double E = 0;                 // E at `angles` (with the soft rows while they are on)
-  double gradient_norm = 0;     // |g| at `angles` as the gradient test measures it
-  double tip_distance = 0;      // largest distance of an effector's tip from its target at `angles`, rig units
-                                // (position goals only; 0 without any)
-  bool reached = false;         // `angles` is on target (the test of converged_E)
-  int iterations = 0;           // accepted steps (a restart counts as one)
-  int function_evaluations = 0; // forward-kinematics evaluations of E (line-search trials included)
-  int jacobian_evaluations = 0; // Jacobian evaluations (one finite-difference Jacobian counts once)
-  int restarts = 0;             // restarts performed
-  int escapes = 0;              // steps along negative curvature out of a stationary point (escape_saddles)
-  int chain_restarts = 0;       // restarts of the off-target chains only (chain_restarts)
+  Eigen::VectorXd angles;        // best angles found (#angles, degrees, inside the limits)
+  double initial_E = 0;          // E at the start angles (after projection into the limits)
+  double E = 0;                  // E at `angles` (with the soft rows while they are on)
+  double gradient_norm = 0;      // |g| at `angles` as the gradient test measures it
+  double tip_distance = 0;       // largest distance of an effector's tip from its target at `angles`, rig units
+                                 // (position goals only; 0 without any)
+  bool reached = false;          // `angles` is on target (the test of converged_E)
+  int iterations = 0;            // accepted steps (a restart counts as one)
+  int function_evaluations = 0;  // forward-kinematics evaluations of E (line-search trials included)
+  int jacobian_evaluations = 0;  // Jacobian evaluations (one finite-difference Jacobian counts once)
+  int restarts = 0;              // restarts performed
+  int escapes = 0;               // steps along negative curvature out of a stationary point (escape_saddles)
+  int chain_restarts = 0;        // restarts of the off-target chains only (chain_restarts)
   // Strict priority (priority.h), outside paper mode: when the goals cannot all be met, the ones
   // that can are held within their tolerance and the others given up, brought as close as the
   // freedom left allows. At `angles`: a position goal was given up and is off target (out of
   // reach), or only orientation goals were (their positions held: orientation out of reach).
   bool out_of_reach = false;
   bool orientation_out_of_reach = false;
-  int goals_given_up = 0;       // goals (3-row blocks) given up in this solve; 0: none (the
-                                // history then falls at every step of a run)
+  int goals_given_up = 0;  // goals (3-row blocks) given up in this solve; 0: none (the
+                           // history then falls at every step of a run)
   // Describes `angles`: converged_E if and only if `reached` (keep_contract() holds it at the end
   // of every solve, as it holds the numbers above free of NaN); converged_grad only with
   // gradient_norm < gradient_tolerance; with restarts, taken from the best point, not the last run.
   // With goals given up (out_of_reach or orientation_out_of_reach), gradient_norm is that of the
   // given-up rows within what leaves the held ones alone (Priority::reduced_gradient_norm).
   StopReason stop_reason = StopReason::invalid_input;
-  std::string message;          // why, for invalid_input and numerical_failure
-  double elapsed_s = 0;         // seconds spent inside start() and step()
+  std::string message;   // why, for invalid_input and numerical_failure
+  double elapsed_s = 0;  // seconds spent inside start() and step()
 };
 
 class Solver {
@@ -191,30 +191,28 @@ class Solver {
   void gave_up_for_time() { cut_short_ = true; }
   // When the time budget runs out (never, without a budget, or before the solve's first
   // opt_.steps_before_budget accepted steps).
-  Deadline deadline() const {
-    return summary_.iterations < opt_.steps_before_budget ? Deadline() : clock_.deadline();
-  }
+  Deadline deadline() const { return summary_.iterations < opt_.steps_before_budget ? Deadline() : clock_.deadline(); }
   // Is the current iterate (E_, r_) on target (the test of converged_E)?
   bool on_target() const;
 
   Kinematics& kin_;
-  SolverOptions opt_;       // the current solve's
-  SolverOptions next_opt_;  // from set_options(), copied into opt_ by start()
-  int n_ = 0;  // #angles
-  int m_ = 0;  // #residuals
+  SolverOptions opt_;           // the current solve's
+  SolverOptions next_opt_;      // from set_options(), copied into opt_ by start()
+  int n_ = 0;                   // #angles
+  int m_ = 0;                   // #residuals
   std::vector<int> effectors_;  // the rig's effector list the workspace was sized for
   std::vector<int> layout_;     // the goals' block layout the workspace was sized for
-  GoalSet goals_;  // the current solve's goals: the residual's rows (goals.h)
+  GoalSet goals_;               // the current solve's goals: the residual's rows (goals.h)
   Eigen::VectorXd a_, trial_, r_, r_trial_, g_;
   Eigen::MatrixXd J_;
   double E_ = 0;
   double gradient_norm_ = 0;
   // Free angles at a_ (free_set.h): not fixed (min == max) and not on a bound that grad E pushes outward.
-  std::vector<int> free_;         // indices of the free angles, ascending, the first num_free_ entries
-  Eigen::VectorXd free_mask_;     // 1 for a free angle, 0 otherwise
+  std::vector<int> free_;      // indices of the free angles, ascending, the first num_free_ entries
+  Eigen::VectorXd free_mask_;  // 1 for a free angle, 0 otherwise
   int num_free_ = 0;
-  double reach_ = 1;              // longest effector chain (sum of bone lengths), rig units
-  BlockPattern pattern_;          // which residual blocks each angle moves (sized with the workspace)
+  double reach_ = 1;      // longest effector chain (sum of bone lengths), rig units
+  BlockPattern pattern_;  // which residual blocks each angle moves (sized with the workspace)
   // The largest #angles the method takes with `residuals` residuals (its dense matrices grow
   // with #angles squared); the base class applies kMaxPaperAngles in paper mode.
   virtual int angle_limit(int /*residuals*/) const { return kNoAngleLimit; }
@@ -288,8 +286,8 @@ class Solver {
   bool settles();
   Settling settling_;  // also: whether the last run ended by settling, not by a stop test
   // At the end of a solve that used a chain restart or resumed a move, with max_joint_move > 0
-  // outside paper mode: a best point farther than allowed_move_ from the start is replaced by the pose partway there (JointMotion::limit), stopped with
-  // joint_speed, E, the gradient norm and the tip distance measured there.
+  // outside paper mode: a best point farther than allowed_move_ from the start is replaced by the pose partway there
+  // (JointMotion::limit), stopped with joint_speed, E, the gradient norm and the tip distance measured there.
   void bound_motion();
   // With max_joint_move > 0, a chain restart's answer on target that moved the joints farther
   // than allowed_move_ is kept as a candidate and the next chain restart tried from where the
@@ -304,7 +302,7 @@ class Solver {
   bool answer_here(StopReason otherwise);
   void take_nearest();
   static constexpr int kNearerTries = 4;
-  static constexpr int kRestoreSteps = 8;  // priority steps that bring a partway pose's held goals back
+  static constexpr int kRestoreSteps = 8;   // priority steps that bring a partway pose's held goals back
   static constexpr int kRestoreRounds = 3;  // partway poses sought, each towards the last one restored
   static constexpr int kSeekRestarts = 16;
   int nearer_tries_ = 0;
@@ -348,7 +346,7 @@ class Solver {
   NielsenDamping priority_damping_;
   int best_rank_ = 0;
   double best_given_up_E_ = 0;
-  bool chain_run_ = false;      // the priority run began at a chain restart, not at the start angles
+  bool chain_run_ = false;  // the priority run began at a chain restart, not at the start angles
   // A priority run with a yielding goal (the dragged one) stopped off target, the held goals
   // met, the target not beyond its chain's reach: once per solve, a run of every goal as an
   // equal from the start angles (priority_ suspended), which moves on as a plain solve does
@@ -374,7 +372,7 @@ class Solver {
   // Its lowest-E point (where its chain restarts start from; summary_ keeps the priority run's).
   Eigen::VectorXd together_best_;
   double together_best_E_ = 0;
-  int reweights_ = 0;      // so far; -1: no more
+  int reweights_ = 0;  // so far; -1: no more
   // Chain restarts of a run of the goals as equals that ended off target: the priority run from
   // the start that follows it follows E down from there (no branch change to bound).
   int discarded_chain_restarts_ = 0;

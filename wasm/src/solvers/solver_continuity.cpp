@@ -48,12 +48,16 @@ void Solver::keep_cut_run() {
 }
 
 bool Solver::go_on(bool close) {
-  // The answer so far (this call's start) stays the best point until the run finds a better one;
-  // the joints' move is measured from it.
-  if (bounds_joints()) {
-    evaluate(summary_.angles, r_trial_);
-    motion_.note_start(kin_);
-  }
+  // The answer so far (this call's start) stays the best point until the run finds a better one:
+  // its rank and its given-up goals are measured again (begin() reset the flags), and the
+  // joints' move is measured from it.
+  a_ = summary_.angles;
+  E_ = evaluate(a_, r_);
+  if (!std::isfinite(E_)) return false;
+  best_rank_ = rank();
+  best_given_up_E_ = priority_.given_up_E(goals_, r_);
+  note_given_up(r_);
+  if (bounds_joints()) motion_.note_start(kin_);  // kin_ is posed at the start
   moved_from_ = summary_.angles;
   discarded_chain_restarts_ = 0;
   a_ = cut_at_;

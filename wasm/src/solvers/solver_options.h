@@ -70,7 +70,8 @@ struct OptionInfo {
 // std::uint32_t).
 template <class Options, class Visit>
 void for_each_option(Options& options, Visit&& visit) {
-#define IK_SOLVER_OPTION(type, name, default_value, js_name, range) visit(OptionInfo{#name, js_name, range}, options.name);
+#define IK_SOLVER_OPTION(type, name, default_value, js_name, range) \
+  visit(OptionInfo{#name, js_name, range}, options.name);
 #include "solver_options.def"
 #undef IK_SOLVER_OPTION
 }

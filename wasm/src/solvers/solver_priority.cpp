@@ -155,9 +155,10 @@ Solver::Progress Solver::priority_iterate() {
     // Bringing the held goals back: Levenberg-Marquardt on their rows (their error sets the
     // damping), the others damped 1 / kHeldDamping times as much. Holding them: the damping of
     // the given-up rows, the held ones nearly undamped.
-    const double lambda = restoring ? priority_damping_.shift(2 * held_E / (reach_ * reach_), opt_.lm_damping_floor, s) /
-                                          Priority::kHeldDamping
-                                    : priority_damping_.shift(2 * given_up_E / (reach_ * reach_), opt_.lm_damping_floor, s);
+    const double lambda =
+        restoring
+            ? priority_damping_.shift(2 * held_E / (reach_ * reach_), opt_.lm_damping_floor, s) / Priority::kHeldDamping
+            : priority_damping_.shift(2 * given_up_E / (reach_ * reach_), opt_.lm_damping_floor, s);
     const double floor = restoring ? 0 : opt_.lm_damping_floor * s;
     switch (priority_.step(kin_, J_, pattern_, a_, r_, lambda, floor, deadline(), trial_)) {
       case Priority::Status::failed: return fail("the priority step's matrix could not be factorised");
@@ -168,7 +169,8 @@ Solver::Progress Solver::priority_iterate() {
     const double E_trial = evaluate(trial_, r_trial_);
     bool accepted;
     if (restoring) {
-      accepted = priority_damping_.accept(held_E, priority_.held_E(goals_, r_trial_), priority_.predicted_decrease(r_, true));
+      accepted =
+          priority_damping_.accept(held_E, priority_.held_E(goals_, r_trial_), priority_.predicted_decrease(r_, true));
     } else {
       const bool held = priority_.held_share(goals_, r_trial_, tol) <= std::max(kHoldShare, held_before);
       const double trial_given_up_E = held ? priority_.given_up_E(goals_, r_trial_) : INFINITY;

@@ -19,7 +19,8 @@ std::vector<SolverEntry>& table() {
        "Gauss-Newton, truncated pseudo-inverse step (from J J^T; paper mode: SVD of J), active set on the bounds, "
        "projected backtracking",
        make_gn_solver},
-      {"bfgs", "damped BFGS", "damped BFGS with gradient projection and projected Armijo backtracking", make_bfgs_solver},
+      {"bfgs", "damped BFGS", "damped BFGS with gradient projection and projected Armijo backtracking",
+       make_bfgs_solver},
       {"newton", "Newton", "projected Newton, exact Hessian from the tip second derivatives, shifted when indefinite",
        make_newton_solver},
       {"gd", "gradient descent",

@@ -2,8 +2,8 @@
 // test rig at random poses, and the degree <-> radian mapping round-trips.
 #include <gtest/gtest.h>
 
-#include <kdl/treefksolverpos_recursive.hpp>
 #include <cstdio>
+#include <kdl/treefksolverpos_recursive.hpp>
 #include <random>
 
 #include "../../native/kdl/kdl_rig.h"

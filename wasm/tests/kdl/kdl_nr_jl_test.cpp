@@ -53,7 +53,8 @@ TEST(KdlNrJl, ReachesPosesNearItsStartWithinKdlsTolerance) {
     // Our forward kinematics of the returned angles agrees with KDL's verdict.
     expect_on_pose(kin, s.angles, target, 1e-6, k);
     EXPECT_NEAR(s.tip_distance, (pose_at(kin, s.angles).tip - target.tip).norm(), 1e-12);
-    EXPECT_TRUE(((s.angles.array() >= kin.lower().array() - 1e-9) && (s.angles.array() <= kin.upper().array() + 1e-9)).all());
+    EXPECT_TRUE(
+        ((s.angles.array() >= kin.lower().array() - 1e-9) && (s.angles.array() <= kin.upper().array() + 1e-9)).all());
   }
 }
 
@@ -87,7 +88,7 @@ TEST(KdlNrJl, OneAngleJointsAFullTurnAndAnUnlimitedOne) {
     expect_on_pose(kin, s.angles, target, 1e-6, k);
     EXPECT_GE(s.angles[0], -180);  // the waist comes back within its turn
     EXPECT_LT(s.angles[0], 180);
-    EXPECT_EQ(s.angles[6], 10);    // a fixed angle keeps its value
+    EXPECT_EQ(s.angles[6], 10);  // a fixed angle keeps its value
   }
   EXPECT_GE(reached, 8);
 }

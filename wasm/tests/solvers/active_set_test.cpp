@@ -41,8 +41,7 @@ TEST(ActiveSet, AFixedAngleHandsItsShareToTheOthers) {
   const Eigen::VectorXd lo = (Eigen::VectorXd(3) << -5, -100, -100).finished();
   const Eigen::VectorXd hi = (Eigen::VectorXd(3) << 5, 100, 100).finished();
   SharedSum system;
-  EXPECT_EQ(run_shared_sum(set, a, lo, hi, {0, 1, 2}, 30, ActiveSet::Fix::past_limit, system),
-            ActiveSet::Status::done);
+  EXPECT_EQ(run_shared_sum(set, a, lo, hi, {0, 1, 2}, 30, ActiveSet::Fix::past_limit, system), ActiveSet::Status::done);
   // Pass 1: 10 each, angle 0 fixed at its limit 5; pass 2: the other two share 25 and stay inside.
   EXPECT_EQ(system.solves, 2);
   EXPECT_DOUBLE_EQ(set.step()[0], 5);

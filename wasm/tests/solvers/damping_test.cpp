@@ -47,11 +47,11 @@ TEST(NielsenDamping, RejectionsGrowMuByNuWhichDoublesUpToItsCap) {
 TEST(NielsenDamping, RefusesStepsTheModelDidNotPredictOrThatGainTooLittle) {
   NielsenDamping d;
   d.reset(1);
-  EXPECT_FALSE(d.accept(1, 0.5, 0));   // no decrease predicted
-  EXPECT_FALSE(d.accept(1, 0.5, -1));  // an increase predicted
+  EXPECT_FALSE(d.accept(1, 0.5, 0));       // no decrease predicted
+  EXPECT_FALSE(d.accept(1, 0.5, -1));      // an increase predicted
   EXPECT_FALSE(d.accept(1, 1 - 1e-5, 1));  // rho = 1e-5 < kMinGain
   EXPECT_FALSE(d.accept(1, std::numeric_limits<double>::quiet_NaN(), 1));
-  EXPECT_FALSE(d.accept(1, 1, 1));  // no decrease
+  EXPECT_FALSE(d.accept(1, 1, 1));        // no decrease
   EXPECT_TRUE(d.accept(1, 1 - 1e-3, 1));  // rho = 1e-3
 }
 

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "../small_rigs.h"
+#include "registered_methods.h"
 #include "rig.h"
 #include "size_limits.h"
 #include "solver_fixtures.h"
@@ -15,8 +16,6 @@
 
 namespace ik {
 namespace {
-
-const char* const kMethods[] = {"lm", "gn", "bfgs", "newton", "gd"};
 
 // The rules every finished summary obeys: no NaN, converged_E exactly when reached.
 void expect_clean(const SolverSummary& s, const std::string& what) {
@@ -50,7 +49,8 @@ TEST(HostileValues, RigSizesPastTheCoordinateCapAreRefusedNamingBoneAndField) {
   rig.bones[1].rest(0, 3) = -1e9;
   EXPECT_EQ(rig_error(rig), "");
   rig.bones[1].length = 1e200;
-  EXPECT_EQ(rig_error(rig), "bone 1 \"lower\": length is 1e+200, more than 1e9 rig units (the largest size the core takes)");
+  EXPECT_EQ(rig_error(rig),
+            "bone 1 \"lower\": length is 1e+200, more than 1e9 rig units (the largest size the core takes)");
   rig.bones[1].length = 1;
   rig.bones[1].rest(2, 3) = 2e9;
   EXPECT_EQ(rig_error(rig),
@@ -115,11 +115,11 @@ TEST(HostileValues, GoalWeightsAreRelative) {
 // and the default tolerances (no time budget): reached, a clean summary.
 void expect_reached(const Goals& goals, const SolverOptions& options, const std::string& what) {
   const double tip_tolerance = std::sqrt(2 * options.error_tolerance);  // the E test of one goal of weight 1
-  for (const char* method : kMethods) {
+  for (const std::string& method : test::kMethods) {
     Kinematics kin(test::two_bones());
     auto solver = make_solver(method, kin, options);
     const SolverSummary& s = solver->solve(Eigen::VectorXd::Constant(6, 10), goals);
-    const std::string label = std::string(method) + ", " + what;
+    const std::string label = method + ", " + what;
     expect_clean(s, label);
     EXPECT_TRUE(s.reached) << label << ": " << stop_reason_name(s.stop_reason) << " " << s.message << " tip "
                            << s.tip_distance;
@@ -153,7 +153,7 @@ TEST(HostileValues, SoftWeightsAtTheirCapNeverCostAReachableGoal) {
 }
 
 TEST(HostileValues, ATargetAtTheCoordinateCapEndsNearTheClosestPoint) {
-  for (const char* method : kMethods) {
+  for (const std::string& method : test::kMethods) {
     Kinematics kin(test::two_bones());
     SolverOptions options;
     options.time_budget_s = 0;

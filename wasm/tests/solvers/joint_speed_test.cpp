@@ -89,7 +89,9 @@ TEST_P(JointSpeed, ABranchChangeTakesSeveralSolvesEachWithinTheBound) {
       worst = std::max(worst, move);
       // The target moved 0.021 in a step: the bound, and that (a transition's later solves measure
       // the target's move from the answer they head to, which was within the tip tolerance of it).
-      if (bound > 0) EXPECT_LE(move, bound + 0.021 + kTipTolerance) << "step " << step;
+      if (bound > 0) {
+        EXPECT_LE(move, bound + 0.021 + kTipTolerance) << "step " << step;
+      }
       EXPECT_EQ(s.reached, s.stop_reason == StopReason::converged_E);
       if (s.stop_reason == StopReason::joint_speed) {
         ++partway;

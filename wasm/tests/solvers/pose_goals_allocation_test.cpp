@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "../allocation_counter.h"
+#include "registered_methods.h"
 #include "solver_fixtures.h"
 #include "solvers/solver_registry.h"
 
@@ -26,9 +27,9 @@ Goals mixed_pose_goals(Kinematics& kin, const Eigen::VectorXd& angles) {
 }
 
 TEST(PoseGoalsAllocation, NothingIsAllocatedWhileStepping) {
-  for (const char* method : {"lm", "gn", "bfgs", "newton", "gd"}) {
+  for (const std::string& method : test::kMethods) {
     for (const test::TestRig& r : test::rigs_like("beast")) {
-      SCOPED_TRACE(std::string(method) + " " + r.label());
+      SCOPED_TRACE(method + " " + r.label());
       Kinematics kin(r.rig);
       SolverOptions options = test::report_options(r);
       options.max_iterations = 40;

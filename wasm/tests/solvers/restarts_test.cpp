@@ -14,7 +14,7 @@ namespace {
 TEST(Restarts, ARunStallsWhenItsBestEFallsByLessThanTenPercentForStallIterations) {
   Restarts r;
   r.begin_solve(3, 1);
-  EXPECT_FALSE(r.stalls(1.0, 3));  // the run's first E is its best
+  EXPECT_FALSE(r.stalls(1.0, 3));   // the run's first E is its best
   EXPECT_FALSE(r.stalls(0.95, 3));  // 5% lower does not count as progress
   EXPECT_FALSE(r.stalls(0.92, 3));
   EXPECT_TRUE(r.stalls(0.91, 3));  // 3 steps since the best

@@ -9,15 +9,15 @@
 #include <cstdio>
 #include <iostream>
 
+#include "../sanitizers.h"
 #include "../small_rigs.h"
 #include "goal_residual.h"
+#include "registered_methods.h"
 #include "solver_fixtures.h"
 #include "solvers/solver_registry.h"
 
 namespace ik {
 namespace {
-
-const char* const kMethods[] = {"lm", "gn", "bfgs", "newton", "gd"};
 
 // Which side of the S-T axis M lies on, relative to P: the cosine between their projections.
 double bend_cosine(const Eigen::Vector3d& S, const Eigen::Vector3d& M, const Eigen::Vector3d& T,
@@ -55,7 +55,8 @@ bool within_limits(const Kinematics& kin, const Eigen::VectorXd& a) {
 }
 
 // start() and step() to the end, checking the limits at every iterate.
-const SolverSummary& stepped_solve(Solver& solver, const Eigen::VectorXd& start, const Goals& goals, bool& limits_held) {
+const SolverSummary& stepped_solve(Solver& solver, const Eigen::VectorXd& start, const Goals& goals,
+                                   bool& limits_held) {
   solver.start(start, goals);
   limits_held = within_limits(solver.kinematics(), solver.angles());
   while (solver.step()) limits_held = limits_held && within_limits(solver.kinematics(), solver.angles());
@@ -84,7 +85,7 @@ TEST(SoftGoals, APoleFlipsTheBendWithoutMovingTheTip) {
   const Eigen::Vector3d S = kin.joint_origin(0), M = kin.joint_origin(1), T = kin.tip(1);
   const Eigen::Vector3d u = (T - S).normalized();
   const Eigen::Vector3d mirrored = (M - S).dot(u) * u - ((M - S) - (M - S).dot(u) * u);  // M reflected in S-T
-  for (const char* method : kMethods) {
+  for (const std::string& method : test::kMethods) {
     for (double out_of_plane : {0.0, 0.3, -0.5, 1.5}) {
       Goals goals = position_goals(T);
       goals.poles.push_back({1, mirrored + Eigen::Vector3d(0, 0, out_of_plane), 1});
@@ -92,9 +93,9 @@ TEST(SoftGoals, APoleFlipsTheBendWithoutMovingTheTip) {
       const SolverSummary& s = solver->solve(start, goals);
       kin.forward(s.angles);
       const double side = bend_cosine(kin.joint_origin(0), kin.joint_origin(1), kin.tip(1), goals.poles[0].point);
-      std::cout << "pole flip " << method << " out of plane " << out_of_plane << ": tip moved " << (kin.tip(1) - T).norm()
-                << ", bend cosine to the pole " << bend_cosine(S, M, T, goals.poles[0].point) << " -> " << side
-                << ", iterations " << s.iterations << "\n";
+      std::cout << "pole flip " << method << " out of plane " << out_of_plane << ": tip moved "
+                << (kin.tip(1) - T).norm() << ", bend cosine to the pole " << bend_cosine(S, M, T, goals.poles[0].point)
+                << " -> " << side << ", iterations " << s.iterations << "\n";
       EXPECT_TRUE(s.reached) << method;
       EXPECT_LT((kin.tip(1) - T).norm(), 1e-4) << method;
       EXPECT_GT(side, 0.99) << method << " " << out_of_plane;
@@ -106,7 +107,7 @@ TEST(SoftGoals, APoleBendsAStraightLimbTowardsIt) {
   Kinematics kin(test::two_bones());
   const Eigen::VectorXd start = Eigen::VectorXd::Zero(kin.num_angles());  // straight along +x
   const Eigen::Vector3d target(1.2, 0.5, 0.3);
-  for (const char* method : kMethods) {
+  for (const std::string& method : test::kMethods) {
     for (const Eigen::Vector3d& pole : {Eigen::Vector3d(0.5, 0, 2), Eigen::Vector3d(0.5, 0, -2),
                                         Eigen::Vector3d(0.5, -2, 0), Eigen::Vector3d(0.5, 2, 0)}) {
       Goals goals = position_goals(target);
@@ -120,7 +121,7 @@ TEST(SoftGoals, APoleBendsAStraightLimbTowardsIt) {
       EXPECT_TRUE(s.reached) << method;
       EXPECT_LT((kin.tip(1) - target).norm(), 1e-4) << method;
       // gd creeps along the swivel (a narrow valley) and stops on target before it is done.
-      EXPECT_GT(side, std::string(method) == "gd" ? 0.5 : 0.99) << method << " pole " << pole.transpose();
+      EXPECT_GT(side, method == "gd" ? 0.5 : 0.99) << method << " pole " << pole.transpose();
     }
   }
 }
@@ -132,7 +133,7 @@ struct Tally {
 };
 
 // Solves `cases` with `method`, the goal poses' poles if `poles`, and `options`.
-Tally solve_all(Kinematics& kin, const char* method, const SolverOptions& options,
+Tally solve_all(Kinematics& kin, const std::string& method, const SolverOptions& options,
                 const std::vector<test::TargetCase>& cases, bool poles, bool& limits_held) {
   auto solver = make_solver(method, kin, options);
   Tally t;
@@ -156,25 +157,28 @@ int max_iterations(const std::string& method) { return method == "gd" || method 
 
 // Every method, every rig, incremental targets: with poles (at the goal poses' bends) and a rest
 // pull, as many solves reach their targets as without, and the limits hold at every iterate.
+// (The first 3 of the 6 targets under the sanitizers.)
 TEST(SoftGoals, EveryMethodStaysOnTargetWithThem) {
-  for (const char* method : kMethods) {
+  for (const std::string& method : test::kMethods) {
     for (const test::TestRig& r : test::test_rigs()) {
-      const std::string name = std::string(method) + " " + r.label();
+      const std::string name = method + " " + r.label();
       Kinematics kin(r.rig);
       SolverOptions plain = test::report_options(r);
       plain.max_iterations = max_iterations(method);
       plain.restarts = 0;
-      if (std::string(method) == "gd") plain.gradient_tolerance *= 1e-3;
+      if (method == "gd") plain.gradient_tolerance *= 1e-3;
       SolverOptions soft = plain;
       soft.rest_weight = 0.02;
       soft.rest_from_start = true;
-      const auto cases = test::incremental_targets(kin, 6, 17);
+      const auto cases = test::incremental_targets(kin, test::sanitized_count(6, 3), 17);
       bool held_plain = false, held_soft = false;
       const Tally without = solve_all(kin, method, plain, cases, false, held_plain);
       const Tally with = solve_all(kin, method, soft, cases, true, held_soft);
-      std::printf("soft goals: %-7s %-18s reached %d of %d without, %d with poles + rest pull (largest tip %.2g vs %.2g)\n",
-                  method, r.label().c_str(), without.reached, without.solves, with.reached, with.solves,
-                  without.largest_tip, with.largest_tip);
+      std::printf(
+          "soft goals: %-7s %-18s reached %d of %d without, %d of %d with poles + rest pull "
+          "(largest tip %.2g vs %.2g)\n",
+          method.c_str(), r.label().c_str(), without.reached, without.solves, with.reached, with.solves,
+          without.largest_tip, with.largest_tip);
       EXPECT_TRUE(held_soft) << name;
       EXPECT_GE(with.reached, without.reached) << name;
     }
@@ -182,19 +186,21 @@ TEST(SoftGoals, EveryMethodStaysOnTargetWithThem) {
 }
 
 // The pole costs no tip accuracy on reachable targets: lm towards the incremental targets with
-// tip_tolerance 1e-4 with and without poles, the tips' largest distance printed.
+// tip_tolerance 1e-4 with and without poles, the tips' largest distance printed. (The first 5
+// of the 10 targets under the sanitizers.)
 TEST(SoftGoals, PolesCostNoTipAccuracyOnReachableTargets) {
   for (const test::TestRig& r : test::test_rigs()) {
     Kinematics kin(r.rig);
     SolverOptions options = test::report_options(r);
     options.tip_tolerance = 1e-4;
-    const auto cases = test::incremental_targets(kin, 10, 23);
+    const auto cases = test::incremental_targets(kin, test::sanitized_count(10, 5), 23);
     bool held = false;
     const Tally without = solve_all(kin, "lm", options, cases, false, held);
     const Tally with = solve_all(kin, "lm", options, cases, true, held);
-    std::printf("pole tip cost: lm %-18s reached %d / %d without, %d / %d with poles; largest tip distance %.3g vs %.3g\n",
-                r.label().c_str(), without.reached, without.solves, with.reached, with.solves, without.largest_tip,
-                with.largest_tip);
+    std::printf(
+        "pole tip cost: lm %-18s reached %d / %d without, %d / %d with poles; largest tip distance %.3g vs %.3g\n",
+        r.label().c_str(), without.reached, without.solves, with.reached, with.solves, without.largest_tip,
+        with.largest_tip);
     EXPECT_GE(with.reached, without.reached) << r.label();
     EXPECT_LT(with.largest_tip, 1e-4) << r.label();
   }
@@ -252,8 +258,9 @@ TEST(SoftGoals, AStiffBoneMovesLess) {
     reached += t.reached;
     stiff_turn += t.angles.head<3>().cwiseAbs().sum();
   }
-  std::cout << "stiffness: bone 0 turns " << soft_turn / cases.size() << " deg (sum of |angles|, mean) with stiffness 1, "
-            << stiff_turn / cases.size() << " with 10; reached " << reached << " of " << 2 * cases.size() << "\n";
+  std::cout << "stiffness: bone 0 turns " << soft_turn / cases.size()
+            << " deg (sum of |angles|, mean) with stiffness 1, " << stiff_turn / cases.size() << " with 10; reached "
+            << reached << " of " << 2 * cases.size() << "\n";
   EXPECT_EQ(reached, 2 * static_cast<int>(cases.size()));
   EXPECT_LT(stiff_turn, 0.8 * soft_turn);
 }
@@ -261,7 +268,7 @@ TEST(SoftGoals, AStiffBoneMovesLess) {
 // restWeight 0 (stiffness given or not, restFromStart either way) leaves plain goals on the
 // original code path: the same iterates, bit for bit.
 TEST(SoftGoals, RestWeightZeroChangesNothing) {
-  for (const char* method : kMethods) {
+  for (const std::string& method : test::kMethods) {
     for (const test::TestRig& r : test::rigs_like("knight")) {
       Kinematics kin(r.rig);
       SolverOptions options = test::report_options(r);

@@ -72,8 +72,9 @@ void expect_stepping_equals_solving(const std::string& method, const test::TestR
     ASSERT_EQ(solved->error_history().size(), b.iterations + 1);
     EXPECT_EQ(solved->error_history()[0], b.initial_E);
     // (A run with goals given up starts again from the start angles: strict_priority_test.)
-    if (b.goals_given_up == 0)
+    if (b.goals_given_up == 0) {
       for (int k = 1; k <= b.iterations; ++k) EXPECT_LT(solved->error_history()[k], solved->error_history()[k - 1]);
+    }
   }
 }
 
@@ -145,8 +146,8 @@ void expect_no_allocation_while_stepping(const std::string& method, const test::
       const long before = test::heap_allocations();
       while (solver->step()) {
       }
-      EXPECT_EQ(test::heap_allocations() - before, 0) << (paper ? "paper mode" : "") << " "
-                                                      << stop_reason_name(solver->summary().stop_reason);
+      EXPECT_EQ(test::heap_allocations() - before, 0)
+          << (paper ? "paper mode" : "") << " " << stop_reason_name(solver->summary().stop_reason);
       EXPECT_GT(solver->summary().iterations, 0);
       // A second start with the same sizes allocates nothing either.
       const long again = test::heap_allocations();

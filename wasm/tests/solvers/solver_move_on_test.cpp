@@ -71,7 +71,8 @@ TEST_P(MoveOn, AStalledRunRestarts) {
   EXPECT_GE(restarts[0], 5);
 }
 
-INSTANTIATE_TEST_SUITE_P(EveryMethod, MoveOn, ::testing::Values("gd", "bfgs", "gn", "newton", "lm"));
+INSTANTIATE_TEST_SUITE_P(EveryMethod, MoveOn, ::testing::ValuesIn(solver_names()),
+                         [](const auto& info) { return info.param; });
 
 }  // namespace
 }  // namespace ik

@@ -87,7 +87,8 @@ TEST_P(StationaryStart, AGradientUnderTheToleranceButNotNearZeroKeepsDescendingW
   EXPECT_LT(going_on->error_history()[1], going_on->summary().initial_E);
 }
 
-INSTANTIATE_TEST_SUITE_P(EveryMethod, StationaryStart, ::testing::Values("gd", "bfgs", "gn", "newton", "lm"));
+INSTANTIATE_TEST_SUITE_P(EveryMethod, StationaryStart, ::testing::ValuesIn(solver_names()),
+                         [](const auto& info) { return info.param; });
 
 }  // namespace
 }  // namespace ik

@@ -7,8 +7,8 @@
 #include <random>
 #include <string>
 
-#include "objective.h"
 #include "../small_rigs.h"
+#include "objective.h"
 #include "solvers/solver_registry.h"
 
 namespace ik {
@@ -58,9 +58,12 @@ void expect_consistent(Kinematics& kin, const SolverSummary& s, const Eigen::Vec
   EXPECT_EQ(s.stop_reason == StopReason::converged_E, s.reached) << stop_reason_name(s.stop_reason);
   // With goals given up the gradient is that of the given-up rows within the held ones' freedom
   // (Priority::reduced_gradient_norm, checked in strict_priority_test).
-  if (s.goals_given_up == 0)
+  if (s.goals_given_up == 0) {
     EXPECT_NEAR(s.gradient_norm, free_gradient_norm(kin, s.angles, target), 1e-9 * (1 + s.gradient_norm));
-  if (s.stop_reason == StopReason::converged_grad) EXPECT_LT(s.gradient_norm, o.gradient_tolerance);
+  }
+  if (s.stop_reason == StopReason::converged_grad) {
+    EXPECT_LT(s.gradient_norm, o.gradient_tolerance);
+  }
 }
 
 class StopReasonConsistency : public ::testing::TestWithParam<std::string> {};
@@ -134,7 +137,8 @@ TEST_P(StopReasonConsistency, MinIterationsPolishesAStartOnTarget) {
   expect_consistent(kin, polished, target, o);
 }
 
-INSTANTIATE_TEST_SUITE_P(EveryMethod, StopReasonConsistency, ::testing::Values("gd", "bfgs", "gn", "newton", "lm"));
+INSTANTIATE_TEST_SUITE_P(EveryMethod, StopReasonConsistency, ::testing::ValuesIn(solver_names()),
+                         [](const auto& info) { return info.param; });
 
 }  // namespace
 }  // namespace ik

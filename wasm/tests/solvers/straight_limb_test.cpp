@@ -256,7 +256,8 @@ TEST_P(StraightLimb, TheEscapeAllocatesNothing) {
   EXPECT_TRUE(solver->summary().reached);
 }
 
-INSTANTIATE_TEST_SUITE_P(EveryMethod, StraightLimb, ::testing::Values("gd", "bfgs", "gn", "newton", "lm"));
+INSTANTIATE_TEST_SUITE_P(EveryMethod, StraightLimb, ::testing::ValuesIn(solver_names()),
+                         [](const auto& info) { return info.param; });
 
 }  // namespace
 }  // namespace ik

@@ -6,9 +6,9 @@
 #include <cmath>
 #include <string>
 
+#include "../small_rigs.h"
 #include "goal_residual.h"
 #include "objective.h"
-#include "../small_rigs.h"
 #include "so3.h"
 #include "solvers/solver_registry.h"
 
@@ -103,8 +103,8 @@ TEST_P(StrictPriority, AnOutOfReachTargetLeavesThePinnedEffectorsOnTarget) {
   auto solver = make_solver(GetParam(), kin, drag_options());
   const SolverSummary& s = solver->solve(rest, target);
   objective(kin, s.angles, target, r);
-  EXPECT_LT(r.segment<3>(3).norm(), kTipTolerance) << "right hand " << s.iterations << " it " << s.escapes << " esc "
-                                                   << s.chain_restarts << " chain";
+  EXPECT_LT(r.segment<3>(3).norm(), kTipTolerance)
+      << "right hand " << s.iterations << " it " << s.escapes << " esc " << s.chain_restarts << " chain";
   EXPECT_LT(r.segment<3>(6).norm(), kTipTolerance) << "head";
   EXPECT_FALSE(s.reached);
   EXPECT_TRUE(s.out_of_reach);
@@ -142,7 +142,8 @@ TEST_P(StrictPriority, ADragPastReachKeepsThePinnedEffectorsAtEveryStep) {
       for (int e : {1, 2})
         EXPECT_LT((kin.tip(kin.rig().effectors[e]) - goals.effectors[e].position_target).norm(), kTipTolerance)
             << "effector " << e << ": " << stop_reason_name(s.stop_reason);
-      EXPECT_EQ(s.reached, (kin.tip(kin.rig().effectors[0]) - goals.effectors[0].position_target).norm() < kTipTolerance);
+      EXPECT_EQ(s.reached,
+                (kin.tip(kin.rig().effectors[0]) - goals.effectors[0].position_target).norm() < kTipTolerance);
       out += s.out_of_reach;
     }
     EXPECT_GT(out, 10);  // the last steps are out of reach
