@@ -80,11 +80,6 @@ StopReason Solver::begin(const Eigen::Ref<const Eigen::VectorXd>& angles, const 
   const bool continues =
       chain_index_ > 0 && angles.size() == summary_.angles.size() && incoming_ == goals_ && angles == summary_.angles;
   if (!continues) chain_index_ = 0;
-  // The last solve's budget cut its run short, and this one starts from its answer towards the
-  // same goals with the same options: the run goes on from where it had got to (go_on()).
-  const bool resumes_cut = cut_run_ && !options_changed_ && angles.size() == summary_.angles.size() &&
-                           incoming_ == goals_ && angles == summary_.angles;
-  cut_run_ = options_changed_ = false;
   opt_ = next_opt_;
   clock_.reset(opt_.time_budget_s);
   summary_.iterations = summary_.function_evaluations = summary_.jacobian_evaluations = summary_.restarts = 0;
@@ -118,7 +113,6 @@ StopReason Solver::begin(const Eigen::Ref<const Eigen::VectorXd>& angles, const 
     summary_.elapsed_s = clock_.spent();
     return summary_.stop_reason;
   }
-  if (resumes_cut && go_on(close)) return summary_.stop_reason;
   // A drag's next frame starts where the last solve ended: how far its targets moved since (-1:
   // not such a frame). Read before the new goals replace the last ones.
   const double target_change =
@@ -217,10 +211,7 @@ StopReason Solver::begin(const Eigen::Ref<const Eigen::VectorXd>& angles, const 
   }
   if (close || !running()) clock_.close();  // otherwise the first step's time runs from this call's start
   summary_.elapsed_s = clock_.spent();
-  if (!running()) {
-    keep_cut_run();
-    conclude();
-  }
+  if (!running()) conclude();
   return summary_.stop_reason;
 }
 
@@ -257,8 +248,6 @@ void Solver::resize_workspace() {
   moved_from_.resize(n_);
   heading_to_.resize(n_);
   partway_.resize(n_);
-  cut_at_.resize(n_);
-  cut_run_ = false;
   heading_ = false;
   nearest_.resize(n_);
   stuck_.resize(n_);
@@ -322,10 +311,7 @@ bool Solver::advance(Clock::time_point begin) {
   }
   summary_.stop_reason = settle(reason);
   summary_.elapsed_s = clock_.spent();
-  if (reason != StopReason::running) {
-    keep_cut_run();
-    conclude();
-  }
+  if (reason != StopReason::running) conclude();
   return reason == StopReason::running;
 }
 

@@ -107,10 +107,7 @@ class Solver {
 
   // Replaces the options. They take effect at the next start(), which checks them; a solve in
   // progress keeps the options it started with.
-  void set_options(const SolverOptions& options) {
-    next_opt_ = options;
-    options_changed_ = true;
-  }
+  void set_options(const SolverOptions& options) { next_opt_ = options; }
 
   // Begins a solve from `angles` (#angles, degrees; projected into the limits) towards `target`
   // (#residuals, rig units). Sizes the workspace if the rig's effectors changed since the last
@@ -319,18 +316,6 @@ class Solver {
   Eigen::VectorXd heading_to_, partway_;
   bool heading_ = false;
   bool resumed_ = false;  // this solve resumed such a move
-  // A solve its budget stopped (timeout, max_iterations) keeps the point its run had got to
-  // (an escape or a restart partway down, perhaps still above the answer it returned); the next
-  // solve from that answer towards the same goals runs on from there (a slow machine's frames,
-  // each too short to finish a run, would otherwise try the same run again every frame).
-  Eigen::VectorXd cut_at_;
-  bool cut_run_ = false;
-  bool options_changed_ = false;  // set_options() since the last start
-  void keep_cut_run();
-  // Goes on with the cut run from cut_at_ (begin() when it resumes one): the method's state, the
-  // soft rows' scale, the goals given up and the restarts tried are the run's. False (nothing
-  // changed but the pose) when E or its gradient is not finite there.
-  bool go_on(bool close);
   // Everything a solve does when it stops, in order: back from a run of the goals as equals
   // (end_together()), the nearest answer a search found (take_nearest()), the out_of_reach flags
   // (finish()), the speed bound (bound_motion()), the summary's rules (keep_contract()).

@@ -41,40 +41,6 @@ bool Solver::seek_nearer(StopReason& reason) {
   return true;
 }
 
-void Solver::keep_cut_run() {
-  cut_run_ = !opt_.paper_mode &&
-             (summary_.stop_reason == StopReason::timeout || summary_.stop_reason == StopReason::max_iterations);
-  if (cut_run_) cut_at_ = a_;  // sized by resize_workspace()
-}
-
-bool Solver::go_on(bool close) {
-  // The answer so far (this call's start) stays the best point until the run finds a better one:
-  // its rank and its given-up goals are measured again (begin() reset the flags), and the
-  // joints' move is measured from it.
-  a_ = summary_.angles;
-  E_ = evaluate(a_, r_);
-  if (!std::isfinite(E_)) return false;
-  best_rank_ = rank();
-  best_given_up_E_ = priority_.given_up_E(goals_, r_);
-  note_given_up(r_);
-  if (bounds_joints()) motion_.note_start(kin_);  // kin_ is posed at the start
-  moved_from_ = summary_.angles;
-  discarded_chain_restarts_ = 0;
-  a_ = cut_at_;
-  E_ = evaluate(a_, r_);
-  // A run its budget cut off target with soft rows on counts as one stopped there (move_on()):
-  // else, a step a frame, it crept towards the point where a pole holds a dragged hand off target.
-  if (std::isfinite(E_) && goals_.soft_on() && !on_target()) lower_soft_terms();
-  if (!std::isfinite(E_) || !update_derivatives(true)) return false;
-  summary_.stop_reason = StopReason::running;
-  summary_.initial_E = summary_.E;
-  summary_.goals_given_up = priority_.count();
-  record();
-  if (close) clock_.close();
-  summary_.elapsed_s = clock_.spent();
-  return true;
-}
-
 void Solver::take_nearest() {
   if (nearer_tries_ == 0 || summary_.stop_reason == StopReason::numerical_failure) return;
   if (summary_.reached) {
