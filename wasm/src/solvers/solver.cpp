@@ -122,12 +122,13 @@ StopReason Solver::begin(const Eigen::Ref<const Eigen::VectorXd>& angles, const 
   // off target, and the soft rows start lowered as move_on() lowers them. Else each frame began
   // with them at full weight, and a pole held a dragged hand 0.12 of the character's height off
   // its target for hundreds of frames, a step a frame.
-  const bool cut_short = target_change >= 0 && (summary_.stop_reason == StopReason::timeout ||
-                                                summary_.stop_reason == StopReason::max_iterations);
+  const bool budget_stopped = target_change >= 0 && (summary_.stop_reason == StopReason::timeout ||
+                                                     summary_.stop_reason == StopReason::max_iterations);
   const double cut_soft_scale = goals_.soft_scale();
   // Workspace: sized here only, so that step() never allocates.
   goals_ = incoming_;
-  if (cut_short && goals_.has_soft() && !opt_.paper_mode) goals_.set_soft_scale(lowered_soft_scale(cut_soft_scale));
+  if (budget_stopped && goals_.has_soft() && !opt_.paper_mode)
+    goals_.set_soft_scale(lowered_soft_scale(cut_soft_scale));
   if (m_ != goals_.rows() || n_ != kin_.num_angles() || effectors_ != kin_.rig().effectors ||
       layout_ != goals_.layout())
     resize_workspace();
@@ -306,7 +307,7 @@ bool Solver::advance(Clock::time_point begin) {
   if (reason == StopReason::running) {
     if (summary_.iterations >= opt_.max_iterations)
       reason = StopReason::max_iterations;
-    else if (summary_.iterations >= opt_.steps_before_budget && clock_.used_up())
+    else if (budget_holds() && clock_.used_up())
       reason = StopReason::timeout;
   }
   summary_.stop_reason = settle(reason);

@@ -188,7 +188,9 @@ class Solver {
   void gave_up_for_time() { cut_short_ = true; }
   // When the time budget runs out (never, without a budget, or before the solve's first
   // opt_.steps_before_budget accepted steps).
-  Deadline deadline() const { return summary_.iterations < opt_.steps_before_budget ? Deadline() : clock_.deadline(); }
+  Deadline deadline() const { return budget_holds() ? clock_.deadline() : Deadline(); }
+  // The solve has taken opt_.steps_before_budget accepted steps: its time budget can stop it.
+  bool budget_holds() const { return summary_.iterations >= opt_.steps_before_budget; }
   // Is the current iterate (E_, r_) on target (the test of converged_E)?
   bool on_target() const;
 
