@@ -169,3 +169,58 @@ describe('a big rig', () => {
     expect(0.5 * ((tip[0] - 5000) ** 2 + (tip[1] - 5000) ** 2 + tip[2] ** 2)).toBeCloseTo(r.E, 6);
   });
 });
+
+describe('results into arrays the caller keeps', () => {
+  it('tips, boneTips, tipRotations and poses write into `out` what they return otherwise, and return `out`', () => {
+    const rig = keep(new IkRig(ik, chain(5, [2, 4])));
+    const a = Float64Array.from({ length: rig.numAngles }, (_, i) => 7 * Math.sin(i));
+    const outputs = [
+      ['tips', 6],
+      ['boneTips', 15],
+      ['tipRotations', 8],
+      ['poses', 80],
+    ] as const;
+    for (const [what, count] of outputs) {
+      const fresh = rig[what](a);
+      expect(fresh.length, what).toBe(count);
+      const out = new Float64Array(count).fill(NaN);
+      expect(rig[what](a, out), what).toBe(out);
+      expect(Array.from(out), what).toEqual(Array.from(fresh));
+      // From a plain array too (checked and copied first).
+      expect(Array.from(rig[what](Array.from(a), new Float64Array(count))), what).toEqual(Array.from(fresh));
+      expect(() => rig[what](a, new Float64Array(count + 1)), what).toThrow(`${what}: out must be a Float64Array of ${count} numbers`);
+      expect(() => rig[what](a, new Float32Array(count) as unknown as Float64Array), what).toThrow('out must be a Float64Array');
+    }
+    const bad = a.slice();
+    bad[3] = Infinity;
+    expect(() => rig.tips(bad, new Float64Array(6))).toThrow('angles[3] is Infinity, not a finite number');
+  });
+
+  it('a rig asked again after the WebAssembly memory grew reads its new buffer', () => {
+    const rig = keep(new IkRig(ik, chain(4, [3])));
+    const a = new Float64Array(rig.numAngles).fill(10);
+    const before = rig.poses(a);
+    const heap = ik.HEAPU8.buffer;
+    const big = keep(new IkRig(ik, chain(16_000, [15_999]))); // grows the memory: the first rig's view is left empty
+    big.poses(new Float64Array(big.numAngles));
+    expect(ik.HEAPU8.buffer).not.toBe(heap);
+    expect(Array.from(rig.poses(a, new Float64Array(before.length)))).toEqual(Array.from(before));
+    expect(Array.from(rig.tips(a))).toEqual(Array.from(rig.tips(Array.from(a))));
+  });
+
+  it("a solver's E history copies into `out` as far as it fits and says its whole length", () => {
+    const rig = keep(new IkRig(ik, chain(6, [5])));
+    const solver = keep(new IkSolver(rig, 'gd', { restarts: 0, maxIterations: 20, timeBudgetSeconds: 0 }));
+    const r = solver.solve(new Float64Array(rig.numAngles), [3, 3, 0]);
+    const history = solver.errorHistory();
+    expect(history.length).toBe(r.iterations + 1);
+    expect(history[0]).toBe(r.initialE);
+    const whole = new Float64Array(history.length + 3).fill(-1);
+    expect(solver.copyErrorHistory(whole)).toBe(history.length);
+    expect(Array.from(whole.subarray(0, history.length))).toEqual(Array.from(history));
+    expect(whole[history.length]).toBe(-1); // nothing written past it
+    const short = new Float64Array(2);
+    expect(solver.copyErrorHistory(short)).toBe(history.length);
+    expect(Array.from(short)).toEqual(Array.from(history.subarray(0, 2)));
+  });
+});

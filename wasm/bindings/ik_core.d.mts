@@ -24,11 +24,14 @@ export interface EmbindRig {
   setEffectors(effectors: Int32Array): boolean;
   lower(): Float64Array;
   upper(): Float64Array;
-  tips(angles: Float64Array): Float64Array | null;
-  boneTips(angles: Float64Array): Float64Array | null;
-  /** 4 per effector: its bone frame's rotation as a unit quaternion x, y, z, w. */
-  tipRotations(angles: Float64Array): Float64Array | null;
-  poses(angles: Float64Array): Float64Array | null;
+  /** #angles | 16 numbers per bone; stale (length 0) after memory growth. */
+  ioView(): Float64Array | null;
+  /**
+   * Poses the rig at the angles in ioView() and writes output `what` (its index in
+   * Rig.forwardOutputs(): tips, boneTips, tipRotations as x, y, z, w per effector, poses) after
+   * them; returns how many numbers it wrote, -1 on failure.
+   */
+  forwardIo(what: number): number;
   jacobian(angles: Float64Array): Float64Array | null;
   finiteDifferenceJacobian(angles: Float64Array, hDeg: number, clamp: boolean): Float64Array | null;
   objective(angles: Float64Array, target: Float64Array): number;
@@ -84,7 +87,10 @@ export interface EmbindSolver {
   start(angles: Float64Array, target: Float64Array): string;
   step(): boolean;
   result(): EmbindSolverResult;
-  errorHistory(): Float64Array;
+  /** Copies E's history (the start, then each iteration) into historyView(); returns its length, -1 on failure. */
+  historyIo(): number;
+  /** The history buffer; ask again when it is shorter than historyIo()'s count (it grew, or memory did). */
+  historyView(): Float64Array;
   angles(): Float64Array;
   /** #angles | #residuals target | the result numbers Solver.ioStats() names (reached as 0/1); stale (length 0) after memory growth. */
   ioView(): Float64Array | null;
@@ -105,7 +111,11 @@ export interface EmbindSolverClass {
 }
 
 export interface IkCoreModule {
-  Rig: { create(spec: RigSpecArrays): EmbindRig | null };
+  Rig: {
+    create(spec: RigSpecArrays): EmbindRig | null;
+    /** The outputs forwardIo() writes, by index. */
+    forwardOutputs(): string[];
+  };
   /** The message of the last failed call, cleared by reading it ("" if none). */
   takeError(): string;
   Solver: EmbindSolverClass;

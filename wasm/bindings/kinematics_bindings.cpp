@@ -78,55 +78,52 @@ Eigen::Map<const Eigen::VectorXd> RigBinding::read_target(const val& target) {
   return Eigen::Map<const Eigen::VectorXd>(target_.data(), target_.size());
 }
 
-val RigBinding::tips(const val& angles) {
+val RigBinding::io_view() {
   return guarded(
       [&] {
-        tips_.resize(kin_.num_residuals());
-        Eigen::Map<Eigen::VectorXd> tips(tips_.data(), tips_.size());
-        kin_.tips(read_angles(angles), tips);
-        return copy_out(tips_.data(), tips_.size());
+        const size_t size = static_cast<size_t>(kin_.num_angles()) + 16 * static_cast<size_t>(kin_.num_bones());
+        if (io_.size() != size) io_.assign(size, 0.0);  // kept otherwise: a view asked anew reads the last output
+        return val(emscripten::typed_memory_view(io_.size(), io_.data()));
       },
       val::null());
 }
 
-val RigBinding::bone_tips(const val& angles) {
+int RigBinding::forward_io(int what) {
   return guarded(
       [&] {
-        kin_.forward(read_angles(angles));
-        std::vector<double>& out = scratch_;
-        out.resize(3 * kin_.num_bones());
-        for (int i = 0; i < kin_.num_bones(); ++i) Eigen::Map<Eigen::Vector3d>(out.data() + 3 * i) = kin_.tip(i);
-        return copy_out(out.data(), out.size());
-      },
-      val::null());
-}
-
-val RigBinding::tip_rotations(const val& angles) {
-  return guarded(
-      [&] {
-        kin_.forward(read_angles(angles));
-        std::vector<double>& out = scratch_;
-        out.resize(4 * kin_.num_effectors());
-        for (int e = 0; e < kin_.num_effectors(); ++e) {
-          const Eigen::Quaterniond q(kin_.tip_rotation(kin_.rig().effectors[e]));
-          Eigen::Map<Eigen::Vector4d>(out.data() + 4 * e) = q.coeffs();  // x, y, z, w
+        const int n = kin_.num_angles();
+        if (io_.size() != static_cast<size_t>(n) + 16 * static_cast<size_t>(kin_.num_bones()))
+          throw RigError("forwardIo before ioView");
+        check_finite(io_.data(), n, "angles");
+        kin_.forward(Eigen::Map<const Eigen::VectorXd>(io_.data(), n));
+        double* out = io_.data() + n;
+        const auto& effectors = kin_.rig().effectors;
+        switch (what) {
+          case kTips:
+            for (size_t e = 0; e < effectors.size(); ++e)
+              Eigen::Map<Eigen::Vector3d>(out + 3 * e) = kin_.tip(effectors[e]);
+            return 3 * kin_.num_effectors();
+          case kBoneTips:
+            for (int i = 0; i < kin_.num_bones(); ++i) Eigen::Map<Eigen::Vector3d>(out + 3 * i) = kin_.tip(i);
+            return 3 * kin_.num_bones();
+          case kTipRotations:
+            for (size_t e = 0; e < effectors.size(); ++e)
+              Eigen::Map<Eigen::Vector4d>(out + 4 * e) = Eigen::Quaterniond(kin_.tip_rotation(effectors[e])).coeffs();
+            return 4 * kin_.num_effectors();
+          case kPoses:
+            for (int i = 0; i < kin_.num_bones(); ++i)
+              Eigen::Map<Eigen::Matrix<double, 4, 4, Eigen::RowMajor>>(out + 16 * i) = kin_.pose(i).matrix();
+            return 16 * kin_.num_bones();
+          default: throw RigError("forwardIo: no output " + std::to_string(what));
         }
-        return copy_out(out.data(), out.size());
       },
-      val::null());
+      -1);
 }
 
-val RigBinding::poses(const val& angles) {
-  return guarded(
-      [&] {
-        kin_.forward(read_angles(angles));
-        std::vector<double>& out = scratch_;
-        out.resize(16 * kin_.num_bones());
-        for (int i = 0; i < kin_.num_bones(); ++i)
-          Eigen::Map<Eigen::Matrix<double, 4, 4, Eigen::RowMajor>>(out.data() + 16 * i) = kin_.pose(i).matrix();
-        return copy_out(out.data(), out.size());
-      },
-      val::null());
+val RigBinding::forward_outputs() {
+  val names = val::array();
+  for (const char* name : {"tips", "boneTips", "tipRotations", "poses"}) names.call<void>("push", std::string(name));
+  return names;
 }
 
 val RigBinding::jacobian(const val& angles) {
@@ -248,10 +245,9 @@ EMSCRIPTEN_BINDINGS(ik_kinematics) {
       .function("setEffectors", &RigBinding::set_effectors)
       .function("lower", &RigBinding::lower)
       .function("upper", &RigBinding::upper)
-      .function("tips", &RigBinding::tips)
-      .function("boneTips", &RigBinding::bone_tips)
-      .function("tipRotations", &RigBinding::tip_rotations)
-      .function("poses", &RigBinding::poses)
+      .function("ioView", &RigBinding::io_view)
+      .function("forwardIo", &RigBinding::forward_io)
+      .class_function("forwardOutputs", &RigBinding::forward_outputs)
       .function("jacobian", &RigBinding::jacobian)
       .function("finiteDifferenceJacobian", &RigBinding::finite_difference_jacobian)
       .function("objective", &RigBinding::objective)

@@ -29,13 +29,23 @@ class RigBinding {
   emscripten::val lower() const;                         // Float64Array(3m), degrees
   emscripten::val upper() const;                         // Float64Array(3m), degrees
 
-  // All take angles as 3m numbers in degrees.
-  emscripten::val tips(const emscripten::val& angles);       // Float64Array(3n)
-  emscripten::val bone_tips(const emscripten::val& angles);  // Float64Array(3m), every bone's tip
-  // Float64Array(4n): each effector bone's frame rotation (Kinematics::tip_rotation) as a unit
-  // quaternion x, y, z, w (the orientation an orientation goal targets).
-  emscripten::val tip_rotations(const emscripten::val& angles);
-  emscripten::val poses(const emscripten::val& angles);     // Float64Array(16m), row-major T_i
+  // Forward kinematics with no JavaScript values crossing (the TS wrapper's tips(), poses() and
+  // their kin). io_view() sizes a buffer of #angles | 16m output numbers and returns a
+  // Float64Array view on it (stale, length 0, after the WebAssembly memory grows: ask again).
+  // JavaScript writes the angles (degrees) there; forward_io(what) poses the rig and writes
+  // output `what` after them, returning how many numbers it wrote, or -1 on failure:
+  //   kTips          3 per effector;
+  //   kBoneTips      3 per bone, every bone's tip;
+  //   kTipRotations  4 per effector: each effector bone's frame rotation (Kinematics::tip_rotation)
+  //                  as a unit quaternion x, y, z, w (what an orientation goal targets);
+  //   kPoses         16 per bone, row-major T_i.
+  // forward_outputs() names them in this order.
+  enum ForwardOutput { kTips, kBoneTips, kTipRotations, kPoses };
+  emscripten::val io_view();
+  int forward_io(int what);
+  static emscripten::val forward_outputs();
+
+  // These take angles as 3m numbers in degrees.
   emscripten::val jacobian(const emscripten::val& angles);  // Float64Array(3n*3m), row-major, per degree
   emscripten::val finite_difference_jacobian(const emscripten::val& angles, double h_deg, bool clamp);
   double objective(const emscripten::val& angles, const emscripten::val& target);          // E, NaN on failure
@@ -61,6 +71,7 @@ class RigBinding {
 
   Kinematics kin_;
   std::vector<double> angles_, target_, tips_, jac_, scratch_;  // sized on use
+  std::vector<double> io_;                                      // forward_io(): angles | output
 };
 
 }  // namespace ik::js

@@ -145,11 +145,28 @@ class SolverBinding {
     return r;
   }
 
-  // E at the start and after each iteration so far (Float64Array copy).
-  val error_history() const {
-    const auto h = solver_->error_history();
-    return copy_out(h.data(), h.size());
+  // E at the start and after each iteration so far, with no JavaScript values crossing:
+  // history_io() copies it into a buffer kept across calls (it only grows) and returns how many
+  // numbers that is, or -1 on failure; history_view() is a Float64Array view of the whole buffer,
+  // to ask for again whenever it is shorter than history_io()'s count (the buffer grew, or the
+  // WebAssembly memory did and left the old view empty).
+  int history_io() {
+    return guarded(
+        [&] {
+          const auto h = solver_->error_history();
+          const size_t n = static_cast<size_t>(h.size());
+          // Grown at once to what a solve with these options keeps, so that a stream of solves
+          // (a frame's) asks for a new view once, not at each longer history.
+          const SolverOptions& o = solver_->options();
+          const size_t most = static_cast<size_t>(std::min(o.max_iterations, o.history_capacity - 1)) + 1;
+          if (history_.size() < n) history_.resize(std::max(n, most));
+          std::copy(h.data(), h.data() + n, history_.begin());
+          return static_cast<int>(n);
+        },
+        -1);
   }
+
+  val history_view() { return val(emscripten::typed_memory_view(history_.size(), history_.data())); }
 
   // The current iterate (Float64Array copy, degrees).
   val angles() const { return copy_out(solver_->angles().data(), solver_->angles().size()); }
@@ -311,7 +328,8 @@ class SolverBinding {
   RigBinding& rig_;
   std::unique_ptr<Solver> solver_;
   std::vector<double> angles_, target_;
-  std::vector<double> io_;  // solve_io(): angles | target | result numbers
+  std::vector<double> io_;       // solve_io(): angles | target | result numbers
+  std::vector<double> history_;  // history_io()
   GoalInput goal_input_;
   std::vector<double> goal_numbers_, pole_numbers_, stiffness_numbers_;  // set_goals()' copies
   bool has_goals_ = false;
@@ -358,7 +376,8 @@ EMSCRIPTEN_BINDINGS(ik_solvers) {
       .function("start", &SolverBinding::start)
       .function("step", &SolverBinding::step)
       .function("result", &SolverBinding::result)
-      .function("errorHistory", &SolverBinding::error_history)
+      .function("historyIo", &SolverBinding::history_io)
+      .function("historyView", &SolverBinding::history_view)
       .function("angles", &SolverBinding::angles)
       .function("ioView", &SolverBinding::io_view)
       .function("solveIo", &SolverBinding::solve_io)

@@ -5,13 +5,26 @@
 // Every method checks and copies its inputs first (inputs.ts) and throws an Error naming the
 // problem; the core reports its own refusals through takeError() (see wasm/bindings/js_arrays.h).
 import type { EmbindRig, IkCoreModule, RigSpecArrays } from './generated/ik_core.mjs';
-import { checkedInteger, coreError, toFloat64, toInt32 } from './inputs.js';
+import { SIZE_LIMITS } from './generated/size_limits.js';
+import { checkedInteger, checkedNumbers, coreError, toFloat64, toInt32 } from './inputs.js';
 import type { RigSpec } from './rig_arrays.js';
 
 export type Numbers = ArrayLike<number>;
 
-/** Largest restart index (wasm/src/size_limits.h kMaxRestartIndex: a solve's restarts are an int). */
-const MAX_RESTART_INDEX = 2 ** 31 - 1;
+/** What the rig's forwardIo() writes (Rig.forwardOutputs()). */
+type ForwardOutput = 'tips' | 'boneTips' | 'tipRotations' | 'poses';
+const outputsCache = new WeakMap<IkCoreModule, Record<ForwardOutput, number>>();
+
+/** forwardIo()'s index of each output, read once per module. */
+function forwardOutputs(module: IkCoreModule): Record<ForwardOutput, number> {
+  let index = outputsCache.get(module);
+  if (!index) {
+    index = Object.fromEntries(module.Rig.forwardOutputs().map((name, k) => [name, k])) as Record<ForwardOutput, number>;
+    outputsCache.set(module, index);
+  }
+  return index;
+}
+
 
 /** The spec as the core takes it: typed arrays of the lengths its parents imply, string names. */
 function specArrays(spec: RigSpec): RigSpecArrays {
@@ -49,6 +62,8 @@ export class IkRig {
   readonly lower: Float64Array;
   readonly upper: Float64Array;
   private disposed = false;
+  /** forward()'s buffer in WebAssembly memory: angles | an output. */
+  private io: Float64Array<ArrayBufferLike> = new Float64Array(0);
   /** Counts setEffectors() calls that changed the list: solvers hand their goals again after one. */
   effectorsVersion = 0;
 
@@ -88,35 +103,30 @@ export class IkRig {
     this.effectorsVersion++;
   }
 
-  /** End-effector tips (3 per effector) at `angles`. */
-  tips(angles: Numbers): Float64Array {
-    this.live();
-    const a = this.angles(angles);
-    return this.checked(this.live().tips(a), 'tips');
+  /**
+   * End-effector tips (3 per effector) at `angles`. `out` (optional, a Float64Array of 3 per
+   * effector) receives them and is returned: no new array per call. So for the others below.
+   */
+  tips(angles: Numbers, out?: Float64Array): Float64Array {
+    return this.forward('tips', angles, 3 * this.numEffectors, out);
   }
 
   /** Every bone's tip (3 per bone) at `angles`. */
-  boneTips(angles: Numbers): Float64Array {
-    this.live();
-    const a = this.angles(angles);
-    return this.checked(this.live().boneTips(a), 'boneTips');
+  boneTips(angles: Numbers, out?: Float64Array): Float64Array {
+    return this.forward('boneTips', angles, 3 * this.numBones, out);
   }
 
   /**
    * Each end effector's bone-frame rotation at `angles` as a unit quaternion [x, y, z, w], 4 per
    * effector in effector order: what an orientation goal (goals.ts) compares with.
    */
-  tipRotations(angles: Numbers): Float64Array {
-    this.live();
-    const a = this.angles(angles);
-    return this.checked(this.live().tipRotations(a), 'tipRotations');
+  tipRotations(angles: Numbers, out?: Float64Array): Float64Array {
+    return this.forward('tipRotations', angles, 4 * this.numEffectors, out);
   }
 
   /** Every bone's pose transform T_i (16 per bone, row-major, rest space -> posed world). */
-  poses(angles: Numbers): Float64Array {
-    this.live();
-    const a = this.angles(angles);
-    return this.checked(this.live().poses(a), 'poses');
+  poses(angles: Numbers, out?: Float64Array): Float64Array {
+    return this.forward('poses', angles, 16 * this.numBones, out);
   }
 
   /** Analytic Jacobian d tips / d angles, row-major (3n rows x 3m columns), rig units per degree. */
@@ -165,7 +175,7 @@ export class IkRig {
    */
   restartStart(k: number, seed = 1): Float64Array {
     this.live();
-    checkedInteger(k, 'restartStart: the restart index k', 1, MAX_RESTART_INDEX);
+    checkedInteger(k, 'restartStart: the restart index k', 1, SIZE_LIMITS.kMaxRestartIndex);
     checkedInteger(seed, 'restartStart: the seed', 0, 2 ** 32 - 1);
     return this.checked(this.live().restartStart(k, seed), 'restartStart');
   }
@@ -180,6 +190,36 @@ export class IkRig {
     if (this.disposed) return;
     this.disposed = true;
     this.handle.delete();
+  }
+
+  /**
+   * Output `what` (`count` numbers) of the rig posed at `angles` (3 finite numbers per bone,
+   * degrees), written into `out` when given, else into a new array. The numbers cross in the
+   * rig's shared buffer (ioView / forwardIo): no JavaScript value crosses and, with `out`, nothing
+   * is allocated.
+   */
+  private forward(what: ForwardOutput, angles: Numbers, count: number, out?: Float64Array): Float64Array {
+    this.live();
+    if (out !== undefined && !(out instanceof Float64Array && out.length === count))
+      throw new Error(`${what}: out must be a Float64Array of ${count} numbers`);
+    const n = this.numAngles;
+    const a = checkedNumbers(angles, 'angles', n); // a getter or Proxy read here may dispose the rig: asked again below
+    this.buffer().set(a);
+    const written = this.live().forwardIo(forwardOutputs(this.module)[what]);
+    if (written < 0) throw coreError(this.module, what);
+    if (written !== count) throw new Error(`${what}: the end effectors changed while the angles were being read`);
+    const io = this.buffer(); // asked anew if the memory grew
+    const result = out ?? new Float64Array(count);
+    for (let i = 0; i < count; i++) result[i] = io[n + i];
+    return result;
+  }
+
+  /** The rig's shared buffer (#angles | 16 per bone), asked anew when the memory grew. */
+  private buffer(): Float64Array<ArrayBufferLike> {
+    if (this.io.length > 0) return this.io;
+    const view = this.live().ioView();
+    if (!view) throw coreError(this.module, 'the rig buffer');
+    return (this.io = view);
   }
 
   /** `angles` checked (3 finite numbers per bone, degrees) and copied. */

@@ -203,6 +203,12 @@ function keepCopy(to: Float64Array, from: Float64Array): Float64Array {
   return to;
 }
 
+/** The first `n` numbers of `from` written into `out` (no view made: called every frame); returns `out`. */
+function copyInto(out: Float64Array, from: Float64Array<ArrayBufferLike>, n: number): Float64Array {
+  for (let i = 0; i < n; i++) out[i] = from[i];
+  return out;
+}
+
 function toResult(r: EmbindSolverResult): SolverResult {
   return { ...r, stopReason: r.stopReason as StopReason };
 }
@@ -246,6 +252,8 @@ export class IkSolver {
   private disposed = false;
   /** solve()'s buffer in WebAssembly memory: angles | target | the result numbers (ModuleFacts.io). */
   private io: Float64Array<ArrayBufferLike> = new Float64Array(0);
+  /** errorHistory()'s buffer in WebAssembly memory (at least the history's length after readHistory()). */
+  private history: Float64Array<ArrayBufferLike> = new Float64Array(0);
   /** Copies of the goals last handed to the core (undefined: plain targets), to skip handing them again. */
   private goals?: { packed: Float64Array; poles: Float64Array; stiffness: Float64Array; lengthScale: number; effectors: number };
 
@@ -372,7 +380,7 @@ export class IkSolver {
     const at = facts.io, s = n + m;
     const stopReason = facts.stopReasons[code] as StopReason;
     return {
-      angles: out ? (out.set(io.subarray(0, n)), out) : io.slice(0, n),
+      angles: out ? copyInto(out, io, n) : io.slice(0, n),
       E: io[s + at.E],
       initialE: io[s + at.initialE],
       gradNorm: io[s + at.gradNorm],
@@ -400,7 +408,20 @@ export class IkSolver {
 
   /** E at the start and after each iteration so far (a fresh array). */
   errorHistory(): Float64Array {
-    return this.live().errorHistory();
+    const n = this.readHistory();
+    return this.history.slice(0, n);
+  }
+
+  /**
+   * errorHistory() written into `out` (as much of it as fits, from the start) with no new array;
+   * returns the history's whole length, so a caller whose `out` is too short can grow it and ask
+   * again.
+   */
+  copyErrorHistory(out: Float64Array): number {
+    const n = this.readHistory();
+    const h = this.history;
+    for (let i = 0, m = Math.min(n, out.length); i < m; i++) out[i] = h[i];
+    return n;
   }
 
   /** The current iterate, degrees (a fresh array). With restarts it can differ from result().angles. */
@@ -453,6 +474,15 @@ export class IkSolver {
       lengthScale: goals.lengthScale,
       effectors,
     };
+  }
+
+  /** Has the core copy E's history into its buffer (this.history, asked anew when short); returns its length. */
+  private readHistory(): number {
+    const handle = this.live();
+    const n = handle.historyIo();
+    if (n < 0) throw coreError(this.rig.module, 'errorHistory');
+    if (this.history.length < n) this.history = handle.historyView();
+    return n;
   }
 
   /** The solve buffer for n angles, m target numbers and `stats` result numbers (asked anew when stale or resized). */

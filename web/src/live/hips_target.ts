@@ -28,6 +28,8 @@ import type { SolveSettings } from './method_solver.js';
  * spine bent 44 degrees again.
  */
 const TRUNK_PULL = 1;
+/** A drag of a hand, a foot or nothing carries no other effector. */
+const NO_RIDERS: readonly number[] = [];
 const TRUNK_ROLES = ['hips', 'spine', 'chest', 'upperChest', 'neck', 'head'] as const;
 
 export class HipsTarget {
@@ -43,6 +45,8 @@ export class HipsTarget {
   readonly hips: number;
   private readonly head: number;
   private readonly hands: number[];
+  /** What a hips drag carries: the head and the hands. */
+  private readonly hipsRiders: number[];
   private readonly knees: number[];
   private readonly feet: number[];
   private readonly trunk: number[];
@@ -57,6 +61,7 @@ export class HipsTarget {
     this.hips = b.hips!;
     this.head = b.head ?? -1;
     this.hands = [b.leftHand ?? -1, b.rightHand ?? -1];
+    this.hipsRiders = [this.head, ...this.hands];
     this.knees = [b.leftLowerLeg ?? -1, b.rightLowerLeg ?? -1];
     this.feet = [b.leftFoot ?? -1, b.rightFoot ?? -1];
     this.trunk = TRUNK_ROLES.map((r) => b[r]).filter((bone): bone is number => bone !== undefined);
@@ -74,13 +79,18 @@ export class HipsTarget {
     const dragged = selected === null || !dragging ? -1 : effectors[selected];
     this.carrying = dragged === this.hips || dragged === this.head;
     goals.setPosition(k, dragged !== this.head);
-    const riders = dragged === this.hips ? [this.head, ...this.hands] : dragged === this.head ? this.hands : [];
+    const riders = dragged === this.hips ? this.hipsRiders : dragged === this.head ? this.hands : NO_RIDERS;
+    // The freed effectors no longer carried get their goals back; the others stay freed (in place: this runs every frame).
+    let kept = 0;
     for (const bone of this.freed) {
-      if (riders.includes(bone)) continue;
+      if (riders.includes(bone)) {
+        this.freed[kept++] = bone;
+        continue;
+      }
       const j = effectors.indexOf(bone);
       if (j >= 0) goals.setPosition(j, true);
     }
-    this.freed = this.freed.filter((bone) => riders.includes(bone));
+    this.freed.length = kept;
     for (const bone of riders) {
       const j = effectors.indexOf(bone);
       if (j < 0 || goals.position[j] === 0) continue;
@@ -160,12 +170,14 @@ export class HipsTarget {
    * move onto their tips `tips` (3 per effector, rig units, the pose just solved).
    */
   afterSolve(session: IkSession, tips: Float64Array): void {
-    const effectors = session.effectors(), t = session.targets;
-    const follow = (bone: number): void => {
-      const k = effectors.indexOf(bone);
-      if (k >= 0 && session.goals.position[k] === 0) t.set(tips.subarray(3 * k, 3 * k + 3), 3 * k);
-    };
-    follow(this.hips);
-    for (const bone of this.freed) follow(bone);
+    follow(session, tips, this.hips);
+    for (const bone of this.freed) follow(session, tips, bone);
   }
+}
+
+/** The target of effector bone `bone`, when its position goal is off, moved onto its tip in `tips`. */
+function follow(session: IkSession, tips: Float64Array, bone: number): void {
+  const k = session.effectors().indexOf(bone), t = session.targets;
+  if (k < 0 || session.goals.position[k] !== 0) return;
+  for (let i = 3 * k; i < 3 * k + 3; i++) t[i] = tips[i];
 }

@@ -97,6 +97,11 @@ export class MethodSolver {
     return this.solver.errorHistory();
   }
 
+  /** history() written into `out` as far as it fits (no new array); returns its whole length. */
+  copyHistory(out: Float64Array): number {
+    return this.solver.copyErrorHistory(out);
+  }
+
   dispose(): void {
     this.solver.dispose();
   }

@@ -65,14 +65,17 @@ export class IkSession {
     return this.rig.project(new Float64Array(this.rig.numAngles));
   }
 
-  /** Current end-effector tips, 3 per effector (a new array). */
-  tips(): Float64Array {
-    return this.rig.tips(this.angles);
+  /** Current end-effector tips, 3 per effector: written into `out` when given (3 per effector), else a new array. */
+  tips(out?: Float64Array): Float64Array {
+    return this.rig.tips(this.angles, out);
   }
 
-  /** Every bone's pose transform (16 row-major numbers per bone) at the current pose (a new array). */
-  poses(): Float64Array {
-    return this.rig.poses(this.angles);
+  /**
+   * Every bone's pose transform (16 row-major numbers per bone) at the current pose: written into
+   * `out` when given (16 per bone), else a new array.
+   */
+  poses(out?: Float64Array): Float64Array {
+    return this.rig.poses(this.angles, out);
   }
 
   /** Each end effector's bone-frame rotation at the current pose: 4 per effector [x, y, z, w], rig coordinates (a new array). */
@@ -209,6 +212,14 @@ export class IkSession {
   /** E before the first iteration and after each one of `method`'s last solve or step (a new array); null before its first. */
   history(method: string): Float64Array | null {
     return this.solvers.get(method)?.history() ?? null;
+  }
+
+  /**
+   * history(method) written into `out` as far as it fits (no new array); returns its whole length,
+   * or -1 before `method`'s first solve.
+   */
+  copyHistory(method: string, out: Float64Array): number {
+    return this.solvers.get(method)?.copyHistory(out) ?? -1;
   }
 
   /** Iterations of `method`'s last solve or step-mode solve (0 before its first). */

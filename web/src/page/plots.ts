@@ -32,7 +32,7 @@ export class ConvergencePlot {
   private readonly chart: HTMLElement;
   /** What the plot cannot show: nothing solved yet (the chart hidden), or every history E = 0 throughout. */
   private readonly note: HTMLElement;
-  private readonly histories = new Map<string, Float64Array>();
+  private readonly histories = new Map<string, { values: Float64Array; length: number }>();
   private readonly resizeObserver: ResizeObserver;
   private readonly visibility: IntersectionObserver;
   private visible = false;
@@ -134,9 +134,17 @@ export class ConvergencePlot {
     return plot;
   }
 
-  /** Shows `history` (E before iteration 1, then after each) as `method`'s last solve. */
-  record(method: string, history: Float64Array): void {
-    this.histories.set(method, history);
+  /**
+   * Shows `history` (E before iteration 1, then after each; its first `length` numbers) as
+   * `method`'s last solve. The plot reads it when it draws: a caller that reuses the array (the
+   * per-frame solve's report) records it again after rewriting it.
+   */
+  record(method: string, history: Float64Array, length = history.length): void {
+    const shown = this.histories.get(method);
+    if (shown) {
+      shown.values = history;
+      shown.length = length;
+    } else this.histories.set(method, { values: history, length });
     this.changed();
   }
 
@@ -147,7 +155,8 @@ export class ConvergencePlot {
 
   /** Histories shown now (for the compare table and tests). */
   history(method: string): Float64Array | undefined {
-    return this.histories.get(method);
+    const h = this.histories.get(method);
+    return h?.values.slice(0, h.length);
   }
 
   dispose(): void {
@@ -204,7 +213,7 @@ export class ConvergencePlot {
     const xs = plotIndices(n, this.logIterations, ends);
     const ys = this.methods.names.map((m) => {
       const h = this.histories.get(m);
-      return xs.map((i) => (h && i < h.length && h[i] > 0 && Number.isFinite(h[i]) ? h[i] : null));
+      return xs.map((i) => (h && i < h.length && h.values[i] > 0 && Number.isFinite(h.values[i]) ? h.values[i] : null));
     });
     return [xs, ...ys];
   }

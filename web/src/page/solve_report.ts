@@ -29,6 +29,8 @@ export class SolveReport {
   readonly plot: ConvergencePlot;
   /** The slowest per-frame solve since the rig loaded, or null. */
   slowest: SlowestSolve | null = null;
+  /** Each method's last E history for the plot (its start; the plot is told the length). */
+  private readonly histories = new Map<string, Float64Array>();
   /** The stats of the last solve (one record, rewritten by each). */
   private readonly values: StatsValues = {
     method: '', iterations: 0, E: 0, gradNorm: 0, reached: false, tipDistance: 0, orientationErrorDeg: NaN, pixelsPerUnit: NaN, stopReason: '', outOfReach: false, orientationOutOfReach: false, paperMode: false, ms: 0, pinnedDrift: 0,
@@ -46,8 +48,16 @@ export class SolveReport {
    */
   private plotLastSolve(): void {
     const method = this.settings.method, session = this.controller.live?.session;
-    const history = session && session.lastIterations(method) > 0 ? session.history(method) : null;
-    if (history) this.plot.record(method, history);
+    if (!session || session.lastIterations(method) === 0) return;
+    // Copied into a buffer kept per method (grown when short): no new array per frame.
+    let buffer = this.histories.get(method) ?? new Float64Array(64);
+    let n = session.copyHistory(method, buffer);
+    if (n > buffer.length) {
+      buffer = new Float64Array(Math.max(n, 2 * buffer.length));
+      n = session.copyHistory(method, buffer);
+    }
+    this.histories.set(method, buffer);
+    this.plot.record(method, buffer, n);
   }
 
   /** A per-frame solve: its outcome, main-thread ms and the tips at the new pose (3 per effector). */

@@ -60,7 +60,8 @@ export interface FrameSettings {
 export interface LiveEvents {
   /**
    * After each per-frame solve: its outcome (the same object's fields may be rewritten by the next
-   * solve), its main-thread milliseconds and the tips at the new pose (3 numbers per end effector).
+   * solve), its main-thread milliseconds and the tips at the new pose (3 numbers per end effector,
+   * in an array the next frame rewrites: copy what you keep).
    */
   solved?(outcome: SolveOutcome, ms: number, tips: Float64Array): void;
   /** A solve threw: `message` says why. No solve follows until something changes. */
@@ -105,6 +106,8 @@ export class LiveController {
   private polesOn = false;
   /** The limbs' joints (elbow, knee) at the last redraw, 3 per pole, rig units: where the pole lines start. */
   private poleJoints = new Float64Array(0);
+  /** The tips after a frame's solve, 3 per effector (rewritten every frame; resized when the effectors change). */
+  private tips = new Float64Array(0);
 
   /** Makes a stage in `container`; `settings` are read every frame (and may be edited in place). */
   constructor(container: HTMLElement, readonly settings: FrameSettings, private readonly events: LiveEvents) {
@@ -369,7 +372,7 @@ export class LiveController {
       this.stage.invalidate();
       live.redraw();
       const s = live.session;
-      this.handles.sync(s.targets, tips ?? s.tips(), s.goals.orientation, s.goals.rotations);
+      this.handles.sync(s.targets, tips ?? s.tips(this.tipsBuffer(s)), s.goals.orientation, s.goals.rotations);
       if (this.handles.poles.count > 0) this.syncPoles(live);
       this.events.redrawn?.();
     }
@@ -390,7 +393,17 @@ export class LiveController {
     this.pinnedDrag = targetDrag;
   }
 
-  /** One per-frame solve; returns the tips at the new pose, or null when nothing was solved. */
+  /** The frame's tips buffer, sized for `session`'s effectors. */
+  private tipsBuffer(session: IkSession): Float64Array {
+    const n = 3 * session.effectors().length;
+    if (this.tips.length !== n) this.tips = new Float64Array(n);
+    return this.tips;
+  }
+
+  /**
+   * One per-frame solve; returns the tips at the new pose (the controller's buffer, rewritten
+   * next frame), or null when nothing was solved.
+   */
   private solve(session: IkSession): Float64Array | null {
     if (session.effectors().length === 0) {
       this.needsSolve = false;
@@ -431,7 +444,7 @@ export class LiveController {
       return null;
     }
     this.needsSolve = this.timing.again;
-    const tips = session.tips();
+    const tips = session.tips(this.tipsBuffer(session));
     hips?.afterSolve(session, tips);
     this.events.solved?.(outcome, this.timing.ms, tips);
     return tips;

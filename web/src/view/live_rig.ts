@@ -58,6 +58,8 @@ export class LiveRig {
   readonly hipsTarget: HipsTarget | null;
   /** The solver option rootUnit for this rig (floating_hips.ts), 1 when it does not float. */
   readonly rootUnit: number;
+  /** redraw()'s poses, 16 per bone (rewritten by each). */
+  private poses = new Float64Array(0);
 
   private constructor(
     readonly source: RigSource,
@@ -147,7 +149,8 @@ export class LiveRig {
   /** Poses the view (bones, mesh, limits) from the session's current angles. */
   redraw(): void {
     const s = this.session;
-    this.view.update(s.poses(), s.effectors(), this.selectedBone);
+    if (this.poses.length !== 16 * s.rig.numBones) this.poses = new Float64Array(16 * s.rig.numBones);
+    this.view.update(s.poses(this.poses), s.effectors(), this.selectedBone);
     this.limits.select(this.selectedBone);
     this.limits.update(this.view, s.angles);
   }
