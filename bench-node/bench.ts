@@ -28,10 +28,10 @@ export interface PreparedRig extends BenchRig {
   /** Rig units (rigSize). */
   size: number;
   /** The report's tolerances (random, incremental): gradient, and E (the success test). */
-  gtol: number;
-  ftol: number;
-  /** Drag and reach: the gradient tolerance, and the tip tolerance of the success test (0: E < ftol). */
-  drag: { gtol: number; tipTolerance: number; maxJointMove: number };
+  gradientTolerance: number;
+  errorTolerance: number;
+  /** Drag and reach: the gradient tolerance, and the tip tolerance of the success test (0: E < errorTolerance). */
+  drag: { gradientTolerance: number; tipTolerance: number; maxJointMove: number };
   /** Samples in the whole reach set. */
   reachSteps: number;
   /** Samples in the whole gestures set: 0 for a rig without a recognised humanoid (no gestures). */
@@ -46,7 +46,7 @@ const MAX_TARGET_NUMBERS = 2 ** 26;
 /**
  * Loads every rig and checks it in the WebAssembly core; fills in tolerances. Drag and reach use
  * the page's drag tolerances (dragTolerances); --gradient-tolerance replaces their gradient tolerance, and
- * --error-tolerance their tip test by E < ftol. Any error is a BenchError naming the --rig entry.
+ * --error-tolerance their tip test by E < errorTolerance. Any error is a BenchError naming the --rig entry.
  */
 export async function prepareRigs(opts: BenchOptions, ik: IkCoreModule): Promise<PreparedRig[]> {
   const out: PreparedRig[] = [];
@@ -102,9 +102,9 @@ async function prepareRig(entry: string, opts: BenchOptions, ik: IkCoreModule): 
   const prepared: PreparedRig = {
     ...rig,
     size,
-    gtol: opts.gtol ?? defaults.gtol,
-    ftol: opts.ftol ?? defaults.ftol,
-    drag: { gtol: opts.gtol ?? drag.gradientTolerance, tipTolerance: opts.ftol === undefined ? drag.tipTolerance : 0, maxJointMove: drag.maxJointMove },
+    gradientTolerance: opts.gradientTolerance ?? defaults.gradientTolerance,
+    errorTolerance: opts.errorTolerance ?? defaults.errorTolerance,
+    drag: { gradientTolerance: opts.gradientTolerance ?? drag.gradientTolerance, tipTolerance: opts.errorTolerance === undefined ? drag.tipTolerance : 0, maxJointMove: drag.maxJointMove },
     reachSteps,
     gestureSteps: gestures,
     limbs: flipLimbs(rig.spec, rig.humanoid),
@@ -169,12 +169,12 @@ export function totalSolves(opts: BenchOptions, rigs: readonly PreparedRig[]): n
  * and joint speed, the page's goals, and no restarts: a restart jumps the whole pose).
  */
 export function runSettings(rig: PreparedRig, experiment: Experiment, method: string, opts: BenchOptions): RunSettings {
-  const common = { method, ftol: rig.ftol, timeoutSeconds: opts.timeoutSeconds, paper: opts.paper, rigSize: rig.size };
+  const common = { method, errorTolerance: rig.errorTolerance, timeBudgetSeconds: opts.timeBudgetSeconds, paper: opts.paper, rigSize: rig.size };
   const restarts = opts.restarts === undefined ? {} : { restarts: opts.restarts };
-  if (experiment === 'tracik') return { ...common, ...tracikSettings(opts.gtol), ...restarts };
+  if (experiment === 'tracik') return { ...common, ...tracikSettings(opts.gradientTolerance), ...restarts };
   if (isDragging(experiment)) return { ...common, ...rig.drag, restarts: 0, pageGoals: true, pinFrames: rig.humanoid !== null };
   const pose = opts.goals === 'pose' ? { goals: opts.goals, orientationToleranceDeg: ORIENTATION_TOLERANCE_DEG } : {};
-  return { ...common, gtol: rig.gtol, tipTolerance: 0, ...restarts, ...pose };
+  return { ...common, gradientTolerance: rig.gradientTolerance, tipTolerance: 0, ...restarts, ...pose };
 }
 
 export interface RunContext {

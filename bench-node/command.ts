@@ -35,7 +35,7 @@ const processIo: CommandIo = {
 
 const notes = [
   'Columns as in the report: t_avg (s), iter_avg, E_avg, E_IQM (mean of the middle half of the sorted final E), ' +
-    'max E; plus success (final E < ftol), median, 95th percentile and max time per solve, and the stop reasons. ' +
+    'max E; plus success (final E < error tolerance), median, 95th percentile and max time per solve, and the stop reasons. ' +
     'Drag, reach and gestures: success means every tip within the tip tolerance of its target, over the reachable steps; ' +
     'unreachable steps (reach, gestures) are counted apart, wobble_unreach is the pinned effectors\' wobble after them; ' +
     'jumps counts steps where a joint moved more than 5% of the rig size while the dragged target moved less than 1%; ' +
@@ -128,7 +128,7 @@ async function main(argv: string[], io: CommandIo): Promise<number> {
     cores: availableParallelism(),
     workers: opts.workers,
     seed: opts.seed,
-    timeoutSeconds: opts.timeoutSeconds,
+    timeBudgetSeconds: opts.timeBudgetSeconds,
     paper: opts.paper,
     goals: opts.goals,
     humanoidLimits: opts.humanoidLimits,
@@ -139,9 +139,9 @@ async function main(argv: string[], io: CommandIo): Promise<number> {
       bones: r.spec.parents.length,
       effectors: r.spec.effectors.length,
       size: r.size,
-      gtol: r.gtol,
-      ftol: r.ftol,
-      dragGtol: r.drag.gtol,
+      gradientTolerance: r.gradientTolerance,
+      errorTolerance: r.errorTolerance,
+      dragGradientTolerance: r.drag.gradientTolerance,
       tipTolerance: r.drag.tipTolerance,
     })),
   };

@@ -29,7 +29,7 @@ export function pinnedDeviation(tips: ArrayLike<number>, target: ArrayLike<numbe
 /** What "on target" means in a run. */
 export interface OnTargetTest {
   /** E threshold, rig units^2: the test when tipTolerance is 0. */
-  ftol: number;
+  errorTolerance: number;
   /** Rig units; > 0: every tip within this distance of its target (the solvers' tipTolerance). */
   tipTolerance: number;
   /** Degrees; set (--goals pose): also every effector's orientation within this angle of its target. */
@@ -42,7 +42,7 @@ export interface OnTargetTest {
  * tolerance) is on target.
  */
 export function isOnTarget(test: OnTargetTest, E: number, tip: number, rotationDeg = NaN): boolean {
-  const position = test.tipTolerance > 0 ? tip < test.tipTolerance : E < test.ftol;
+  const position = test.tipTolerance > 0 ? tip < test.tipTolerance : E < test.errorTolerance;
   return test.orientationToleranceDeg === undefined ? position : position && rotationDeg < test.orientationToleranceDeg;
 }
 

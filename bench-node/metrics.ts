@@ -1,7 +1,7 @@
 // One row of the report's tables from per-solve results (summarize), and the iteration count as the report made it.
 //
 // Definitions (statistics.ts gives mean, quantiles and the IQM):
-//   success rate    fraction of the reachable samples whose final pose is on target: E < ftol, or
+//   success rate    fraction of the reachable samples whose final pose is on target: E < errorTolerance, or
 //                   with a tip tolerance (drag, reach) every tip within it of its target
 //   unreachable     samples whose targets the reference solve could not reach (reachability.ts);
 //                   left out of the success rate

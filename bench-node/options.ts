@@ -46,9 +46,9 @@ export interface BenchOptions {
   samplesGiven: boolean;
   seed: number;
   /** Overrides of the per-rig default tolerances; undefined means the rig's default. */
-  gtol?: number;
-  ftol?: number;
-  timeoutSeconds: number;
+  gradientTolerance?: number;
+  errorTolerance?: number;
+  timeBudgetSeconds: number;
   /** Restarts per solve for every method (random, incremental); undefined: the solvers' default. */
   restarts?: number;
   paper: boolean;
@@ -293,9 +293,9 @@ export function parseOptions(argv: string[], isTTY: boolean, ownMethods: readonl
     samples: parseSamples(raw.samples, allMethods),
     samplesGiven: cmd.getOptionValueSource('samples') !== 'default',
     seed: integerIn('--seed', raw.seed, 0, 0xffffffff),
-    gtol: raw.gradientTolerance === undefined ? undefined : positiveNumber('--gradient-tolerance', raw.gradientTolerance),
-    ftol: raw.errorTolerance === undefined ? undefined : positiveNumber('--error-tolerance', raw.errorTolerance),
-    timeoutSeconds: positiveNumber('--time-budget', raw.timeBudget, MAX_TIMEOUT_SECONDS),
+    gradientTolerance: raw.gradientTolerance === undefined ? undefined : positiveNumber('--gradient-tolerance', raw.gradientTolerance),
+    errorTolerance: raw.errorTolerance === undefined ? undefined : positiveNumber('--error-tolerance', raw.errorTolerance),
+    timeBudgetSeconds: positiveNumber('--time-budget', raw.timeBudget, MAX_TIMEOUT_SECONDS),
     restarts: raw.restarts === undefined ? undefined : integerIn('--restarts', raw.restarts, 0, MAX_RESTARTS),
     paper: raw.paper,
     humanoidLimits: raw.humanoidLimits,

@@ -18,13 +18,13 @@ export interface RunInfo {
   cores: number;
   workers: number;
   seed: number;
-  timeoutSeconds: number;
+  timeBudgetSeconds: number;
   paper: boolean;
   /** --goals: 'position' (the protocol's tip positions) or 'pose' (tip positions and frame orientations). */
   goals: string;
   /** Anatomical limits on recognised humanoids (false: --no-humanoid-limits). */
   humanoidLimits: boolean;
-  /** Per rig: size and the tolerances used (dragGtol, tipTolerance: drag and reach's; tipTolerance 0: E < ftol). */
+  /** Per rig: size and the tolerances used (dragGradientTolerance, tipTolerance: drag and reach's; tipTolerance 0: E < errorTolerance). */
   rigs: Array<{
     rig: string;
     path: string;
@@ -33,9 +33,9 @@ export interface RunInfo {
     bones: number;
     effectors: number;
     size: number;
-    gtol: number;
-    ftol: number;
-    dragGtol: number;
+    gradientTolerance: number;
+    errorTolerance: number;
+    dragGradientTolerance: number;
     tipTolerance: number;
   }>;
 }
@@ -162,8 +162,8 @@ export function writeCsv(file: string, rows: readonly Row[]): void {
 export function markdownText(tables: readonly Table[], info: RunInfo, notes: readonly string[]): string {
   const rigLines = info.rigs.map(
     (r) =>
-      `| ${r.rig} | ${r.bones} | ${r.effectors} | ${r.size.toPrecision(4)} | ${r.gtol} | ${r.ftol} | ` +
-      `${r.dragGtol.toPrecision(3)} | ${r.tipTolerance ? r.tipTolerance.toPrecision(3) : '- (E < ftol)'} |`,
+      `| ${r.rig} | ${r.bones} | ${r.effectors} | ${r.size.toPrecision(4)} | ${r.gradientTolerance} | ${r.errorTolerance} | ` +
+      `${r.dragGradientTolerance.toPrecision(3)} | ${r.tipTolerance ? r.tipTolerance.toPrecision(3) : '- (E < error tolerance)'} |`,
   );
   return [
     '# Benchmark results',
@@ -171,10 +171,10 @@ export function markdownText(tables: readonly Table[], info: RunInfo, notes: rea
     `Made by \`${info.command}\` on ${info.date}${info.commit ? ` at commit ${info.commit}` : ''}.`,
     '',
     `Machine: ${info.cpu}, ${info.cores} cores; Node ${info.node}; ${info.workers} workers. Seed ${info.seed}, ` +
-      `time budget ${info.timeoutSeconds} s per solve${info.paper ? ', paper mode (the original algorithms)' : ''}` +
+      `time budget ${info.timeBudgetSeconds} s per solve${info.paper ? ', paper mode (the original algorithms)' : ''}` +
       `${info.goals === 'pose' ? ', pose goals (tip positions and orientations; on target also needs every orientation within 0.5 degrees)' : ''}.`,
     '',
-    '| rig | bones | end effectors | size | gtol | ftol | drag gtol | drag tip tolerance |',
+    '| rig | bones | end effectors | size | gradient tolerance | error tolerance | drag gradient tolerance | drag tip tolerance |',
     '| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: |',
     ...rigLines,
     '',

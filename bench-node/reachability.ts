@@ -2,7 +2,7 @@
 // solve per step: lm with its default restarts and a 1 s budget, each step starting from the
 // reference's own solution of the previous step (chained like the path). A step is reachable when
 // that solve puts every tip within REACH_MARGIN of the run's tip tolerance (with --error-tolerance: E below
-// REACH_MARGIN^2 ftol): a step the reference meets only with more than that, on the edge of what
+// REACH_MARGIN^2 errorTolerance): a step the reference meets only with more than that, on the edge of what
 // the limbs reach and the pinned tips' slack allows, counts as out of reach. Drag, random and
 // incremental targets are poses' tips, reachable by construction, and are never solved here.
 import type { RigSpec } from '#ik/rig_arrays.js';
@@ -18,17 +18,17 @@ export const REFERENCE_BUDGET_S = 1;
 export const REACH_MARGIN = 0.5;
 
 /**
- * The reference's settings: the run's drag settings (gtol, the page's goals) with its on-target
+ * The reference's settings: the run's drag settings (gradientTolerance, the page's goals) with its on-target
  * test tightened by REACH_MARGIN, and lm's defaults otherwise (restarts; no joint speed bound: it
  * decides what can be reached).
  */
 export function referenceSettings(drag: RunSettings): RunSettings {
   return {
     method: REFERENCE_METHOD,
-    gtol: drag.gtol,
-    ftol: REACH_MARGIN * REACH_MARGIN * drag.ftol,
+    gradientTolerance: drag.gradientTolerance,
+    errorTolerance: REACH_MARGIN * REACH_MARGIN * drag.errorTolerance,
     tipTolerance: REACH_MARGIN * drag.tipTolerance,
-    timeoutSeconds: REFERENCE_BUDGET_S,
+    timeBudgetSeconds: REFERENCE_BUDGET_S,
     paper: false,
     rigSize: drag.rigSize,
     pageGoals: drag.pageGoals,

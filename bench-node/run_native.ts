@@ -150,14 +150,14 @@ export async function runNative(
         const input = join(dir, `job${b}.bin`), output = join(dir, `results${b}.jsonl`);
         writeFileSync(input, encodeJob(set, begin, end));
         const args = ['--rig', rigFile, '--method', settings.method, '--input', input, '--output', output,
-          '--gtol', String(settings.gtol), '--ftol', String(settings.ftol), '--tip-tol', String(settings.tipTolerance),
-          '--timeout', String(settings.timeoutSeconds)];
+          '--gradient-tolerance', String(settings.gradientTolerance), '--error-tolerance', String(settings.errorTolerance),
+          '--tip-tolerance', String(settings.tipTolerance), '--time-budget', String(settings.timeBudgetSeconds)];
         if (settings.paper) args.push('--paper');
         if (settings.restarts !== undefined) args.push('--restarts', String(settings.restarts));
         if (settings.maxJointMove !== undefined) args.push('--max-joint-move', String(settings.maxJointMove));
         if (settings.pageGoals) args.push('--page-goals', pinnedFramesArgument(spec, spec.effectors, settings.pinFrames ?? false));
         if (settings.goals === 'pose') args.push('--goals', 'pose');
-        if (settings.orientationToleranceDeg !== undefined) args.push('--orientation-tol', String(settings.orientationToleranceDeg));
+        if (settings.orientationToleranceDeg !== undefined) args.push('--orientation-tolerance', String(settings.orientationToleranceDeg));
         await runProcess(args);
         results[b] = decodeResults(readFileSync(output, 'utf8'), end - begin, output);
         onProgress(end - begin);

@@ -14,18 +14,18 @@ export interface SolveInput {
   orientations?: Float64Array | null;
   /** Drag, reach: the dragged effector (index into the rig's effectors); the others are pinned. -1: none. */
   dragged: number;
-  /** Time budget of this call, seconds; default the settings' timeoutSeconds (peers/restarting.ts passes what is left). */
+  /** Time budget of this call, seconds; default the settings' timeBudgetSeconds (peers/restarting.ts passes what is left). */
   budgetSeconds?: number;
 }
 
 /**
- * Settings of one method on one rig and experiment. The on-target test (ftol, tipTolerance) is
+ * Settings of one method on one rig and experiment. The on-target test (errorTolerance, tipTolerance) is
  * both the solvers' stopping test and the success test; the peers stop on it too.
  */
 export interface RunSettings extends OnTargetTest {
   method: string;
-  gtol: number;
-  timeoutSeconds: number;
+  gradientTolerance: number;
+  timeBudgetSeconds: number;
   paper: boolean;
   /** Rig size (rig units; see rigs.ts), for peers whose settings are lengths. */
   rigSize: number;

@@ -31,10 +31,10 @@ export class WasmSolverRunner implements Runner {
     this.rig = new IkRig(ik, spec);
     this.observer = new IkRig(ik, spec);
     this.options = {
-      gradientTolerance: settings.gtol,
-      errorTolerance: settings.ftol,
+      gradientTolerance: settings.gradientTolerance,
+      errorTolerance: settings.errorTolerance,
       tipTolerance: settings.tipTolerance,
-      timeBudgetSeconds: settings.timeoutSeconds,
+      timeBudgetSeconds: settings.timeBudgetSeconds,
       paperMode: settings.paper,
       ...(settings.orientationToleranceDeg === undefined ? {} : { orientationToleranceDeg: settings.orientationToleranceDeg }),
       ...(settings.restarts === undefined ? {} : { restarts: settings.restarts }),

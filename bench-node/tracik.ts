@@ -39,7 +39,7 @@ export const TRACIK_ROTATION_TOLERANCE_DEG = (TRACIK_TOLERANCE * 180) / Math.PI;
  * the gradient of a pose 1e-5 off its target (about 1e-7 on a 1 m arm), so that the gradient
  * test (a stationary point: restart) never ends a run that is converging onto the target.
  */
-export const TRACIK_GTOL = 1e-14;
+export const TRACIK_GRADIENT_TOLERANCE = 1e-14;
 
 /** The nominal configuration (degrees): mid-limit per angle; an angle with an infinite limit 0, clamped into its limits. */
 export function nominalAngles(spec: RigSpec): Float64Array {
@@ -89,13 +89,13 @@ export interface TracikOptions {
   experiments: readonly string[];
   goals: GoalsKind;
   samples: Record<string, number>;
-  timeoutSeconds: number;
+  timeBudgetSeconds: number;
 }
 
 /**
  * The options of a tracik run (`given(name)`: whether the option was on the command line): it
  * runs alone, with pose goals (--goals position is refused), TRAC-IK's tolerances (--error-tolerance
- * is refused; --gradient-tolerance is our solvers' gradient tolerance, default TRACIK_GTOL),
+ * is refused; --gradient-tolerance is our solvers' gradient tolerance, default TRACIK_GRADIENT_TOLERANCE),
  * TRACIK_SAMPLES queries and TRACIK_TIMEOUT_S per query unless --samples and --time-budget say otherwise. Throws a usage
  * error (one line); changes nothing for a run without tracik.
  */
@@ -106,7 +106,7 @@ export function applyTracik(opts: TracikOptions, given: (option: string) => bool
   if (given('errorTolerance')) throw usage("--error-tolerance: the tracik experiment has TRAC-IK's tolerances (1e-5 on positions and on rotations, radians)");
   opts.goals = 'pose';
   if (!given('samples')) for (const method of Object.keys(opts.samples)) opts.samples[method] = TRACIK_SAMPLES;
-  if (!given('timeBudget')) opts.timeoutSeconds = TRACIK_TIMEOUT_S;
+  if (!given('timeBudget')) opts.timeBudgetSeconds = TRACIK_TIMEOUT_S;
 }
 
 /** Checks --chain: BASE:TIP, and every rig a URDF file (the other formats have no chains to choose). */
@@ -120,8 +120,8 @@ export function checkChain(chain: string | undefined, rigs: readonly string[]): 
 /**
  * The solver settings of the protocol (the rest as every experiment's: bench.ts runSettings):
  * pose goals, on target with every tip within TRACIK_TOLERANCE and every frame within
- * TRACIK_TOLERANCE radians, our solvers' gradient tolerance `gtol` (--gradient-tolerance; default TRACIK_GTOL).
+ * TRACIK_TOLERANCE radians, our solvers' gradient tolerance `gradientTolerance` (--gradient-tolerance; default TRACIK_GRADIENT_TOLERANCE).
  */
-export function tracikSettings(gtol: number | undefined): Pick<RunSettings, 'gtol' | 'tipTolerance' | 'orientationToleranceDeg' | 'goals'> {
-  return { gtol: gtol ?? TRACIK_GTOL, tipTolerance: TRACIK_TOLERANCE, orientationToleranceDeg: TRACIK_ROTATION_TOLERANCE_DEG, goals: 'pose' };
+export function tracikSettings(gradientTolerance: number | undefined): Pick<RunSettings, 'gradientTolerance' | 'tipTolerance' | 'orientationToleranceDeg' | 'goals'> {
+  return { gradientTolerance: gradientTolerance ?? TRACIK_GRADIENT_TOLERANCE, tipTolerance: TRACIK_TOLERANCE, orientationToleranceDeg: TRACIK_ROTATION_TOLERANCE_DEG, goals: 'pose' };
 }

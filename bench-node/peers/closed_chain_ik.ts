@@ -116,9 +116,9 @@ export class ClosedChainIkRunner implements Runner {
     this.solver.maxIterations = CHUNK_ITERATIONS;
     this.solver.useSVD = false; // the library's default; its README warns SVD can diverge
     this.solver.restPoseFactor = 0; // no rest pose is set: skip the null-space term
-    // Every goal nearer than this: on target by the run's test (tipTolerance, or E < ftol).
+    // Every goal nearer than this: on target by the run's test (tipTolerance, or E < errorTolerance).
     this.solver.translationConvergeThreshold =
-      settings.tipTolerance > 0 ? settings.tipTolerance : Math.sqrt((2 * settings.ftol) / spec.effectors.length);
+      settings.tipTolerance > 0 ? settings.tipTolerance : Math.sqrt((2 * settings.errorTolerance) / spec.effectors.length);
     // Its rotation error is the length of a quaternion difference, 2 sin(angle / 4) for unit
     // quaternions: under this, every frame is within the run's orientation tolerance.
     const toleranceRad = (settings.orientationToleranceDeg ?? ORIENTATION_TOLERANCE_DEG) * RAD;
@@ -186,7 +186,7 @@ export class ClosedChainIkRunner implements Runner {
     if (q) this.goals.forEach((g, e) => g.setQuaternion(q[4 * e], q[4 * e + 1], q[4 * e + 2], q[4 * e + 3]));
     let stopReason: string;
     try {
-      stopReason = this.run(t0 + 1000 * (input.budgetSeconds ?? this.settings.timeoutSeconds), Infinity);
+      stopReason = this.run(t0 + 1000 * (input.budgetSeconds ?? this.settings.timeBudgetSeconds), Infinity);
     } catch {
       // The library throws when every free DOF is locked at a limit (an empty matrix product).
       stopReason = 'library_error';

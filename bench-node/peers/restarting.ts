@@ -23,7 +23,7 @@ export class RestartingRunner implements Runner {
   ) {}
 
   solve(input: SolveInput): SolveResult {
-    const budget = input.budgetSeconds ?? this.settings.timeoutSeconds;
+    const budget = input.budgetSeconds ?? this.settings.timeBudgetSeconds;
     const t0 = performance.now();
     let best = this.inner.solve({ ...input, budgetSeconds: budget });
     if (input.start === null || this.restarts === 0) return best;

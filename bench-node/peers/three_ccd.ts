@@ -8,7 +8,7 @@
 // One IK chain per end effector: effector tip_i, links = the joints from bone i up to the root
 // (bones whose three angles are all fixed are left out), target = a Bone under the scene root.
 // One solve = CCDIKSolver.update() passes (iteration 1 per chain per pass) until the pose is on
-// target (the run's test: E < ftol, or every tip within tipTolerance), no link moved in a pass (zero_step), the best E fell by less than STALL_RATIO over STALL_PASSES
+// target (the run's test: E < errorTolerance, or every tip within tipTolerance), no link moved in a pass (zero_step), the best E fell by less than STALL_RATIO over STALL_PASSES
 // passes (stalled), or the time budget is spent (timeout).
 // CCD clamps Euler XYZ angles per link, not XZX ones, and no Euler XYZ box equals an XZX box (see
 // eulerBox). So after every pass the adapter reads each joint back as XZX angles inside the rig's
@@ -171,10 +171,10 @@ export class ThreeCcdRunner implements Runner {
   }
 
   solve(input: SolveInput): SolveResult {
-    const timeoutSeconds = input.budgetSeconds ?? this.settings.timeoutSeconds;
+    const timeBudgetSeconds = input.budgetSeconds ?? this.settings.timeBudgetSeconds;
     const from = input.start ? project(this.spec, input.start.slice()) : this.angles.slice(); // for the jump, untimed
     const t0 = performance.now();
-    const deadline = t0 + 1000 * timeoutSeconds;
+    const deadline = t0 + 1000 * timeBudgetSeconds;
     if (input.start) this.setPose(input.start);
     for (let e = 0; e < this.targets.length; e++)
       this.targets[e].position.set(input.target[3 * e], input.target[3 * e + 1], input.target[3 * e + 2]);

@@ -21,7 +21,7 @@ export function charts(rows: readonly Row[], a7Names: readonly string[]): { time
       series: methods.map((m) => ({ name: m, color: colors[m], values: pick(m, (r) => r.t_median_s) })),
     }),
     success: barChartSvg({
-      title: 'Success rate (final E < ftol), random targets', groups, axis: 'success', log: false, min: 0, max: 1,
+      title: 'Success rate (final E < error tolerance), random targets', groups, axis: 'success', log: false, min: 0, max: 1,
       format: (v) => `${Math.round(v * 100)}%`,
       series: methods.map((m) => ({ name: m, color: colors[m], values: pick(m, (r) => r.success_rate) })),
     }),

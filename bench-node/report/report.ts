@@ -55,7 +55,7 @@ function parseArgs(argv: string[]): ReportOptions {
 function tolerancesText(): string {
   const groups = new Map<string, string[]>();
   for (const [rig, t] of Object.entries(reportTolerances)) {
-    const values = `${t.gtol} / ${t.ftol}`;
+    const values = `${t.gradientTolerance} / ${t.errorTolerance}`;
     groups.set(values, [...(groups.get(values) ?? []), rig]);
   }
   return [...groups].map(([values, rigs]) => `${rigs.join(', ')}: ${values}`).join('; ');

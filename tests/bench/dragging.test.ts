@@ -41,25 +41,25 @@ describe('settings', () => {
     const size = s.drag.rigSize;
     for (const e of ['drag', 'reach']) {
       expect(s[e].tipTolerance).toBe(dragTolerances(size).tipTolerance);
-      expect(s[e].gtol).toBe(dragTolerances(size).gradientTolerance);
+      expect(s[e].gradientTolerance).toBe(dragTolerances(size).gradientTolerance);
       expect(s[e].restarts).toBe(0);
     }
     for (const e of ['random', 'incremental']) {
       expect(s[e].tipTolerance).toBe(0);
-      expect(s[e].gtol).toBeCloseTo(1e-4 * size ** 2, 15);
-      expect(s[e].ftol).toBeCloseTo(2e-4 * size ** 2, 15);
+      expect(s[e].gradientTolerance).toBeCloseTo(1e-4 * size ** 2, 15);
+      expect(s[e].errorTolerance).toBeCloseTo(2e-4 * size ** 2, 15);
       expect(s[e].restarts).toBeUndefined();
     }
   });
 
-  it('--error-tolerance makes drag and reach use E < ftol; --gradient-tolerance replaces their gradient tolerance', async () => {
+  it('--error-tolerance makes drag and reach use E < errorTolerance; --gradient-tolerance replaces their gradient tolerance', async () => {
     const f = await settingsOf('--error-tolerance', '1e-7');
     expect(f.reach.tipTolerance).toBe(0);
-    expect(f.reach.ftol).toBe(1e-7);
-    expect(f.drag.gtol).toBe(dragTolerances(f.drag.rigSize).gradientTolerance);
+    expect(f.reach.errorTolerance).toBe(1e-7);
+    expect(f.drag.gradientTolerance).toBe(dragTolerances(f.drag.rigSize).gradientTolerance);
     const g = await settingsOf('--gradient-tolerance', '1e-9');
-    expect(g.drag.gtol).toBe(1e-9);
-    expect(g.reach.gtol).toBe(1e-9);
+    expect(g.drag.gradientTolerance).toBe(1e-9);
+    expect(g.reach.gradientTolerance).toBe(1e-9);
     expect(g.reach.tipTolerance).toBe(dragTolerances(g.reach.rigSize).tipTolerance);
   });
 });
@@ -88,7 +88,7 @@ describe.each(rigsLike('knight'))('the drag runners on $label', (knight) => {
     reach = generateTargets(spec, 'reach', 10000, 1, (a) => rig.tips(a));
     const size = rigSize(rig.boneTips(new Float64Array(rig.numAngles)));
     const { tipTolerance, gradientTolerance } = dragTolerances(size);
-    drag = { method: 'lm', gtol: gradientTolerance, ftol: 2e-4, tipTolerance, timeoutSeconds: 1, paper: false, rigSize: size, restarts: 0 };
+    drag = { method: 'lm', gradientTolerance: gradientTolerance, errorTolerance: 2e-4, tipTolerance, timeBudgetSeconds: 1, paper: false, rigSize: size, restarts: 0 };
   });
   afterAll(() => rig.dispose());
 
@@ -104,7 +104,7 @@ describe.each(rigsLike('knight'))('the drag runners on $label', (knight) => {
       let largest = 0, chainRestarts = 0;
       results.forEach((result, k) => {
         const target = path.targets.subarray(k * path.numResiduals, (k + 1) * path.numResiduals);
-        const solver = new IkSolver(rig, 'lm', { gradientTolerance: drag.gtol, tipTolerance: drag.tipTolerance, restarts: 0 });
+        const solver = new IkSolver(rig, 'lm', { gradientTolerance: drag.gradientTolerance, tipTolerance: drag.tipTolerance, restarts: 0 });
         const r = solver.solve(pose, target);
         solver.dispose();
         const jump = largestChange(pose, r.angles, spec.lower, spec.upper);
@@ -122,7 +122,7 @@ describe.each(rigsLike('knight'))('the drag runners on $label', (knight) => {
   });
 
   describe('native engine', () => {
-    it('reports the same tip distances, jumps and verdicts as WebAssembly with --tip-tol', async () => {
+    it('reports the same tip distances, jumps and verdicts as WebAssembly with --tip-tolerance', async () => {
       const set = generateTargets(spec, 'incremental', 12, 3, (a) => rig.tips(a));
       const settings = { ...drag, restarts: undefined };
       const runner = new WasmSolverRunner(ik, spec, settings);
@@ -165,7 +165,7 @@ describe.each(rigsLike('knight'))('the drag runners on $label', (knight) => {
 
   describe.each(['three-ccd', 'closed-chain-ik'])('%s on reach paths', (method) => {
     it('stops on the tip test and reports the tip distance and jump of its pose', () => {
-      const settings = { ...drag, method, timeoutSeconds: 0.05 };
+      const settings = { ...drag, method, timeBudgetSeconds: 0.05 };
       const runner = method === 'three-ccd' ? new ThreeCcdRunner(spec, settings) : new ClosedChainIkRunner(spec, settings);
       // The second draggable effector's paths, up to the first with a solve on target (CCD misses
       // whole paths; the first effector's are mostly out of the peers' reach on the project's knight).
@@ -175,7 +175,7 @@ describe.each(rigsLike('knight'))('the drag runners on $label', (knight) => {
           // E bounds the largest tip distance: max^2 <= 2E <= #effectors * max^2.
           expect(result.tipDistance ** 2).toBeLessThanOrEqual(2 * result.E * (1 + 1e-9));
           expect(2 * result.E).toBeLessThanOrEqual(spec.effectors.length * result.tipDistance ** 2 * (1 + 1e-9));
-          // On target means the tip test, not E < ftol (which allows tips 20 times farther off here).
+          // On target means the tip test, not E < errorTolerance (which allows tips 20 times farther off here).
           if (result.stopReason === 'converged_E') {
             expect(result.tipDistance).toBeLessThan(drag.tipTolerance);
             onTarget++;

@@ -83,11 +83,11 @@ describe('--goals pose on the WebAssembly engine', () => {
     const samples = 20;
     const { rows, run } = await runJson('--rig', knight.path, '--goals', 'pose', '--methods', 'bfgs', '--samples', String(samples),
       '--experiment', 'random', '--restarts', '0', '--time-budget', '60');
-    const [{ gtol, ftol }] = run.rigs as Array<{ gtol: number; ftol: number }>;
+    const [{ gradientTolerance, errorTolerance }] = run.rigs as Array<{ gradientTolerance: number; errorTolerance: number }>;
     // The same solves through the public API, judged by the API's own forward kinematics.
     const spec = loadTestRig(knight);
     const rig = new IkRig(ik, spec);
-    const solver = new IkSolver(rig, 'bfgs', { gradientTolerance: gtol, errorTolerance: ftol, timeBudgetSeconds: 60, restarts: 0 });
+    const solver = new IkSolver(rig, 'bfgs', { gradientTolerance: gradientTolerance, errorTolerance: errorTolerance, timeBudgetSeconds: 60, restarts: 0 });
     const set = addOrientations(generateTargets(spec, 'random', samples, 1, (a) => rig.tips(a)), (a) => rig.tipRotations(a));
     const m = set.numAngles, r = set.numResiduals;
     const effectors = Array.from(rig.effectors());
@@ -100,7 +100,7 @@ describe('--goals pose on the WebAssembly engine', () => {
       let E = 0;
       for (let i = 0; i < r; i++) E += 0.5 * (tips[i] - target[i]) ** 2;
       const worst = Math.max(...orientationErrorsDeg(rig, result.angles, goals));
-      if (E < ftol && worst < ORIENTATION_TOLERANCE_DEG) onTarget++;
+      if (E < errorTolerance && worst < ORIENTATION_TOLERANCE_DEG) onTarget++;
       if (result.reached) reachedFlag++;
     }
     solver.dispose();
@@ -112,7 +112,7 @@ describe('--goals pose on the WebAssembly engine', () => {
   });
 
   it('a pose is on target only with every orientation within the tolerance', () => {
-    const test = { ftol: 1e-4, tipTolerance: 0, orientationToleranceDeg: ORIENTATION_TOLERANCE_DEG };
+    const test = { errorTolerance: 1e-4, tipTolerance: 0, orientationToleranceDeg: ORIENTATION_TOLERANCE_DEG };
     expect(isOnTarget(test, 1e-5, 0, 0.49)).toBe(true);
     expect(isOnTarget(test, 1e-5, 0, 0.51)).toBe(false);
     expect(isOnTarget(test, 2e-4, 0, 0.1)).toBe(false);

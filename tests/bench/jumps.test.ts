@@ -70,7 +70,7 @@ describe('a jump', () => {
     }));
     const targetMoves = steps.map(([, target]) => target);
     expect(countJumps(results.map((r) => r.jointMove!), targetMoves, 1)).toBe(2);
-    const test = { ftol: 1, tipTolerance: 0.001 };
+    const test = { errorTolerance: 1, tipTolerance: 0.001 };
     const key = { rig: 'limb', method: 'lm', engine: 'wasm' };
     const reachable = new Uint8Array(4).fill(1);
     expect(summarize({ ...key, experiment: 'reach' }, results, test, reachable, { targetMoves, size: 1 }).jumps).toBe(2);
@@ -112,7 +112,7 @@ describe.each(rigsLike('knight'))('the native engine on $label', (knight) => {
     try {
       const set = generateTargets(spec, 'reach', 12, 1, (a) => core.tips(a));
       const size = rigSize(core.boneTips(new Float64Array(core.numAngles)));
-      const settings = { method: 'lm', gtol: 1e-9, ftol: 2e-4, tipTolerance: 0.001 * size, timeoutSeconds: 0.2, paper: false, rigSize: size, restarts: 0 };
+      const settings = { method: 'lm', gradientTolerance: 1e-9, errorTolerance: 2e-4, tipTolerance: 0.001 * size, timeBudgetSeconds: 0.2, paper: false, rigSize: size, restarts: 0 };
       const results = await runNative(spec, settings, set, 1, () => {});
       const measurer = new StepMeasurer(spec, core, []);
       let from: Float64Array = set.starts.slice(0, core.numAngles), largest = 0;

@@ -55,13 +55,13 @@ describe('summarize', () => {
   const result = (E: number, seconds: number, stopReason: string, iterations = 3): SolveResult => ({
     E, tipDistance: Math.sqrt(2 * E), seconds, stopReason, iterations, wobbleDuring: NaN, wobbleAfter: NaN, jumpDeg: NaN,
   });
-  const eTest = { ftol: 2e-4, tipTolerance: 0 };
+  const eTest = { errorTolerance: 2e-4, tipTolerance: 0 };
   const all = (n: number): Uint8Array => new Uint8Array(n).fill(1);
 
-  it('success means final E < ftol; stop reasons are counted; times summarised', () => {
+  it('success means final E < errorTolerance; stop reasons are counted; times summarised', () => {
     const rows = [
       result(1e-5, 0.001, 'converged_E'),
-      result(2e-4, 0.002, 'converged_grad'), // not below ftol = 2e-4
+      result(2e-4, 0.002, 'converged_grad'), // not below errorTolerance = 2e-4
       result(0.5, 1.0, 'timeout', 900),
       result(1e-4, 0.003, 'converged_E'),
     ];
@@ -96,9 +96,9 @@ describe('summarize', () => {
     const rows = [
       { ...result(1e-8, 0.001, 'converged_E'), tipDistance: 0.0009 }, // on target
       { ...result(1e-8, 0.001, 'converged_grad'), tipDistance: 0.001 }, // E tiny, a tip not within 0.001
-      { ...result(0.5, 0.001, 'converged_E'), tipDistance: 1e-4 }, // E above ftol, every tip within
+      { ...result(0.5, 0.001, 'converged_E'), tipDistance: 1e-4 }, // E above errorTolerance, every tip within
     ];
-    const row = summarize({ rig: 'knight', experiment: 'reach', method: 'lm', engine: 'wasm' }, rows, { ftol: 2e-4, tipTolerance: 0.001 }, all(3));
+    const row = summarize({ rig: 'knight', experiment: 'reach', method: 'lm', engine: 'wasm' }, rows, { errorTolerance: 2e-4, tipTolerance: 0.001 }, all(3));
     expect(row.success_rate).toBeCloseTo(2 / 3, 12);
   });
 
@@ -109,7 +109,7 @@ describe('summarize', () => {
       { ...result(0, 0.001, 'converged_grad'), tipDistance: 0.2 }, // reachable, missed
       { ...result(0, 0.001, 'converged_grad'), tipDistance: 0.4 }, // unreachable, missed
     ];
-    const test = { ftol: 2e-4, tipTolerance: 0.01 };
+    const test = { errorTolerance: 2e-4, tipTolerance: 0.01 };
     const row = summarize({ rig: 'knight', experiment: 'reach', method: 'lm', engine: 'wasm' }, rows, test, Uint8Array.from([1, 0, 1, 0]));
     expect(row.unreachable).toBe(2);
     expect(row.success_rate).toBe(0.5);

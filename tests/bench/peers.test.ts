@@ -77,8 +77,8 @@ describe('Euler XYZ box for CCD', () => {
 /** The benchmark's settings for the random and incremental experiments (bench-node/rigs.ts). */
 function settingsFor(testRig: TestRig, rig: IkRig, method: string): RunSettings {
   const size = rigSize(rig.boneTips(new Float64Array(rig.numAngles)));
-  const { gtol, ftol } = defaultTolerances(testRig.name, testRig.a7, size);
-  return { method, gtol, ftol, tipTolerance: 0, timeoutSeconds: 1, paper: false, rigSize: size };
+  const { gradientTolerance, errorTolerance } = defaultTolerances(testRig.name, testRig.a7, size);
+  return { method, gradientTolerance, errorTolerance, tipTolerance: 0, timeBudgetSeconds: 1, paper: false, rigSize: size };
 }
 
 describe.each(testRigs)('peers on $label', (testRig) => {
@@ -99,7 +99,7 @@ describe.each(testRigs)('peers on $label', (testRig) => {
       expect(there.E).toBeLessThan(1e-9 * settings.rigSize ** 2);
       const result = runner.solve({ start: set.starts.slice(k * m, (k + 1) * m), target, dragged: -1 });
       expect(result.seconds).toBeGreaterThan(0);
-      if (result.E < settings.ftol) converged++;
+      if (result.E < settings.errorTolerance) converged++;
       const E0 = rig.objective(set.starts.subarray(k * m, (k + 1) * m), target);
       if (result.E <= E0 * (1 + 1e-3) + 1e-9 * settings.rigSize ** 2) improved++; // float32 rounding (closed-chain-ik)
     }

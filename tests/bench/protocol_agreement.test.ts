@@ -26,8 +26,8 @@ interface NativeSet {
 
 interface NativeProtocol {
   size: number;
-  gtol: number;
-  ftol: number;
+  gradientTolerance: number;
+  errorTolerance: number;
   random: NativeSet;
   incremental: NativeSet;
 }
@@ -62,9 +62,9 @@ describe.each(testRigs)('$label', (testRig) => {
     rigs.push(rig);
     const size = rigSize(rig.boneTips(new Float64Array(rig.numAngles)));
     expectClose(native.size, size);
-    const { gtol, ftol } = defaultTolerances(testRig.name, true, size);
-    expectClose(native.gtol, gtol);
-    expectClose(native.ftol, ftol);
+    const { gradientTolerance, errorTolerance } = defaultTolerances(testRig.name, true, size);
+    expectClose(native.gradientTolerance, gradientTolerance);
+    expectClose(native.errorTolerance, errorTolerance);
   });
 
   it.each(['random', 'incremental'] as const)('the same %s target set', (experiment) => {

@@ -6,7 +6,7 @@ import type { SolveResult } from '../../bench-node/metrics.js';
 import { RestartingRunner } from '../../bench-node/peers/restarting.js';
 import type { Runner, RunSettings, SolveInput } from '../../bench-node/runner.js';
 
-const settings: RunSettings = { method: 'fake', gtol: 1e-4, ftol: 1e-4, tipTolerance: 0, timeoutSeconds: 1, paper: false, rigSize: 1 };
+const settings: RunSettings = { method: 'fake', gradientTolerance: 1e-4, errorTolerance: 1e-4, tipTolerance: 0, timeBudgetSeconds: 1, paper: false, rigSize: 1 };
 
 /** A peer that reaches the target only from the start whose first angle is `good`, taking 5 iterations per run. */
 class FakePeer implements Runner {
@@ -50,7 +50,7 @@ describe('restarts for the peers', () => {
 
   it('reports timeout when the budget ran out off target', () => {
     const peer = new FakePeer(99, 30);
-    const r = new RestartingRunner(peer, startOf, { ...settings, timeoutSeconds: 0.05 }, 1000).solve(input);
+    const r = new RestartingRunner(peer, startOf, { ...settings, timeBudgetSeconds: 0.05 }, 1000).solve(input);
     expect(peer.seen.length).toBeLessThan(5);
     expect(r.stopReason).toBe('timeout');
   });

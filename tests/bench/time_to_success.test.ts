@@ -27,7 +27,7 @@ describe('time to success', () => {
 
   it('a method that gives up at once has the shorter mean time but the later success', () => {
     const key = { rig: 'r', experiment: 'random' as const, engine: 'wasm' };
-    const test = { ftol: 1e-4, tipTolerance: 0 };
+    const test = { errorTolerance: 1e-4, tipTolerance: 0 };
     const quitter = summarize({ ...key, method: 'quitter' }, [solve(1e-5, 1), solve(1e-5, 1), solve(5e-4, 1e-5)], test, [1, 1, 1]);
     const worker = summarize({ ...key, method: 'worker' }, [solve(2e-3, 1e-5), solve(2e-3, 1e-5), solve(2e-3, 1e-5)], test, [1, 1, 1]);
     expect(quitter.t_avg_s).toBeLessThan(worker.t_avg_s);

@@ -56,11 +56,11 @@ describe('tracik options', () => {
     const o = parse('--experiment', 'tracik');
     expect(o.goals).toBe('pose');
     expect(o.samples.lm).toBe(TRACIK_SAMPLES);
-    expect(o.timeoutSeconds).toBe(TRACIK_TIMEOUT_S);
+    expect(o.timeBudgetSeconds).toBe(TRACIK_TIMEOUT_S);
     expect(o.methods).not.toContain('three-ccd');
     const p = parse('--experiment', 'tracik', '--samples', '50', '--time-budget', '0.01', '--goals', 'pose');
-    expect([p.samples.lm, p.timeoutSeconds]).toEqual([50, 0.01]);
-    expect(parse('--samples', '50').timeoutSeconds).toBe(1); // other experiments keep theirs
+    expect([p.samples.lm, p.timeBudgetSeconds]).toEqual([50, 0.01]);
+    expect(parse('--samples', '50').timeBudgetSeconds).toBe(1); // other experiments keep theirs
   });
 
   it.each([
@@ -125,7 +125,7 @@ describe('tracik configurations', () => {
 describe('tracik success: TRAC-IK tolerances on the pose from forward kinematics', () => {
   it('needs the tip within 1e-5 and the rotation angle within 1e-5 rad', () => {
     const test = tracikSettings(undefined);
-    const on = (tip: number, rad: number): boolean => isOnTarget({ ftol: 1, ...test }, 0, tip, (rad * 180) / Math.PI);
+    const on = (tip: number, rad: number): boolean => isOnTarget({ errorTolerance: 1, ...test }, 0, tip, (rad * 180) / Math.PI);
     expect(TRACIK_ROTATION_TOLERANCE_DEG).toBeCloseTo(5.7296e-4, 8);
     expect(on(0.9e-5, 0.9e-5)).toBe(true);
     expect(on(1.1e-5, 0.9e-5)).toBe(false);
@@ -140,7 +140,7 @@ describe('tracik success: TRAC-IK tolerances on the pose from forward kinematics
     const rig = new IkRig(ik, spec);
     const settings = tracikSettings(undefined);
     const solver = new IkSolver(rig, 'lm', {
-      gradientTolerance: settings.gtol, tipTolerance: settings.tipTolerance, orientationToleranceDeg: settings.orientationToleranceDeg, timeBudgetSeconds: 60,
+      gradientTolerance: settings.gradientTolerance, tipTolerance: settings.tipTolerance, orientationToleranceDeg: settings.orientationToleranceDeg, timeBudgetSeconds: 60,
     });
     const set = addOrientations(generateTargets(spec, 'tracik', samples, 1, (a) => rig.tips(a)), (a) => rig.tipRotations(a));
     const m = set.numAngles, r = set.numResiduals, q = (4 * r) / 3;
@@ -212,7 +212,7 @@ describe('a small tracik run on the robot arm', () => {
       expect(row.success_rate as number).toBeGreaterThanOrEqual(row.method === 'lm' ? 0.9 : 0.8);
       expect(row.t_median_s as number).toBeLessThan(TRACIK_TIMEOUT_S);
     }
-    expect(run.timeoutSeconds).toBe(TRACIK_TIMEOUT_S);
+    expect(run.timeBudgetSeconds).toBe(TRACIK_TIMEOUT_S);
     expect(run.goals).toBe('pose');
     const [header, first] = csv.split('\n');
     expect(header).toBe('rig,chain,experiment,method,engine,goals,samples,restarts,success_rate,t_avg_s,t_median_s,t_p95_s,t_max_s,iter_avg,E_max,'

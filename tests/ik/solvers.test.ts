@@ -25,8 +25,8 @@ const methods = IkSolver.methods(await loadIkNode());
 /** The report's tolerances of `testRig` (web/src/rig/tolerances.ts); no time budget. */
 function reportOptions(testRig: TestRig, rig: IkRig): SolverOptions & { errorTolerance: number } {
   const size = rigSize(rig.boneTips(new Float64Array(rig.numAngles)));
-  const { gtol, ftol } = defaultTolerances(testRig.name, testRig.a7, size);
-  return { gradientTolerance: gtol, errorTolerance: ftol, timeBudgetSeconds: 0 };
+  const { gradientTolerance, errorTolerance } = defaultTolerances(testRig.name, testRig.a7, size);
+  return { gradientTolerance: gradientTolerance, errorTolerance: errorTolerance, timeBudgetSeconds: 0 };
 }
 
 interface TargetCase {

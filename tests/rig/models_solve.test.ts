@@ -1,6 +1,6 @@
 // Every project model loads in Node and the default method (lm, restarts on) solves 100 random
 // reachable targets on it: angles uniform in [-360, 360] clamped to the limits, start at rest,
-// success when E < ftol by the shared tolerance rule (web/src/rig/tolerances.ts). No clock: the
+// success when E < errorTolerance by the shared tolerance rule (web/src/rig/tolerances.ts). No clock: the
 // solves have no time budget and an iteration cap (restarts included) far above what they take,
 // so the result does not depend on the machine's speed or load.
 import { readdirSync } from 'node:fs';
@@ -38,14 +38,14 @@ describe('the default method on the project models', () => {
     const rig = new IkRig(ik, loaded.spec);
     owned.push(rig);
     const tol = defaultTolerances(loaded.name, false, rigSize(rig.boneTips(new Float64Array(rig.numAngles))));
-    const solver = new IkSolver(rig, 'lm', { gradientTolerance: tol.gtol, errorTolerance: tol.ftol, timeBudgetSeconds: 0, maxIterations: MAX_ITERATIONS });
+    const solver = new IkSolver(rig, 'lm', { gradientTolerance: tol.gradientTolerance, errorTolerance: tol.errorTolerance, timeBudgetSeconds: 0, maxIterations: MAX_ITERATIONS });
     owned.push(solver);
     const rand = seeded(404);
     const rest = new Float64Array(rig.numAngles);
     for (let s = 0; s < 100; s++) {
       const target = rig.tips(randomAngles(rig.spec, rand));
       const r = solver.solve(rest, target);
-      expect(r.E, `${file} target ${s}: ${r.stopReason} after ${r.restarts} restarts`).toBeLessThan(tol.ftol);
+      expect(r.E, `${file} target ${s}: ${r.stopReason} after ${r.restarts} restarts`).toBeLessThan(tol.errorTolerance);
       for (let i = 0; i < r.angles.length; i++) {
         expect(r.angles[i]).toBeGreaterThanOrEqual(rig.lower[i]);
         expect(r.angles[i]).toBeLessThanOrEqual(rig.upper[i]);

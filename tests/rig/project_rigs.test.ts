@@ -35,7 +35,7 @@ describe('project rig names', () => {
   });
 
   it('gives an A7 rig named like a prototype key the usual tolerances', () => {
-    for (const key of PROTOTYPE_KEYS) expect(defaultTolerances(key, true, 1), key).toEqual({ gtol: 1e-4, ftol: 2e-4 });
+    for (const key of PROTOTYPE_KEYS) expect(defaultTolerances(key, true, 1), key).toEqual({ gradientTolerance: 1e-4, errorTolerance: 2e-4 });
   });
 });
 

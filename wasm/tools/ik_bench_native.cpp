@@ -4,9 +4,10 @@
 //
 // Usage:
 //   ik_bench_native --rig RIG.json --method NAME --input JOB.bin --output RESULTS.jsonl
-//                   [--gtol X] [--ftol Y] [--tip-tol Z] [--timeout SECONDS] [--paper] [--restarts N]
+//                   [--gradient-tolerance X] [--error-tolerance Y] [--tip-tolerance Z] [--time-budget SECONDS]
+//                   [--paper] [--restarts N]
 //                   [--max-joint-move D] [--page-goals ROWS]
-//                   [--goals position|pose] [--orientation-tol DEG]
+//                   [--goals position|pose] [--orientation-tolerance DEG]
 //   ik_bench_native --list-methods     prints the methods it knows (the core's registry, the
 //                                      default first, then "kdl" and "kdl_nr_jl" when built with
 //                                      Orocos KDL) as a JSON array of names
@@ -14,7 +15,7 @@
 // tree solvers under the same tolerances, time budget and restarts. Method "kdl_nr_jl"
 // (native/kdl/kdl_nr_jl.h) is KDL's ChainIkSolverPos_NR_JL as TRAC-IK's harness runs it: whole
 // poses of one end effector, one iteration per call until success or the time budget.
-// --tip-tol Z > 0 makes "on target" every tip within Z (rig units) of its target (SolverOptions::
+// --tip-tolerance Z > 0 makes "on target" every tip within Z (rig units) of its target (SolverOptions::
 // tip_tolerance) instead of E < Y. --max-joint-move D > 0 caps how far a joint moves in one solve
 // (SolverOptions::max_joint_move, rig units). --page-goals ROWS: records with a dragged effector
 // are solved towards the page's goals (bench-node/drag_goals.ts): the dragged effector yields,
@@ -24,7 +25,7 @@
 // --goals pose: each record also carries each effector's target orientation, and every method
 // solves towards the whole poses (Goals of native/pose_goals.h: position and orientation per
 // effector, weight 1; kdl with its rotation rows weighted); on target then also needs every
-// orientation within SolverOptions::orientation_tolerance_deg (0.5 degrees; --orientation-tol DEG,
+// orientation within SolverOptions::orientation_tolerance_deg (0.5 degrees; --orientation-tolerance DEG,
 // > 0, sets it: the bench's tracik experiment asks for 1e-5 rad).
 //
 // JOB.bin, little-endian:
@@ -90,13 +91,13 @@ struct Args {
 };
 
 [[noreturn]] void usage(const std::string& problem) {
-  throw std::invalid_argument(
-      problem +
-      "\nusage: ik_bench_native --rig RIG.json --method NAME --input JOB.bin --output "
-      "RESULTS.jsonl [--gtol X] [--ftol Y] [--tip-tol Z] [--timeout S] [--paper] [--restarts N]\n"
-      "       [--max-joint-move D] [--page-goals ROWS]\n"
-      "       [--goals position|pose] [--orientation-tol DEG]\n"
-      "       ik_bench_native --list-methods");
+  throw std::invalid_argument(problem +
+                              "\nusage: ik_bench_native --rig RIG.json --method NAME --input JOB.bin --output "
+                              "RESULTS.jsonl [--gradient-tolerance X] [--error-tolerance Y] [--tip-tolerance Z] "
+                              "[--time-budget S] [--paper] [--restarts N]\n"
+                              "       [--max-joint-move D] [--page-goals ROWS]\n"
+                              "       [--goals position|pose] [--orientation-tolerance DEG]\n"
+                              "       ik_bench_native --list-methods");
 }
 
 double number_arg(const std::string& flag, const char* text) {
@@ -129,13 +130,13 @@ Args parse_args(int argc, char** argv) {
       a.input = value;
     else if (flag == "--output")
       a.output = value;
-    else if (flag == "--gtol")
+    else if (flag == "--gradient-tolerance")
       a.options.gradient_tolerance = number_arg(flag, value);
-    else if (flag == "--ftol")
+    else if (flag == "--error-tolerance")
       a.options.error_tolerance = number_arg(flag, value);
-    else if (flag == "--tip-tol")
+    else if (flag == "--tip-tolerance")
       a.options.tip_tolerance = number_arg(flag, value);
-    else if (flag == "--orientation-tol") {
+    else if (flag == "--orientation-tolerance") {
       a.options.orientation_tolerance_deg = number_arg(flag, value);
       if (a.options.orientation_tolerance_deg <= 0) usage(flag + ": \"" + value + "\" is not a number > 0");
     } else if (flag == "--max-joint-move")
@@ -147,7 +148,7 @@ Args parse_args(int argc, char** argv) {
         a.page_goals.push_back(rows.substr(at, comma - at));
         at = comma + 1;
       }
-    } else if (flag == "--timeout")
+    } else if (flag == "--time-budget")
       a.options.time_budget_s = number_arg(flag, value);
     else if (flag == "--restarts")
       a.options.restarts = static_cast<int>(number_arg(flag, value));

@@ -3,8 +3,8 @@
 // compares it with the TypeScript side (web/src/rig/tolerances.ts, bench-node/targets.ts).
 //
 // Usage: protocol_targets RIG.json [--samples N] [--seed S]   (defaults 5 and 1)
-// Output: {"size": rig units, "gtol": ..., "ftol": ..., "random": SET, "incremental": SET}, where
-// SET = {"starts": [[degrees]], "goals": [[degrees]], "targets": [[rig units]]}, one row per sample.
+// Output: {"size": rig units, "gradientTolerance": ..., "errorTolerance": ..., "random": SET, "incremental": SET},
+// where SET = {"starts": [[degrees]], "goals": [[degrees]], "targets": [[rig units]]}, one row per sample.
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -52,7 +52,7 @@ int main(int argc, char** argv) {
     const double size = ik::protocol::rig_size(kin.rig());
     const ik::protocol::Tolerances tol =
         ik::protocol::report_tolerances(std::filesystem::path(path).stem().string(), true, size);
-    nlohmann::json doc = {{"size", size}, {"gtol", tol.gradient}, {"ftol", tol.error}};
+    nlohmann::json doc = {{"size", size}, {"gradientTolerance", tol.gradient}, {"errorTolerance", tol.error}};
     for (const char* experiment : {"random", "incremental"}) {
       const auto cases = ik::protocol::target_set(kin, experiment, samples, seed);
       doc[experiment] = {{"starts", rows(cases, &ik::protocol::TargetCase::start)},

@@ -17,23 +17,23 @@
 
 export interface Tolerances {
   /** |grad E| threshold, rig units^2 per degree. */
-  gtol: number;
+  gradientTolerance: number;
   /** E threshold (and the success test), rig units^2. */
-  ftol: number;
+  errorTolerance: number;
 }
 
 /** The report's rigs and their tolerances (PROTOCOL.md). */
 export const reportTolerances: Readonly<Record<string, Tolerances>> = {
-  'ikea-lamp': { gtol: 1e-4, ftol: 2e-4 },
-  'robot-arm': { gtol: 1e-4, ftol: 2e-4 },
-  knight: { gtol: 1e-4, ftol: 2e-4 },
-  'chimpanzee-hand': { gtol: 1e-4, ftol: 2e-4 },
-  beast: { gtol: 0.01, ftol: 0.002 },
+  'ikea-lamp': { gradientTolerance: 1e-4, errorTolerance: 2e-4 },
+  'robot-arm': { gradientTolerance: 1e-4, errorTolerance: 2e-4 },
+  knight: { gradientTolerance: 1e-4, errorTolerance: 2e-4 },
+  'chimpanzee-hand': { gradientTolerance: 1e-4, errorTolerance: 2e-4 },
+  beast: { gradientTolerance: 0.01, errorTolerance: 0.002 },
 };
 
 /** Reference size (rig units) at which an unknown rig gets the report's usual tolerances. */
 export const REFERENCE_SIZE = 1;
-const REFERENCE_TOL: Tolerances = { gtol: 1e-4, ftol: 2e-4 };
+const REFERENCE_TOL: Tolerances = { gradientTolerance: 1e-4, errorTolerance: 2e-4 };
 
 /** Share of the rig size within which an end effector is on its target while dragging. */
 export const DRAG_TIP_SHARE = 1e-3;
@@ -91,5 +91,5 @@ export function defaultTolerances(name: string, a7: boolean, size: number): Tole
   const report = a7 && Object.hasOwn(reportTolerances, name) ? reportTolerances[name] : undefined;
   if (report) return { ...report };
   const scale = (size / REFERENCE_SIZE) ** 2;
-  return { gtol: REFERENCE_TOL.gtol * scale, ftol: REFERENCE_TOL.ftol * scale };
+  return { gradientTolerance: REFERENCE_TOL.gradientTolerance * scale, errorTolerance: REFERENCE_TOL.errorTolerance * scale };
 }
