@@ -21,5 +21,10 @@ export default defineConfig({
   // three.js alone is about 700 kB minified: one chunk is fine for this page.
   // The compare worker (web/src/page/compare_worker.ts) is an ES module: it imports the WebAssembly glue.
   worker: { format: 'es' },
-  build: { outDir: resolve(import.meta.dirname, 'dist/site'), emptyOutDir: true, target: 'es2022', chunkSizeWarningLimit: 2000 },
+  build: {
+    outDir: resolve(import.meta.dirname, 'dist/site'),
+    emptyOutDir: true,
+    target: 'es2022',
+    chunkSizeWarningLimit: 2000,
+  },
 });

@@ -28,9 +28,15 @@ function wasmBesideModule(): Plugin {
     enforce: 'pre',
     transform(code, id) {
       if (!id.endsWith('ik_core.mjs')) return null;
-      const out = code.replace(/new URL\(\s*(["'])ik_core\.wasm\1\s*,\s*import\.meta\.url\s*\)/g, 'new URL(/* @vite-ignore */ "ik_core.wasm", import.meta.url)');
+      const out = code.replace(
+        /new URL\(\s*(["'])ik_core\.wasm\1\s*,\s*import\.meta\.url\s*\)/g,
+        'new URL(/* @vite-ignore */ "ik_core.wasm", import.meta.url)',
+      );
       // A new Emscripten may spell it differently: fail rather than ship the .wasm inlined.
-      if (out === code) this.error('ik_core.mjs: new URL("ik_core.wasm", import.meta.url) was not found; update wasmBesideModule() for this Emscripten');
+      if (out === code)
+        this.error(
+          'ik_core.mjs: new URL("ik_core.wasm", import.meta.url) was not found; update wasmBesideModule() for this Emscripten',
+        );
       return { code: out, map: null };
     },
     renderChunk(code) {
@@ -51,10 +57,14 @@ function packageTypes(): Plugin {
   return {
     name: 'ik-package-types',
     generateBundle() {
-      const config = ts.getParsedCommandLineOfConfigFile(resolve(root, 'tsconfig.lib.json'), {}, {
-        ...ts.sys,
-        onUnRecoverableConfigFileDiagnostic: (d) => this.error(ts.flattenDiagnosticMessageText(d.messageText, '\n')),
-      })!;
+      const config = ts.getParsedCommandLineOfConfigFile(
+        resolve(root, 'tsconfig.lib.json'),
+        {},
+        {
+          ...ts.sys,
+          onUnRecoverableConfigFileDiagnostic: (d) => this.error(ts.flattenDiagnosticMessageText(d.messageText, '\n')),
+        },
+      )!;
       const program = ts.createProgram(config.fileNames, config.options);
       const libDir = dirname(entry);
       const queue = [entry];
@@ -62,11 +72,20 @@ function packageTypes(): Plugin {
         let text = '';
         const emitted = program.emit(program.getSourceFile(source), (_, data) => (text = data), undefined, true);
         const problems = [...ts.getPreEmitDiagnostics(program, program.getSourceFile(source)), ...emitted.diagnostics];
-        if (problems.length) this.error(ts.formatDiagnostics(problems, { ...ts.sys, getCanonicalFileName: (f) => f, getCurrentDirectory: () => root, getNewLine: () => '\n' }));
+        if (problems.length)
+          this.error(
+            ts.formatDiagnostics(problems, {
+              ...ts.sys,
+              getCanonicalFileName: (f) => f,
+              getCurrentDirectory: () => root,
+              getNewLine: () => '\n',
+            }),
+          );
         const fileName = relative(libDir, source).replace(/\.ts$/, '.d.ts');
         for (const [, , spec] of text.matchAll(/(?:from |import\()(['"])(\.[^'"]*)\1/g)) {
           const target = resolve(dirname(source), spec.replace(/\.js$/, '.ts'));
-          if (dirname(target) !== libDir) this.error(`${fileName} names ${spec}: the package's types may name only three.js and web/src/lib/`);
+          if (dirname(target) !== libDir)
+            this.error(`${fileName} names ${spec}: the package's types may name only three.js and web/src/lib/`);
           if (!queue.includes(target)) queue.push(target);
         }
         this.emitFile({ type: 'asset', fileName, source: text });
@@ -81,7 +100,8 @@ function packageFiles(): Plugin {
   const manifest = {
     name: 'ik-web-avatar',
     version,
-    description: 'A humanoid three.js character driven by its head and hands: inverse kinematics in WebAssembly (C++/Eigen)',
+    description:
+      'A humanoid three.js character driven by its head and hands: inverse kinematics in WebAssembly (C++/Eigen)',
     type: 'module',
     main: './index.js',
     types: './index.d.ts',
@@ -95,8 +115,16 @@ function packageFiles(): Plugin {
     name: 'ik-package-files',
     generateBundle() {
       this.emitFile({ type: 'asset', fileName: 'package.json', source: `${JSON.stringify(manifest, null, 2)}\n` });
-      this.emitFile({ type: 'asset', fileName: 'avatar-example.html', source: readFileSync(join(root, 'web/avatar-example.html')) });
-      this.emitFile({ type: 'asset', fileName: 'models/character.glb', source: readFileSync(join(root, 'web/public/models/character.glb')) });
+      this.emitFile({
+        type: 'asset',
+        fileName: 'avatar-example.html',
+        source: readFileSync(join(root, 'web/avatar-example.html')),
+      });
+      this.emitFile({
+        type: 'asset',
+        fileName: 'models/character.glb',
+        source: readFileSync(join(root, 'web/public/models/character.glb')),
+      });
     },
   };
 }

@@ -11,9 +11,15 @@ function dropGlueWasmUrl(): Plugin {
     name: 'ik-drop-glue-wasm-url',
     transform(code, id) {
       if (!id.endsWith('ik_core.mjs')) return null;
-      const out = code.replace(/new URL\(\s*["']ik_core\.wasm["']\s*,\s*import\.meta\.url\s*\)\.toString\(\)/g, '"ik_core.wasm"');
+      const out = code.replace(
+        /new URL\(\s*["']ik_core\.wasm["']\s*,\s*import\.meta\.url\s*\)\.toString\(\)/g,
+        '"ik_core.wasm"',
+      );
       // A new Emscripten may spell it differently: fail the build rather than ship the .wasm twice.
-      if (out === code) this.error('ik_core.mjs: the wasm URL expression new URL("ik_core.wasm", import.meta.url).toString() was not found; update dropGlueWasmUrl() for this Emscripten');
+      if (out === code)
+        this.error(
+          'ik_core.mjs: the wasm URL expression new URL("ik_core.wasm", import.meta.url).toString() was not found; update dropGlueWasmUrl() for this Emscripten',
+        );
       return { code: out, map: null };
     },
   };

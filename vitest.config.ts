@@ -13,7 +13,11 @@ export default defineConfig({
     // skipped without them, failed under CI.
     tags: [
       { name: A7_TAG, description: "reads the report's A7 rigs ($IK_A7_DIR)", skip: !a7Present && !a7Required },
-      { name: ROBOTS_TAG, description: 'reads the shared URDF robots ($IK_ROBOTS_DIR)', skip: !robotsPresent && !a7Required },
+      {
+        name: ROBOTS_TAG,
+        description: 'reads the shared URDF robots ($IK_ROBOTS_DIR)',
+        skip: !robotsPresent && !a7Required,
+      },
     ],
     globalSetup: ['tests/helpers/test_rigs_setup.ts'],
     setupFiles: ['tests/helpers/a7_setup.ts'],

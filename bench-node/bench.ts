@@ -52,8 +52,11 @@ export async function prepareRigs(opts: BenchOptions, ik: IkCoreModule): Promise
   const out: PreparedRig[] = [];
   for (const entry of opts.rigs) out.push(await namingRig(entry, () => prepareRig(entry, opts, ik)));
   if (opts.experiments.includes('gestures') && out.every((rig) => rig.gestureSteps === 0)) {
-    const why = 'the gestures experiment needs a humanoid the importer recognises, with hand, foot or head end effectors (npm run rig -- FILE shows the mapping; A7 rigs have none)';
-    throw new BenchError(out.length === 1 ? `${opts.rigs[0]}: ${why}` : `--experiment gestures: no rig has gestures: ${why}`);
+    const why =
+      'the gestures experiment needs a humanoid the importer recognises, with hand, foot or head end effectors (npm run rig -- FILE shows the mapping; A7 rigs have none)';
+    throw new BenchError(
+      out.length === 1 ? `${opts.rigs[0]}: ${why}` : `--experiment gestures: no rig has gestures: ${why}`,
+    );
   }
   return out;
 }
@@ -83,7 +86,9 @@ async function namingRig<T>(entry: string, work: () => T | Promise<T>): Promise<
 async function prepareRig(entry: string, opts: BenchOptions, ik: IkCoreModule): Promise<PreparedRig> {
   const rig = await loadBenchRig(entry, opts.humanoidLimits, opts.chain);
   const core = new IkRig(ik, rig.spec);
-  let size: number, reachSteps: number, gestures = 0;
+  let size: number,
+    reachSteps: number,
+    gestures = 0;
   try {
     size = rigSize(core.boneTips(new Float64Array(core.numAngles)));
     const rest = project(rig.spec, new Float64Array(core.numAngles));
@@ -94,9 +99,13 @@ async function prepareRig(entry: string, opts: BenchOptions, ik: IkCoreModule): 
   }
   if (rig.spec.effectors.length === 0) throw new BenchError(`${entry}: no end effectors`);
   if (opts.experiments.includes('drag') && draggableEffectors(rig.spec).length === 0)
-    throw new BenchError(`${entry}: the drag experiment needs an end effector that can move while the others stay pinned`);
+    throw new BenchError(
+      `${entry}: the drag experiment needs an end effector that can move while the others stay pinned`,
+    );
   if (opts.experiments.includes('reach') && reachSteps === 0)
-    throw new BenchError(`${entry}: the reach experiment needs an end effector that can move while the others stay pinned, its tip off its chain root`);
+    throw new BenchError(
+      `${entry}: the reach experiment needs an end effector that can move while the others stay pinned, its tip off its chain root`,
+    );
   const defaults = defaultTolerances(rig.name, rig.format === 'a7', size);
   const drag = dragTolerances(size);
   const prepared: PreparedRig = {
@@ -104,7 +113,11 @@ async function prepareRig(entry: string, opts: BenchOptions, ik: IkCoreModule): 
     size,
     gradientTolerance: opts.gradientTolerance ?? defaults.gradientTolerance,
     errorTolerance: opts.errorTolerance ?? defaults.errorTolerance,
-    drag: { gradientTolerance: opts.gradientTolerance ?? drag.gradientTolerance, tipTolerance: opts.errorTolerance === undefined ? drag.tipTolerance : 0, maxJointMove: drag.maxJointMove },
+    drag: {
+      gradientTolerance: opts.gradientTolerance ?? drag.gradientTolerance,
+      tipTolerance: opts.errorTolerance === undefined ? drag.tipTolerance : 0,
+      maxJointMove: drag.maxJointMove,
+    },
     reachSteps,
     gestureSteps: gestures,
     limbs: flipLimbs(rig.spec, rig.humanoid),
@@ -138,7 +151,8 @@ export function enginesFor(method: string, opts: BenchOptions): string[] {
  */
 function samplesOf(rig: PreparedRig, experiment: Experiment, method: string, opts: BenchOptions): number {
   if (experiment === 'reach') return Math.min(opts.samples[method], rig.reachSteps);
-  if (experiment === 'gestures') return opts.samplesGiven ? Math.min(opts.samples[method], rig.gestureSteps) : rig.gestureSteps;
+  if (experiment === 'gestures')
+    return opts.samplesGiven ? Math.min(opts.samples[method], rig.gestureSteps) : rig.gestureSteps;
   return opts.samples[method];
 }
 
@@ -169,10 +183,17 @@ export function totalSolves(opts: BenchOptions, rigs: readonly PreparedRig[]): n
  * and joint speed, the page's goals, and no restarts: a restart jumps the whole pose).
  */
 export function runSettings(rig: PreparedRig, experiment: Experiment, method: string, opts: BenchOptions): RunSettings {
-  const common = { method, errorTolerance: rig.errorTolerance, timeBudgetSeconds: opts.timeBudgetSeconds, paper: opts.paper, rigSize: rig.size };
+  const common = {
+    method,
+    errorTolerance: rig.errorTolerance,
+    timeBudgetSeconds: opts.timeBudgetSeconds,
+    paper: opts.paper,
+    rigSize: rig.size,
+  };
   const restarts = opts.restarts === undefined ? {} : { restarts: opts.restarts };
   if (experiment === 'tracik') return { ...common, ...tracikSettings(opts.gradientTolerance), ...restarts };
-  if (isDragging(experiment)) return { ...common, ...rig.drag, restarts: 0, pageGoals: true, pinFrames: rig.humanoid !== null };
+  if (isDragging(experiment))
+    return { ...common, ...rig.drag, restarts: 0, pageGoals: true, pinFrames: rig.humanoid !== null };
   const pose = opts.goals === 'pose' ? { goals: opts.goals, orientationToleranceDeg: ORIENTATION_TOLERANCE_DEG } : {};
   return { ...common, gradientTolerance: rig.gradientTolerance, tipTolerance: 0, ...restarts, ...pose };
 }
@@ -216,7 +237,8 @@ function countedAsThePaper(r: SolveResult): SolveResult {
 /** Runs everything; rows in (rig, experiment, method, engine) order. */
 export async function runBench(rigs: readonly PreparedRig[], ctx: RunContext): Promise<Row[]> {
   const { opts, ik, progress } = ctx;
-  const needsPool = opts.experiments.some(hasReachability) || opts.methods.some((m) => isPeer(m) || opts.engines.includes('wasm'));
+  const needsPool =
+    opts.experiments.some(hasReachability) || opts.methods.some((m) => isPeer(m) || opts.engines.includes('wasm'));
   const ours = opts.methods.filter((m) => !isPeer(m));
   if (ours.length > 0 && opts.engines.includes('native')) checkNativeTool(ours);
   // No more workers than the longest set has solves: the others would only take memory.
@@ -228,7 +250,14 @@ export async function runBench(rigs: readonly PreparedRig[], ctx: RunContext): P
       const sets = await namingRig(rig.path, () => targetSetsFor(rig, opts, ik));
       for (const experiment of experimentsOf(rig, opts).filter(hasReachability)) {
         progress.label(`${rig.name} ${experiment}: reachability (${REFERENCE_METHOD} with restarts, untimed)`);
-        await markReachable(pool!, rig.path, rig.spec, runSettings(rig, experiment, REFERENCE_METHOD, opts), sets.get(experiment)!, (n) => progress.advance(n));
+        await markReachable(
+          pool!,
+          rig.path,
+          rig.spec,
+          runSettings(rig, experiment, REFERENCE_METHOD, opts),
+          sets.get(experiment)!,
+          (n) => progress.advance(n),
+        );
       }
       // Forward kinematics in this thread: how far each step moves its dragged target, and the
       // native engine's flips.
@@ -251,8 +280,16 @@ export async function runBench(rigs: readonly PreparedRig[], ctx: RunContext): P
                   : await runOnPool(pool!, rig.path, rig.spec, settings, set, (n) => progress.advance(n), limbs);
               if (engine === 'native' && dragging) addFlips(results, set, measurer);
               const counted = settings.paper && !isPeer(method) ? results.map(countedAsThePaper) : results;
-              const jumpRule = targetMoves ? { targetMoves: targetMoves.subarray(0, set.count), size: rig.size } : undefined;
-              const stats = summarize({ rig: rig.name, experiment, method, engine, goals: opts.goals }, counted, settings, set.reachable, jumpRule);
+              const jumpRule = targetMoves
+                ? { targetMoves: targetMoves.subarray(0, set.count), size: rig.size }
+                : undefined;
+              const stats = summarize(
+                { rig: rig.name, experiment, method, engine, goals: opts.goals },
+                counted,
+                settings,
+                set.reachable,
+                jumpRule,
+              );
               const row: Row = { ...stats, restarts: effectiveRestarts(ik, settings) };
               rows.push(row);
               ctx.onRow?.(row);

@@ -77,7 +77,11 @@ export class ClipFrames {
 
   /** Every node's world matrix at time `t` of a clip's `tracks` (none: the rest pose). */
   private world(tracks: readonly Track[], t: number): Float64Array[] {
-    const trs = this.nodes.map((n) => ({ t: n.getTranslation() as number[], r: n.getRotation() as number[], s: n.getScale() as number[] }));
+    const trs = this.nodes.map((n) => ({
+      t: n.getTranslation() as number[],
+      r: n.getRotation() as number[],
+      s: n.getScale() as number[],
+    }));
     for (const track of tracks) trs[track.node][pathKey(track.path)] = sample(track, t);
     const world: Float64Array[] = new Array(this.nodes.length);
     const at = (i: number): Float64Array => {
@@ -97,9 +101,12 @@ function pathKey(path: Track['path']): 't' | 'r' | 's' {
 function tracksOf(animation: Animation, nodes: Node[]): Track[] {
   const out: Track[] = [];
   for (const channel of animation.listChannels()) {
-    const node = channel.getTargetNode(), path = channel.getTargetPath(), sampler = channel.getSampler();
+    const node = channel.getTargetNode(),
+      path = channel.getTargetPath(),
+      sampler = channel.getSampler();
     if (!node || !sampler || (path !== 'translation' && path !== 'rotation' && path !== 'scale')) continue;
-    const input = sampler.getInput()?.getArray(), output = sampler.getOutput()?.getArray();
+    const input = sampler.getInput()?.getArray(),
+      output = sampler.getOutput()?.getArray();
     if (!input || !output || input.length === 0) continue;
     const interpolation = sampler.getInterpolation();
     out.push({
@@ -129,7 +136,8 @@ function sample(track: Track, t: number): number[] {
   while (times[k + 1] <= t) k++;
   if (interpolation === 'STEP') return value(k);
   const u = (t - times[k]) / (times[k + 1] - times[k]);
-  const a = value(k), b = value(k + 1);
+  const a = value(k),
+    b = value(k + 1);
   return stride === 4 ? slerp(a, b, u) : a.map((x, i) => x + u * (b[i] - x));
 }
 
@@ -142,19 +150,23 @@ function slerp(a: number[], b: number[], u: number): number[] {
     const n = Math.hypot(...q);
     return q.map((x) => x / n);
   }
-  const theta = Math.acos(dot), s = Math.sin(theta);
-  const wa = Math.sin((1 - u) * theta) / s, wb = (sign * Math.sin(u * theta)) / s;
+  const theta = Math.acos(dot),
+    s = Math.sin(theta);
+  const wa = Math.sin((1 - u) * theta) / s,
+    wb = (sign * Math.sin(u * theta)) / s;
   return a.map((x, i) => wa * x + wb * b[i]);
 }
 
 /** A clip's frame rate (its keyframes' smallest spacing, rounded to a common rate) and frame count. */
 function clipInfo(animation: Animation, index: number): ClipInfo {
-  let end = 0, spacing = Infinity;
+  let end = 0,
+    spacing = Infinity;
   for (const channel of animation.listChannels()) {
     const input = channel.getSampler()?.getInput()?.getArray();
     if (!input || input.length === 0) continue;
     end = Math.max(end, input[input.length - 1]);
-    for (let k = 1; k < input.length; k++) if (input[k] > input[k - 1]) spacing = Math.min(spacing, input[k] - input[k - 1]);
+    for (let k = 1; k < input.length; k++)
+      if (input[k] > input[k - 1]) spacing = Math.min(spacing, input[k] - input[k - 1]);
   }
   const rate = 1 / spacing;
   const fps = FRAME_RATES.find((r) => Math.abs(r - rate) < 0.02 * r) ?? FALLBACK_FPS;

@@ -8,7 +8,9 @@ import type { RigSpec } from '#ik/rig_arrays.js';
 import { fromRowMajor } from '#view/row_major.js';
 import { xzxWithinLimits } from '#rig/xzx_angles.js';
 
-const X = new Vector3(1, 0, 0), Z = new Vector3(0, 0, 1), RAD = Math.PI / 180;
+const X = new Vector3(1, 0, 0),
+  Z = new Vector3(0, 0, 1),
+  RAD = Math.PI / 180;
 
 /**
  * Degrees between bone `bone`'s rotation at `motion` (16 row-major numbers per bone: each bone's
@@ -19,10 +21,18 @@ export function limitExcessDeg(spec: RigSpec, motion: Float64Array, bone: number
   const parent = spec.parents[bone];
   const rest = fromRowMajor(new Matrix4(), spec.rest, 16 * bone);
   const above = parent < 0 ? new Matrix4() : fromRowMajor(new Matrix4(), motion, 16 * parent).invert();
-  const local = rest.clone().invert().multiply(above).multiply(fromRowMajor(new Matrix4(), motion, 16 * bone)).multiply(rest);
+  const local = rest
+    .clone()
+    .invert()
+    .multiply(above)
+    .multiply(fromRowMajor(new Matrix4(), motion, 16 * bone))
+    .multiply(rest);
   const q = new Quaternion().setFromRotationMatrix(local).normalize();
   const angles = new Float64Array(3);
   xzxWithinLimits(q, spec.lower.subarray(3 * bone, 3 * bone + 3), spec.upper.subarray(3 * bone, 3 * bone + 3), angles);
-  const within = new Quaternion().setFromAxisAngle(X, angles[0] * RAD).multiply(new Quaternion().setFromAxisAngle(Z, angles[1] * RAD)).multiply(new Quaternion().setFromAxisAngle(X, angles[2] * RAD));
+  const within = new Quaternion()
+    .setFromAxisAngle(X, angles[0] * RAD)
+    .multiply(new Quaternion().setFromAxisAngle(Z, angles[1] * RAD))
+    .multiply(new Quaternion().setFromAxisAngle(X, angles[2] * RAD));
   return q.angleTo(within) / RAD;
 }

@@ -37,22 +37,25 @@ const notes = [
   'Columns as in the report: t_avg (s), iter_avg, E_avg, E_IQM (mean of the middle half of the sorted final E), ' +
     'max E; plus success (final E < error tolerance), median, 95th percentile and max time per solve, and the stop reasons. ' +
     'Drag, reach and gestures: success means every tip within the tip tolerance of its target, over the reachable steps; ' +
-    'unreachable steps (reach, gestures) are counted apart, wobble_unreach is the pinned effectors\' wobble after them; ' +
+    "unreachable steps (reach, gestures) are counted apart, wobble_unreach is the pinned effectors' wobble after them; " +
     'jumps counts steps where a joint moved more than 5% of the rig size while the dragged target moved less than 1%; ' +
     'flips counts steps where an elbow or knee bent against its anatomical direction or its bend plane turned more than 90 degrees; ' +
     'jump_max_deg is the largest change of one angle in one step (the shortest way round for an angle without limits). ' +
     'With --goals pose, E is over the tip positions and success also needs every orientation within 0.5 degrees; ' +
-    'rot_err_avg_deg and rot_err_max_deg are the mean and max of each solve\'s largest orientation error. ' +
-    'tracik: TRAC-IK\'s protocol (pose within 1e-5 in position and 1e-5 rad in rotation angle, from the mid-limit seed, ' +
-    '5 ms per query; t_avg over all queries), with the TRAC-IK v1.4.6 README\'s KDL and TRAC-IK figures for the chains it lists. ' +
-    'Definitions, the drag and reach experiments and the peers\' settings: bench-node/README.md.',
+    "rot_err_avg_deg and rot_err_max_deg are the mean and max of each solve's largest orientation error. " +
+    "tracik: TRAC-IK's protocol (pose within 1e-5 in position and 1e-5 rad in rotation angle, from the mid-limit seed, " +
+    "5 ms per query; t_avg over all queries), with the TRAC-IK v1.4.6 README's KDL and TRAC-IK figures for the chains it lists. " +
+    "Definitions, the drag and reach experiments and the peers' settings: bench-node/README.md.",
   'Times are per solve in seconds, measured on a machine that may be shared: a solve that is descheduled for ' +
     'milliseconds moves t_avg and t_max far more than t_median, so compare speeds by the medians. Wobble is in rig units.',
 ];
 
 /** The checked-out commit, for the record; empty outside a git checkout. */
 function gitCommit(): string {
-  const r = spawnSync('git', ['rev-parse', '--short', 'HEAD'], { cwd: fileURLToPath(new URL('..', import.meta.url)), encoding: 'utf8' });
+  const r = spawnSync('git', ['rev-parse', '--short', 'HEAD'], {
+    cwd: fileURLToPath(new URL('..', import.meta.url)),
+    encoding: 'utf8',
+  });
   return r.status === 0 ? r.stdout.trim() : '';
 }
 
@@ -81,7 +84,11 @@ async function main(argv: string[], io: CommandIo): Promise<number> {
   const ik = await loadIkNode();
   const opts = parseOptions(argv, io.isTTY, IkSolver.methods(ik), io.err);
   if (!opts) return 0;
-  const outputs = [['--json', opts.json], ['--csv', opts.csv], ['--markdown', opts.markdown]] as const;
+  const outputs = [
+    ['--json', opts.json],
+    ['--csv', opts.csv],
+    ['--markdown', opts.markdown],
+  ] as const;
   checkOutputs(outputs, [...resolveRigPaths(opts.rigs), ...(opts.compare ? [opts.compare] : [])]);
   tryOutputs(outputs);
   if (opts.track) {
@@ -154,6 +161,7 @@ async function main(argv: string[], io: CommandIo): Promise<number> {
 
 /** Control characters (line breaks) of a message escaped, so that it stays on one line. */
 function oneLine(message: string): string {
+  // eslint-disable-next-line no-control-regex -- the control characters are what it escapes
   return message.replace(/[\u0000-\u001f\u007f]/g, (c) => JSON.stringify(c).slice(1, -1));
 }
 

@@ -13,7 +13,11 @@ export class DragGoals {
   private keep: Uint8Array;
 
   /** For `spec` with the end effectors `effectors` (bone indices, in effector order); `frames`: a humanoid's, which pins frames. */
-  constructor(private readonly spec: RigSpec, private readonly effectors: readonly number[], private readonly frames: boolean) {
+  constructor(
+    private readonly spec: RigSpec,
+    private readonly effectors: readonly number[],
+    private readonly frames: boolean,
+  ) {
     this.pins = new Float64Array(4 * effectors.length);
     this.keep = new Uint8Array(effectors.length);
   }
@@ -30,7 +34,9 @@ export class DragGoals {
       effectors: this.effectors.map((bone, k): EffectorGoal => {
         const position = target.subarray(3 * k, 3 * k + 3);
         if (k === dragged) return { bone, position, yields: true };
-        return this.keep[k] ? { bone, position, orientation: this.pins.subarray(4 * k, 4 * k + 4) } : { bone, position };
+        return this.keep[k]
+          ? { bone, position, orientation: this.pins.subarray(4 * k, 4 * k + 4) }
+          : { bone, position };
       }),
     };
   }
@@ -42,5 +48,7 @@ export class DragGoals {
  * by commas.
  */
 export function pinnedFramesArgument(spec: RigSpec, effectors: ArrayLike<number>, frames: boolean): string {
-  return Array.from(effectors, (_, d) => (frames ? framesKept(spec, effectors, d) : new Uint8Array(effectors.length)).join('')).join(',');
+  return Array.from(effectors, (_, d) =>
+    (frames ? framesKept(spec, effectors, d) : new Uint8Array(effectors.length)).join(''),
+  ).join(',');
 }

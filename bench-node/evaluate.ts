@@ -52,7 +52,12 @@ export function isOnTarget(test: OnTargetTest, E: number, tip: number, rotationD
  * (upper - lower >= 360) changes the shortest way round, min(|d| mod 360, 360 - |d| mod 360): a
  * turn of 350 is one of 10 degrees the other way. A limited angle changes by |d|.
  */
-export function largestChange(from: ArrayLike<number>, to: ArrayLike<number>, lower: ArrayLike<number>, upper: ArrayLike<number>): number {
+export function largestChange(
+  from: ArrayLike<number>,
+  to: ArrayLike<number>,
+  lower: ArrayLike<number>,
+  upper: ArrayLike<number>,
+): number {
   let worst = 0;
   for (let i = 0; i < from.length; i++) {
     const d = Math.abs(to[i] - from[i]);

@@ -57,7 +57,8 @@ interface Bend {
 
 function bendOf(spec: RigSpec, poses: ArrayLike<number>, bone: number): Bend {
   const { root, joint, tip } = limbPoints(spec, poses, bone);
-  const upper = sub(joint, root), lower = sub(tip, joint);
+  const upper = sub(joint, root),
+    lower = sub(tip, joint);
   const normal = cross(upper, lower);
   return { normal, angleDeg: (Math.atan2(norm(normal), dot(upper, lower)) * 180) / Math.PI };
 }
@@ -65,7 +66,8 @@ function bendOf(spec: RigSpec, poses: ArrayLike<number>, bone: number): Bend {
 /** Direction `d` (rest coordinates) turned with bone `bone` at `poses` (its rotation R_bone). */
 function turned(poses: ArrayLike<number>, bone: number, d: Vec3): Vec3 {
   const o = 16 * bone;
-  const row = (r: number): number => poses[o + 4 * r] * d[0] + poses[o + 4 * r + 1] * d[1] + poses[o + 4 * r + 2] * d[2];
+  const row = (r: number): number =>
+    poses[o + 4 * r] * d[0] + poses[o + 4 * r + 1] * d[1] + poses[o + 4 * r + 2] * d[2];
   return [row(0), row(1), row(2)];
 }
 
@@ -81,7 +83,8 @@ export function bentAgainst(spec: RigSpec, limb: FlipLimb, poses: ArrayLike<numb
  * step's start and solution); NaN when the limb is straight (within BENT_DEG) at either pose.
  */
 export function planeTurnDeg(spec: RigSpec, limb: FlipLimb, from: ArrayLike<number>, to: ArrayLike<number>): number {
-  const a = bendOf(spec, from, limb.bone), b = bendOf(spec, to, limb.bone);
+  const a = bendOf(spec, from, limb.bone),
+    b = bendOf(spec, to, limb.bone);
   if (!(a.angleDeg > BENT_DEG && b.angleDeg > BENT_DEG)) return NaN;
   return (Math.atan2(norm(cross(a.normal, b.normal)), dot(a.normal, b.normal)) * 180) / Math.PI;
 }
@@ -90,6 +93,11 @@ export function planeTurnDeg(spec: RigSpec, limb: FlipLimb, from: ArrayLike<numb
  * Whether the step from pose `from` to pose `to` (IkRig.poses) flips one of `limbs`: one bends
  * against its anatomical direction at `to`, or its bend plane turns more than FLIP_TURN_DEG.
  */
-export function isFlip(spec: RigSpec, limbs: readonly FlipLimb[], from: ArrayLike<number>, to: ArrayLike<number>): boolean {
+export function isFlip(
+  spec: RigSpec,
+  limbs: readonly FlipLimb[],
+  from: ArrayLike<number>,
+  to: ArrayLike<number>,
+): boolean {
   return limbs.some((limb) => bentAgainst(spec, limb, to) || planeTurnDeg(spec, limb, from, to) > FLIP_TURN_DEG);
 }

@@ -56,7 +56,8 @@ const role = (side: Side, part: string): HumanoidRole => `${side}${part}` as Hum
 function effectorOf(spec: RigSpec, humanoid: HumanoidMap, r: HumanoidRole): number {
   const bone = humanoid.bones[r];
   if (bone === undefined) return -1;
-  let best = -1, bestDepth = Infinity;
+  let best = -1,
+    bestDepth = Infinity;
   spec.effectors.forEach((e, k) => {
     let depth = 0;
     for (let b = e; b >= 0; b = spec.parents[b], depth++) {
@@ -89,12 +90,20 @@ export function walk(start: Vec3, waypoints: readonly Vec3[], step: number): Vec
  * and the push, the feet, then the head. `rest`: P(0); `restTips`: the effectors' tips at P(0). A
  * gesture whose role or effector the rig lacks is left out.
  */
-export function gesturePaths(spec: RigSpec, body: GestureBody, rest: Float64Array, restTips: ArrayLike<number>): GesturePath[] {
+export function gesturePaths(
+  spec: RigSpec,
+  body: GestureBody,
+  rest: Float64Array,
+  restTips: ArrayLike<number>,
+): GesturePath[] {
   const { humanoid } = body;
   const frame = bodyFrame(spec, humanoid);
   const joints = jointPositions(spec, body.poses(rest));
   const head = (b: number): Vec3 => [joints[6 * b], joints[6 * b + 1], joints[6 * b + 2]];
-  const along = (d: Vec3): number[] => Array.from({ length: 2 * spec.parents.length }, (_, j) => dot(d, [joints[3 * j], joints[3 * j + 1], joints[3 * j + 2]]));
+  const along = (d: Vec3): number[] =>
+    Array.from({ length: 2 * spec.parents.length }, (_, j) =>
+      dot(d, [joints[3 * j], joints[3 * j + 1], joints[3 * j + 2]]),
+    );
   const heights = along(frame.up);
   const height = Math.max(...heights) - Math.min(...heights);
   const step = GESTURE_STEP_SHARE * height;
@@ -112,22 +121,34 @@ export function gesturePaths(spec: RigSpec, body: GestureBody, rest: Float64Arra
     paths.push({ name, effector, steps: walk(tipOf(effector), waypoints as Vec3[], step) });
   };
 
-  const hips = at('hips'), headBone = humanoid.bones.head;
-  const headTop: Vec3 | null = headBone === undefined ? null : [joints[6 * headBone + 3], joints[6 * headBone + 4], joints[6 * headBone + 5]];
+  const hips = at('hips'),
+    headBone = humanoid.bones.head;
+  const headTop: Vec3 | null =
+    headBone === undefined ? null : [joints[6 * headBone + 3], joints[6 * headBone + 4], joints[6 * headBone + 5]];
   for (const side of SIDES) {
     const hand = effectorOf(spec, humanoid, role(side, 'Hand'));
-    const shoulder = at(role(side, 'UpperArm')), otherShoulder = at(role(other(side), 'UpperArm'));
+    const shoulder = at(role(side, 'UpperArm')),
+      otherShoulder = at(role(other(side), 'UpperArm'));
     if (hand < 0 || !shoulder || !otherShoulder) continue;
     const arm = norm(sub(tipOf(hand), shoulder));
     const s = sideways(side);
-    push(`${side} hand across the chest`, hand, [offset(shoulder, arm, [forward, 0.6]), offset(otherShoulder, arm, [forward, 0.25])]);
-    push(`${side} hand over the head`, hand, [offset(shoulder, arm, [s, 0.5], [up, 0.6]), headTop && offset(headTop, arm, [up, 0.1])]);
+    push(`${side} hand across the chest`, hand, [
+      offset(shoulder, arm, [forward, 0.6]),
+      offset(otherShoulder, arm, [forward, 0.25]),
+    ]);
+    push(`${side} hand over the head`, hand, [
+      offset(shoulder, arm, [s, 0.5], [up, 0.6]),
+      headTop && offset(headTop, arm, [up, 0.1]),
+    ]);
     push(`${side} hand behind the back`, hand, [
       offset(shoulder, arm, [s, 0.2], [up, -0.9]),
       offset(shoulder, arm, [s, 0.1], [up, -0.7], [forward, -0.3]),
       hips && offset(hips, height, [up, 0.1], [forward, -0.12]),
     ]);
-    push(`${side} hand pushed past its reach`, hand, [offset(shoulder, arm, [forward, 0.5]), offset(shoulder, arm, [forward, PUSH_REACH])]);
+    push(`${side} hand pushed past its reach`, hand, [
+      offset(shoulder, arm, [forward, 0.5]),
+      offset(shoulder, arm, [forward, PUSH_REACH]),
+    ]);
   }
   for (const side of SIDES) {
     const foot = effectorOf(spec, humanoid, role(side, 'Foot'));
@@ -137,7 +158,8 @@ export function gesturePaths(spec: RigSpec, body: GestureBody, rest: Float64Arra
     push(`${side} foot lifted forward`, foot, [offset(tipOf(foot), leg, [forward, 0.35], [up, 0.35])]);
   }
   const headEffector = effectorOf(spec, humanoid, 'head');
-  if (headEffector >= 0) push('head lowered (crouch)', headEffector, [offset(tipOf(headEffector), height, [up, -CROUCH_SHARE])]);
+  if (headEffector >= 0)
+    push('head lowered (crouch)', headEffector, [offset(tipOf(headEffector), height, [up, -CROUCH_SHARE])]);
   return paths;
 }
 
@@ -151,8 +173,14 @@ export function gestureSteps(paths: readonly GesturePath[]): number {
  * targets (`restTips` with the dragged effector's target moved), starts (`rest` = P(0), used by each
  * path's first step), chained flags, dragged effector and path index.
  */
-export function fillGestures(set: TargetSet, paths: readonly GesturePath[], rest: Float64Array, restTips: Float64Array): void {
-  const m = set.numAngles, r = set.numResiduals;
+export function fillGestures(
+  set: TargetSet,
+  paths: readonly GesturePath[],
+  rest: Float64Array,
+  restTips: Float64Array,
+): void {
+  const m = set.numAngles,
+    r = set.numResiduals;
   let k = 0;
   paths.forEach((path, index) => {
     path.steps.forEach((point, t) => {

@@ -19,15 +19,26 @@ const usage = (message: string): BenchError => new BenchError(message, 2);
  * `methodsGiven` false, the default without the position-only methods). Throws a usage error
  * (one line) for a combination pose goals do not support.
  */
-export function checkGoals(goals: GoalsKind, methods: string[], methodsGiven: boolean, experiments: readonly Experiment[], paper: boolean, compare = false): string[] {
+export function checkGoals(
+  goals: GoalsKind,
+  methods: string[],
+  methodsGiven: boolean,
+  experiments: readonly Experiment[],
+  paper: boolean,
+  compare = false,
+): string[] {
   if (goals === 'position') return methods;
   if (paper) throw usage('--goals pose: paper mode (--paper) solves tip positions only; leave out one of them');
-  if (compare) throw usage("--goals pose: --compare sets the report's position-only figures beside these; leave out one of them");
+  if (compare)
+    throw usage("--goals pose: --compare sets the report's position-only figures beside these; leave out one of them");
   const dragging = experiments.find((e) => !poseExperiments.includes(e));
   if (dragging !== undefined)
-    throw usage(`--goals pose: the ${dragging} experiment has tip positions only; pose goals run with ${poseExperiments.join(', ')}`);
+    throw usage(
+      `--goals pose: the ${dragging} experiment has tip positions only; pose goals run with ${poseExperiments.join(', ')}`,
+    );
   if (!methodsGiven) return methods.filter((m) => !positionOnlyMethods.includes(m));
   const refused = methods.find((m) => positionOnlyMethods.includes(m));
-  if (refused !== undefined) throw usage(`--goals pose: ${refused} solves tip positions only; leave it out of --methods`);
+  if (refused !== undefined)
+    throw usage(`--goals pose: ${refused} solves tip positions only; leave it out of --methods`);
   return methods;
 }

@@ -20,10 +20,15 @@ export const JUMP_TARGET_SHARE = 0.01;
  * Every bone's head and tip at `poses` (IkRig.poses: 16 per bone), 6 numbers per bone (head x, y,
  * z, tip x, y, z; rig units), into `out` (a new array when absent).
  */
-export function jointPositions(spec: RigSpec, poses: ArrayLike<number>, out: Float64Array = new Float64Array(6 * spec.parents.length)): Float64Array {
+export function jointPositions(
+  spec: RigSpec,
+  poses: ArrayLike<number>,
+  out: Float64Array = new Float64Array(6 * spec.parents.length),
+): Float64Array {
   const { rest, lengths } = spec;
   for (let b = 0; b < spec.parents.length; b++) {
-    const r = 16 * b, p = 16 * b;
+    const r = 16 * b,
+      p = 16 * b;
     // Rest origin o and rest tip o + length * x (x: the first column of the rest rotation).
     const o = [rest[r + 3], rest[r + 7], rest[r + 11]];
     const t = [o[0] + lengths[b] * rest[r], o[1] + lengths[b] * rest[r + 4], o[2] + lengths[b] * rest[r + 8]];
@@ -51,12 +56,16 @@ export function largestMove(from: ArrayLike<number>, to: ArrayLike<number>): num
  * forward kinematics, 3 numbers per effector). NaN where a sample drags nothing.
  */
 export function draggedTargetMoves(set: TargetSet, tips: TipsFn): Float64Array {
-  const m = set.numAngles, r = set.numResiduals;
+  const m = set.numAngles,
+    r = set.numResiduals;
   const moves = new Float64Array(set.count).fill(NaN);
   for (let k = 0; k < set.count; k++) {
     const e = set.dragged[k];
     if (e < 0) continue;
-    const from = set.chained[k] && k > 0 ? set.targets.subarray((k - 1) * r, k * r) : tips(set.starts.subarray(k * m, (k + 1) * m));
+    const from =
+      set.chained[k] && k > 0
+        ? set.targets.subarray((k - 1) * r, k * r)
+        : tips(set.starts.subarray(k * m, (k + 1) * m));
     moves[k] = largestMove(from.subarray(3 * e, 3 * e + 3), set.targets.subarray(k * r + 3 * e, k * r + 3 * e + 3));
   }
   return moves;

@@ -38,5 +38,11 @@ function withRestarts(ik: IkCoreModule, spec: RigSpec, settings: RunSettings, pe
   const restarts = effectiveRestarts(ik, settings);
   if (restarts === 0) return peer;
   const rig = new IkRig(ik, spec);
-  return new RestartingRunner(peer, (k) => rig.restartStart(k), settings, restarts, () => rig.dispose());
+  return new RestartingRunner(
+    peer,
+    (k) => rig.restartStart(k),
+    settings,
+    restarts,
+    () => rig.dispose(),
+  );
 }

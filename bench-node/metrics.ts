@@ -34,7 +34,9 @@ import { timeToSuccess, type TimeToSuccess } from './time_to_success.js';
  * is our count of accepted steps.
  */
 export function paperIterations(iterations: number, stopReason: string): number {
-  return stopReason === 'converged_E' || stopReason === 'converged_grad' || stopReason === 'zero_step' ? iterations + 1 : iterations;
+  return stopReason === 'converged_E' || stopReason === 'converged_grad' || stopReason === 'zero_step'
+    ? iterations + 1
+    : iterations;
 }
 
 /** What one solve produced. Times in seconds, E in rig units^2, distances in rig units, angles in degrees. */
@@ -137,7 +139,13 @@ export interface JumpRule {
  * `reachable`: 1 per result whose targets are reachable (the others are left out of success);
  * `jumpRule`: for drag, reach and gestures, what makes a step a jump (without it jumps is null).
  */
-export function summarize(key: RowKey, results: readonly SolveResult[], test: OnTargetTest, reachable: ArrayLike<number>, jumpRule?: JumpRule): RowStats {
+export function summarize(
+  key: RowKey,
+  results: readonly SolveResult[],
+  test: OnTargetTest,
+  reachable: ArrayLike<number>,
+  jumpRule?: JumpRule,
+): RowStats {
   const E = results.map((r) => r.E);
   const t = results.map((r) => r.seconds);
   const stop: Record<string, number> = {};
@@ -151,7 +159,9 @@ export function summarize(key: RowKey, results: readonly SolveResult[], test: On
   const goals = key.goals ?? 'position';
   const rotation = goals === 'pose' ? results.map((r) => r.rotErrDeg ?? NaN) : [];
   const dragging = isDragging(key.experiment);
-  const unreachableWobble = results.filter((r, k) => reachable[k] !== 1 && Number.isFinite(r.wobbleAfter)).map((r) => r.wobbleAfter);
+  const unreachableWobble = results
+    .filter((r, k) => reachable[k] !== 1 && Number.isFinite(r.wobbleAfter))
+    .map((r) => r.wobbleAfter);
   const flips = results.map((r) => r.flip ?? NaN).filter((f) => Number.isFinite(f));
   return {
     ...key,
@@ -167,7 +177,10 @@ export function summarize(key: RowKey, results: readonly SolveResult[], test: On
     E_iqm: interquartileMean(E),
     E_max: maxOf(E),
     success_rate: judged.length ? succeeded.filter(Boolean).length / judged.length : NaN,
-    ...timeToSuccess(judged.map((r) => r.seconds), succeeded),
+    ...timeToSuccess(
+      judged.map((r) => r.seconds),
+      succeeded,
+    ),
     unreachable: results.length - judged.length,
     stop_reasons: stop,
     wobble_during_avg: orNull(mean(during)),
@@ -177,12 +190,20 @@ export function summarize(key: RowKey, results: readonly SolveResult[], test: On
     wobble_unreachable_avg: dragging ? orNull(mean(unreachableWobble)) : null,
     wobble_unreachable_max: dragging ? orNull(maxOf(unreachableWobble)) : null,
     jump_max_deg: dragging ? orNull(maxOf(jumps)) : null,
-    jumps: dragging && jumpRule ? countJumps(results.map((r) => r.jointMove ?? NaN), jumpRule.targetMoves, jumpRule.size) : null,
+    jumps:
+      dragging && jumpRule
+        ? countJumps(
+            results.map((r) => r.jointMove ?? NaN),
+            jumpRule.targetMoves,
+            jumpRule.size,
+          )
+        : null,
     flips: dragging && flips.length > 0 ? flips.filter((f) => f === 1).length : null,
     rot_err_avg_deg: goals === 'pose' ? orNull(mean(rotation)) : null,
     rot_err_max_deg: goals === 'pose' ? orNull(maxOf(rotation)) : null,
-    twist_rate: goals === 'pose' && test.tipTolerance > 0 && judged.length
-      ? judged.filter((r) => (r.twistMax ?? NaN) <= test.tipTolerance).length / judged.length
-      : null,
+    twist_rate:
+      goals === 'pose' && test.tipTolerance > 0 && judged.length
+        ? judged.filter((r) => (r.twistMax ?? NaN) <= test.tipTolerance).length / judged.length
+        : null,
   };
 }

@@ -113,7 +113,10 @@ function lists(flag: string, values: string | string[]): string[] {
  * Commander's parsers for options given more than once: a list option collects its values (the
  * first one replaces the default), any other option is refused the second time.
  */
-function repeats(): { collect: (value: string, previous: string | string[]) => string[]; once: (flag: string) => (value: string) => string } {
+function repeats(): {
+  collect: (value: string, previous: string | string[]) => string[];
+  once: (flag: string) => (value: string) => string;
+} {
   const seen = new Set<string>();
   return {
     collect: (value, previous) => (Array.isArray(previous) ? [...previous, value] : [value]),
@@ -139,7 +142,8 @@ function positiveNumber(flag: string, value: string, max = Infinity): number {
  */
 function integerIn(flag: string, value: string, min: number, max: number, why = ''): number {
   const x = /^-?\d+$/.test(present(flag, value)) ? Number(value) : NaN;
-  if (!Number.isSafeInteger(x) || x < min || x > max) throw usage(`${flag}: ${quote(value)} is not an integer in ${min}..${max}${why}`);
+  if (!Number.isSafeInteger(x) || x < min || x > max)
+    throw usage(`${flag}: ${quote(value)} is not an integer in ${min}..${max}${why}`);
   return x;
 }
 
@@ -147,14 +151,16 @@ function integerIn(flag: string, value: string, min: number, max: number, why = 
 function pick<T extends string>(flag: string, value: string | string[], known: readonly T[], what: string): T[] {
   const values = lists(flag, value);
   for (const v of values)
-    if (!(known as readonly string[]).includes(v)) throw usage(`${flag}: unknown ${what} ${quote(v)} (known: ${known.join(', ')})`);
+    if (!(known as readonly string[]).includes(v))
+      throw usage(`${flag}: unknown ${what} ${quote(v)} (known: ${known.join(', ')})`);
   return [...new Set(values)] as T[];
 }
 
 /** One of `known`. */
 function pickOne<T extends string>(flag: string, value: string, known: readonly T[], what: string): T {
   const v = present(flag, value).trim();
-  if (!(known as readonly string[]).includes(v)) throw usage(`${flag}: unknown ${what} ${quote(v)} (known: ${known.join(', ')})`);
+  if (!(known as readonly string[]).includes(v))
+    throw usage(`${flag}: unknown ${what} ${quote(v)} (known: ${known.join(', ')})`);
   return v as T;
 }
 
@@ -170,7 +176,8 @@ function parseSamples(value: string, allMethods: readonly string[]): Record<stri
       continue;
     }
     const method = entry.slice(0, eq).trim();
-    if (!allMethods.includes(method)) throw usage(`--samples: unknown method ${quote(method)} in ${quote(value)} (known: ${allMethods.join(', ')})`);
+    if (!allMethods.includes(method))
+      throw usage(`--samples: unknown method ${quote(method)} in ${quote(value)} (known: ${allMethods.join(', ')})`);
     if (overrides.has(method)) throw usage(`--samples: ${method} given twice in ${quote(value)}`);
     overrides.set(method, integerIn(`--samples ${method}`, entry.slice(eq + 1), 1, MAX_SAMPLES));
   }
@@ -191,29 +198,96 @@ function program(allMethods: readonly string[], defaultMethods: readonly string[
   const merged = ' (repeatable: --rig a --rig b is --rig a,b)';
   return new Command('bench')
     .description("Benchmarks the IK solvers on the report's target sets and more (see bench-node/README.md).")
-    .addOption(new Option('--rig <paths>', `rig files (.glb, .gltf, A7 .json) or project rig names, comma-separated${merged}`).argParser(collect).makeOptionMandatory())
-    .addOption(single('--chain <base:tip>', "URDF rigs: the chain, from its base link to its tip link (default: the longest serial chain)"))
-    .addOption(new Option('--experiment <list>', `experiments: ${experiments.filter((e) => e !== 'tracik').join(', ')}, or track or tracik alone${merged}`).argParser(collect).default('random,incremental'))
+    .addOption(
+      new Option('--rig <paths>', `rig files (.glb, .gltf, A7 .json) or project rig names, comma-separated${merged}`)
+        .argParser(collect)
+        .makeOptionMandatory(),
+    )
+    .addOption(
+      single(
+        '--chain <base:tip>',
+        'URDF rigs: the chain, from its base link to its tip link (default: the longest serial chain)',
+      ),
+    )
+    .addOption(
+      new Option(
+        '--experiment <list>',
+        `experiments: ${experiments.filter((e) => e !== 'tracik').join(', ')}, or track or tracik alone${merged}`,
+      )
+        .argParser(collect)
+        .default('random,incremental'),
+    )
     .addOption(single('--clips <list>', 'track: the animation clips to run, comma-separated, or all', 'all'))
     .addOption(single('--points <n>', 'track: tracked points, 3 (head and hands) or 6 (and the hips and feet)', '3'))
-    .addOption(new Option('--methods <list>', `methods: ${allMethods.join(', ')} (kdl, kdl_nr_jl: --engine native only)${merged}`).argParser(collect).default(defaultMethods.join(',')))
-    .addOption(single('--samples <n>', `samples per experiment (at most ${MAX_SAMPLES}); per-method overrides like 1000,gd=100`, String(DEFAULT_SAMPLES)))
+    .addOption(
+      new Option(
+        '--methods <list>',
+        `methods: ${allMethods.join(', ')} (kdl, kdl_nr_jl: --engine native only)${merged}`,
+      )
+        .argParser(collect)
+        .default(defaultMethods.join(',')),
+    )
+    .addOption(
+      single(
+        '--samples <n>',
+        `samples per experiment (at most ${MAX_SAMPLES}); per-method overrides like 1000,gd=100`,
+        String(DEFAULT_SAMPLES),
+      ),
+    )
     .addOption(single('--seed <s>', 'seed of the target sets', '1'))
     .addOption(single('--gradient-tolerance <x>', 'gradient tolerance (default: per rig, see README; was --gtol)'))
-    .addOption(single('--error-tolerance <y>', 'E tolerance, also the success threshold (default: per rig; drag and reach: a tip distance, see README; was --ftol)'))
-    .addOption(single('--time-budget <seconds>', `time budget per solve (at most ${MAX_TIMEOUT_SECONDS}; was --timeout)`, '1'))
-    .addOption(single('--restarts <n>', `restarts per solve for every method, peers included, within the time budget (random and incremental; default: the solvers' default; at most ${MAX_RESTARTS})`))
+    .addOption(
+      single(
+        '--error-tolerance <y>',
+        'E tolerance, also the success threshold (default: per rig; drag and reach: a tip distance, see README; was --ftol)',
+      ),
+    )
+    .addOption(
+      single('--time-budget <seconds>', `time budget per solve (at most ${MAX_TIMEOUT_SECONDS}; was --timeout)`, '1'),
+    )
+    .addOption(
+      single(
+        '--restarts <n>',
+        `restarts per solve for every method, peers included, within the time budget (random and incremental; default: the solvers' default; at most ${MAX_RESTARTS})`,
+      ),
+    )
     .option('--paper', "the report's original algorithms (solver paper mode)", false)
-    .addOption(single('--goals <kind>', `targets per end effector: position (the protocol's tip positions) or pose (tip position and frame orientation)`, 'position'))
-    .option('--no-humanoid-limits', "a recognised humanoid keeps the file's own limits (extras.ik or +-180) instead of anatomical ones")
+    .addOption(
+      single(
+        '--goals <kind>',
+        `targets per end effector: position (the protocol's tip positions) or pose (tip position and frame orientation)`,
+        'position',
+      ),
+    )
+    .option(
+      '--no-humanoid-limits',
+      "a recognised humanoid keeps the file's own limits (extras.ik or +-180) instead of anatomical ones",
+    )
     .addOption(single('--engine <list>', 'wasm, native, or both (prints the ratio)', 'wasm'))
-    .addOption(single('--workers <n>', `worker threads (native: processes), at most ${MAX_WORKERS}`, String(Math.min(availableParallelism(), MAX_WORKERS))))
+    .addOption(
+      single(
+        '--workers <n>',
+        `worker threads (native: processes), at most ${MAX_WORKERS}`,
+        String(Math.min(availableParallelism(), MAX_WORKERS)),
+      ),
+    )
     .addOption(single('--json <file>', 'write the rows as JSON (checked writable before the run)'))
     .addOption(single('--csv <file>', 'write the rows as CSV (checked writable before the run)'))
     .addOption(single('--markdown <file>', 'write the tables as Markdown (checked writable before the run)'))
-    .addOption(single('--compare <file>', "a results CSV of the report (results.csv, original-measured.csv) to print beside ours"))
+    .addOption(
+      single(
+        '--compare <file>',
+        'a results CSV of the report (results.csv, original-measured.csv) to print beside ours',
+      ),
+    )
     .option('--no-progress', 'no progress bar even on a terminal')
-    .addOption(single('--warm-up <ms>', 'untimed solving per worker and method before timing (0: a single solve; times then include V8 compiling)', String(WARM_UP_MS)))
+    .addOption(
+      single(
+        '--warm-up <ms>',
+        'untimed solving per worker and method before timing (0: a single solve; times then include V8 compiling)',
+        String(WARM_UP_MS),
+      ),
+    )
     .helpOption('-h, --help')
     .allowExcessArguments(false)
     .showSuggestionAfterError(true);
@@ -247,7 +321,11 @@ interface RawOptions {
 }
 
 /** The flags renamed to the core's option names, the old name still taken: old -> new. */
-export const RENAMED_FLAGS: Readonly<Record<string, string>> = { '--gtol': '--gradient-tolerance', '--ftol': '--error-tolerance', '--timeout': '--time-budget' };
+export const RENAMED_FLAGS: Readonly<Record<string, string>> = {
+  '--gtol': '--gradient-tolerance',
+  '--ftol': '--error-tolerance',
+  '--timeout': '--time-budget',
+};
 
 /** `argv` with each renamed flag (--gtol x, --gtol=x) under its new name; `note` gets a line saying so for each. */
 function renamedFlags(argv: string[], note: (text: string) => void): string[] {
@@ -265,7 +343,12 @@ function renamedFlags(argv: string[], note: (text: string) => void): string[] {
  * the default first; `note` gets a line per renamed flag used (RENAMED_FLAGS). Returns undefined after printing help. Throws BenchError (exit code 2) with
  * one line for any problem.
  */
-export function parseOptions(argv: string[], isTTY: boolean, ownMethods: readonly string[], note: (text: string) => void = () => {}): BenchOptions | undefined {
+export function parseOptions(
+  argv: string[],
+  isTTY: boolean,
+  ownMethods: readonly string[],
+  note: (text: string) => void = () => {},
+): BenchOptions | undefined {
   argv = renamedFlags(argv, note);
   const allMethods = [...ownMethods, ...nativeOnlyMethods, ...peerMethods];
   const cmd = program(allMethods, [...ownMethods, ...peerMethods]);
@@ -288,19 +371,29 @@ export function parseOptions(argv: string[], isTTY: boolean, ownMethods: readonl
   const opts: BenchOptions = {
     rigs: lists('--rig', raw.rig),
     chain: raw.chain === undefined ? undefined : present('--chain', raw.chain).trim(),
-    experiments: pick('--experiment', raw.experiment, [...experiments, TRACK], 'experiment').filter((e): e is Experiment => e !== TRACK),
+    experiments: pick('--experiment', raw.experiment, [...experiments, TRACK], 'experiment').filter(
+      (e): e is Experiment => e !== TRACK,
+    ),
     methods: pick('--methods', raw.methods, allMethods, 'method'),
     samples: parseSamples(raw.samples, allMethods),
     samplesGiven: cmd.getOptionValueSource('samples') !== 'default',
     seed: integerIn('--seed', raw.seed, 0, 0xffffffff),
-    gradientTolerance: raw.gradientTolerance === undefined ? undefined : positiveNumber('--gradient-tolerance', raw.gradientTolerance),
-    errorTolerance: raw.errorTolerance === undefined ? undefined : positiveNumber('--error-tolerance', raw.errorTolerance),
+    gradientTolerance:
+      raw.gradientTolerance === undefined ? undefined : positiveNumber('--gradient-tolerance', raw.gradientTolerance),
+    errorTolerance:
+      raw.errorTolerance === undefined ? undefined : positiveNumber('--error-tolerance', raw.errorTolerance),
     timeBudgetSeconds: positiveNumber('--time-budget', raw.timeBudget, MAX_TIMEOUT_SECONDS),
     restarts: raw.restarts === undefined ? undefined : integerIn('--restarts', raw.restarts, 0, MAX_RESTARTS),
     paper: raw.paper,
     humanoidLimits: raw.humanoidLimits,
     engines: pick('--engine', raw.engine, engines, 'engine'),
-    workers: integerIn('--workers', raw.workers, 1, MAX_WORKERS, ` (${WORKERS_PER_CORE} per core, ${WORKERS_CAP} at most)`),
+    workers: integerIn(
+      '--workers',
+      raw.workers,
+      1,
+      MAX_WORKERS,
+      ` (${WORKERS_PER_CORE} per core, ${WORKERS_CAP} at most)`,
+    ),
     json: fileName('--json', raw.json),
     csv: fileName('--csv', raw.csv),
     markdown: fileName('--markdown', raw.markdown),
@@ -312,17 +405,26 @@ export function parseOptions(argv: string[], isTTY: boolean, ownMethods: readonl
   checkChain(opts.chain, opts.rigs);
   const track = lists('--experiment', raw.experiment).includes(TRACK);
   if (track) {
-    if (opts.experiments.length > 0) throw usage(`--experiment: track runs alone, not with ${opts.experiments.join(', ')}`);
+    if (opts.experiments.length > 0)
+      throw usage(`--experiment: track runs alone, not with ${opts.experiments.join(', ')}`);
     const points = integerIn('--points', raw.points, 3, 6);
     if (points !== 3 && points !== 6) throw usage('--points: 3 (head and hands) or 6 (and the hips and feet)');
-    if (opts.markdown || opts.compare) throw usage(`${opts.markdown ? '--markdown' : '--compare'} goes with the other experiments, not track`);
+    if (opts.markdown || opts.compare)
+      throw usage(`${opts.markdown ? '--markdown' : '--compare'} goes with the other experiments, not track`);
     opts.track = { clips: raw.clips.trim() === 'all' ? 'all' : lists('--clips', raw.clips), points };
     return opts;
   }
   for (const flag of ['--clips', '--points'] as const)
     if (cmd.getOptionValueSource(flag.slice(2)) !== 'default') throw usage(`${flag} goes with --experiment track only`);
   applyTracik(opts, (option) => cmd.getOptionValueSource(option) === 'cli');
-  opts.methods = checkGoals(opts.goals, opts.methods, cmd.getOptionValueSource('methods') !== 'default', opts.experiments, opts.paper, opts.compare !== undefined);
+  opts.methods = checkGoals(
+    opts.goals,
+    opts.methods,
+    cmd.getOptionValueSource('methods') !== 'default',
+    opts.experiments,
+    opts.paper,
+    opts.compare !== undefined,
+  );
   const nativeOnly = opts.methods.find(isNativeOnly);
   if (nativeOnly !== undefined && !opts.engines.includes('native'))
     throw usage(`${nativeOnly} runs only on the native engine: add --engine native`);

@@ -102,7 +102,10 @@ function clash(file: string, flag: string, taken: Map<string, string>): string |
  * No two outputs may share a file, and none may overwrite an input (`inputs`: the rig and
  * --compare files). Throws BenchError (exit code 2) `FLAG FILE: problem`.
  */
-export function checkOutputs(outputs: ReadonlyArray<readonly [flag: string, file: string | undefined]>, inputs: readonly string[]): void {
+export function checkOutputs(
+  outputs: ReadonlyArray<readonly [flag: string, file: string | undefined]>,
+  inputs: readonly string[],
+): void {
   const taken = new Map(inputs.map((path) => [fileKey(path), 'an input of this run']));
   for (const [flag, file] of outputs) {
     if (file === undefined) continue;
@@ -127,15 +130,47 @@ export function writeText(file: string, text: string): void {
 
 /** Writes `{ rows, run }` to `file` as JSON; a number that is not finite is written as null. */
 export function writeJson(file: string, rows: readonly object[], run: object): void {
-  writeText(file, `${JSON.stringify({ rows, run }, (_, v: unknown) => (typeof v === 'number' && !Number.isFinite(v) ? null : v), 2)}\n`);
+  writeText(
+    file,
+    `${JSON.stringify({ rows, run }, (_, v: unknown) => (typeof v === 'number' && !Number.isFinite(v) ? null : v), 2)}\n`,
+  );
 }
 
 const csvColumns = [
-  'rig', 'experiment', 'method', 'engine', 'samples', 't_avg_s', 't_median_s', 't_p95_s', 't_max_s',
-  'iter_avg', 'E_avg', 'E_iqm', 'E_max', 'success_rate', 'unreachable', 'restarts', 'goals', 'rot_err_avg_deg', 'rot_err_max_deg',
-  't_success_median_s', 't_success_p95_s', 'success_within_1ms', 'success_within_10ms', 'success_within_100ms',
-  'wobble_during_avg', 'wobble_during_max', 'wobble_after_avg', 'wobble_after_max', 'wobble_unreachable_avg', 'wobble_unreachable_max',
-  'jump_max_deg', 'jumps', 'flips', 'stop_reasons',
+  'rig',
+  'experiment',
+  'method',
+  'engine',
+  'samples',
+  't_avg_s',
+  't_median_s',
+  't_p95_s',
+  't_max_s',
+  'iter_avg',
+  'E_avg',
+  'E_iqm',
+  'E_max',
+  'success_rate',
+  'unreachable',
+  'restarts',
+  'goals',
+  'rot_err_avg_deg',
+  'rot_err_max_deg',
+  't_success_median_s',
+  't_success_p95_s',
+  'success_within_1ms',
+  'success_within_10ms',
+  'success_within_100ms',
+  'wobble_during_avg',
+  'wobble_during_max',
+  'wobble_after_avg',
+  'wobble_after_max',
+  'wobble_unreachable_avg',
+  'wobble_unreachable_max',
+  'jump_max_deg',
+  'jumps',
+  'flips',
+  'stop_reasons',
 ] as const;
 
 export function csvText(rows: readonly Row[]): string {

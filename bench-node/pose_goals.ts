@@ -23,7 +23,8 @@ export type RotationsFn = (angles: Float64Array) => Float64Array;
 export function addOrientations(set: TargetSet, rotations: RotationsFn): TargetSet {
   const angles = set.targetAngles;
   if (!angles) throw new Error(`--goals pose: the ${set.experiment} experiment has no target angles`);
-  const m = set.numAngles, q = (4 * set.numResiduals) / 3;
+  const m = set.numAngles,
+    q = (4 * set.numResiduals) / 3;
   const out = new Float64Array(set.count * q);
   for (let k = 0; k < set.count; k++) out.set(rotations(angles.subarray(k * m, (k + 1) * m)), k * q);
   set.orientations = out;
@@ -77,14 +78,24 @@ export function largestRotationErrorDeg(rotations: ArrayLike<number>, goal: Arra
  * vector, RADIANS, that turns the frame (`rotations`, quaternions [x, y, z, w], 4 per effector)
  * onto its target (`goal`, the same).
  */
-export function largestTwistComponent(tips: ArrayLike<number>, targets: ArrayLike<number>, rotations: ArrayLike<number>, goal: ArrayLike<number>): number {
+export function largestTwistComponent(
+  tips: ArrayLike<number>,
+  targets: ArrayLike<number>,
+  rotations: ArrayLike<number>,
+  goal: ArrayLike<number>,
+): number {
   let worst = 0;
   for (let e = 0; 4 * e < goal.length; e++) {
     for (let i = 0; i < 3; i++) worst = Math.max(worst, Math.abs(targets[3 * e + i] - tips[3 * e + i]));
     // goal * conj(rotation): the world turn from the frame onto its target, as an axis times its angle
     const [ax, ay, az, aw] = [rotations[4 * e], rotations[4 * e + 1], rotations[4 * e + 2], rotations[4 * e + 3]];
     const norm = Math.hypot(goal[4 * e], goal[4 * e + 1], goal[4 * e + 2], goal[4 * e + 3]);
-    const [bx, by, bz, bw] = [goal[4 * e] / norm, goal[4 * e + 1] / norm, goal[4 * e + 2] / norm, goal[4 * e + 3] / norm];
+    const [bx, by, bz, bw] = [
+      goal[4 * e] / norm,
+      goal[4 * e + 1] / norm,
+      goal[4 * e + 2] / norm,
+      goal[4 * e + 3] / norm,
+    ];
     let w = bw * aw + bx * ax + by * ay + bz * az;
     let x = -bw * ax + bx * aw - by * az + bz * ay;
     let y = -bw * ay + by * aw - bz * ax + bx * az;

@@ -62,7 +62,8 @@ export function reachPaths(spec: RigSpec, restTips: ArrayLike<number>): ReachPat
     const toRoot = root.map((x, i) => x - restTips[3 * effector + i]) as Vec3;
     const distance = Math.hypot(...toRoot);
     if (!(distance > 0)) continue;
-    for (const direction of orthonormalFrame(toRoot)) paths.push({ effector, direction, length: REACH_SHARE * distance });
+    for (const direction of orthonormalFrame(toRoot))
+      paths.push({ effector, direction, length: REACH_SHARE * distance });
   }
   return paths;
 }
@@ -72,10 +73,17 @@ export function reachPaths(spec: RigSpec, restTips: ArrayLike<number>): ReachPat
  * targets, starts (`rest` = P(0), used by each path's first step), chained flags, dragged effector
  * and path index. `restTips`: effector tips at `rest`.
  */
-export function fillReach(set: TargetSet, paths: readonly ReachPath[], rest: Float64Array, restTips: Float64Array): void {
-  const m = set.numAngles, r = set.numResiduals;
+export function fillReach(
+  set: TargetSet,
+  paths: readonly ReachPath[],
+  rest: Float64Array,
+  restTips: Float64Array,
+): void {
+  const m = set.numAngles,
+    r = set.numResiduals;
   for (let k = 0; k < set.count; k++) {
-    const path = Math.floor(k / REACH_PATH_STEPS), t = (k % REACH_PATH_STEPS) + 1;
+    const path = Math.floor(k / REACH_PATH_STEPS),
+      t = (k % REACH_PATH_STEPS) + 1;
     const { effector, direction, length } = paths[path];
     const target = set.targets.subarray(k * r, (k + 1) * r);
     target.set(restTips);

@@ -30,7 +30,8 @@ export function parseReferenceCsv(text: string, file: string): ReferenceRow[] {
   if (lines.length === 0) throw new BenchError(`--compare ${file}: empty file`);
   const header = lines[0].split(',').map((h) => h.trim());
   for (const col of required)
-    if (!header.includes(col)) throw new BenchError(`--compare ${file}: no "${col}" column (expected ${required.join(', ')})`);
+    if (!header.includes(col))
+      throw new BenchError(`--compare ${file}: no "${col}" column (expected ${required.join(', ')})`);
   const index = (col: string): number => header.indexOf(col);
   return lines.slice(1).map((line, i) => {
     const cells = line.split(',').map((c) => c.trim());
@@ -40,7 +41,8 @@ export function parseReferenceCsv(text: string, file: string): ReferenceRow[] {
       const k = index(col);
       if (k < 0) return undefined;
       const x = Number(cells[k]);
-      if (cells[k] === '' || !Number.isFinite(x)) throw new BenchError(`--compare ${file}: line ${i + 2}: ${col} ${quote(cells[k])} is not a number`);
+      if (cells[k] === '' || !Number.isFinite(x))
+        throw new BenchError(`--compare ${file}: line ${i + 2}: ${col} ${quote(cells[k])} is not a number`);
       return x;
     };
     const row: ReferenceRow = {
@@ -71,7 +73,8 @@ export function readReferenceCsv(file: string): ReferenceRow[] {
     const stat = statSync(file);
     if (stat.isDirectory()) throw fail('is a directory, not a CSV file');
     if (!stat.isFile()) throw fail('is not a regular file');
-    if (stat.size > MAX_COMPARE_BYTES) throw fail(`is ${stat.size} bytes; a reference CSV has at most ${MAX_COMPARE_BYTES}`);
+    if (stat.size > MAX_COMPARE_BYTES)
+      throw fail(`is ${stat.size} bytes; a reference CSV has at most ${MAX_COMPARE_BYTES}`);
     text = readFileSync(file, 'utf8');
   } catch (e) {
     if (e instanceof BenchError) throw e;
@@ -80,19 +83,37 @@ export function readReferenceCsv(file: string): ReferenceRow[] {
   return parseReferenceCsv(text, file);
 }
 
-export function findReference(reference: readonly ReferenceRow[], row: Pick<Row, 'rig' | 'experiment' | 'method'>): ReferenceRow | undefined {
-  return reference.find((r) => r.rig === row.rig && r.experiment === row.experiment && r.method === row.method.toLowerCase());
+export function findReference(
+  reference: readonly ReferenceRow[],
+  row: Pick<Row, 'rig' | 'experiment' | 'method'>,
+): ReferenceRow | undefined {
+  return reference.find(
+    (r) => r.rig === row.rig && r.experiment === row.experiment && r.method === row.method.toLowerCase(),
+  );
 }
 
 /** Ours beside theirs for every row of ours with a match; undefined when nothing matches. */
-export function compareTable(rows: readonly Row[], reference: readonly ReferenceRow[], label: string): Table | undefined {
+export function compareTable(
+  rows: readonly Row[],
+  reference: readonly ReferenceRow[],
+  label: string,
+): Table | undefined {
   const headers = [
-    'rig', 'experiment', 'method', 'engine',
-    'samples ours', 'samples theirs',
-    't_avg ours', 't_avg theirs', 'speed ratio',
-    'iter ours', 'iter theirs',
-    'E_IQM ours', 'E_IQM theirs',
-    'max E ours', 'max E theirs',
+    'rig',
+    'experiment',
+    'method',
+    'engine',
+    'samples ours',
+    'samples theirs',
+    't_avg ours',
+    't_avg theirs',
+    'speed ratio',
+    'iter ours',
+    'iter theirs',
+    'E_IQM ours',
+    'E_IQM theirs',
+    'max E ours',
+    'max E theirs',
     'success ours',
   ];
   const out: string[][] = [];
@@ -100,12 +121,21 @@ export function compareTable(rows: readonly Row[], reference: readonly Reference
     const ref = findReference(reference, r);
     if (!ref) continue;
     out.push([
-      r.rig, r.experiment, r.method, r.engine,
-      String(r.samples), ref.samples === undefined ? '-' : String(ref.samples),
-      formatNumber(r.t_avg_s), formatNumber(ref.t_avg_s), `${formatNumber(ref.t_avg_s / r.t_avg_s)}x`,
-      formatNumber(r.iter_avg), formatNumber(ref.iter_avg),
-      formatNumber(r.E_iqm), formatNumber(ref.E_iqm),
-      formatNumber(r.E_max), formatNumber(ref.E_max),
+      r.rig,
+      r.experiment,
+      r.method,
+      r.engine,
+      String(r.samples),
+      ref.samples === undefined ? '-' : String(ref.samples),
+      formatNumber(r.t_avg_s),
+      formatNumber(ref.t_avg_s),
+      `${formatNumber(ref.t_avg_s / r.t_avg_s)}x`,
+      formatNumber(r.iter_avg),
+      formatNumber(ref.iter_avg),
+      formatNumber(r.E_iqm),
+      formatNumber(ref.E_iqm),
+      formatNumber(r.E_max),
+      formatNumber(ref.E_max),
       formatPercent(r.success_rate),
     ]);
   }

@@ -77,8 +77,15 @@ export async function loadBenchRig(entry: string, humanoidLimits = true, chain?:
     const loaded = await loadRigFromPath(path, chain === undefined ? {} : { chain });
     const spec = humanoidLimits ? loaded.spec : specWithFileLimits(loaded);
     const urdf = loaded.urdf;
-    return { name: loaded.name, path, format: loaded.format, spec, humanoid: loaded.gltf?.humanoid ?? null, boneNodes: loaded.gltf?.boneNodes ?? null,
-      chain: urdf ? `${urdf.base}:${urdf.tip}` : null };
+    return {
+      name: loaded.name,
+      path,
+      format: loaded.format,
+      spec,
+      humanoid: loaded.gltf?.humanoid ?? null,
+      boneNodes: loaded.gltf?.boneNodes ?? null,
+      chain: urdf ? `${urdf.base}:${urdf.tip}` : null,
+    };
   } catch (e) {
     const message = errorLine(e);
     throw new BenchError(`${entry}: ${message.startsWith(`${path}: `) ? message.slice(path.length + 2) : message}`);

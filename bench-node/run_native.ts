@@ -31,7 +31,10 @@ const BATCHES_PER_PROCESS = 4;
  *  or with --goals pose 4 per effector); then per sample float64 chained, dragged, start
  *  (#angles), target (#residuals), orientations (quaternions x, y, z, w). */
 export function encodeJob(set: TargetSet, begin: number, end: number): Uint8Array {
-  const m = set.numAngles, r = set.numResiduals, o = set.orientations ? (4 * r) / 3 : 0, stride = 2 + m + r + o;
+  const m = set.numAngles,
+    r = set.numResiduals,
+    o = set.orientations ? (4 * r) / 3 : 0,
+    stride = 2 + m + r + o;
   const count = end - begin;
   const bytes = new Uint8Array(24 + 8 * stride * count);
   bytes.set(new TextEncoder().encode('IKBJOB1\0'), 0);
@@ -75,7 +78,8 @@ interface NativeResult {
 /** Parses RESULTS.jsonl (see ik_bench_native.cpp), `expected` lines; `file` names it in errors. */
 export function decodeResults(text: string, expected: number, file: string): SolveResult[] {
   const lines = text.split('\n').filter((l) => l.length > 0);
-  if (lines.length !== expected) throw new BenchError(`native engine: ${file} has ${lines.length} results, expected ${expected}`);
+  if (lines.length !== expected)
+    throw new BenchError(`native engine: ${file} has ${lines.length} results, expected ${expected}`);
   return lines.map((line) => {
     const r = JSON.parse(line) as NativeResult;
     const num = (x: number | null): number => x ?? NaN;
@@ -115,7 +119,8 @@ function runProcess(args: string[]): Promise<void> {
  */
 export function checkNativeTool(methods: readonly string[]): void {
   const build = 'bash scripts/setup.sh --native';
-  if (!existsSync(nativeToolPath)) throw new BenchError(`native engine: ${nativeToolPath} is missing; build it with "${build}"`);
+  if (!existsSync(nativeToolPath))
+    throw new BenchError(`native engine: ${nativeToolPath} is missing; build it with "${build}"`);
   const listed = spawnSync(nativeToolPath, ['--list-methods'], { encoding: 'utf8' });
   const known = listed.status === 0 ? (JSON.parse(listed.stdout) as string[]) : [];
   const unknown = methods.find((m) => !known.includes(m));
@@ -147,17 +152,35 @@ export async function runNative(
       while (next < batches.length) {
         const b = next++;
         const [begin, end] = batches[b];
-        const input = join(dir, `job${b}.bin`), output = join(dir, `results${b}.jsonl`);
+        const input = join(dir, `job${b}.bin`),
+          output = join(dir, `results${b}.jsonl`);
         writeFileSync(input, encodeJob(set, begin, end));
-        const args = ['--rig', rigFile, '--method', settings.method, '--input', input, '--output', output,
-          '--gradient-tolerance', String(settings.gradientTolerance), '--error-tolerance', String(settings.errorTolerance),
-          '--tip-tolerance', String(settings.tipTolerance), '--time-budget', String(settings.timeBudgetSeconds)];
+        const args = [
+          '--rig',
+          rigFile,
+          '--method',
+          settings.method,
+          '--input',
+          input,
+          '--output',
+          output,
+          '--gradient-tolerance',
+          String(settings.gradientTolerance),
+          '--error-tolerance',
+          String(settings.errorTolerance),
+          '--tip-tolerance',
+          String(settings.tipTolerance),
+          '--time-budget',
+          String(settings.timeBudgetSeconds),
+        ];
         if (settings.paper) args.push('--paper');
         if (settings.restarts !== undefined) args.push('--restarts', String(settings.restarts));
         if (settings.maxJointMove !== undefined) args.push('--max-joint-move', String(settings.maxJointMove));
-        if (settings.pageGoals) args.push('--page-goals', pinnedFramesArgument(spec, spec.effectors, settings.pinFrames ?? false));
+        if (settings.pageGoals)
+          args.push('--page-goals', pinnedFramesArgument(spec, spec.effectors, settings.pinFrames ?? false));
         if (settings.goals === 'pose') args.push('--goals', 'pose');
-        if (settings.orientationToleranceDeg !== undefined) args.push('--orientation-tolerance', String(settings.orientationToleranceDeg));
+        if (settings.orientationToleranceDeg !== undefined)
+          args.push('--orientation-tolerance', String(settings.orientationToleranceDeg));
         await runProcess(args);
         results[b] = decodeResults(readFileSync(output, 'utf8'), end - begin, output);
         onProgress(end - begin);

@@ -41,7 +41,10 @@ export class WorkerPool {
   static async create(size: number, warmUpMs: number): Promise<WorkerPool> {
     const wasmModule = await WebAssembly.compile(readFileSync(wasmPath));
     const init: WorkerInit = { wasmModule, warmUpMs };
-    const workers = Array.from({ length: size }, () => new Worker(new URL('./worker_boot.mjs', import.meta.url), { workerData: init }));
+    const workers = Array.from(
+      { length: size },
+      () => new Worker(new URL('./worker_boot.mjs', import.meta.url), { workerData: init }),
+    );
     const pool = new WorkerPool(workers);
     await Promise.all(
       workers.map(
@@ -117,7 +120,8 @@ export function batchesOf(set: TargetSet, batches: number): Array<[number, numbe
   const ranges = independentRanges(set);
   const per = Math.max(1, Math.ceil(set.count / Math.max(1, batches)));
   const out: Array<[number, number]> = [];
-  let begin = 0, end = 0;
+  let begin = 0,
+    end = 0;
   for (const [b, e] of ranges) {
     if (end > begin && e - begin > per) {
       out.push([begin, end]);
@@ -142,7 +146,8 @@ export async function runOnPool(
   onProgress: (solved: number) => void,
   limbs: FlipLimb[] | null = null,
 ): Promise<SolveResult[]> {
-  const m = set.numAngles, r = set.numResiduals;
+  const m = set.numAngles,
+    r = set.numResiduals;
   const parts = batchesOf(set, pool.size * BATCHES_PER_WORKER).map(([begin, end]) =>
     pool.run(
       {

@@ -36,7 +36,9 @@ export class WasmSolverRunner implements Runner {
       tipTolerance: settings.tipTolerance,
       timeBudgetSeconds: settings.timeBudgetSeconds,
       paperMode: settings.paper,
-      ...(settings.orientationToleranceDeg === undefined ? {} : { orientationToleranceDeg: settings.orientationToleranceDeg }),
+      ...(settings.orientationToleranceDeg === undefined
+        ? {}
+        : { orientationToleranceDeg: settings.orientationToleranceDeg }),
       ...(settings.restarts === undefined ? {} : { restarts: settings.restarts }),
       ...(settings.maxJointMove === undefined ? {} : { maxJointMove: settings.maxJointMove }),
     };
@@ -44,7 +46,10 @@ export class WasmSolverRunner implements Runner {
     this.current = project(spec, new Float64Array(this.rig.numAngles));
     this.buffers = [new Float64Array(this.rig.numAngles), new Float64Array(this.rig.numAngles)];
     this.poseEffectors = settings.goals === 'pose' ? Array.from(this.rig.effectors()) : null;
-    this.dragGoals = settings.pageGoals && !settings.paper ? new DragGoals(spec, Array.from(this.rig.effectors()), settings.pinFrames ?? false) : null;
+    this.dragGoals =
+      settings.pageGoals && !settings.paper
+        ? new DragGoals(spec, Array.from(this.rig.effectors()), settings.pinFrames ?? false)
+        : null;
   }
 
   /** What the solver aims at for `input` (from `start`): pose goals, the page's drag goals, or the plain targets. */
@@ -59,7 +64,7 @@ export class WasmSolverRunner implements Runner {
   solve(input: SolveInput): SolveResult {
     const start = input.start ?? this.current;
     const pose = this.poseEffectors !== null && input.orientations ? input.orientations : null;
-    let result, problem: Float64Array | Goals = input.target;
+    let result, problem: Float64Array | Goals;
     const t0 = performance.now();
     try {
       // Into one of two buffers of our own, never the start's (the replay below reads the start):
@@ -69,7 +74,16 @@ export class WasmSolverRunner implements Runner {
     } catch {
       // The API throws for invalid input instead of returning invalid_input.
       const seconds = (performance.now() - t0) / 1000;
-      return { E: NaN, tipDistance: NaN, iterations: 0, seconds, stopReason: 'invalid_input', wobbleDuring: NaN, wobbleAfter: NaN, jumpDeg: NaN };
+      return {
+        E: NaN,
+        tipDistance: NaN,
+        iterations: 0,
+        seconds,
+        stopReason: 'invalid_input',
+        wobbleDuring: NaN,
+        wobbleAfter: NaN,
+        jumpDeg: NaN,
+      };
     }
     const seconds = (performance.now() - t0) / 1000;
     this.current = result.angles;
@@ -79,9 +93,14 @@ export class WasmSolverRunner implements Runner {
     // With pose goals the solver's E holds the orientation rows too: judge the pose by its own
     // forward kinematics, E of the positions and the orientation error of the frames.
     const rotations = pose ? this.observer.tipRotations(result.angles) : null;
-    const judged = pose && rotations
-      ? { E: errorOf(tips, input.target), rotErrDeg: largestRotationErrorDeg(rotations, pose), twistMax: largestTwistComponent(tips, input.target, rotations, pose) }
-      : {};
+    const judged =
+      pose && rotations
+        ? {
+            E: errorOf(tips, input.target),
+            rotErrDeg: largestRotationErrorDeg(rotations, pose),
+            twistMax: largestTwistComponent(tips, input.target, rotations, pose),
+          }
+        : {};
     return {
       E: result.E,
       tipDistance: tipDistance(tips, input.target),
@@ -100,12 +119,19 @@ export class WasmSolverRunner implements Runner {
    * The largest pinned deviation over the iterates of the same solve, replayed step by step with
    * the timed solve's iteration count and no time budget (deterministic, so the same iterates).
    */
-  private replayWobble(start: Float64Array, input: SolveInput, problem: Float64Array | Goals, iterations: number, after: number): number {
+  private replayWobble(
+    start: Float64Array,
+    input: SolveInput,
+    problem: Float64Array | Goals,
+    iterations: number,
+    after: number,
+  ): number {
     if (iterations === 0) return after;
     this.replayer ??= new IkSolver(this.rig, this.solver.method, this.options);
     this.replayer.setOptions({ ...this.options, maxIterations: iterations, timeBudgetSeconds: 0 });
     this.replayer.start(start, problem);
-    let worst = 0, seen = 0;
+    let worst = 0,
+      seen = 0;
     while (this.replayer.running) {
       this.replayer.step();
       const done = this.replayer.result().iterations;

@@ -56,7 +56,8 @@ export function interquartileMean(values: ArrayLike<number>): number {
   const s = sorted(values);
   const n = s.length;
   if (n === 0) return NaN;
-  const lo = n / 4, hi = (3 * n) / 4;
+  const lo = n / 4,
+    hi = (3 * n) / 4;
   let sum = 0;
   for (let i = Math.floor(lo); i < Math.ceil(hi); i++) {
     const w = Math.min(i + 1, hi) - Math.max(i, lo);

@@ -33,15 +33,23 @@ export class StepMeasurer {
 
   /** The measures of a step from angles `from` to angles `to` (degrees). */
   measure(from: ArrayLike<number>, to: ArrayLike<number>): StepMeasures {
-    const a = this.rig.poses(from), b = this.rig.poses(to);
-    const jointMove = largestMove(jointPositions(this.spec, a, this.fromJoints), jointPositions(this.spec, b, this.toJoints));
+    const a = this.rig.poses(from),
+      b = this.rig.poses(to);
+    const jointMove = largestMove(
+      jointPositions(this.spec, a, this.fromJoints),
+      jointPositions(this.spec, b, this.toJoints),
+    );
     const flip = this.limbs.length === 0 ? NaN : isFlip(this.spec, this.limbs, a, b) ? 1 : 0;
     return { jointMove, flip };
   }
 
   /** Only whether the step from `from` to `to` flipped a limb (StepMeasures.flip). */
   flip(from: ArrayLike<number>, to: ArrayLike<number>): number {
-    return this.limbs.length === 0 ? NaN : isFlip(this.spec, this.limbs, this.rig.poses(from), this.rig.poses(to)) ? 1 : 0;
+    return this.limbs.length === 0
+      ? NaN
+      : isFlip(this.spec, this.limbs, this.rig.poses(from), this.rig.poses(to))
+        ? 1
+        : 0;
   }
 }
 

@@ -55,11 +55,34 @@ export function resultsTable(rows: readonly Row[]): Table {
   const first = rows[0];
   const drag = isDragging(first.experiment);
   const pose = first.goals === 'pose';
-  const headers = ['method', 'engine', 'samples', 'restarts', 't_avg', 'iter_avg', 'E_avg', 'E_IQM', 'max E', 'success', 't_median', 't_p95', 't_max'];
+  const headers = [
+    'method',
+    'engine',
+    'samples',
+    'restarts',
+    't_avg',
+    'iter_avg',
+    'E_avg',
+    'E_IQM',
+    'max E',
+    'success',
+    't_median',
+    't_p95',
+    't_max',
+  ];
   if (pose) headers.push('rot_err_avg_deg', 'rot_err_max_deg');
   if (drag)
-    headers.push('unreachable', 'wobble_during avg', 'wobble_during max', 'wobble_after avg', 'wobble_after max', 'wobble_unreach max',
-      'jumps', 'flips', 'jump_max_deg');
+    headers.push(
+      'unreachable',
+      'wobble_during avg',
+      'wobble_during max',
+      'wobble_after avg',
+      'wobble_after max',
+      'wobble_unreach max',
+      'jumps',
+      'flips',
+      'jump_max_deg',
+    );
   headers.push('stop reasons');
   const numeric = headers.map((h) => !['method', 'engine', 'stop reasons'].includes(h));
   return {
@@ -118,9 +141,13 @@ export function engineRatioTable(rows: readonly Row[], engines: readonly string[
   if (engines.length < 2) return undefined;
   const [base, ...others] = engines;
   const headers = [
-    'rig', 'experiment', 'method',
-    ...engines.map((e) => `t_avg ${e}`), ...others.map((e) => `t_avg ${base} / ${e}`),
-    ...engines.map((e) => `t_median ${e}`), ...others.map((e) => `t_median ${base} / ${e}`),
+    'rig',
+    'experiment',
+    'method',
+    ...engines.map((e) => `t_avg ${e}`),
+    ...others.map((e) => `t_avg ${base} / ${e}`),
+    ...engines.map((e) => `t_median ${e}`),
+    ...others.map((e) => `t_median ${base} / ${e}`),
   ];
   const out: string[][] = [];
   const seen = new Set<string>();
@@ -128,10 +155,21 @@ export function engineRatioTable(rows: readonly Row[], engines: readonly string[
     const key = `${r.rig}\u0000${r.experiment}\u0000${r.method}`;
     if (seen.has(key)) continue;
     seen.add(key);
-    const byEngine = engines.map((e) => rows.find((x) => x.rig === r.rig && x.experiment === r.experiment && x.method === r.method && x.engine === e));
+    const byEngine = engines.map((e) =>
+      rows.find((x) => x.rig === r.rig && x.experiment === r.experiment && x.method === r.method && x.engine === e),
+    );
     if (byEngine.some((x) => x === undefined)) continue;
-    const cells = (t: number[]): string[] => [...t.map(formatNumber), ...t.slice(1).map((x) => `${formatNumber(t[0] / x)}x`)];
-    out.push([r.rig, r.experiment, r.method, ...cells(byEngine.map((x) => x!.t_avg_s)), ...cells(byEngine.map((x) => x!.t_median_s))]);
+    const cells = (t: number[]): string[] => [
+      ...t.map(formatNumber),
+      ...t.slice(1).map((x) => `${formatNumber(t[0] / x)}x`),
+    ];
+    out.push([
+      r.rig,
+      r.experiment,
+      r.method,
+      ...cells(byEngine.map((x) => x!.t_avg_s)),
+      ...cells(byEngine.map((x) => x!.t_median_s)),
+    ]);
   }
   if (out.length === 0) return undefined;
   return {
@@ -158,7 +196,11 @@ export function renderTable(table: Table, format: TableFormat): string {
       .map((cell, c) => (table.numeric[c] ? cell.padStart(widths[c]) : cell.padEnd(widths[c])))
       .join('  ')
       .trimEnd();
-  return [table.title, line(table.headers), widths.map((w) => '-'.repeat(w)).join('  '), ...table.rows.map(line)].join('\n') + '\n';
+  return (
+    [table.title, line(table.headers), widths.map((w) => '-'.repeat(w)).join('  '), ...table.rows.map(line)].join(
+      '\n',
+    ) + '\n'
+  );
 }
 
 /** A row as timeToSuccessTable() reads it. */
@@ -173,15 +215,33 @@ export interface TimedRow extends TimeToSuccess {
 /** One table of every row's time to success (after the results tables). */
 export function timeToSuccessTable(rows: readonly TimedRow[]): Table | undefined {
   if (rows.length === 0) return undefined;
-  const headers = ['rig', 'experiment', 'method', 'engine', 'success', 't_success median', 't_success p95', '≤ 1 ms', '≤ 10 ms', '≤ 100 ms'];
+  const headers = [
+    'rig',
+    'experiment',
+    'method',
+    'engine',
+    'success',
+    't_success median',
+    't_success p95',
+    '≤ 1 ms',
+    '≤ 10 ms',
+    '≤ 100 ms',
+  ];
   return {
     title: 'time to success (successful solves only; shares of all reachable samples)',
     headers,
     numeric: headers.map((_, i) => i >= 4),
     rows: rows.map((r) => [
-      r.rig, r.experiment, r.method, r.engine, formatPercent(r.success_rate),
-      formatNumber(r.t_success_median_s), formatNumber(r.t_success_p95_s),
-      formatPercent(r.success_within_1ms), formatPercent(r.success_within_10ms), formatPercent(r.success_within_100ms),
+      r.rig,
+      r.experiment,
+      r.method,
+      r.engine,
+      formatPercent(r.success_rate),
+      formatNumber(r.t_success_median_s),
+      formatNumber(r.t_success_p95_s),
+      formatPercent(r.success_within_1ms),
+      formatPercent(r.success_within_10ms),
+      formatPercent(r.success_within_100ms),
     ]),
   };
 }

@@ -53,7 +53,8 @@ export interface TargetSet {
 /** A view of samples [0, count) of a set (a prefix: what a method with fewer samples gets). */
 export function prefix(set: TargetSet, count: number): TargetSet {
   const n = Math.min(count, set.count);
-  const m = set.numAngles, r = set.numResiduals;
+  const m = set.numAngles,
+    r = set.numResiduals;
   return {
     ...set,
     count: n,
@@ -80,7 +81,7 @@ export function project(spec: RigSpec, a: Float64Array): Float64Array {
  */
 export function independentRanges(set: TargetSet): Array<[number, number]> {
   const ranges: Array<[number, number]> = [];
-  for (let k = 0; k < set.count; ) {
+  for (let k = 0; k < set.count;) {
     let end = k + 1;
     while (end < set.count && set.chained[end]) end++;
     ranges.push([k, end]);

@@ -119,7 +119,13 @@ function fillRandom(spec: RigSpec, set: TargetSet, angles: Float64Array, rest: F
   }
 }
 
-function fillIncremental(spec: RigSpec, set: TargetSet, angles: Float64Array, rest: Float64Array, rand: () => number): void {
+function fillIncremental(
+  spec: RigSpec,
+  set: TargetSet,
+  angles: Float64Array,
+  rest: Float64Array,
+  rand: () => number,
+): void {
   const m = set.numAngles;
   let previous = rest;
   for (let k = 0; k < set.count; k++) {
@@ -149,7 +155,8 @@ function fillDrag(spec: RigSpec, set: TargetSet, angles: Float64Array, rand: () 
     for (let t = 1; t <= DRAG_PATH_STEPS && k < set.count; t++, k++) {
       pose.set(base);
       moving.forEach((i, j) => {
-        pose[i] = base[i] + amplitude[j] * (Math.sin((2 * Math.PI * t) / DRAG_PATH_STEPS + phase[j]) - Math.sin(phase[j]));
+        pose[i] =
+          base[i] + amplitude[j] * (Math.sin((2 * Math.PI * t) / DRAG_PATH_STEPS + phase[j]) - Math.sin(phase[j]));
       });
       project(spec, pose);
       angles.set(pose, k * m);
@@ -161,4 +168,3 @@ function fillDrag(spec: RigSpec, set: TargetSet, angles: Float64Array, rand: () 
     }
   }
 }
-

@@ -23,7 +23,8 @@ export interface TimeToSuccess {
  */
 export function timeToSuccess(seconds: readonly number[], succeeded: readonly boolean[]): TimeToSuccess {
   const times = seconds.filter((_, k) => succeeded[k]);
-  const within = (budget: number): number => (seconds.length ? times.filter((t) => t <= budget).length / seconds.length : NaN);
+  const within = (budget: number): number =>
+    seconds.length ? times.filter((t) => t <= budget).length / seconds.length : NaN;
   return {
     t_success_median_s: times.length ? median(times) : null,
     t_success_p95_s: times.length ? quantile(times, 0.95) : null,

@@ -60,7 +60,8 @@ export function tracikAngles(spec: RigSpec, nominal: ArrayLike<number>, rand: ()
   const a = new Float64Array(spec.lower.length);
   for (let i = 0; i < a.length; i++) {
     const u = rand();
-    const lo = spec.lower[i], hi = spec.upper[i];
+    const lo = spec.lower[i],
+      hi = spec.upper[i];
     a[i] = hi - lo >= 360 ? nominal[i] - 180 + 360 * u : lo + (hi - lo) * u;
   }
   return project(spec, a);
@@ -101,9 +102,14 @@ export interface TracikOptions {
  */
 export function applyTracik(opts: TracikOptions, given: (option: string) => boolean): void {
   if (!opts.experiments.includes(TRACIK)) return;
-  if (opts.experiments.length > 1) throw usage(`--experiment: tracik runs alone, not with ${opts.experiments.filter((e) => e !== TRACIK).join(', ')}`);
-  if (given('goals') && opts.goals !== 'pose') throw usage('--goals: the tracik experiment targets whole poses (--goals pose, its default)');
-  if (given('errorTolerance')) throw usage("--error-tolerance: the tracik experiment has TRAC-IK's tolerances (1e-5 on positions and on rotations, radians)");
+  if (opts.experiments.length > 1)
+    throw usage(`--experiment: tracik runs alone, not with ${opts.experiments.filter((e) => e !== TRACIK).join(', ')}`);
+  if (given('goals') && opts.goals !== 'pose')
+    throw usage('--goals: the tracik experiment targets whole poses (--goals pose, its default)');
+  if (given('errorTolerance'))
+    throw usage(
+      "--error-tolerance: the tracik experiment has TRAC-IK's tolerances (1e-5 on positions and on rotations, radians)",
+    );
   opts.goals = 'pose';
   if (!given('samples')) for (const method of Object.keys(opts.samples)) opts.samples[method] = TRACIK_SAMPLES;
   if (!given('timeBudget')) opts.timeBudgetSeconds = TRACIK_TIMEOUT_S;
@@ -112,9 +118,13 @@ export function applyTracik(opts: TracikOptions, given: (option: string) => bool
 /** Checks --chain: BASE:TIP, and every rig a URDF file (the other formats have no chains to choose). */
 export function checkChain(chain: string | undefined, rigs: readonly string[]): void {
   if (chain === undefined) return;
-  if (!isChain(chain)) throw usage(`--chain: ${quote(chain)} is not BASE:TIP (two link names of the URDF file, the chain's base and its tip)`);
+  if (!isChain(chain))
+    throw usage(
+      `--chain: ${quote(chain)} is not BASE:TIP (two link names of the URDF file, the chain's base and its tip)`,
+    );
   const other = rigs.find((rig) => extname(rig).toLowerCase() !== '.urdf');
-  if (other !== undefined) throw usage(`--chain: ${quote(other)} is no URDF file (.urdf): only URDF rigs have chains to choose`);
+  if (other !== undefined)
+    throw usage(`--chain: ${quote(other)} is no URDF file (.urdf): only URDF rigs have chains to choose`);
 }
 
 /**
@@ -122,6 +132,13 @@ export function checkChain(chain: string | undefined, rigs: readonly string[]): 
  * pose goals, on target with every tip within TRACIK_TOLERANCE and every frame within
  * TRACIK_TOLERANCE radians, our solvers' gradient tolerance `gradientTolerance` (--gradient-tolerance; default TRACIK_GRADIENT_TOLERANCE).
  */
-export function tracikSettings(gradientTolerance: number | undefined): Pick<RunSettings, 'gradientTolerance' | 'tipTolerance' | 'orientationToleranceDeg' | 'goals'> {
-  return { gradientTolerance: gradientTolerance ?? TRACIK_GRADIENT_TOLERANCE, tipTolerance: TRACIK_TOLERANCE, orientationToleranceDeg: TRACIK_ROTATION_TOLERANCE_DEG, goals: 'pose' };
+export function tracikSettings(
+  gradientTolerance: number | undefined,
+): Pick<RunSettings, 'gradientTolerance' | 'tipTolerance' | 'orientationToleranceDeg' | 'goals'> {
+  return {
+    gradientTolerance: gradientTolerance ?? TRACIK_GRADIENT_TOLERANCE,
+    tipTolerance: TRACIK_TOLERANCE,
+    orientationToleranceDeg: TRACIK_ROTATION_TOLERANCE_DEG,
+    goals: 'pose',
+  };
 }

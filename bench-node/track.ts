@@ -59,12 +59,30 @@ export interface TrackRow {
 
 /** The bones mpjpe_upper averages over. */
 const UPPER_ROLES: readonly HumanoidRole[] = [
-  'spine', 'chest', 'upperChest', 'neck', 'head', 'leftShoulder', 'leftUpperArm', 'leftLowerArm', 'leftHand',
-  'rightShoulder', 'rightUpperArm', 'rightLowerArm', 'rightHand',
+  'spine',
+  'chest',
+  'upperChest',
+  'neck',
+  'head',
+  'leftShoulder',
+  'leftUpperArm',
+  'leftLowerArm',
+  'leftHand',
+  'rightShoulder',
+  'rightUpperArm',
+  'rightLowerArm',
+  'rightHand',
 ];
 
 /** The effector index of each input in AvatarSolver.bones' order, and the inputs of 3 and 6 tracked points. */
-const EFFECTOR: Record<keyof AvatarInput, number> = { head: 0, leftHand: 1, rightHand: 2, leftFoot: 3, rightFoot: 4, hips: 5 };
+const EFFECTOR: Record<keyof AvatarInput, number> = {
+  head: 0,
+  leftHand: 1,
+  rightHand: 2,
+  leftFoot: 3,
+  rightFoot: 4,
+  hips: 5,
+};
 const POINTS: Record<number, Array<keyof AvatarInput>> = {
   3: ['head', 'leftHand', 'rightHand'],
   6: ['head', 'leftHand', 'rightHand', 'hips', 'leftFoot', 'rightFoot'],
@@ -95,15 +113,23 @@ export interface TrackRig {
  * `points` tracked points (3: head and hands); one row per clip. Throws BenchError naming a clip
  * the file lacks, or a file without clips.
  */
-export async function runTrack(ik: IkCoreModule, rig: TrackRig, clips: string[] | 'all', points: number): Promise<TrackRow[]> {
+export async function runTrack(
+  ik: IkCoreModule,
+  rig: TrackRig,
+  clips: string[] | 'all',
+  points: number,
+): Promise<TrackRow[]> {
   const frames = await ClipFrames.read(rig.path, rig.boneNodes);
   const names = frames.clips.map((c) => c.name);
   if (names.length === 0) throw new BenchError(`track: ${rig.name} has no animation clips`, 2);
-  const chosen = clips === 'all' ? names.map((_, i) => i) : clips.map((name) => {
-    const i = names.indexOf(name);
-    if (i < 0) throw new BenchError(`track: ${rig.name} has no clip "${name}" (it has: ${names.join(', ')})`, 2);
-    return i;
-  });
+  const chosen =
+    clips === 'all'
+      ? names.map((_, i) => i)
+      : clips.map((name) => {
+          const i = names.indexOf(name);
+          if (i < 0) throw new BenchError(`track: ${rig.name} has no clip "${name}" (it has: ${names.join(', ')})`, 2);
+          return i;
+        });
   // Warm-up (warm_up.ts): every clip once, untimed, so that V8 has optimised the avatar's
   // JavaScript and WebAssembly on each of its paths (steps, poles, given-up goals) before any
   // frame is timed. Cold, the first clip's median read 2x; warmed on the first clip alone, a
@@ -115,7 +141,9 @@ export async function runTrack(ik: IkCoreModule, rig: TrackRig, clips: string[] 
 function trackClip(ik: IkCoreModule, rig: TrackRig, clips: ClipFrames, clip: number, points: number): TrackRow {
   const avatar = new AvatarSolver(ik, rig.spec, rig.humanoid);
   try {
-    const spec = avatar.rig.spec, h = avatar.height, delta = 1e-3 * h;
+    const spec = avatar.rig.spec,
+      h = avatar.height,
+      delta = 1e-3 * h;
     const numBones = spec.parents.length;
     const heads = Array.from({ length: numBones }, (_, i) => restBase(spec, i));
     const restRotations = avatar.tipRotations();
@@ -126,7 +154,9 @@ function trackClip(ik: IkCoreModule, rig: TrackRig, clips: ClipFrames, clip: num
     const { frames, name } = clips.clips[clip];
     const tracked = POINTS[points];
     const moving = Array.from(avatar.movingBones);
-    const g = new Matrix4(), q = new Quaternion(), rest = new Quaternion();
+    const g = new Matrix4(),
+      q = new Quaternion(),
+      rest = new Quaternion();
     // The clip's pose of effector k at frame `motion`: its tip and its bone frame.
     const truthOf = (motion: Float64Array, k: number): TrackedPose & { position: number[]; orientation: number[] } => {
       const m = motion.subarray(16 * effectors[k], 16 * effectors[k] + 16);
@@ -164,27 +194,43 @@ function trackClip(ik: IkCoreModule, rig: TrackRig, clips: ClipFrames, clip: num
             solved.set(runner.angles, at);
             runner.plantedFeet().forEach((p, i) => plantedLog.set(p ?? [NaN, NaN, NaN], 6 * f + 3 * i));
           } else if (!runner.angles.every((a, i) => a === solved[at + i]))
-            throw new BenchError(`track: ${name} frame ${f} gave another pose on run ${run + 1} (the avatar is not deterministic)`, 1);
+            throw new BenchError(
+              `track: ${name} frame ${f} gave another pose on run ${run + 1} (the avatar is not deterministic)`,
+              1,
+            );
         }
       } finally {
         if (runner !== avatar) runner.dispose();
       }
     }
     const times = Float64Array.from({ length: frames }, (_, f) => median(runTimes.map((t) => t[f])));
-    let onTarget = 0, reachable = 0, onTargetReachable = 0, mpjpe = 0, mpjpeUpper = 0, flips = 0, slide = 0;
-    const ours: number[][] = [], theirs: number[][] = [];
+    let onTarget = 0,
+      reachable = 0,
+      onTargetReachable = 0,
+      mpjpe = 0,
+      mpjpeUpper = 0,
+      flips = 0,
+      slide = 0;
+    const ours: number[][] = [],
+      theirs: number[][] = [];
     let previousPoses: Float64Array | null = null;
     // Per foot: the clip's tip last frame, and ours where the foot was planted (null: in the air).
     const feet = FEET.map(() => ({ truth: null as ArrayLike<number> | null, planted: null as number[] | null }));
     for (let f = 0; f < frames; f++) {
-      const motion = clips.motion(clip, f), input = inputs[f];
+      const motion = clips.motion(clip, f),
+        input = inputs[f];
       const angles = solved.subarray(f * numAngles, (f + 1) * numAngles);
       const truthHeads = heads.map((p, i) => transformPoint(motion.subarray(16 * i, 16 * i + 16), p));
       const given = tracked.map((key) => ({ k: EFFECTOR[key], ...input[key]! }));
-      const tips = avatar.rig.tips(angles), turns = avatar.rig.tipRotations(angles), poses = avatar.rig.poses(angles);
+      const tips = avatar.rig.tips(angles),
+        turns = avatar.rig.tipRotations(angles),
+        poses = avatar.rig.poses(angles);
       const tipAt = (k: number): number[] => [tips[3 * k], tips[3 * k + 1], tips[3 * k + 2]];
-      const within = given.every(({ k, position, orientation }) =>
-        distance(tipAt(k), position) < delta && rotationAngleDeg(turns.subarray(4 * k, 4 * k + 4), orientation) < TRACK_TOLERANCE_DEG);
+      const within = given.every(
+        ({ k, position, orientation }) =>
+          distance(tipAt(k), position) < delta &&
+          rotationAngleDeg(turns.subarray(4 * k, 4 * k + 4), orientation) < TRACK_TOLERANCE_DEG,
+      );
       if (within) onTarget++;
       if (moving.every((b) => limitExcessDeg(spec, motion, b) <= REACH_TOLERANCE_DEG)) {
         reachable++;
@@ -200,9 +246,12 @@ function trackClip(ik: IkCoreModule, rig: TrackRig, clips: ClipFrames, clip: num
       previousPoses = poses;
       // With 6 points a foot is planted while the clip's stays still, and ours should not slide from
       // where it was then; with 3, where the avatar planted it (it steps when the body leaves it).
-      const planted = [0, 1].map((i) => (Number.isNaN(plantedLog[6 * f + 3 * i]) ? null : plantedLog.subarray(6 * f + 3 * i, 6 * f + 3 * i + 3)));
+      const planted = [0, 1].map((i) =>
+        Number.isNaN(plantedLog[6 * f + 3 * i]) ? null : plantedLog.subarray(6 * f + 3 * i, 6 * f + 3 * i + 3),
+      );
       FEET.forEach((key, i) => {
-        const tip = tipAt(EFFECTOR[key]), foot = feet[i];
+        const tip = tipAt(EFFECTOR[key]),
+          foot = feet[i];
         if (points === 3) {
           if (planted[i]) slide = Math.max(slide, distance(tip, planted[i]!) / h);
           return;
@@ -215,7 +264,8 @@ function trackClip(ik: IkCoreModule, rig: TrackRig, clips: ClipFrames, clip: num
       });
     }
     times.sort((a, b) => a - b);
-    const truthJitter = meanAcceleration(theirs), ourJitter = meanAcceleration(ours);
+    const truthJitter = meanAcceleration(theirs),
+      ourJitter = meanAcceleration(ours);
     return {
       rig: rig.name,
       experiment: 'track',
@@ -269,7 +319,8 @@ function distance(a: ArrayLike<number>, b: ArrayLike<number>): number {
 
 /** The mean size of the second difference of each point over the frames (rig units per frame²); 0 with fewer than 3 frames. */
 function meanAcceleration(frames: number[][]): number {
-  let sum = 0, count = 0;
+  let sum = 0,
+    count = 0;
   for (let f = 1; f + 1 < frames.length; f++)
     for (let i = 0; i < frames[f].length; i += 3) {
       let a2 = 0;

@@ -44,7 +44,9 @@ function run(task: WorkerTask): SolveResult[] {
   const entry = runnerFor(task);
   const { runner, rig } = entry;
   const measurer = task.limbs ? (entry.measurer ??= new StepMeasurer(task.spec, rig, task.limbs)) : undefined;
-  const m = task.numAngles, r = task.numResiduals, q = (4 * r) / 3;
+  const m = task.numAngles,
+    r = task.numResiduals,
+    q = (4 * r) / 3;
   const results: SolveResult[] = [];
   let lastReport = performance.now();
   // Where the previous solve ended: a chained step's start, for the step measures.
@@ -59,7 +61,16 @@ function run(task: WorkerTask): SolveResult[] {
       result = runner.solve({ start, target, orientations, dragged: task.dragged[k] });
     } catch (e) {
       const stopReason = `exception: ${(e as Error).message.split('\n')[0]}`;
-      result = { E: NaN, tipDistance: NaN, iterations: 0, seconds: 0, stopReason, wobbleDuring: NaN, wobbleAfter: NaN, jumpDeg: NaN };
+      result = {
+        E: NaN,
+        tipDistance: NaN,
+        iterations: 0,
+        seconds: 0,
+        stopReason,
+        wobbleDuring: NaN,
+        wobbleAfter: NaN,
+        jumpDeg: NaN,
+      };
     }
     // A solve that failed before producing a pose (invalid input, an exception) is counted with
     // the E, tip distance (and orientation error) of its start, so averages stay finite and the

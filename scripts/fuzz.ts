@@ -37,17 +37,40 @@ const program = new Command('npm run fuzz --')
   .option('--case <k>', 'replay case number k of each kind given (with --seed)', integer(0))
   .option('--workers <n>', 'worker threads', integer(1), 1)
   .option('--hang-seconds <s>', 'a case running longer than this is a hang', integer(1), 5)
-  .addOption(new Option('--stack-throws <n>', 'refused solves of the stack-leak check (0: skip it)').argParser(integer(0)).default(1_000_000))
+  .addOption(
+    new Option('--stack-throws <n>', 'refused solves of the stack-leak check (0: skip it)')
+      .argParser(integer(0))
+      .default(1_000_000),
+  )
   .option('--no-progress', 'no progress bar on stderr');
 
 async function main(): Promise<number> {
   program.parse();
-  const o = program.opts<{ cases: number; seed?: number; kind: FuzzKind[]; case?: number; workers: number; hangSeconds: number; stackThrows: number; progress: boolean }>();
+  const o = program.opts<{
+    cases: number;
+    seed?: number;
+    kind: FuzzKind[];
+    case?: number;
+    workers: number;
+    hangSeconds: number;
+    stackThrows: number;
+    progress: boolean;
+  }>();
   const seed = o.seed ?? Math.floor(Math.random() * 2 ** 31);
   const total = o.case === undefined ? o.cases : o.kind.length;
-  process.stdout.write(`fuzz: seed ${seed}, ${total} cases (${o.kind.join(', ')})${o.case === undefined ? '' : `, case ${o.case}`}\n`);
+  process.stdout.write(
+    `fuzz: seed ${seed}, ${total} cases (${o.kind.join(', ')})${o.case === undefined ? '' : `, case ${o.case}`}\n`,
+  );
 
-  const bar = o.progress && process.stderr.isTTY ? new SingleBar({ format: '{bar} {value}/{total} cases | {failing} failing | ETA {eta_formatted}', stream: process.stderr, hideCursor: true, clearOnComplete: true }) : undefined;
+  const bar =
+    o.progress && process.stderr.isTTY
+      ? new SingleBar({
+          format: '{bar} {value}/{total} cases | {failing} failing | ETA {eta_formatted}',
+          stream: process.stderr,
+          hideCursor: true,
+          clearOnComplete: true,
+        })
+      : undefined;
   bar?.start(total, 0, { failing: 0 });
   let failing = 0;
   const reports = await runFuzz({

@@ -46,7 +46,9 @@ export function rigReport(rig: LoadedRig): RigReport {
     effectors: Array.from(spec.effectors, (b) => label[b]),
     humanoid: map ? Object.fromEntries(roles.map((r) => [r, label[map.bones[r]!]])) : null,
     // fromEntries defines own properties, so a bone named "__proto__" stays a plain key.
-    limits: Object.fromEntries(label.map((l, b) => [l, { min: boneLimit(spec.lower, b), max: boneLimit(spec.upper, b) }])),
+    limits: Object.fromEntries(
+      label.map((l, b) => [l, { min: boneLimit(spec.lower, b), max: boneLimit(spec.upper, b) }]),
+    ),
     warnings: rig.warnings,
   };
 }
@@ -57,11 +59,26 @@ export function rigReport(rig: LoadedRig): RigReport {
  */
 export function reportJson(r: RigReport): string {
   const list = (v: unknown[]): string => `[${v.map((x) => JSON.stringify(x)).join(', ')}]`;
-  const block = (lines: string[], open: string, close: string): string => (lines.length ? `${open}\n${lines.join(',\n')}\n  ${close}` : `${open}${close}`);
+  const block = (lines: string[], open: string, close: string): string =>
+    lines.length ? `${open}\n${lines.join(',\n')}\n  ${close}` : `${open}${close}`;
   const key = JSON.stringify;
-  const humanoid = r.humanoid && block(Object.entries(r.humanoid).map(([role, bone]) => `    ${key(role)}: ${key(bone)}`), '{', '}');
-  const limits = block(Object.entries(r.limits).map(([bone, l]) => `    ${key(bone)}: {"min": ${list(l.min)}, "max": ${list(l.max)}}`), '{', '}');
-  const warnings = block(r.warnings.map((w) => `    ${key(w)}`), '[', ']');
+  const humanoid =
+    r.humanoid &&
+    block(
+      Object.entries(r.humanoid).map(([role, bone]) => `    ${key(role)}: ${key(bone)}`),
+      '{',
+      '}',
+    );
+  const limits = block(
+    Object.entries(r.limits).map(([bone, l]) => `    ${key(bone)}: {"min": ${list(l.min)}, "max": ${list(l.max)}}`),
+    '{',
+    '}',
+  );
+  const warnings = block(
+    r.warnings.map((w) => `    ${key(w)}`),
+    '[',
+    ']',
+  );
   return `{\n  "bones": ${r.bones},\n  "effectors": ${list(r.effectors)},\n  "humanoid": ${humanoid ?? 'null'},\n  "limits": ${limits},\n  "warnings": ${warnings}\n}\n`;
 }
 
@@ -82,16 +99,26 @@ const isDefault = (l: BoneLimits): boolean => l.min.every((v) => v === -180) && 
 /** A short human-readable summary of `rig` loaded from `file`, lines ending in '\n'. */
 export function rigSummary(rig: LoadedRig, file: string): string {
   const r = rigReport(rig);
-  const lines = [`${file}: ${FORMATS[rig.format]}, ${r.bones} bones`, `end effectors (${r.effectors.length}): ${r.effectors.join(', ')}`];
+  const lines = [
+    `${file}: ${FORMATS[rig.format]}, ${r.bones} bones`,
+    `end effectors (${r.effectors.length}): ${r.effectors.join(', ')}`,
+  ];
   const map = rig.gltf?.humanoid;
   const urdf = rig.urdf;
-  if (urdf) lines.push(`chain: ${urdf.base}:${urdf.tip}, ${urdf.joints.length} moving joints (${urdf.joints.join(', ')}); the end effector's frame is ${urdf.tip}'s`);
+  if (urdf)
+    lines.push(
+      `chain: ${urdf.base}:${urdf.tip}, ${urdf.joints.length} moving joints (${urdf.joints.join(', ')}); the end effector's frame is ${urdf.tip}'s`,
+    );
   else if (!map || !r.humanoid) lines.push('humanoid: not recognised');
   else {
     const missing = map.missing.length ? `; missing the core roles ${map.missing.join(', ')}` : '';
-    lines.push(`humanoid (${map.source}): ${Object.keys(r.humanoid).length} of ${HUMANOID_ROLES.length} roles${missing}`);
+    lines.push(
+      `humanoid (${map.source}): ${Object.keys(r.humanoid).length} of ${HUMANOID_ROLES.length} roles${missing}`,
+    );
     for (const [region, roles] of REGIONS) {
-      const named = roles.filter((role) => r.humanoid![role] !== undefined).map((role) => `${role}=${r.humanoid![role]}`);
+      const named = roles
+        .filter((role) => r.humanoid![role] !== undefined)
+        .map((role) => `${role}=${r.humanoid![role]}`);
       if (named.length) lines.push(`  ${region}: ${named.join(', ')}`);
     }
   }
@@ -109,6 +136,7 @@ export function rigSummary(rig: LoadedRig, file: string): string {
 
 /** Control characters (line breaks, terminal escapes) of a line escaped, so that it prints as one line. */
 function printable(line: string): string {
+  // eslint-disable-next-line no-control-regex -- the control characters are what it escapes
   return line.replace(/[\u0000-\u001f\u007f]/g, (c) => JSON.stringify(c).slice(1, -1));
 }
 
@@ -128,17 +156,27 @@ class UsageError extends Error {}
 /** Parses argv: the file, --chain and --json; undefined after printing the help. */
 function parseArgs(argv: string[], io: InspectIo): { file: string; json: boolean; chain?: string } | undefined {
   const cmd = new Command('npm run rig --')
-    .description('Prints what the rig importer makes of a file: bone count, end effectors, humanoid mapping, limits and warnings.')
+    .description(
+      'Prints what the rig importer makes of a file: bone count, end effectors, humanoid mapping, limits and warnings.',
+    )
     .argument('<file>', 'a rig file: .glb, .gltf, .urdf or A7 .json')
-    .option('--chain <BASE:TIP>', "a URDF file's chain, from the BASE link down to the TIP link (default: the longest serial chain)")
-    .option('--json', 'print {"bones", "effectors", "humanoid", "limits", "warnings"} as JSON (limits in degrees, null = unbounded)', false)
+    .option(
+      '--chain <BASE:TIP>',
+      "a URDF file's chain, from the BASE link down to the TIP link (default: the longest serial chain)",
+    )
+    .option(
+      '--json',
+      'print {"bones", "effectors", "humanoid", "limits", "warnings"} as JSON (limits in degrees, null = unbounded)',
+      false,
+    )
     .allowExcessArguments(false)
     .exitOverride()
     .configureOutput({ writeOut: io.out, writeErr: () => {}, outputError: () => {} });
   try {
     cmd.parse(argv, { from: 'user' });
   } catch (e) {
-    if (e instanceof CommanderError && (e.code === 'commander.helpDisplayed' || e.code === 'commander.help')) return undefined;
+    if (e instanceof CommanderError && (e.code === 'commander.helpDisplayed' || e.code === 'commander.help'))
+      return undefined;
     throw new UsageError((e as Error).message.replace(/^error: /, '').split('\n')[0]);
   }
   const { json, chain } = cmd.opts<{ json: boolean; chain?: string }>();

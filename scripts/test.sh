@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # npm test: install what is missing, build both targets, then run every test: the C++ format
 # check, native GoogleTest (build/native, Release, warnings as errors), the TypeScript type check,
-# the layers, vitest (WebAssembly in Node, then the browser). The same GoogleTest suites under
-# AddressSanitizer and UndefinedBehaviorSanitizer: npm run test:sanitize (scripts/test-sanitize.sh).
+# the layers, ESLint and Prettier, vitest (WebAssembly in Node, then the browser). The same
+# GoogleTest suites under AddressSanitizer and UndefinedBehaviorSanitizer: npm run test:sanitize (scripts/test-sanitize.sh).
 # The report's A7 rigs are read from $IK_A7_DIR (default ../shared/rigs/a7); without that folder
 # the suites that need them are skipped, each layer printing one line, unless CI is set.
 set -euo pipefail
@@ -27,6 +27,9 @@ npx tsc -p tsconfig.json
 
 echo "== layers (dependency-cruiser: no import up the layers, no cycle; .dependency-cruiser.cjs)"
 npm run --silent lint:deps
+
+echo "== TypeScript lint and format (ESLint, eslint.config.mjs; Prettier, .prettierrc.json: npm run format fixes it)"
+npm run --silent lint
 
 echo "== vitest"
 npx vitest run "$@"

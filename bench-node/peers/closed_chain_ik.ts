@@ -62,12 +62,15 @@ export class ClosedChainIkRunner implements Runner {
     private readonly settings: RunSettings,
     private readonly rotations?: RotationsFn,
   ) {
-    if (settings.goals === 'pose' && !rotations) throw new Error('closed-chain-ik: pose goals need the rig\'s tip rotations');
+    if (settings.goals === 'pose' && !rotations)
+      throw new Error("closed-chain-ik: pose goals need the rig's tip rotations");
     const n = spec.parents.length;
     const root = new Link();
     const boneLinks: Link[] = [];
     const restOf = (i: number): Matrix4 => new Matrix4().fromArray(spec.rest.subarray(16 * i, 16 * i + 16)).transpose();
-    const position = new Vector3(), scale = new Vector3(), rotation = new Quaternion();
+    const position = new Vector3(),
+      scale = new Vector3(),
+      rotation = new Quaternion();
     for (const i of topologicalOrder(spec.parents)) {
       const p = spec.parents[i];
       const local = p === -1 ? restOf(i) : restOf(p).invert().multiply(restOf(i));
@@ -79,7 +82,8 @@ export class ClosedChainIkRunner implements Runner {
         const dof = k === 1 ? DOF.EZ : DOF.EX;
         const q = k === 0 ? rotation.clone() : new Quaternion();
         if (k === 0) joint.setPosition(position.x, position.y, position.z);
-        const lo = spec.lower[3 * i + k], hi = spec.upper[3 * i + k];
+        const lo = spec.lower[3 * i + k],
+          hi = spec.upper[3 * i + k];
         if (lo === hi) {
           q.multiply(new Quaternion().setFromAxisAngle(axis, lo * RAD));
           this.dofs[3 * i + k] = null;
@@ -118,7 +122,9 @@ export class ClosedChainIkRunner implements Runner {
     this.solver.restPoseFactor = 0; // no rest pose is set: skip the null-space term
     // Every goal nearer than this: on target by the run's test (tipTolerance, or E < errorTolerance).
     this.solver.translationConvergeThreshold =
-      settings.tipTolerance > 0 ? settings.tipTolerance : Math.sqrt((2 * settings.errorTolerance) / spec.effectors.length);
+      settings.tipTolerance > 0
+        ? settings.tipTolerance
+        : Math.sqrt((2 * settings.errorTolerance) / spec.effectors.length);
     // Its rotation error is the length of a quaternion difference, 2 sin(angle / 4) for unit
     // quaternions: under this, every frame is within the run's orientation tolerance.
     const toleranceRad = (settings.orientationToleranceDeg ?? ORIENTATION_TOLERANCE_DEG) * RAD;
@@ -201,12 +207,24 @@ export class ClosedChainIkRunner implements Runner {
     const distance = tipDistance(tips, input.target);
     const rotErrDeg = q ? largestRotationErrorDeg(this.rotations!(this.poseOut), q) : undefined;
     // The library's convergence test is per goal in float32; report our own test's verdict.
-    if (stopReason === 'converged_E' && !isOnTarget(this.settings, E, distance, rotErrDeg)) stopReason = 'converged_float32';
+    if (stopReason === 'converged_E' && !isOnTarget(this.settings, E, distance, rotErrDeg))
+      stopReason = 'converged_float32';
     const after = pinnedDeviation(tips, input.target, input.dragged);
     let during = after;
-    if (input.dragged >= 0 && Number.isFinite(after) && iterations > 0) during = this.replayWobble(start, input, iterations);
-    return { E, tipDistance: distance, iterations, seconds, stopReason, wobbleDuring: during, wobbleAfter: after, jumpDeg,
-      angles: this.poseOut.slice(), ...(rotErrDeg === undefined ? {} : { rotErrDeg }) };
+    if (input.dragged >= 0 && Number.isFinite(after) && iterations > 0)
+      during = this.replayWobble(start, input, iterations);
+    return {
+      E,
+      tipDistance: distance,
+      iterations,
+      seconds,
+      stopReason,
+      wobbleDuring: during,
+      wobbleAfter: after,
+      jumpDeg,
+      angles: this.poseOut.slice(),
+      ...(rotErrDeg === undefined ? {} : { rotErrDeg }),
+    };
   }
 
   /** Replays the solve (same start, same iteration count) observing the pinned effectors. */

@@ -27,11 +27,11 @@ export class RestartingRunner implements Runner {
     const t0 = performance.now();
     let best = this.inner.solve({ ...input, budgetSeconds: budget });
     if (input.start === null || this.restarts === 0) return best;
-    let iterations = best.iterations, last = best;
+    let iterations = best.iterations;
     for (let k = 1; k <= this.restarts && !this.reached(best); k++) {
       const left = budget - (performance.now() - t0) / 1000;
       if (left <= 0) break;
-      last = this.inner.solve({ ...input, start: this.startOf(k), budgetSeconds: left });
+      const last = this.inner.solve({ ...input, start: this.startOf(k), budgetSeconds: left });
       iterations += last.iterations;
       if ((this.reached(last) && !this.reached(best)) || last.E < best.E) best = last;
     }

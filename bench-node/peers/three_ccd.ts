@@ -14,7 +14,17 @@
 // eulerBox). So after every pass the adapter reads each joint back as XZX angles inside the rig's
 // limits (web/src/rig/xzx_angles.ts) and poses it there: every pass ends inside the limits, and E and the
 // stopping tests are measured on that pose. This projection is part of the timed solve.
-import { Bone, BufferGeometry, Matrix4, MeshBasicMaterial, Object3D, Quaternion, Skeleton, SkinnedMesh, Vector3 } from 'three';
+import {
+  Bone,
+  BufferGeometry,
+  Matrix4,
+  MeshBasicMaterial,
+  Object3D,
+  Quaternion,
+  Skeleton,
+  SkinnedMesh,
+  Vector3,
+} from 'three';
 import { CCDIKSolver, type IK } from 'three/examples/jsm/animation/CCDIKSolver.js';
 
 import type { RigSpec } from '#ik/rig_arrays.js';
@@ -147,14 +157,21 @@ export class ThreeCcdRunner implements Runner {
   private setPose(angles: Float64Array): void {
     this.angles.set(angles);
     const a = project(this.spec, this.angles);
-    for (let i = 0; i < this.joints.length; i++) xzxQuaternion(a[3 * i], a[3 * i + 1], a[3 * i + 2], this.joints[i].quaternion);
+    for (let i = 0; i < this.joints.length; i++)
+      xzxQuaternion(a[3 * i], a[3 * i + 1], a[3 * i + 2], this.joints[i].quaternion);
   }
 
   /** Replaces each joint's rotation by its XZX reading inside the limits (see xzx.ts). */
   private projectPose(): void {
     const { lower, upper } = this.spec;
     for (let i = 0; i < this.joints.length; i++) {
-      xzxWithinLimits(this.joints[i].quaternion, lower.subarray(3 * i, 3 * i + 3), upper.subarray(3 * i, 3 * i + 3), this.angles, 3 * i);
+      xzxWithinLimits(
+        this.joints[i].quaternion,
+        lower.subarray(3 * i, 3 * i + 3),
+        upper.subarray(3 * i, 3 * i + 3),
+        this.angles,
+        3 * i,
+      );
       xzxQuaternion(this.angles[3 * i], this.angles[3 * i + 1], this.angles[3 * i + 2], this.joints[i].quaternion);
     }
     this.root.updateMatrixWorld(true);
@@ -183,7 +200,8 @@ export class ThreeCcdRunner implements Runner {
     let E = errorOf(this.readTips(), input.target);
     let during = NaN;
     let passes = 0;
-    let best = E, bestAt = 0;
+    let best = E,
+      bestAt = 0;
     let stopReason = 'converged_E';
     // tipBuffer holds the tips readTips() read last.
     while (!isOnTarget(this.settings, E, tipDistance(this.tipBuffer, input.target))) {
@@ -201,7 +219,8 @@ export class ThreeCcdRunner implements Runner {
       const previous = E;
       const tips = this.readTips();
       E = errorOf(tips, input.target);
-      if (input.dragged >= 0) during = Math.max(Number.isNaN(during) ? 0 : during, pinnedDeviation(tips, input.target, input.dragged));
+      if (input.dragged >= 0)
+        during = Math.max(Number.isNaN(during) ? 0 : during, pinnedDeviation(tips, input.target, input.dragged));
       if (E === previous) {
         stopReason = 'zero_step';
         break;

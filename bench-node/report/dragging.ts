@@ -28,7 +28,21 @@ export function draggingSection(rows: readonly Row[], verdicts: Verdicts): strin
       `plane turned more than 90 degrees (bench-node/README.md). Target: on target at >= ${pct(DRAG_SUCCESS_TARGET)} of the reachable steps on every rig.`,
     '',
     table(
-      ['rig', 'experiment', 'steps', 'success (reachable)', 'unreachable', 'wobble during max', 'wobble after max', 'jump max (deg)', 'jumps', 'flips', 'median per step (us)', 'stop reasons', 'met'],
+      [
+        'rig',
+        'experiment',
+        'steps',
+        'success (reachable)',
+        'unreachable',
+        'wobble during max',
+        'wobble after max',
+        'jump max (deg)',
+        'jumps',
+        'flips',
+        'median per step (us)',
+        'stop reasons',
+        'met',
+      ],
       rows.map((r) => [
         r.rig,
         r.experiment,
@@ -43,7 +57,10 @@ export function draggingSection(rows: readonly Row[], verdicts: Verdicts): strin
         us(r.t_median_s),
         formatStopReasons(r.stop_reasons),
         // Nothing reachable: nothing missed.
-        verdicts.mark(!(r.success_rate < DRAG_SUCCESS_TARGET), `7. ${r.rig} ${r.experiment}: on target at ${success(r.success_rate)} of the reachable steps, under ${pct(DRAG_SUCCESS_TARGET)}`),
+        verdicts.mark(
+          !(r.success_rate < DRAG_SUCCESS_TARGET),
+          `7. ${r.rig} ${r.experiment}: on target at ${success(r.success_rate)} of the reachable steps, under ${pct(DRAG_SUCCESS_TARGET)}`,
+        ),
       ]),
     ),
     '',

@@ -54,7 +54,9 @@ export function heapGrowthText(h: HeapGrowth): string {
     `solves: ${h.solves} in ${h.seconds.toFixed(1)} s`,
     `heap after 10^3 solves: ${h.bytesAfterThousand} bytes`,
     `heap after ${h.solves} solves: ${h.bytesAtEnd} bytes`,
-    h.bytesAtEnd === h.bytesAfterThousand ? 'heap unchanged' : `heap grew by ${h.bytesAtEnd - h.bytesAfterThousand} bytes`,
+    h.bytesAtEnd === h.bytesAfterThousand
+      ? 'heap unchanged'
+      : `heap grew by ${h.bytesAtEnd - h.bytesAfterThousand} bytes`,
   ].join('\n');
 }
 

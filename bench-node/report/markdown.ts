@@ -6,4 +6,8 @@ export const us = (s: number): string => (s * 1e6 < 10 ? (s * 1e6).toFixed(2) : 
 export const pct = (x: number): string => `${(100 * x).toFixed(1)}%`;
 /** A Markdown table. */
 export const table = (head: string[], rows: string[][]): string =>
-  [`| ${head.join(' | ')} |`, `| ${head.map(() => '---').join(' | ')} |`, ...rows.map((r) => `| ${r.join(' | ')} |`)].join('\n');
+  [
+    `| ${head.join(' | ')} |`,
+    `| ${head.map(() => '---').join(' | ')} |`,
+    ...rows.map((r) => `| ${r.join(' | ')} |`),
+  ].join('\n');

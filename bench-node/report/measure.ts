@@ -90,22 +90,51 @@ function bench(plan: ReportPlan, name: string, args: string[]): Row[] {
 
 /** A native tool (build/native/NAME) or its WebAssembly build (build/wasm/NAME.cjs) run with `args`, its JSON output. */
 function tool<T>(engine: 'native' | 'wasm', name: string, args: string[]): T {
-  const out = engine === 'native' ? run(`build/native/${name}`, args) : run('node', [`build/wasm/${name}.cjs`, ...args]);
+  const out =
+    engine === 'native' ? run(`build/native/${name}`, args) : run('node', [`build/wasm/${name}.cjs`, ...args]);
   return JSON.parse(out) as T;
 }
 
 /** The rig's display name: its file's base name. */
-const baseName = (path: string): string => path.split('/').pop()!.replace(/\.json$/, '');
+const baseName = (path: string): string =>
+  path
+    .split('/')
+    .pop()!
+    .replace(/\.json$/, '');
 
 /** Runs every measurement of the plan (minutes to hours: see the sample count). */
 export async function measure(plan: ReportPlan): Promise<Measurements> {
   const { samples, gdSamples, a7Rigs, projectRigs } = plan;
   const a7 = a7Rigs.join(',');
-  const defaults = bench(plan, 'default', ['--rig', [...a7Rigs, ...projectRigs].join(','), '--methods', 'lm', '--samples', String(samples), '--engine', 'wasm,native']);
-  const classic = bench(plan, 'classic', ['--rig', a7, '--methods', 'gd,bfgs,gn', '--samples', `${samples},gd=${gdSamples}`]);
+  const defaults = bench(plan, 'default', [
+    '--rig',
+    [...a7Rigs, ...projectRigs].join(','),
+    '--methods',
+    'lm',
+    '--samples',
+    String(samples),
+    '--engine',
+    'wasm,native',
+  ]);
+  const classic = bench(plan, 'classic', [
+    '--rig',
+    a7,
+    '--methods',
+    'gd,bfgs,gn',
+    '--samples',
+    `${samples},gd=${gdSamples}`,
+  ]);
   // The original's success rate, which its CSV lacks: the original algorithms (--paper) on the
   // same targets, with the original's sample counts (GD 50, the others 300).
-  const paper = bench(plan, 'paper', ['--rig', a7, '--methods', 'gd,bfgs,gn', '--paper', '--samples', `${Math.min(samples, 300)},gd=${Math.min(samples, 50)}`]);
+  const paper = bench(plan, 'paper', [
+    '--rig',
+    a7,
+    '--methods',
+    'gd,bfgs,gn',
+    '--paper',
+    '--samples',
+    `${Math.min(samples, 300)},gd=${Math.min(samples, 50)}`,
+  ]);
   // Failed peer solves use the whole 1 s budget: at most 200 samples each.
   const peerArgs = ['--rig', a7, '--samples', String(Math.min(samples, PEER_SAMPLES))];
   const peers: Row[] = [];
@@ -117,10 +146,20 @@ export async function measure(plan: ReportPlan): Promise<Measurements> {
   const core: CoreRow[] = [];
   for (const path of a7Rigs)
     for (const engine of ['native', 'wasm'] as const) {
-      const rows = tool<SolverSpeedRow[]>(engine, 'solver_speed', [path, '--methods', 'lm', '--samples', String(Math.min(samples, 500)), '--json']);
+      const rows = tool<SolverSpeedRow[]>(engine, 'solver_speed', [
+        path,
+        '--methods',
+        'lm',
+        '--samples',
+        String(Math.min(samples, 500)),
+        '--json',
+      ]);
       core.push(...rows.map((r) => ({ ...r, rig: baseName(path), engine })));
     }
-  const scale = { native: tool<ScaleRow[]>('native', 'scale_bench', ['--json']), wasm: tool<ScaleRow[]>('wasm', 'scale_bench', ['--json']) };
+  const scale = {
+    native: tool<ScaleRow[]>('native', 'scale_bench', ['--json']),
+    wasm: tool<ScaleRow[]>('wasm', 'scale_bench', ['--json']),
+  };
   process.stderr.write(`bench:report: heap check, ${samples * 1000} solves\n`);
   const heap = await measureHeapGrowth(samples * 1000);
   const dragArgs = ['--experiment', 'drag,reach', '--methods', 'lm', '--samples', String(samples)];

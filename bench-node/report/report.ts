@@ -27,7 +27,14 @@ import { projectRigNames } from '../rigs.js';
 import { charts } from './charts.js';
 import { draggingSection } from './dragging.js';
 import { measure, type Measurements } from './measure.js';
-import { allRowsSection, defaultSection, enginesSection, originalSection, peersSection, scaleAndMemorySections } from './sections.js';
+import {
+  allRowsSection,
+  defaultSection,
+  enginesSection,
+  originalSection,
+  peersSection,
+  scaleAndMemorySections,
+} from './sections.js';
 import { Verdicts } from './verdicts.js';
 
 interface ReportOptions {
@@ -44,7 +51,10 @@ function parseArgs(argv: string[]): ReportOptions {
   };
   return new Command('bench:report')
     .description('Runs the benchmark set and writes docs/benchmarks.md and its charts.')
-    .requiredOption('--a7-dir <dir>', "the folder of the report's five A7 rigs (its paper folder is ../../paper from there)")
+    .requiredOption(
+      '--a7-dir <dir>',
+      "the folder of the report's five A7 rigs (its paper folder is ../../paper from there)",
+    )
     .option('--samples <n>', 'samples per rig and experiment (gd: at most 100)', count, 1000)
     .option('--out <dir>', 'where the document and the charts go', 'docs')
     .parse(argv, { from: 'user' })
@@ -106,12 +116,22 @@ try {
   });
   const verdicts = new Verdicts();
   const md = document(m, opts, a7Names, verdicts);
-  const { time, success } = charts([...m.defaults.filter((r) => r.engine === 'wasm'), ...m.classic, ...m.peers], a7Names);
+  const { time, success } = charts(
+    [...m.defaults.filter((r) => r.engine === 'wasm'), ...m.classic, ...m.peers],
+    a7Names,
+  );
   writeFileSync(join(opts.out, 'benchmarks.md'), `${md.join('\n')}\n`);
   writeFileSync(join(opts.out, 'benchmarks-time.svg'), time);
   writeFileSync(join(opts.out, 'benchmarks-success.svg'), success);
-  process.stderr.write(`bench:report: wrote ${['benchmarks.md', 'benchmarks-time.svg', 'benchmarks-success.svg'].map((f) => join(opts.out, f)).join(', ')}\n`);
-  process.stderr.write(`bench:report: ${verdicts.summary().filter((l) => l !== '').join('\nbench:report: ')}\n`);
+  process.stderr.write(
+    `bench:report: wrote ${['benchmarks.md', 'benchmarks-time.svg', 'benchmarks-success.svg'].map((f) => join(opts.out, f)).join(', ')}\n`,
+  );
+  process.stderr.write(
+    `bench:report: ${verdicts
+      .summary()
+      .filter((l) => l !== '')
+      .join('\nbench:report: ')}\n`,
+  );
   process.exitCode = verdicts.missed.length > 0 ? 1 : 0;
 } finally {
   rmSync(work, { recursive: true, force: true });

@@ -34,10 +34,18 @@ function baseDoc(r: Rand, seeds: readonly A7Seed[]): { doc: A7Doc; text: string 
     const seed = r.pick(seeds);
     return { doc: JSON.parse(seed.text) as A7Doc, text: seed.name };
   }
-  const bones = r.weighted<() => number>([[8, () => r.intIn(1, 12)], [2, () => r.intIn(20, 300)], [0.3, () => r.intIn(2000, 5000)], [0.1, () => r.pick([MAX_BONES, MAX_BONES + 1])]])();
+  const bones = r.weighted<() => number>([
+    [8, () => r.intIn(1, 12)],
+    [2, () => r.intIn(20, 300)],
+    [0.3, () => r.intIn(2000, 5000)],
+    [0.1, () => r.pick([MAX_BONES, MAX_BONES + 1])],
+  ])();
   const rotated = bones <= 5000;
   const spec = randomRig(r, bones, bones > 300 ? 20 : 4, rotated);
-  return { doc: JSON.parse(writeA7Rig(spec)) as A7Doc, text: `a generated ${bones}-bone rig${rotated ? '' : ' (unrotated frames)'}` };
+  return {
+    doc: JSON.parse(writeA7Rig(spec)) as A7Doc,
+    text: `a generated ${bones}-bone rig${rotated ? '' : ' (unrotated frames)'}`,
+  };
 }
 
 /** One A7 case drawn from `r`. */
@@ -50,14 +58,32 @@ export function a7Case(r: Rand, seeds: readonly A7Seed[]): FileCase {
   const base = baseDoc(r, seeds);
   const changes: string[] = [];
   let doc: unknown = base.doc;
-  for (let k = r.weighted([[2, 0], [5, 1], [2, 2], [1, 3]]); k > 0; k--) {
+  for (
+    let k = r.weighted([
+      [2, 0],
+      [5, 1],
+      [2, 2],
+      [1, 3],
+    ]);
+    k > 0;
+    k--
+  ) {
     const d = doc as A7Doc;
-    const kind = r.weighted([[5, 'a7'], [4, 'json'], [0.5, 'top']] as const);
+    const kind = r.weighted([
+      [5, 'a7'],
+      [4, 'json'],
+      [0.5, 'top'],
+    ] as const);
     if (kind === 'top' || typeof d !== 'object' || d === null) {
       const v = r.pick<unknown>([[], null, 0, 'x', { bones: {} }, { bones: [] }, {}, { bones: [null] }]);
       doc = v;
       changes.push(`the document = ${JSON.stringify(v)}`);
-    } else if (kind === 'a7' && Array.isArray(d.bones) && d.bones.length > 0 && d.bones.every((b) => typeof b === 'object' && b !== null && !Array.isArray(b))) {
+    } else if (
+      kind === 'a7' &&
+      Array.isArray(d.bones) &&
+      d.bones.length > 0 &&
+      d.bones.every((b) => typeof b === 'object' && b !== null && !Array.isArray(b))
+    ) {
       changes.push(mutateA7(r, d));
     } else {
       changes.push(...mutateJson(r, d, 1));

@@ -22,14 +22,28 @@ const LARGEST_WITH_64_EFFECTORS = Math.floor(MAX_JACOBIAN_ENTRIES / (9 * MAX_EFF
 export function runApiCase(r: Rand, ik: IkCoreModule, note: (text: string) => void, budgets: BudgetSample[]): Outcome {
   // The largest rigs the core takes are drawn too: MAX_BONES bones, and 64 effectors on the most
   // bones the Jacobian cap allows them (the time budget's promise covers them).
-  const bones = r.weighted<() => number>([[6, () => r.intIn(1, 8)], [2, () => r.intIn(20, 200)], [1, () => r.intIn(500, 3000)], [0.3, () => r.pick([MAX_BONES, LARGEST_WITH_64_EFFECTORS])]])();
+  const bones = r.weighted<() => number>([
+    [6, () => r.intIn(1, 8)],
+    [2, () => r.intIn(20, 200)],
+    [1, () => r.intIn(500, 3000)],
+    [0.3, () => r.pick([MAX_BONES, LARGEST_WITH_64_EFFECTORS])],
+  ])();
   const spec = randomRig(r, bones, bones > 300 ? Math.min(maxEffectors(bones), bones >= 1800 ? 64 : 20) : 4);
   const method = 3 * bones <= 1024 ? r.pick(['lm', 'gn', 'bfgs', 'newton', 'gd']) : r.pick(['lm', 'gn', 'gd']);
   const options = saneOptions(r);
   if (bones > 300) options.timeBudgetSeconds = r.pick([1e-6, 1e-3, 0.01, 0.03]);
   note(`${bones}-bone rig, ${spec.effectors.length} effectors, ${method} ${JSON.stringify(options)}`);
   const rig = new IkRig(ik, spec);
-  const s: ApiState = { ik, spec, rig, solver: new IkSolver(rig, method, options as SolverOptions), started: false, optionsOutOfRange: false, owned: [], budgets };
+  const s: ApiState = {
+    ik,
+    spec,
+    rig,
+    solver: new IkSolver(rig, method, options as SolverOptions),
+    started: false,
+    optionsOutOfRange: false,
+    owned: [],
+    budgets,
+  };
   s.owned.push(rig, s.solver);
   let outcome: Outcome = OK;
   for (let k = r.intIn(1, 6); k > 0; k--) {

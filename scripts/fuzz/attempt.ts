@@ -13,7 +13,12 @@ export function both(...accepts: Acceptance[]): Acceptance {
  * Calls `call`. A throw is classified (crash, unclear or clear error); a return is wrong when the
  * input must be refused, else `check` (undefined: clean) decides. `file` as for classifyThrown.
  */
-export function attempt<T>(accept: Acceptance, call: () => T, check: (value: T) => string | undefined, file?: string): Outcome {
+export function attempt<T>(
+  accept: Acceptance,
+  call: () => T,
+  check: (value: T) => string | undefined,
+  file?: string,
+): Outcome {
   let value: T;
   try {
     value = call();

@@ -9,7 +9,8 @@ import { solveProblem } from './result_checks.js';
 /** undefined when a two-bone rig builds, solves to its target and is freed; else what went wrong. */
 export function canaryProblem(ik: IkCoreModule): string | undefined {
   const spec = straightLimb();
-  const start = new Float64Array(6), target = Float64Array.of(1, 1, 0);
+  const start = new Float64Array(6),
+    target = Float64Array.of(1, 1, 0);
   try {
     const rig = new IkRig(ik, spec);
     const solver = new IkSolver(rig, 'lm', { timeBudgetSeconds: 1, restarts: 0 });

@@ -20,7 +20,8 @@ class Slot {
   private worker: Worker | undefined;
   /** Settles when the current worker is ready (a replacement may be starting). */
   private ready: Promise<void>;
-  private running: { id: CaseId; notes: string[]; began: number; finish: (r: CaseReport) => void; timer: NodeJS.Timeout } | undefined;
+  private running:
+    { id: CaseId; notes: string[]; began: number; finish: (r: CaseReport) => void; timer: NodeJS.Timeout } | undefined;
 
   constructor(
     private readonly init: WorkerInit,
@@ -60,13 +61,20 @@ class Slot {
         if (this.running) this.replace({ kind: 'crash', message: `the worker died: ${e.name}: ${e.message}` });
         else failed(e);
       });
-      worker.on('exit', (code) => mine() && this.running && this.replace({ kind: 'crash', message: `the worker exited with code ${code}` }));
+      worker.on(
+        'exit',
+        (code) =>
+          mine() && this.running && this.replace({ kind: 'crash', message: `the worker exited with code ${code}` }),
+      );
     });
   }
 
   /** The watchdog: the running case is a hang if it has not finished within the limit. */
   private watch(): NodeJS.Timeout {
-    return setTimeout(() => this.replace({ kind: 'hang', message: `still running after ${this.hangSeconds} s` }), this.hangSeconds * 1000);
+    return setTimeout(
+      () => this.replace({ kind: 'hang', message: `still running after ${this.hangSeconds} s` }),
+      this.hangSeconds * 1000,
+    );
   }
 
   /** Starts the limit again: drawing the case's input (test code) is not counted as running it. */
@@ -88,7 +96,13 @@ class Slot {
   private replace(outcome: Outcome): void {
     const r = this.running!;
     this.ready = this.stop().then(() => this.spawn());
-    this.finish({ id: r.id, description: r.notes.join('; '), outcome, budgets: [], seconds: (performance.now() - r.began) / 1000 });
+    this.finish({
+      id: r.id,
+      description: r.notes.join('; '),
+      outcome,
+      budgets: [],
+      seconds: (performance.now() - r.began) / 1000,
+    });
   }
 
   /** Stops the worker: first releases FIFOs a loader may be blocked on (a blocked open() would hold terminate()). */
@@ -110,7 +124,9 @@ export class CasePool {
   /** Starts the workers (the core is compiled once here). */
   static async create(size: number, fixture: Fixture, hangSeconds: number): Promise<CasePool> {
     const wasmModule = await WebAssembly.compile(readFileSync(wasmPath));
-    return new CasePool(Array.from({ length: size }, (_, worker) => new Slot({ wasmModule, fixture, worker }, hangSeconds)));
+    return new CasePool(
+      Array.from({ length: size }, (_, worker) => new Slot({ wasmModule, fixture, worker }, hangSeconds)),
+    );
   }
 
   /** Runs every case of `ids`, calling `onReport` as each finishes; the reports in the order of `ids`. */

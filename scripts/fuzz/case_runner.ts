@@ -25,7 +25,13 @@ export interface CaseEnv {
   seeds: A7Seed[];
 }
 
-async function runKind(env: CaseEnv, id: CaseId, note: (text: string) => void, drawn: () => void, budgets: BudgetSample[]): Promise<Outcome> {
+async function runKind(
+  env: CaseEnv,
+  id: CaseId,
+  note: (text: string) => void,
+  drawn: () => void,
+  budgets: BudgetSample[],
+): Promise<Outcome> {
   const r = Rand.forCase(id.seed, id.kind, id.index);
   if (id.kind === 'api') return runApiCase(r, env.ik, note, budgets);
   if (id.kind === 'pose') return runPoseCase(r, note);
@@ -39,7 +45,12 @@ async function runKind(env: CaseEnv, id: CaseId, note: (text: string) => void, d
  * Runs case `id`; `note` gets the parts of its description as they are drawn, `drawn` is called
  * once a file case's input is drawn (an api case draws each step as it runs it).
  */
-export async function runCase(env: CaseEnv, id: CaseId, note: (text: string) => void, drawn: () => void): Promise<CaseReport> {
+export async function runCase(
+  env: CaseEnv,
+  id: CaseId,
+  note: (text: string) => void,
+  drawn: () => void,
+): Promise<CaseReport> {
   const began = performance.now();
   const parts: string[] = [];
   const budgets: BudgetSample[] = [];

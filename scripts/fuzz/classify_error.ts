@@ -37,14 +37,17 @@ const WasmException = (WebAssembly as unknown as { Exception?: abstract new () =
  * A WebAssembly trap or exception, or anything thrown that is not an Error, is a crash.
  */
 export function classifyThrown(e: unknown, file?: string): Outcome {
-  if (e instanceof WebAssembly.RuntimeError) return { kind: 'crash', message: `WebAssembly.RuntimeError: ${e.message}` };
+  if (e instanceof WebAssembly.RuntimeError)
+    return { kind: 'crash', message: `WebAssembly.RuntimeError: ${e.message}` };
   if (WasmException && e instanceof WasmException)
     return { kind: 'crash', message: 'a WebAssembly.Exception (a C++ exception) escaped' };
   if (!(e instanceof Error)) return { kind: 'crash', message: `threw a non-Error: ${typeof e} ${describeValue(e)}` };
   const message = `${e.name}: ${e.message}`;
   if (e.message.includes(FUZZ_THROW)) return { kind: 'clear', message };
-  if (e.message.trim() === '' || UNCLEAR_MESSAGES.some((m) => e.message.includes(m))) return { kind: 'unclear', message };
-  if (file !== undefined && !e.message.includes(file)) return { kind: 'unclear', message: `${message} (does not name the file ${file})` };
+  if (e.message.trim() === '' || UNCLEAR_MESSAGES.some((m) => e.message.includes(m)))
+    return { kind: 'unclear', message };
+  if (file !== undefined && !e.message.includes(file))
+    return { kind: 'unclear', message: `${message} (does not name the file ${file})` };
   return { kind: 'clear', message };
 }
 

@@ -29,7 +29,13 @@ export interface FileCase {
 const SENTINEL_WARNING = 'not in the bind pose';
 
 /** Runs `fc` in `folder` on module `ik`. */
-export async function runFileCase(ik: IkCoreModule, folder: string, fc: FileCase, r: Rand, budgets: BudgetSample[]): Promise<Outcome> {
+export async function runFileCase(
+  ik: IkCoreModule,
+  folder: string,
+  fc: FileCase,
+  r: Rand,
+  budgets: BudgetSample[],
+): Promise<Outcome> {
   prepareFolder(folder, fc.entries);
   let loaded: LoadedRig;
   try {
@@ -38,8 +44,13 @@ export async function runFileCase(ik: IkCoreModule, folder: string, fc: FileCase
     return classifyThrown(e, fc.main);
   }
   if (fc.outsideUri !== undefined) {
-    const read = loaded.warnings.some((w) => w.includes(SENTINEL_WARNING)) ? ': the sentinel bind matrices are in the rig' : '';
-    return { kind: 'outside', message: `loaded although a buffer uri "${fc.outsideUri}" points outside the folder${read}` };
+    const read = loaded.warnings.some((w) => w.includes(SENTINEL_WARNING))
+      ? ': the sentinel bind matrices are in the rig'
+      : '';
+    return {
+      kind: 'outside',
+      message: `loaded although a buffer uri "${fc.outsideUri}" points outside the folder${read}`,
+    };
   }
   if (fc.mustFail) return { kind: 'wrong', message: `loaded although ${fc.mustFail}` };
   return probeLoadedRig(ik, loaded.spec, fc.main, r, budgets);

@@ -18,7 +18,8 @@ export interface Pose {
 /** Poses and tips of every bone of `spec` at `angles` (3 per bone, degrees). */
 export function forwardKinematics(spec: RigSpec, angles: ArrayLike<number>): Pose {
   const n = spec.parents.length;
-  const poses = new Float64Array(16 * n), tips = new Float64Array(3 * n);
+  const poses = new Float64Array(16 * n),
+    tips = new Float64Array(3 * n);
   const done = new Uint8Array(n);
   const stack: number[] = [];
   for (let start = 0; start < n; start++) {
@@ -40,20 +41,27 @@ export function effectorTips(all: Float64Array, effectors: ArrayLike<number>): F
 }
 
 const IDENTITY = Float64Array.of(1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1);
-const joint = new Float64Array(16), inverse = new Float64Array(16);
+const joint = new Float64Array(16),
+  inverse = new Float64Array(16);
 
 /** out[o..o+16] = a[ao..] * b[bo..] (4x4, row-major). */
 function multiply(a: Float64Array, ao: number, b: Float64Array, bo: number, out: Float64Array, o: number): void {
   for (let r = 0; r < 4; r++)
     for (let c = 0; c < 4; c++)
-      out[o + 4 * r + c] = a[ao + 4 * r] * b[bo + c] + a[ao + 4 * r + 1] * b[bo + 4 + c] + a[ao + 4 * r + 2] * b[bo + 8 + c] + a[ao + 4 * r + 3] * b[bo + 12 + c];
+      out[o + 4 * r + c] =
+        a[ao + 4 * r] * b[bo + c] +
+        a[ao + 4 * r + 1] * b[bo + 4 + c] +
+        a[ao + 4 * r + 2] * b[bo + 8 + c] +
+        a[ao + 4 * r + 3] * b[bo + 12 + c];
 }
 
 /** m <- m * R, R the rotation by `t` radians in the plane of columns (i, j): Rx is (1, 2), Rz is (0, 1). */
 function rotateColumns(m: Float64Array, i: number, j: number, t: number): void {
-  const c = Math.cos(t), s = Math.sin(t);
+  const c = Math.cos(t),
+    s = Math.sin(t);
   for (let r = 0; r < 3; r++) {
-    const a = m[4 * r + i], b = m[4 * r + j];
+    const a = m[4 * r + i],
+      b = m[4 * r + j];
     m[4 * r + i] = c * a + s * b;
     m[4 * r + j] = c * b - s * a;
   }
@@ -61,7 +69,9 @@ function rotateColumns(m: Float64Array, i: number, j: number, t: number): void {
 
 /** T_i into out[16 i..] and tip_i into tips[3 i..], from the parent's T already in `out`. */
 function pose(spec: RigSpec, i: number, angles: ArrayLike<number>, out: Float64Array, tips: Float64Array): void {
-  const rest = spec.rest, o = 16 * i, p = spec.parents[i];
+  const rest = spec.rest,
+    o = 16 * i,
+    p = spec.parents[i];
   if (p === -1) multiply(IDENTITY, 0, rest, o, joint, 0);
   else multiply(out, 16 * p, rest, o, joint, 0);
   rotateColumns(joint, 1, 2, angles[3 * i] * RAD_PER_DEG);

@@ -39,7 +39,8 @@ export function identityBindBuffer(base: GltfBase): Uint8Array {
   for (const skin of base.json.skins) {
     const accessor = accessors[skin.inverseBindMatrices as number];
     const bufferView = views[accessor.bufferView];
-    const start = (bufferView.byteOffset ?? 0) + (accessor.byteOffset ?? 0), stride = bufferView.byteStride ?? 64;
+    const start = (bufferView.byteOffset ?? 0) + (accessor.byteOffset ?? 0),
+      stride = bufferView.byteStride ?? 64;
     for (let j = 0; j < accessor.count; j++)
       for (let k = 0; k < 16; k++) view.setFloat32(start + stride * j + 4 * k, k % 5 === 0 ? 1 : 0, true);
   }

@@ -21,7 +21,12 @@ const NODES_MODERATE = [50_000, 200_000];
 const ZERO_SUM_REFUSED = 16 * 2 ** 30;
 
 /** [accessors, bytes each] of the accessor-sum bombs: 200 MiB in all (may load), then 19.5 GiB (many small, few large) and 97 GiB (must not). */
-const ZERO_ACCESSORS: readonly [number, number][] = [[2, 100 * 2 ** 20], [10_000, 2 * 2 ** 20], [100, 200 * 2 ** 20], [99_000, 2 ** 20 + 1]];
+const ZERO_ACCESSORS: readonly [number, number][] = [
+  [2, 100 * 2 ** 20],
+  [10_000, 2 * 2 ** 20],
+  [100, 200 * 2 ** 20],
+  [99_000, 2 ** 20 + 1],
+];
 
 const [MAT4_FLOAT_BYTES, SCALAR_BYTE_BYTES] = [64, 1];
 
@@ -30,23 +35,31 @@ function zeroAccessors(json: Json, count: number, bytes: number): Bomb {
   if (!Array.isArray(json.accessors)) return { description: 'no accessor bomb (accessors is no array)' };
   const accessors = json.accessors as unknown[];
   const mat4 = bytes % MAT4_FLOAT_BYTES === 0;
-  const element = mat4 ? { componentType: 5126, type: 'MAT4', count: bytes / MAT4_FLOAT_BYTES } : { componentType: 5121, type: 'SCALAR', count: bytes / SCALAR_BYTE_BYTES };
+  const element = mat4
+    ? { componentType: 5126, type: 'MAT4', count: bytes / MAT4_FLOAT_BYTES }
+    : { componentType: 5121, type: 'SCALAR', count: bytes / SCALAR_BYTE_BYTES };
   for (let k = 0; k < count; k++) accessors.push({ ...element });
   const sum = count * bytes;
   const description = `${count} accessors without a bufferView of ${element.count} ${element.type} each (${(sum / 2 ** 30).toFixed(1)} GiB of zeros)`;
-  return { description, mustFail: sum > ZERO_SUM_REFUSED ? `its accessors without a bufferView add up to ${sum} bytes` : undefined };
+  return {
+    description,
+    mustFail: sum > ZERO_SUM_REFUSED ? `its accessors without a bufferView add up to ${sum} bytes` : undefined,
+  };
 }
 
 /** One bomb planted in `json`. */
 export function plantBomb(r: Rand, json: Json): Bomb {
   return r.weighted<() => Bomb>([
-    [2, () => {
-      if (!Array.isArray(json.nodes)) return { description: 'no node bomb (nodes is no array)' };
-      const count = r.pick([...NODES_MODERATE, NODE_BOMB]);
-      for (let k = 0; k < count; k++) json.nodes.push({});
-      const description = `${count} empty nodes appended`;
-      return { description, mustFail: count >= NODE_BOMB ? `it has ${json.nodes.length} nodes` : undefined };
-    }],
+    [
+      2,
+      () => {
+        if (!Array.isArray(json.nodes)) return { description: 'no node bomb (nodes is no array)' };
+        const count = r.pick([...NODES_MODERATE, NODE_BOMB]);
+        for (let k = 0; k < count; k++) json.nodes.push({});
+        const description = `${count} empty nodes appended`;
+        return { description, mustFail: count >= NODE_BOMB ? `it has ${json.nodes.length} nodes` : undefined };
+      },
+    ],
     [3, () => zeroAccessors(json, ...r.pick(ZERO_ACCESSORS))],
   ])();
 }

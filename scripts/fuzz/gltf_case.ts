@@ -34,7 +34,13 @@ export function gltfCase(r: Rand, bases: readonly GltfBase[], fixture: Fixture):
     [12, () => ({ file: r.pick(uriEscapes(fixture)), outside: true })],
     [3, () => ({ file: r.pick(hostileSideFiles()), outside: false })],
   ])();
-  const form: Form = side ? 'gltf' : r.weighted([[4, 'glb'], [4, 'gltf'], [1, 'embedded']] as const);
+  const form: Form = side
+    ? 'gltf'
+    : r.weighted([
+        [4, 'glb'],
+        [4, 'gltf'],
+        [1, 'embedded'],
+      ] as const);
   const main = form === 'glb' ? r.pick(['rig.glb', 'rig.glb', 'Rig.GLB']) : 'rig.gltf';
   if (!side && r.chance(0.04)) {
     const h = hostileMain(r, main);
@@ -43,13 +49,27 @@ export function gltfCase(r: Rand, bases: readonly GltfBase[], fixture: Fixture):
   const base = side ? bases.find((b) => b.name === CHARACTER)! : r.pick(bases);
   const json = structuredClone(base.json);
   let bin: Uint8Array = base.bin;
-  setBufferUri(json, form === 'glb' ? undefined : form === 'gltf' ? 'rig.bin' : `data:application/octet-stream;base64,${Buffer.from(bin).toString('base64')}`);
+  setBufferUri(
+    json,
+    form === 'glb'
+      ? undefined
+      : form === 'gltf'
+        ? 'rig.bin'
+        : `data:application/octet-stream;base64,${Buffer.from(bin).toString('base64')}`,
+  );
 
   const changes: string[] = [];
   // A uri case is mostly the untouched character: then only the uri stands between the load and the sentinel.
-  const count = side && r.chance(0.7) ? 0 : r.weighted([[1, 0], [5, 1], [2, 2], [1, 3]]);
-  for (let k = count; k > 0; k--)
-    changes.push(...(r.chance(0.55) ? [mutateGltf(r, json)] : mutateJson(r, json, 1)));
+  const count =
+    side && r.chance(0.7)
+      ? 0
+      : r.weighted([
+          [1, 0],
+          [5, 1],
+          [2, 2],
+          [1, 3],
+        ]);
+  for (let k = count; k > 0; k--) changes.push(...(r.chance(0.55) ? [mutateGltf(r, json)] : mutateJson(r, json, 1)));
   // Bombs only where no uri is on trial (a uri case must stand or fall by its uri); few, as a node bomb can cost a hang.
   const bomb = side ? undefined : r.chance(0.03) ? plantBomb(r, json) : undefined;
   if (bomb) changes.push(bomb.description);

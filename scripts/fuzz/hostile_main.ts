@@ -12,6 +12,9 @@ export function hostileMain(r: Rand, name: string): { entries: Entry[]; descript
     () => ({ entries: [{ kind: 'symlink', name, target: name }], description: `${name} links to itself` }),
     () => ({ entries: [{ kind: 'symlink', name, target: 'missing' }], description: `${name} is a dangling link` }),
     () => ({ entries: [{ kind: 'file', name, bytes: new Uint8Array(0) }], description: `${name} is empty` }),
-    () => ({ entries: [{ kind: 'sparse', name, size: 600 * 2 ** 20 }], description: `${name} is a 600 MiB sparse file` }),
+    () => ({
+      entries: [{ kind: 'sparse', name, size: 600 * 2 ** 20 }],
+      description: `${name} is a 600 MiB sparse file`,
+    }),
   ])();
 }

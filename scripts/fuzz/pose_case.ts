@@ -15,7 +15,12 @@ import { clampToLimits } from './result_checks.js';
 function unnamedRig(r: Rand): RigSpec {
   const spec = randomRig(r, r.intIn(1, 40));
   const names = spec.names!.map((name, i) =>
-    r.weighted<() => string>([[4, () => name], [4, () => ''], [1, () => `bone ${r.int(i + 1)}`], [1, () => `#${r.int(40)}`]])(),
+    r.weighted<() => string>([
+      [4, () => name],
+      [4, () => ''],
+      [1, () => `bone ${r.int(i + 1)}`],
+      [1, () => `#${r.int(40)}`],
+    ])(),
   );
   return { ...spec, names };
 }
@@ -23,17 +28,21 @@ function unnamedRig(r: Rand): RigSpec {
 /** Where `got` differs from `expected` bit for bit, or undefined. */
 function sameProblem(name: string, got: ArrayLike<number>, expected: ArrayLike<number>): string | undefined {
   if (got.length !== expected.length) return `${name} has ${got.length} numbers, expected ${expected.length}`;
-  for (let k = 0; k < got.length; k++) if (!Object.is(got[k], expected[k])) return `${name}[${k}] is ${got[k]}, expected ${expected[k]}`;
+  for (let k = 0; k < got.length; k++)
+    if (!Object.is(got[k], expected[k])) return `${name}[${k}] is ${got[k]}, expected ${expected[k]}`;
   return undefined;
 }
 
 /** A written pose read back: the same angles (within the limits), effectors and targets. */
 function roundTrip(spec: RigSpec, angles: Float64Array, targets: Float64Array): Outcome {
   const effectors = Array.from(spec.effectors);
-  return attempt('must', () => poseFromJson(poseToJson({ rigName: 'rig', boneNames: spec.names!, angles, effectors, targets }), spec), (read) =>
-    sameProblem('angles', read.angles, clampToLimits(spec, angles)) ??
-    sameProblem('effectors', read.effectors, effectors) ??
-    sameProblem('targets', read.targets, targets),
+  return attempt(
+    'must',
+    () => poseFromJson(poseToJson({ rigName: 'rig', boneNames: spec.names!, angles, effectors, targets }), spec),
+    (read) =>
+      sameProblem('angles', read.angles, clampToLimits(spec, angles)) ??
+      sameProblem('effectors', read.effectors, effectors) ??
+      sameProblem('targets', read.targets, targets),
   );
 }
 
@@ -45,18 +54,25 @@ function keyedBy(spec: RigSpec, key: string, angles: number[]): Outcome {
   const bones = spec.names!.flatMap((n, i) => (n === key ? [i] : []));
   const accept: Acceptance = bones.length === 1 && key !== '' ? 'must' : 'mustNot';
   const text = JSON.stringify({ format: POSE_FORMAT, version: POSE_VERSION, bones: { [key]: angles }, effectors: [] });
-  return attempt(accept, () => poseFromJson(text, spec), (read) => {
-    const expected = clampToLimits(spec, new Float64Array(3 * spec.names!.length));
-    for (let k = 3 * bones[0]; k < 3 * bones[0] + 3; k++) expected[k] = Math.min(spec.upper[k], Math.max(spec.lower[k], angles[k % 3]));
-    return sameProblem('angles', read.angles, expected);
-  });
+  return attempt(
+    accept,
+    () => poseFromJson(text, spec),
+    (read) => {
+      const expected = clampToLimits(spec, new Float64Array(3 * spec.names!.length));
+      for (let k = 3 * bones[0]; k < 3 * bones[0] + 3; k++)
+        expected[k] = Math.min(spec.upper[k], Math.max(spec.lower[k], angles[k % 3]));
+      return sameProblem('angles', read.angles, expected);
+    },
+  );
 }
 
 /** Runs one pose case drawn from `r`. */
 export function runPoseCase(r: Rand, note: (text: string) => void): Outcome {
   const spec = unnamedRig(r);
   const names = spec.names!;
-  note(`${names.length}-bone rig named ${JSON.stringify(names).slice(0, 300)}, effectors [${Array.from(spec.effectors)}]`);
+  note(
+    `${names.length}-bone rig named ${JSON.stringify(names).slice(0, 300)}, effectors [${Array.from(spec.effectors)}]`,
+  );
   const angles = randomAngles(r, spec);
   const targets = Float64Array.from({ length: 3 * spec.effectors.length }, () => r.range(-5, 5));
   const key = r.pick(names.filter((n) => !/^#\d+$/.test(n)).concat(''));
@@ -64,5 +80,8 @@ export function runPoseCase(r: Rand, note: (text: string) => void): Outcome {
   note(`round trip; then a file keyed ${JSON.stringify(key)}: ${JSON.stringify(keyAngles)}`);
   const written = roundTrip(spec, angles, targets);
   const keyed = keyedBy(spec, key, keyAngles);
-  return worse({ kind: written.kind, message: `round trip: ${written.message}` }, { kind: keyed.kind, message: `keyed ${JSON.stringify(key)}: ${keyed.message}` });
+  return worse(
+    { kind: written.kind, message: `round trip: ${written.message}` },
+    { kind: keyed.kind, message: `keyed ${JSON.stringify(key)}: ${keyed.message}` },
+  );
 }

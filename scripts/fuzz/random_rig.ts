@@ -9,10 +9,22 @@ function randomRigid(r: Rand, reach: number): number[] {
   const q = Math.hypot(x, y, z, w) || 1;
   [x, y, z, w] = [x / q, y / q, z / q, w / q];
   return [
-    1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w), r.range(-reach, reach),
-    2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w), r.range(-reach, reach),
-    2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y), r.range(-reach, reach),
-    0, 0, 0, 1,
+    1 - 2 * (y * y + z * z),
+    2 * (x * y - z * w),
+    2 * (x * z + y * w),
+    r.range(-reach, reach),
+    2 * (x * y + z * w),
+    1 - 2 * (x * x + z * z),
+    2 * (y * z - x * w),
+    r.range(-reach, reach),
+    2 * (x * z - y * w),
+    2 * (y * z + x * w),
+    1 - 2 * (x * x + y * y),
+    r.range(-reach, reach),
+    0,
+    0,
+    0,
+    1,
   ];
 }
 
@@ -39,7 +51,8 @@ function limits(r: Rand): [number, number] {
 export function randomRig(r: Rand, bones: number, maxEffectors = 4, rotated = true): RigSpec {
   const chain = r.chance(0.4);
   const parents = Int32Array.from({ length: bones }, (_, i) => (i === 0 ? -1 : chain ? i - 1 : r.int(i)));
-  const lower = new Float64Array(3 * bones), upper = new Float64Array(3 * bones);
+  const lower = new Float64Array(3 * bones),
+    upper = new Float64Array(3 * bones);
   for (let k = 0; k < 3 * bones; k++) [lower[k], upper[k]] = limits(r);
   const children = new Uint32Array(bones);
   parents.forEach((p) => p >= 0 && children[p]++);
@@ -47,7 +60,29 @@ export function randomRig(r: Rand, bones: number, maxEffectors = 4, rotated = tr
   const effectors = leaves.filter(() => r.chance(0.7)).slice(0, maxEffectors);
   const rest = new Float64Array(16 * bones);
   for (let i = 0; i < bones; i++)
-    rest.set(rotated ? randomRigid(r, 2) : [1, 0, 0, r.intIn(-200, 200) / 100, 0, 1, 0, r.intIn(-200, 200) / 100, 0, 0, 1, r.intIn(-200, 200) / 100, 0, 0, 0, 1], 16 * i);
+    rest.set(
+      rotated
+        ? randomRigid(r, 2)
+        : [
+            1,
+            0,
+            0,
+            r.intIn(-200, 200) / 100,
+            0,
+            1,
+            0,
+            r.intIn(-200, 200) / 100,
+            0,
+            0,
+            1,
+            r.intIn(-200, 200) / 100,
+            0,
+            0,
+            0,
+            1,
+          ],
+      16 * i,
+    );
   return {
     names: Array.from({ length: bones }, (_, i) => `bone ${i}`),
     parents,

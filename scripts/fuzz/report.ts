@@ -49,7 +49,9 @@ export function countTable(reports: readonly CaseReport[]): string {
     }),
   ];
   const widths = rows[0].map((_, c) => Math.max(...rows.map((row) => row[c].length)));
-  return rows.map((row) => row.map((cell, c) => (c === 0 ? cell.padEnd(widths[c]) : cell.padStart(widths[c]))).join('  ')).join('\n');
+  return rows
+    .map((row) => row.map((cell, c) => (c === 0 ? cell.padEnd(widths[c]) : cell.padStart(widths[c]))).join('  '))
+    .join('\n');
 }
 
 const caseName = (id: CaseId): string => `${id.kind} case ${id.index}`;
@@ -75,7 +77,8 @@ export function budgetSummary(reports: readonly CaseReport[]): string {
   const long = samples.filter((s) => s.budgetSeconds >= RATIO_MIN_BUDGET_SECONDS);
   const short = samples.filter((s) => s.budgetSeconds < RATIO_MIN_BUDGET_SECONDS);
   const lines: string[] = [];
-  const e = worst(long, (s) => s.elapsedSeconds / s.budgetSeconds), w = worst(long, (s) => s.wallSeconds / s.budgetSeconds);
+  const e = worst(long, (s) => s.elapsedSeconds / s.budgetSeconds),
+    w = worst(long, (s) => s.wallSeconds / s.budgetSeconds);
   if (e && w) {
     const holds = e.value <= BUDGET_PROMISE && w.value <= BUDGET_PROMISE;
     lines.push(
@@ -83,7 +86,8 @@ export function budgetSummary(reports: readonly CaseReport[]): string {
         `worst wall time/budget ${w.value.toFixed(2)}x (${caseName(w.id)}); promised within ${BUDGET_PROMISE}x: ${holds ? 'holds' : BROKEN}`,
     );
   }
-  const eo = worst(short, (s) => s.elapsedSeconds - s.budgetSeconds), wo = worst(short, (s) => s.wallSeconds - s.budgetSeconds);
+  const eo = worst(short, (s) => s.elapsedSeconds - s.budgetSeconds),
+    wo = worst(short, (s) => s.wallSeconds - s.budgetSeconds);
   if (eo && wo)
     lines.push(
       `time budget, ${short.length} solves with a budget < ${RATIO_MIN_BUDGET_SECONDS * 1000} ms: worst overrun elapsedSeconds ${milliseconds(eo.value)} (${caseName(eo.id)}), ` +
@@ -107,7 +111,11 @@ function entry(r: CaseReport): string {
 
 /** Whether a solve of `r` with a budget >= 10 ms took more than the promise (elapsedSeconds or wall time). */
 function overBudget(r: CaseReport): boolean {
-  return r.budgets.some((b) => b.budgetSeconds >= RATIO_MIN_BUDGET_SECONDS && Math.max(b.elapsedSeconds, b.wallSeconds) > BUDGET_PROMISE * b.budgetSeconds);
+  return r.budgets.some(
+    (b) =>
+      b.budgetSeconds >= RATIO_MIN_BUDGET_SECONDS &&
+      Math.max(b.elapsedSeconds, b.wallSeconds) > BUDGET_PROMISE * b.budgetSeconds,
+  );
 }
 
 /** Every failing case: the severe ones, those that broke the time budget's promise, then the unclear errors. */
@@ -116,8 +124,10 @@ export function failureList(reports: readonly CaseReport[]): string {
   const slow = reports.filter(overBudget);
   const unclear = reports.filter((r) => r.outcome.kind === 'unclear');
   const parts: string[] = [];
-  if (severe.length) parts.push(`${severe.length} failing cases (crash, hang, silent wrong, read outside):`, ...severe.map(entry));
-  if (slow.length) parts.push(`${slow.length} cases with a solve over ${BUDGET_PROMISE}x its time budget:`, ...slow.map(entry));
+  if (severe.length)
+    parts.push(`${severe.length} failing cases (crash, hang, silent wrong, read outside):`, ...severe.map(entry));
+  if (slow.length)
+    parts.push(`${slow.length} cases with a solve over ${BUDGET_PROMISE}x its time budget:`, ...slow.map(entry));
   if (unclear.length) parts.push(`${unclear.length} unclear errors:`, ...unclear.map(entry));
   return parts.join('\n');
 }

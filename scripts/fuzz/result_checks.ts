@@ -44,7 +44,12 @@ export function comparable(angles: ArrayLike<number>): boolean {
 }
 
 /** `got` equals `expected` within the relative tolerance of a rig of size `scale`. */
-export function closeProblem(name: string, got: ArrayLike<number>, expected: ArrayLike<number>, scale: number): string | undefined {
+export function closeProblem(
+  name: string,
+  got: ArrayLike<number>,
+  expected: ArrayLike<number>,
+  scale: number,
+): string | undefined {
   const tol = FK_RELATIVE_TOLERANCE * scale;
   for (let i = 0; i < expected.length; i++)
     if (!(Math.abs(got[i] - expected[i]) <= tol))
@@ -57,14 +62,27 @@ export function referenceTips(spec: RigSpec, angles: ArrayLike<number>): Float64
   return effectorTips(forwardKinematics(spec, angles).tips, spec.effectors);
 }
 
-const STOP_REASONS = ['converged_E', 'converged_grad', 'zero_step', 'max_iterations', 'timeout', 'numerical_failure', 'joint_speed'];
+const STOP_REASONS = [
+  'converged_E',
+  'converged_grad',
+  'zero_step',
+  'max_iterations',
+  'timeout',
+  'numerical_failure',
+  'joint_speed',
+];
 
 /** 1/2 |reference tips at `angles` - target|^2 and the largest tip distance. */
 function errorAt(spec: RigSpec, angles: ArrayLike<number>, target: Float64Array): { E: number; far: number } {
   const tips = referenceTips(spec, angles);
-  let sum = 0, far = 0;
+  let sum = 0,
+    far = 0;
   for (let k = 0; k < tips.length / 3; k++) {
-    const d = Math.hypot(tips[3 * k] - target[3 * k], tips[3 * k + 1] - target[3 * k + 1], tips[3 * k + 2] - target[3 * k + 2]);
+    const d = Math.hypot(
+      tips[3 * k] - target[3 * k],
+      tips[3 * k + 1] - target[3 * k + 1],
+      tips[3 * k + 2] - target[3 * k + 2],
+    );
     sum += d * d;
     far = Math.max(far, d);
   }
@@ -82,15 +100,24 @@ export function clampToLimits(spec: RigSpec, angles: ArrayLike<number>): Float64
  * reference tips at the returned angles, and initialE that at the start clamped into the limits.
  * `spec` carries the effectors the solve ran with.
  */
-export function solveProblem(r: SolverResult, spec: RigSpec, given?: { start: Float64Array; target: Float64Array }): string | undefined {
+export function solveProblem(
+  r: SolverResult,
+  spec: RigSpec,
+  given?: { start: Float64Array; target: Float64Array },
+): string | undefined {
   const n = 3 * spec.parents.length;
   const bad =
     numbersProblem('angles', r.angles, n) ??
     limitsProblem('angles', r.angles, spec) ??
     (STOP_REASONS.includes(r.stopReason) ? undefined : `stopReason is "${r.stopReason}"`) ??
-    (r.stopReason === 'numerical_failure' ? undefined : numbersProblem('result numbers', [r.E, r.initialE, r.gradNorm, r.tipDistance, r.elapsedSeconds], 5, false)) ??
-    (r.reached === (r.stopReason === 'converged_E') ? undefined : `reached is ${r.reached} with stopReason ${r.stopReason}`);
-  if (bad || r.stopReason === 'numerical_failure' || !given || !comparable(r.angles) || !comparable(given.start)) return bad;
+    (r.stopReason === 'numerical_failure'
+      ? undefined
+      : numbersProblem('result numbers', [r.E, r.initialE, r.gradNorm, r.tipDistance, r.elapsedSeconds], 5, false)) ??
+    (r.reached === (r.stopReason === 'converged_E')
+      ? undefined
+      : `reached is ${r.reached} with stopReason ${r.stopReason}`);
+  if (bad || r.stopReason === 'numerical_failure' || !given || !comparable(r.angles) || !comparable(given.start))
+    return bad;
   const scale = rigScale(spec) + Math.max(...Array.from(given.target, Math.abs));
   const end = errorAt(spec, r.angles, given.target);
   const start = errorAt(spec, clampToLimits(spec, given.start), given.target);

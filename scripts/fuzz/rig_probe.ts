@@ -17,7 +17,13 @@ import { clampToLimits, closeProblem, numbersProblem, referenceTips, rigScale } 
 const PROBE_BUDGET_SECONDS = 0.02;
 
 /** Builds `spec` (loaded from `file`) in `ik`, checks its tips at rest and one solve to a reachable target. */
-export function probeLoadedRig(ik: IkCoreModule, spec: RigSpec, file: string, r: Rand, budgets: BudgetSample[]): Outcome {
+export function probeLoadedRig(
+  ik: IkCoreModule,
+  spec: RigSpec,
+  file: string,
+  r: Rand,
+  budgets: BudgetSample[],
+): Outcome {
   let rig: IkRig;
   try {
     rig = new IkRig(ik, spec);
@@ -28,19 +34,37 @@ export function probeLoadedRig(ik: IkCoreModule, spec: RigSpec, file: string, r:
   let solver: IkSolver | undefined;
   try {
     const start = clampToLimits(spec, new Float64Array(3 * spec.parents.length));
-    const atRest = attempt('must', () => rig.tips(start), (tips) =>
-      numbersProblem('tips', tips, 3 * spec.effectors.length) ?? closeProblem('tips', tips, referenceTips(spec, start), rigScale(spec)),
+    const atRest = attempt(
+      'must',
+      () => rig.tips(start),
+      (tips) =>
+        numbersProblem('tips', tips, 3 * spec.effectors.length) ??
+        closeProblem('tips', tips, referenceTips(spec, start), rigScale(spec)),
     );
     const target = referenceTips(spec, randomAngles(r, spec));
-    let solved: Outcome = OK, judged: Outcome = OK;
-    const made = attempt('either', () => (solver = new IkSolver(rig, 'lm', { timeBudgetSeconds: PROBE_BUDGET_SECONDS, seed: r.int(1000) })), () => undefined);
+    let solved: Outcome = OK,
+      judged: Outcome = OK;
+    const made = attempt(
+      'either',
+      () => (solver = new IkSolver(rig, 'lm', { timeBudgetSeconds: PROBE_BUDGET_SECONDS, seed: r.int(1000) })),
+      () => undefined,
+    );
     if (solver) {
-      const s = solver, wall = performance.now();
-      solved = attempt('must', () => s.solve(start, target), (result) => {
-        budgets.push({ budgetSeconds: PROBE_BUDGET_SECONDS, elapsedSeconds: result.elapsedSeconds, wallSeconds: (performance.now() - wall) / 1000 });
-        judged = judgeSolve(result, spec, { start, target });
-        return undefined;
-      });
+      const s = solver,
+        wall = performance.now();
+      solved = attempt(
+        'must',
+        () => s.solve(start, target),
+        (result) => {
+          budgets.push({
+            budgetSeconds: PROBE_BUDGET_SECONDS,
+            elapsedSeconds: result.elapsedSeconds,
+            wallSeconds: (performance.now() - wall) / 1000,
+          });
+          judged = judgeSolve(result, spec, { start, target });
+          return undefined;
+        },
+      );
     }
     return [atRest, made, solved, judged].reduce(worse);
   } finally {

@@ -20,7 +20,11 @@ export interface FuzzOptions {
 /** The cases of a run: kind by kind in turn (case 0 of each kind, then case 1...), numbered per kind. */
 function caseIds(o: Pick<FuzzOptions, 'seed' | 'cases' | 'kinds' | 'only'>): CaseId[] {
   if (o.only !== undefined) return o.kinds.map((kind) => ({ kind, seed: o.seed, index: o.only! }));
-  return Array.from({ length: o.cases }, (_, k) => ({ kind: o.kinds[k % o.kinds.length], seed: o.seed, index: Math.floor(k / o.kinds.length) }));
+  return Array.from({ length: o.cases }, (_, k) => ({
+    kind: o.kinds[k % o.kinds.length],
+    seed: o.seed,
+    index: Math.floor(k / o.kinds.length),
+  }));
 }
 
 /** Runs the cases of `o`; their reports in case order. */

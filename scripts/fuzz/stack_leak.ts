@@ -44,11 +44,13 @@ function refusedByCore(ik: IkCoreModule, solve: () => void): { reachesWasm: bool
 export function stackLeakCheck(ik: IkCoreModule, count: number): StackLeakResult {
   const rig = new IkRig(ik, straightLimb());
   const solver = new IkSolver(rig, 'lm', { errorTolerance: -1, timeBudgetSeconds: 1 });
-  const angles = new Float64Array(6), target = Float64Array.of(1, 1, 0);
+  const angles = new Float64Array(6),
+    target = Float64Array.of(1, 1, 0);
   const first = refusedByCore(ik, () => solver.solve(angles, target));
   const limit = Error.stackTraceLimit;
   Error.stackTraceLimit = 0;
-  let k = 0, problem: string | undefined;
+  let k = 0,
+    problem: string | undefined;
   try {
     for (; k < count && !problem; k++) {
       try {

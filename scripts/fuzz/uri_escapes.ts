@@ -33,10 +33,26 @@ export function uriEscapes(fixture: Fixture): SideFile[] {
     plain('http://127.0.0.1:9/sentinel.bin'),
     plain('/dev/zero'),
     plain('/proc/self/environ'),
-    { uri: 'link.bin', entries: [{ kind: 'symlink', name: 'link.bin', target: abs }], text: 'link.bin, a link to the sentinel' },
-    { uri: 'rel.bin', entries: [{ kind: 'symlink', name: 'rel.bin', target: '../sentinel.bin' }], text: 'rel.bin, a link to ../sentinel.bin' },
-    { uri: 'up/sentinel.bin', entries: [{ kind: 'symlink', name: 'up', target: '..' }], text: 'up/sentinel.bin, up a link to ..' },
-    { uri: 'zero.bin', entries: [{ kind: 'symlink', name: 'zero.bin', target: '/dev/zero' }], text: 'zero.bin, a link to /dev/zero' },
+    {
+      uri: 'link.bin',
+      entries: [{ kind: 'symlink', name: 'link.bin', target: abs }],
+      text: 'link.bin, a link to the sentinel',
+    },
+    {
+      uri: 'rel.bin',
+      entries: [{ kind: 'symlink', name: 'rel.bin', target: '../sentinel.bin' }],
+      text: 'rel.bin, a link to ../sentinel.bin',
+    },
+    {
+      uri: 'up/sentinel.bin',
+      entries: [{ kind: 'symlink', name: 'up', target: '..' }],
+      text: 'up/sentinel.bin, up a link to ..',
+    },
+    {
+      uri: 'zero.bin',
+      entries: [{ kind: 'symlink', name: 'zero.bin', target: '/dev/zero' }],
+      text: 'zero.bin, a link to /dev/zero',
+    },
   ];
 }
 
@@ -45,6 +61,10 @@ export function hostileSideFiles(): SideFile[] {
   return [
     { uri: 'fifo.bin', entries: [{ kind: 'fifo', name: 'fifo.bin' }], text: 'fifo.bin, a FIFO' },
     { uri: 'dir.bin', entries: [{ kind: 'dir', name: 'dir.bin' }], text: 'dir.bin, a folder' },
-    { uri: 'big.bin', entries: [{ kind: 'sparse', name: 'big.bin', size: 600 * 2 ** 20 }], text: 'big.bin, a 600 MiB sparse file' },
+    {
+      uri: 'big.bin',
+      entries: [{ kind: 'sparse', name: 'big.bin', size: 600 * 2 ** 20 }],
+      text: 'big.bin, a 600 MiB sparse file',
+    },
   ];
 }

@@ -18,7 +18,10 @@ const send = (m: FromWorker): void => port.postMessage(m);
 /** A fresh instance of the core; its own messages on stderr are dropped (crashes are reported as outcomes). */
 function instantiate(): Promise<IkCoreModule> {
   const options = {
-    instantiateWasm(imports: WebAssembly.Imports, done: (instance: WebAssembly.Instance, module?: WebAssembly.Module) => void) {
+    instantiateWasm(
+      imports: WebAssembly.Imports,
+      done: (instance: WebAssembly.Instance, module?: WebAssembly.Module) => void,
+    ) {
       void WebAssembly.instantiate(init.wasmModule, imports).then((instance) => done(instance, init.wasmModule));
       return {};
     },
@@ -37,6 +40,11 @@ const env: CaseEnv = {
 };
 
 port.on('message', (m: ToWorker) => {
-  void runCase(env, m.id, (text) => send({ type: 'note', text }), () => send({ type: 'drawn' })).then((report) => send({ type: 'done', report }));
+  void runCase(
+    env,
+    m.id,
+    (text) => send({ type: 'note', text }),
+    () => send({ type: 'drawn' }),
+  ).then((report) => send({ type: 'done', report }));
 });
 send({ type: 'ready' });

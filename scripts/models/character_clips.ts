@@ -51,8 +51,10 @@ export function characterClips(joints: readonly JointDef[]): ClipDef[] {
       }),
     })),
     clip('reach_wave', (t, w) => {
-      const reach = ease(t, 1, 2.5), wave = ease(t, 2.5, 3);
-      const hang = normalize([-0.25, -1, 0.15]), raised = normalize([-0.2, 0.8, 0.6]);
+      const reach = ease(t, 1, 2.5),
+        wave = ease(t, 2.5, 3);
+      const hang = normalize([-0.25, -1, 0.15]),
+        raised = normalize([-0.2, 0.8, 0.6]);
       return {
         turns: stance(w, {
           [P + 'RightArm']: aim('RightArm', add(scale(hang, 1 - reach), scale(raised, reach)), w),
@@ -67,7 +69,8 @@ export function characterClips(joints: readonly JointDef[]): ClipDef[] {
       // The hips go down a quarter of the 185 height and back up (depth: 0 to 1 and back to 0),
       // tilting forward 10 degrees and going back 25 cm, most of it early (back: ahead of depth), so
       // that the shins never lean more than 23 degrees over the flat feet (the ankles allow 30).
-      const depth = ease(t, 1, 3) - ease(t, 4, 6), back = depth * (2 - depth);
+      const depth = ease(t, 1, 3) - ease(t, 4, 6),
+        back = depth * (2 - depth);
       const hips: Hips = { turn: turnAbout(LEFT, 10 * depth), shift: [0, -46 * depth, -25 * back] };
       const turns: Record<string, Quat> = {
         [P + 'Hips']: hips.turn,

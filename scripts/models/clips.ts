@@ -35,14 +35,19 @@ export const IDENTITY: Quat = [0, 0, 0, 1];
 
 /** The rotation by `degrees` about `axis` (any length but 0). */
 export function turnAbout(axis: Vec3, degrees: number): Quat {
-  const [x, y, z] = normalize(axis), h = (degrees * Math.PI) / 360, s = Math.sin(h);
+  const [x, y, z] = normalize(axis),
+    h = (degrees * Math.PI) / 360,
+    s = Math.sin(h);
   return [x * s, y * s, z * s, Math.cos(h)];
 }
 
 /** The smallest rotation taking direction `from` to direction `to`. */
 export function between(from: Vec3, to: Vec3): Quat {
-  const a = normalize(from), b = normalize(to);
-  const axis = cross(a, b), s = length(axis), c = dot(a, b);
+  const a = normalize(from),
+    b = normalize(to);
+  const axis = cross(a, b),
+    s = length(axis),
+    c = dot(a, b);
   if (s < 1e-12) return IDENTITY;
   return turnAbout(axis, (Math.atan2(s, c) * 180) / Math.PI);
 }
@@ -59,7 +64,13 @@ export interface ClipJoint {
  * Frames 0..seconds*fps; a joint's channel holds its rest local rotation times its turn, brought
  * into its own frame.
  */
-export function addClips(doc: Document, buffer: Buffer, clips: readonly ClipDef[], joints: ReadonlyMap<string, ClipJoint>, root: string): void {
+export function addClips(
+  doc: Document,
+  buffer: Buffer,
+  clips: readonly ClipDef[],
+  joints: ReadonlyMap<string, ClipJoint>,
+  root: string,
+): void {
   for (const clip of clips) {
     const frames = Math.round(clip.seconds * clip.fps) + 1;
     const times = Float32Array.from({ length: frames }, (_, k) => k / clip.fps);
@@ -70,20 +81,38 @@ export function addClips(doc: Document, buffer: Buffer, clips: readonly ClipDef[
     const input = (kept: number[]): Accessor => {
       const key = kept.join(' ');
       let accessor = inputs.get(key);
-      if (!accessor) inputs.set(key, (accessor = doc.createAccessor().setType('SCALAR').setArray(Float32Array.from(kept, (k) => times[k])).setBuffer(buffer)));
+      if (!accessor)
+        inputs.set(
+          key,
+          (accessor = doc
+            .createAccessor()
+            .setType('SCALAR')
+            .setArray(Float32Array.from(kept, (k) => times[k]))
+            .setBuffer(buffer)),
+        );
       return accessor;
     };
-    const channel = (node: Node, path: 'rotation' | 'translation', values: Float32Array, type: 'VEC3' | 'VEC4'): void => {
+    const channel = (
+      node: Node,
+      path: 'rotation' | 'translation',
+      values: Float32Array,
+      type: 'VEC3' | 'VEC4',
+    ): void => {
       const stride = type === 'VEC4' ? 4 : 3;
       const tolerance = clip.tolerance && (path === 'rotation' ? clip.tolerance.degrees : clip.tolerance.units);
       const kept = tolerance === undefined ? Array.from(times, (_, k) => k) : keptFrames(values, stride, tolerance);
-      const keys = tolerance === undefined ? values : Float32Array.from(kept.flatMap((k) => Array.from(values.subarray(stride * k, stride * (k + 1)))));
+      const keys =
+        tolerance === undefined
+          ? values
+          : Float32Array.from(kept.flatMap((k) => Array.from(values.subarray(stride * k, stride * (k + 1)))));
       const sampler: AnimationSampler = doc
         .createAnimationSampler()
         .setInput(input(kept))
         .setOutput(doc.createAccessor().setType(type).setArray(keys).setBuffer(buffer))
         .setInterpolation('LINEAR');
-      animation.addSampler(sampler).addChannel(doc.createAnimationChannel().setTargetNode(node).setTargetPath(path).setSampler(sampler));
+      animation
+        .addSampler(sampler)
+        .addChannel(doc.createAnimationChannel().setTargetNode(node).setTargetPath(path).setSampler(sampler));
     };
     const moving = [...new Set(poses.flatMap((p) => Object.keys(p.turns)))];
     for (const name of moving) {
@@ -99,9 +128,15 @@ export function addClips(doc: Document, buffer: Buffer, clips: readonly ClipDef[
       channel(joint.node, 'rotation', values, 'VEC4');
     }
     if (poses.some((p) => p.shift)) {
-      const node = joints.get(root)!.node, rest = node.getTranslation();
+      const node = joints.get(root)!.node,
+        rest = node.getTranslation();
       const values = new Float32Array(3 * frames);
-      poses.forEach((p, k) => values.set(rest.map((x, i) => x + (p.shift?.[i] ?? 0)), 3 * k));
+      poses.forEach((p, k) =>
+        values.set(
+          rest.map((x, i) => x + (p.shift?.[i] ?? 0)),
+          3 * k,
+        ),
+      );
       channel(node, 'translation', values, 'VEC3');
     }
   }

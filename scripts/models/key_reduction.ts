@@ -11,7 +11,8 @@ function quat(values: Float32Array, k: number): number[] {
 /** The angle between rotations `a` and `b` (unit quaternions), degrees; from the chord, exact for near ones. */
 function angleDeg(a: number[], b: number[]): number {
   const sign = a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + a[3] * b[3] < 0 ? -1 : 1;
-  const minus = Math.hypot(...a.map((x, i) => x - sign * b[i])), plus = Math.hypot(...a.map((x, i) => x + sign * b[i]));
+  const minus = Math.hypot(...a.map((x, i) => x - sign * b[i])),
+    plus = Math.hypot(...a.map((x, i) => x + sign * b[i]));
   return (4 * Math.atan2(minus, plus) * 180) / Math.PI;
 }
 
@@ -22,7 +23,8 @@ function slerp(a: number[], b: number[], u: number): number[] {
   d *= sign;
   const theta = Math.acos(Math.min(1, d));
   if (theta < 1e-9) return a;
-  const wa = Math.sin((1 - u) * theta) / Math.sin(theta), wb = (sign * Math.sin(u * theta)) / Math.sin(theta);
+  const wa = Math.sin((1 - u) * theta) / Math.sin(theta),
+    wb = (sign * Math.sin(u * theta)) / Math.sin(theta);
   return a.map((x, i) => wa * x + wb * b[i]);
 }
 

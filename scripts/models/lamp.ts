@@ -5,8 +5,12 @@ import type { ModelDef } from './model.js';
 import { ball, block, frustum } from './shapes.js';
 import type { Vec3 } from './vec.js';
 
-const base: Vec3 = [0, 0, 0], swivel: Vec3 = [0, 0.04, 0], elbow: Vec3 = [0, 0.12, 0];
-const knee: Vec3 = [0.12, 0.48, 0], neck: Vec3 = [0.5, 0.56, 0], mouth: Vec3 = [0.58, 0.42, 0];
+const base: Vec3 = [0, 0, 0],
+  swivel: Vec3 = [0, 0.04, 0],
+  elbow: Vec3 = [0, 0.12, 0];
+const knee: Vec3 = [0.12, 0.48, 0],
+  neck: Vec3 = [0.5, 0.56, 0],
+  mouth: Vec3 = [0.58, 0.42, 0];
 const z: Vec3 = [0, 0, 1];
 
 export const lamp: ModelDef = {
@@ -14,7 +18,17 @@ export const lamp: ModelDef = {
   armature: {},
   joints: [
     { name: 'base', head: base, tail: swivel, hinge: z, limits: fixed },
-    { name: 'swivel', parent: 'base', head: swivel, tail: elbow, hinge: z, limits: [[-90, 0, 0], [90, 0, 0]] },
+    {
+      name: 'swivel',
+      parent: 'base',
+      head: swivel,
+      tail: elbow,
+      hinge: z,
+      limits: [
+        [-90, 0, 0],
+        [90, 0, 0],
+      ],
+    },
     { name: 'lower_arm', parent: 'swivel', head: elbow, tail: knee, hinge: z, limits: hinge(-50, 60) },
     { name: 'upper_arm', parent: 'lower_arm', head: knee, tail: neck, hinge: z, limits: hinge(-110, 80) },
     { name: 'head', parent: 'upper_arm', head: neck, tail: mouth, hinge: z, limits: hinge(-100, 80), effector: true },

@@ -68,7 +68,9 @@ const round = (v: number, digits: number): number => {
 
 /** Quaternion (x, y, z, w) of the rotation whose columns are the unit vectors x, y, z. */
 export function quaternionFromAxes(x: Vec3, y: Vec3, z: Vec3): [number, number, number, number] {
-  const [m00, m10, m20] = x, [m01, m11, m21] = y, [m02, m12, m22] = z;
+  const [m00, m10, m20] = x,
+    [m01, m11, m21] = y,
+    [m02, m12, m22] = z;
   const tr = m00 + m11 + m22;
   let q: [number, number, number, number];
   if (tr > 0) {
@@ -118,28 +120,41 @@ export function buildDocument(model: ModelDef): Document {
   model.joints.forEach((def, index) => {
     if (byName.has(def.name)) throw new Error(`${model.name}: joint ${def.name} is defined twice`);
     const parent = def.parent === undefined ? undefined : byName.get(def.parent);
-    if (def.parent !== undefined && !parent) throw new Error(`${model.name}: ${def.name} comes before its parent ${def.parent}`);
+    if (def.parent !== undefined && !parent)
+      throw new Error(`${model.name}: ${def.name} comes before its parent ${def.parent}`);
     const [x, y, z] = jointAxes(def);
     const q = quaternionFromAxes(x, y, z);
     const armatureFrame = fromTRS(def.head, q, [1, 1, 1]);
-    const parentArmature = parent ? fromTRS(parent.def.head, quaternionFromAxes(...jointAxes(parent.def)), [1, 1, 1]) : undefined;
+    const parentArmature = parent
+      ? fromTRS(parent.def.head, quaternionFromAxes(...jointAxes(parent.def)), [1, 1, 1])
+      : undefined;
     const local = parentArmature ? multiply(invertAffine(parentArmature)!, armatureFrame) : armatureFrame;
     // Local rotation as a quaternion of the local 3x3, translation from column 3.
-    const rot = quaternionFromAxes([local[0], local[4], local[8]], [local[1], local[5], local[9]], [local[2], local[6], local[10]]);
+    const rot = quaternionFromAxes(
+      [local[0], local[4], local[8]],
+      [local[1], local[5], local[9]],
+      [local[2], local[6], local[10]],
+    );
     const node = doc
       .createNode(def.name)
       .setTranslation([round(local[3], 6), round(local[7], 6), round(local[11], 6)])
       .setRotation(rot.map((v) => round(v, 9)) as [number, number, number, number]);
     if (!model.plain) node.setExtras({ ik: ikExtras(model, def) });
     (parent ? parent.node : armature).addChild(node);
-    const world = multiply(parent ? parent.world : armatureWorld, fromTRS(node.getTranslation(), node.getRotation(), [1, 1, 1]));
+    const world = multiply(
+      parent ? parent.world : armatureWorld,
+      fromTRS(node.getTranslation(), node.getRotation(), [1, 1, 1]),
+    );
     byName.set(def.name, { def, node, world, index });
   });
 
   const joints = [...byName.values()];
   if (model.clips) {
     const clipJoints = new Map<string, ClipJoint>(
-      joints.map((j) => [j.def.name, { node: j.node, restLocal: j.node.getRotation() as Quat, restFrame: quaternionFromAxes(...jointAxes(j.def)) }]),
+      joints.map((j) => [
+        j.def.name,
+        { node: j.node, restLocal: j.node.getRotation() as Quat, restFrame: quaternionFromAxes(...jointAxes(j.def)) },
+      ]),
     );
     addClips(doc, buffer, model.clips, clipJoints, model.joints[0].name);
   }
@@ -158,13 +173,20 @@ export function buildDocument(model: ModelDef): Document {
   for (const m of model.materials)
     materials.set(
       m.name,
-      doc.createMaterial(m.name).setBaseColorFactor([...m.color, 1]).setMetallicFactor(m.metallic).setRoughnessFactor(m.roughness),
+      doc
+        .createMaterial(m.name)
+        .setBaseColorFactor([...m.color, 1])
+        .setMetallicFactor(m.metallic)
+        .setRoughnessFactor(m.roughness),
     );
   const mesh = doc.createMesh(model.name);
   for (const m of model.materials) {
     const shapes = model.shapes.filter((s) => s.material === m.name);
     if (shapes.length === 0) continue;
-    const positions: number[] = [], jointIds: number[] = [], weights: number[] = [], indices: number[] = [];
+    const positions: number[] = [],
+      jointIds: number[] = [],
+      weights: number[] = [],
+      indices: number[] = [];
     for (const s of shapes) {
       const base = positions.length / 3;
       s.positions.forEach((p, v) => {
@@ -183,8 +205,14 @@ export function buildDocument(model: ModelDef): Document {
     const prim = doc
       .createPrimitive()
       .setMaterial(materials.get(m.name)!)
-      .setAttribute('POSITION', doc.createAccessor().setType('VEC3').setArray(new Float32Array(positions)).setBuffer(buffer))
-      .setAttribute('JOINTS_0', doc.createAccessor().setType('VEC4').setArray(new Uint8Array(jointIds)).setBuffer(buffer))
+      .setAttribute(
+        'POSITION',
+        doc.createAccessor().setType('VEC3').setArray(new Float32Array(positions)).setBuffer(buffer),
+      )
+      .setAttribute(
+        'JOINTS_0',
+        doc.createAccessor().setType('VEC4').setArray(new Uint8Array(jointIds)).setBuffer(buffer),
+      )
       .setAttribute(
         'WEIGHTS_0',
         doc.createAccessor().setType('VEC4').setArray(new Uint8Array(weights)).setNormalized(true).setBuffer(buffer),

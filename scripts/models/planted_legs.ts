@@ -31,21 +31,34 @@ export interface Foot {
 export const STANDING: Readonly<Record<Side, Foot>> = { Left: { yaw: 0, lift: 0 }, Right: { yaw: 0, lift: 0 } };
 
 /** Writes the turns of both legs (UpLeg, Leg, Foot) into `turns`; throws when a foot is beyond its leg's reach. */
-export function plantLegs(body: Body, hips: Hips, feet: Readonly<Record<Side, Foot>>, turns: Record<string, Quat>): void {
+export function plantLegs(
+  body: Body,
+  hips: Hips,
+  feet: Readonly<Record<Side, Foot>>,
+  turns: Record<string, Quat>,
+): void {
   const pivot = body.joint('Hips').head;
-  const facing = rotate(hips.turn, fwd), hipsYaw = (Math.atan2(facing[0], facing[2]) * 180) / Math.PI;
+  const facing = rotate(hips.turn, fwd),
+    hipsYaw = (Math.atan2(facing[0], facing[2]) * 180) / Math.PI;
   for (const s of SIDES) {
     const yaw = turnAbout(up, feet[s].yaw);
     // The foot's yaw from the hips' (in -180..180), and the knee's.
-    const off = ((feet[s].yaw - hipsYaw + 540) % 360) - 180, kneeOff = Math.max(-KNEE_YAW, Math.min(KNEE_YAW, off));
+    const off = ((feet[s].yaw - hipsYaw + 540) % 360) - 180,
+      kneeOff = Math.max(-KNEE_YAW, Math.min(KNEE_YAW, off));
     const plane = turnAbout(up, hipsYaw + kneeOff);
-    const hip0 = body.joint(`${s}UpLeg`).head, knee0 = body.joint(`${s}Leg`).head, ankle0 = body.joint(`${s}Foot`).head;
+    const hip0 = body.joint(`${s}UpLeg`).head,
+      knee0 = body.joint(`${s}Leg`).head,
+      ankle0 = body.joint(`${s}Foot`).head;
     const hip = add(add(pivot, rotate(hips.turn, sub(hip0, pivot))), hips.shift);
     const ankle = add(add(pivot, rotate(yaw, sub(ankle0, pivot))), [0, feet[s].lift, 0]);
-    const l1 = length(sub(knee0, hip0)), l2 = length(sub(ankle0, knee0));
-    const d = sub(ankle, hip), dist = length(d);
-    if (dist >= l1 + l2) throw new Error(`character clips: the ${s} foot is ${dist} cm from its hip, beyond the leg's ${l1 + l2}`);
-    const u = scale(d, 1 / dist), ahead = rotate(plane, fwd);
+    const l1 = length(sub(knee0, hip0)),
+      l2 = length(sub(ankle0, knee0));
+    const d = sub(ankle, hip),
+      dist = length(d);
+    if (dist >= l1 + l2)
+      throw new Error(`character clips: the ${s} foot is ${dist} cm from its hip, beyond the leg's ${l1 + l2}`);
+    const u = scale(d, 1 / dist),
+      ahead = rotate(plane, fwd);
     const across = normalize(sub(ahead, scale(u, dot(ahead, u))));
     const cosA = (l1 * l1 + dist * dist - l2 * l2) / (2 * l1 * dist);
     const knee = add(hip, scale(add(scale(u, cosA), scale(across, Math.sqrt(1 - cosA * cosA))), l1));

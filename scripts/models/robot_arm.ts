@@ -16,11 +16,32 @@ export const robotArm: ModelDef = {
   joints: [
     { name: 'base', head: y(0), tail: y(0.06), hinge: z, limits: fixed },
     { name: 'riser', parent: 'base', head: y(0.06), tail: y(0.12), hinge: z, limits: fixed },
-    { name: 'waist', parent: 'riser', head: y(0.12), tail: y(0.2), hinge: z, limits: [[-180, 0, 0], [180, 0, 0]] },
+    {
+      name: 'waist',
+      parent: 'riser',
+      head: y(0.12),
+      tail: y(0.2),
+      hinge: z,
+      limits: [
+        [-180, 0, 0],
+        [180, 0, 0],
+      ],
+    },
     { name: 'shoulder', parent: 'waist', head: y(0.2), tail: y(0.55), hinge: z, limits: hinge(-100, 100) },
     { name: 'elbow', parent: 'shoulder', head: y(0.55), tail: y(0.85), hinge: z, limits: hinge(-135, 135) },
     { name: 'wrist', parent: 'elbow', head: y(0.85), tail: y(0.95), hinge: z, limits: hinge(-110, 110) },
-    { name: 'tool', parent: 'wrist', head: y(0.95), tail: y(1.03), hinge: z, limits: [[0, 0, null], [0, 0, null]], effector: true },
+    {
+      name: 'tool',
+      parent: 'wrist',
+      head: y(0.95),
+      tail: y(1.03),
+      hinge: z,
+      limits: [
+        [0, 0, null],
+        [0, 0, null],
+      ],
+      effector: true,
+    },
   ],
   materials: [
     { name: 'dark', color: [0.2, 0.21, 0.23], metallic: 0.3, roughness: 0.5 },

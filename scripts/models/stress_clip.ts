@@ -49,7 +49,10 @@ const FORWARD: Arm = { to: [0.2, -0.2, 1], twist: 0, elbow: 20 };
  * Per trunk bone, its bend forward (negative: back) at the height of each segment, and in the
  * sideways lean its bend in its plane turned `plane` degrees to the left from straight ahead.
  */
-const TRUNK: Record<string, { forward: number; crouch: number; up: number; down: number; side: number; plane: number }> = {
+const TRUNK: Record<
+  string,
+  { forward: number; crouch: number; up: number; down: number; side: number; plane: number }
+> = {
   Spine: { forward: 6, crouch: 15, up: 0, down: 0, side: 25, plane: 14.5 },
   Spine1: { forward: 6, crouch: 15, up: 0, down: 0, side: -15, plane: -14.5 },
   Spine2: { forward: 6, crouch: 15, up: -2, down: 0, side: -10, plane: -14.5 },
@@ -72,16 +75,24 @@ export function stressClip(body: Body): ClipDef {
     tolerance: KEY_TOLERANCE,
     pose: (t) => {
       const w = ease(t, 0, 1);
-      const behind = segment(t, 1, 0.8, 0.4), over = segment(t, 3, 0.8, 0.4);
-      const forward = segment(t, 5, 0.8, 0.4), sideways = segment(t, 7, 0.8, 0.4);
-      const up = segment(t, 9, 0.6, 0.4), down = segment(t, 10.6, 0.6, 0.4), crouch = segment(t, 12.2, 1, 0.8);
+      const behind = segment(t, 1, 0.8, 0.4),
+        over = segment(t, 3, 0.8, 0.4);
+      const forward = segment(t, 5, 0.8, 0.4),
+        sideways = segment(t, 7, 0.8, 0.4);
+      const up = segment(t, 9, 0.6, 0.4),
+        down = segment(t, 10.6, 0.6, 0.4),
+        crouch = segment(t, 12.2, 1, 0.8);
       const step = stepping(t - TURN_START);
       const dip = DIP * (ease(t, 15, TURN_START) - ease(t, TURN_START + TURN_SECONDS, TURN_START + TURN_SECONDS + 0.5));
 
       const turns: Record<string, Quat> = {};
       const hips: Hips = {
         turn: mul(turnAbout(UP, step.yaw), turnAbout(LEFT, LEAN_HIPS.tilt * forward + CROUCH_HIPS.tilt * crouch)),
-        shift: add(scale(LEAN_HIPS.shift, forward), [0, -CROUCH_HIPS.down * crouch - dip, -CROUCH_HIPS.back * crouch * (2 - crouch)]),
+        shift: add(scale(LEAN_HIPS.shift, forward), [
+          0,
+          -CROUCH_HIPS.down * crouch - dip,
+          -CROUCH_HIPS.back * crouch * (2 - crouch),
+        ]),
       };
       turns[P + 'Hips'] = hips.turn;
       for (const [name, b] of Object.entries(TRUNK)) {
@@ -92,8 +103,10 @@ export function stressClip(body: Body): ClipDef {
       // Behind the back: first the arm turns in with the elbow straight, then the elbow bends. Over
       // the head: first the arm rises, then it turns and the elbow bends (turned while the arm is
       // low, it would twist past its limits).
-      const turnIn = ease(behind, 0, 0.5), fold = ease(behind, 0.5, 1);
-      const rise = ease(over, 0, 0.6), reach = ease(over, 0.4, 1);
+      const turnIn = ease(behind, 0, 0.5),
+        fold = ease(behind, 0.5, 1);
+      const rise = ease(over, 0, 0.6),
+        reach = ease(over, 0.4, 1);
       const toward = (arm: Arm, k: number): Vec3 => scale(sub(arm.to, STANCE.to), k);
       const arm: Arm = {
         to: add(add(STANCE.to, toward(BEHIND, turnIn)), add(toward(OVER, rise), toward(FORWARD, crouch))),
@@ -102,7 +115,10 @@ export function stressClip(body: Body): ClipDef {
       };
       for (const s of SIDES) {
         const side = s === 'Left' ? 1 : -1;
-        turns[P + `${s}Arm`] = mul(body.aim(`${s}Arm`, [side * arm.to[0], arm.to[1], arm.to[2]], w), body.twist(`${s}Arm`, side * arm.twist));
+        turns[P + `${s}Arm`] = mul(
+          body.aim(`${s}Arm`, [side * arm.to[0], arm.to[1], arm.to[2]], w),
+          body.twist(`${s}Arm`, side * arm.twist),
+        );
         turns[P + `${s}ForeArm`] = body.bend(`${s}ForeArm`, fwd, arm.elbow);
       }
       // The first frame is the rest pose itself (whose knees bend 1e-4 rad outwards, the closed form's forwards).

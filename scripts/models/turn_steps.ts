@@ -8,7 +8,15 @@ import type { Foot, Side } from './planted_legs.js';
 
 /** Each step: the foot and its yaw once put down. */
 const STEPS: readonly [Side, number][] = [
-  ['Left', 22.5], ['Right', 45], ['Left', 67.5], ['Right', 90], ['Left', 112.5], ['Right', 135], ['Left', 157.5], ['Right', 180], ['Left', 180],
+  ['Left', 22.5],
+  ['Right', 45],
+  ['Left', 67.5],
+  ['Right', 90],
+  ['Left', 112.5],
+  ['Right', 135],
+  ['Left', 157.5],
+  ['Right', 180],
+  ['Left', 180],
 ];
 const STEP_SECONDS = 0.5;
 const LIFT = 8;
@@ -32,7 +40,10 @@ export function stepping(t: number): Stepping {
     const u = t / STEP_SECONDS - k;
     if (u <= 0) return;
     const from = feet[side].yaw;
-    feet[side] = { yaw: from + (to - from) * ease(u, MOVE[0], MOVE[1]), lift: u < UP_UNTIL ? LIFT * Math.sin((Math.PI * u) / UP_UNTIL) : 0 };
+    feet[side] = {
+      yaw: from + (to - from) * ease(u, MOVE[0], MOVE[1]),
+      lift: u < UP_UNTIL ? LIFT * Math.sin((Math.PI * u) / UP_UNTIL) : 0,
+    };
   });
   return { yaw: (feet.Left.yaw + feet.Right.yaw) / 2, feet };
 }

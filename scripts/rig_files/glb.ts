@@ -21,7 +21,8 @@ export function packGlb(json: unknown, bin?: Uint8Array): Uint8Array {
 export function packGlbText(jsonText: string, bin?: Uint8Array): Uint8Array {
   const pad = (n: number): number => (n + 3) & ~3;
   const text = new TextEncoder().encode(jsonText);
-  const jsonLen = pad(text.length), binLen = bin ? pad(bin.length) : 0;
+  const jsonLen = pad(text.length),
+    binLen = bin ? pad(bin.length) : 0;
   const total = 12 + 8 + jsonLen + (bin ? 8 + binLen : 0);
   const out = new Uint8Array(total);
   const dv = new DataView(out.buffer);

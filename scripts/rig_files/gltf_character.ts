@@ -75,11 +75,16 @@ export interface TestCharacterOptions {
 export function buildTestCharacter(options: TestCharacterOptions = {}): Document {
   const doc = new Document();
   const buffer = doc.createBuffer();
-  const s15 = Math.sin(Math.PI / 12), c15 = Math.cos(Math.PI / 12);
+  const s15 = Math.sin(Math.PI / 12),
+    c15 = Math.cos(Math.PI / 12);
   const w = options.world ?? { translation: [0.5, 0.2, -1], rotation: [0, s15, 0, c15] };
   const world = doc.createNode('World').setTranslation(w.translation).setRotation(w.rotation);
-  const s10 = Math.sin(Math.PI / 36), c10 = Math.cos(Math.PI / 36);
-  const armature = doc.createNode('Armature').setScale(options.armatureScale ?? [0.02, 0.02, 0.02]).setRotation([0, 0, s10, c10]);
+  const s10 = Math.sin(Math.PI / 36),
+    c10 = Math.cos(Math.PI / 36);
+  const armature = doc
+    .createNode('Armature')
+    .setScale(options.armatureScale ?? [0.02, 0.02, 0.02])
+    .setRotation([0, 0, s10, c10]);
   world.addChild(armature);
 
   const nodes = new Map<string, { node: Node; frame: Float64Array }>();
@@ -88,7 +93,11 @@ export function buildTestCharacter(options: TestCharacterOptions = {}): Document
     const frame = fromTRS(j.head, quaternionFromAxes(...axes), [1, 1, 1]); // armature space
     const parent = j.parent ? nodes.get(j.parent)! : undefined;
     const local = parent ? multiply(invertAffine(parent.frame)!, frame) : frame;
-    const q = quaternionFromAxes([local[0], local[4], local[8]], [local[1], local[5], local[9]], [local[2], local[6], local[10]]);
+    const q = quaternionFromAxes(
+      [local[0], local[4], local[8]],
+      [local[1], local[5], local[9]],
+      [local[2], local[6], local[10]],
+    );
     const node = doc.createNode(j.name).setTranslation([local[3], local[7], local[11]]).setRotation(q);
     (parent ? parent.node : armature).addChild(node);
     // The frame from the node's own numbers, so the inverse bind matrices match the nodes exactly.
@@ -102,14 +111,19 @@ export function buildTestCharacter(options: TestCharacterOptions = {}): Document
       const inv = invertAffine(nodes.get(n)!.frame)!;
       for (let r = 0; r < 4; r++) for (let c = 0; c < 4; c++) ibm[16 * k + 4 * c + r] = inv[4 * r + c];
     });
-    const skin = doc.createSkin().setInverseBindMatrices(doc.createAccessor().setType('MAT4').setArray(ibm).setBuffer(buffer));
+    const skin = doc
+      .createSkin()
+      .setInverseBindMatrices(doc.createAccessor().setType('MAT4').setArray(ibm).setBuffer(buffer));
     names.forEach((n) => skin.addJoint(nodes.get(n)!.node));
     return skin.setSkeleton(nodes.get('hips')!.node);
   };
   const allNames = testJoints.map((j) => j.name);
 
   const meshOf = (name: string, shapes: ReturnType<typeof frustum>[], jointNames: string[]): Node => {
-    const positions: number[] = [], joints: number[] = [], weights: number[] = [], indices: number[] = [];
+    const positions: number[] = [],
+      joints: number[] = [],
+      weights: number[] = [],
+      indices: number[] = [];
     for (const s of shapes) {
       const base = positions.length / 3;
       s.positions.forEach((p, v) => {
@@ -124,20 +138,45 @@ export function buildTestCharacter(options: TestCharacterOptions = {}): Document
     }
     const prim = doc
       .createPrimitive()
-      .setAttribute('POSITION', doc.createAccessor().setType('VEC3').setArray(new Float32Array(positions)).setBuffer(buffer))
-      .setAttribute('JOINTS_0', doc.createAccessor().setType('VEC4').setArray(new Uint16Array(joints)).setBuffer(buffer))
-      .setAttribute('WEIGHTS_0', doc.createAccessor().setType('VEC4').setArray(new Float32Array(weights)).setBuffer(buffer))
+      .setAttribute(
+        'POSITION',
+        doc.createAccessor().setType('VEC3').setArray(new Float32Array(positions)).setBuffer(buffer),
+      )
+      .setAttribute(
+        'JOINTS_0',
+        doc.createAccessor().setType('VEC4').setArray(new Uint16Array(joints)).setBuffer(buffer),
+      )
+      .setAttribute(
+        'WEIGHTS_0',
+        doc.createAccessor().setType('VEC4').setArray(new Float32Array(weights)).setBuffer(buffer),
+      )
       .setIndices(doc.createAccessor().setType('SCALAR').setArray(new Uint32Array(indices)).setBuffer(buffer));
     return doc.createNode(name).setMesh(doc.createMesh(name).addPrimitive(prim));
   };
 
   const bodyShapes = testJoints.map((j) => {
-    const start: [string, number][] = j.parent ? [[j.name, 0.6], [j.parent, 0.4]] : [[j.name, 1]];
+    const start: [string, number][] = j.parent
+      ? [
+          [j.name, 0.6],
+          [j.parent, 0.4],
+        ]
+      : [[j.name, 1]];
     return frustum('body', j.head, j.tail, 2.5, 2, 6, start, j.name);
   });
   const at = (n: string): TestJoint => testJoints.find((j) => j.name === n)!;
   const armorShapes = [
-    block('armor', [0, 64, 0], [0, 78, 0], 16, 10, [['chest', 0.7], ['spine', 0.3]], [1, 0, 0]),
+    block(
+      'armor',
+      [0, 64, 0],
+      [0, 78, 0],
+      16,
+      10,
+      [
+        ['chest', 0.7],
+        ['spine', 0.3],
+      ],
+      [1, 0, 0],
+    ),
     block('armor', [0, 80, 1], [0, 91, 1], 8, 9, 'head', [1, 0, 0]),
     block('armor', at('upper_arm.L').head, at('upper_arm.L').tail, 5, 5, 'upper_arm.L'),
     block('armor', at('upper_arm.R').head, at('upper_arm.R').tail, 5, 5, 'upper_arm.R'),

@@ -9,13 +9,23 @@ export function chainParents(n: number): number[] {
 }
 
 /** The glTF JSON of the tree `parents` (node i named "link i"), for a test to edit before packGlb. */
-export function treeGltf(parents: readonly number[]): { asset: object; scenes: object[]; nodes: Record<string, unknown>[]; skins: Record<string, unknown>[] } {
+export function treeGltf(parents: readonly number[]): {
+  asset: object;
+  scenes: object[];
+  nodes: Record<string, unknown>[];
+  skins: Record<string, unknown>[];
+} {
   const nodes: Record<string, unknown>[] = parents.map((_, i) => ({ name: `link ${i}`, translation: [0, 1, 0] }));
   parents.forEach((p, i) => {
     if (p >= 0) ((nodes[p].children ??= []) as number[]).push(i);
   });
   const roots = parents.flatMap((p, i) => (p < 0 ? [i] : []));
-  return { asset: { version: '2.0' }, scenes: [{ nodes: roots }], nodes, skins: [{ joints: parents.map((_, i) => i) }] };
+  return {
+    asset: { version: '2.0' },
+    scenes: [{ nodes: roots }],
+    nodes,
+    skins: [{ joints: parents.map((_, i) => i) }],
+  };
 }
 
 /** The .glb of the tree `parents`. */
@@ -24,7 +34,20 @@ export function treeGlb(parents: readonly number[]): Uint8Array {
 }
 
 /** A7 JSON text of the tree `parents`: bones of length 1 along +x, `bone` fields merged into each. */
-export function treeA7(parents: readonly number[], bone: Record<string, unknown> = {}, doc: Record<string, unknown> = {}): string {
-  const bones = parents.map((p) => ({ parent_id: p, length: 1, rest_T: [[1, 0, 0, p < 0 ? 0 : 1], [0, 1, 0, 0], [0, 0, 1, 0]], ...bone }));
+export function treeA7(
+  parents: readonly number[],
+  bone: Record<string, unknown> = {},
+  doc: Record<string, unknown> = {},
+): string {
+  const bones = parents.map((p) => ({
+    parent_id: p,
+    length: 1,
+    rest_T: [
+      [1, 0, 0, p < 0 ? 0 : 1],
+      [0, 1, 0, 0],
+      [0, 0, 1, 0],
+    ],
+    ...bone,
+  }));
   return JSON.stringify({ bones, ...doc });
 }

@@ -34,11 +34,28 @@ function distance(a: ArrayLike<number>, b: ArrayLike<number>, k: number): number
 
 /** The tracked points of pose `tips`, `rotations` (effector order: head, left hand, right hand). */
 function trackedOf(tips: Float64Array, rotations: Float64Array): AvatarInput {
-  const at = (k: number) => ({ position: tips.subarray(3 * k, 3 * k + 3), orientation: rotations.subarray(4 * k, 4 * k + 4) });
+  const at = (k: number) => ({
+    position: tips.subarray(3 * k, 3 * k + 3),
+    orientation: rotations.subarray(4 * k, 4 * k + 4),
+  });
   return { head: at(0), leftHand: at(1), rightHand: at(2) };
 }
 
-const UPPER_BODY = ['spine', 'chest', 'upperChest', 'neck', 'head', 'leftShoulder', 'leftUpperArm', 'leftLowerArm', 'leftHand', 'rightShoulder', 'rightUpperArm', 'rightLowerArm', 'rightHand'] as const;
+const UPPER_BODY = [
+  'spine',
+  'chest',
+  'upperChest',
+  'neck',
+  'head',
+  'leftShoulder',
+  'leftUpperArm',
+  'leftLowerArm',
+  'leftHand',
+  'rightShoulder',
+  'rightUpperArm',
+  'rightLowerArm',
+  'rightHand',
+] as const;
 
 /** Frame f (60 per second) of the upper-body motion: each angle of the moving bones on its own sine, within its limits. */
 function swayFrame(rig: IkRig, bones: number[], f: number, out: Float64Array): void {
@@ -46,8 +63,11 @@ function swayFrame(rig: IkRig, bones: number[], f: number, out: Float64Array): v
   out.fill(0);
   bones.forEach((b, i) => {
     for (let k = 0; k < 3; k++) {
-      const j = 3 * b + k, lo = rig.lower[j], hi = rig.upper[j];
-      const mid = Math.max(lo, Math.min(hi, 0)), span = Math.min(hi - mid, mid - lo, 60);
+      const j = 3 * b + k,
+        lo = rig.lower[j],
+        hi = rig.upper[j];
+      const mid = Math.max(lo, Math.min(hi, 0)),
+        span = Math.min(hi - mid, mid - lo, 60);
       out[j] = mid + 0.6 * span * Math.sin(2 * Math.PI * (0.15 + 0.05 * ((i + k) % 5)) * t + i + 2 * k);
     }
   });
@@ -55,25 +75,41 @@ function swayFrame(rig: IkRig, bones: number[], f: number, out: Float64Array): v
 }
 
 /** Tracks `frames` of the sway; per frame the worst tracked-point distance (δ), turn (degrees), foot distance (δ), mean joint error (height). */
-function trackSway(frames: number): { tip: number[]; turn: number[]; foot: number[]; mpjpe: number[]; last: Float64Array } {
+function trackSway(frames: number): {
+  tip: number[];
+  turn: number[];
+  foot: number[];
+  mpjpe: number[];
+  last: Float64Array;
+} {
   const avatar = new AvatarSolver(ik, character.spec, character.gltf!.humanoid!);
   const truth = new IkRig(ik, avatar.rig.spec);
   try {
     const humanoid = character.gltf!.humanoid!;
     const bones = UPPER_BODY.map((role) => humanoid.bones[role]).filter((b): b is number => b !== undefined);
-    const delta = 1e-3 * avatar.height, numBones = character.spec.parents.length;
+    const delta = 1e-3 * avatar.height,
+      numBones = character.spec.parents.length;
     const planted = avatar.tips();
     const a = new Float64Array(truth.numAngles);
     const out = { tip: [] as number[], turn: [] as number[], foot: [] as number[], mpjpe: [] as number[], last: a };
     for (let f = 0; f < frames; f++) {
       swayFrame(truth, bones, f, a);
-      const tips = truth.tips(a), rotations = truth.tipRotations(a);
+      const tips = truth.tips(a),
+        rotations = truth.tipRotations(a);
       avatar.update(trackedOf(tips, rotations));
-      const mine = avatar.tips(), turned = avatar.tipRotations();
+      const mine = avatar.tips(),
+        turned = avatar.tipRotations();
       out.tip.push(Math.max(...[0, 1, 2].map((k) => distance(mine, tips, k))) / delta);
-      out.turn.push(Math.max(...[0, 1, 2].map((k) => rotationAngleDeg(turned.subarray(4 * k, 4 * k + 4), rotations.subarray(4 * k, 4 * k + 4)))));
+      out.turn.push(
+        Math.max(
+          ...[0, 1, 2].map((k) =>
+            rotationAngleDeg(turned.subarray(4 * k, 4 * k + 4), rotations.subarray(4 * k, 4 * k + 4)),
+          ),
+        ),
+      );
       out.foot.push(Math.max(distance(mine, planted, 3), distance(mine, planted, 4)) / delta);
-      const joints = truth.boneTips(a), ours = avatar.rig.boneTips(avatar.angles);
+      const joints = truth.boneTips(a),
+        ours = avatar.rig.boneTips(avatar.angles);
       let sum = 0;
       for (let b = 0; b < numBones; b++) sum += distance(joints, ours, b);
       out.mpjpe.push(sum / numBones / avatar.height);
@@ -101,9 +137,13 @@ describe('three tracked points drive the character', () => {
     const humanoid = character.gltf!.humanoid!;
     const avatar = new AvatarSolver(ik, character.spec, humanoid);
     try {
-      const h = avatar.height, delta = 1e-3 * h;
-      const start = avatar.tips(), rotations = avatar.tipRotations();
-      const knees = flipLimbs(avatar.rig.spec, humanoid).filter((l) => l.bone === humanoid.bones.leftLowerLeg || l.bone === humanoid.bones.rightLowerLeg);
+      const h = avatar.height,
+        delta = 1e-3 * h;
+      const start = avatar.tips(),
+        rotations = avatar.tipRotations();
+      const knees = flipLimbs(avatar.rig.spec, humanoid).filter(
+        (l) => l.bone === humanoid.bones.leftLowerLeg || l.bone === humanoid.bones.rightLowerLeg,
+      );
       expect(knees.length).toBe(2);
       const lowered = new Float64Array(start);
       let onTarget = 0;
@@ -127,7 +167,12 @@ describe('three tracked points drive the character', () => {
   });
 
   it('names the humanoid bones it needs when a rig lacks them', () => {
-    const humanoid = { ...character.gltf!.humanoid!, bones: { ...character.gltf!.humanoid!.bones, leftFoot: undefined } };
-    expect(() => new AvatarSolver(ik, character.spec, humanoid)).toThrow('the avatar needs these humanoid bones, not found: leftFoot');
+    const humanoid = {
+      ...character.gltf!.humanoid!,
+      bones: { ...character.gltf!.humanoid!.bones, leftFoot: undefined },
+    };
+    expect(() => new AvatarSolver(ik, character.spec, humanoid)).toThrow(
+      'the avatar needs these humanoid bones, not found: leftFoot',
+    );
   });
 });

@@ -19,26 +19,38 @@ function run(frames: number, head: (f: number) => number[], at: (f: number) => n
   const steps = new FootSteps(rest, hips, { position: [0, 1.5, 0], orientation: identity }, H);
   // The head over the hips.
   const tracked = (f: number) => ({ position: [at(f)[0], at(f)[1] + 0.5, at(f)[2]], orientation: head(f) });
-  return Array.from({ length: frames }, (_, f) => steps.update(tracked(f), at(f)).map((p) => ({ position: [...p.position], orientation: [...p.orientation] })));
+  return Array.from({ length: frames }, (_, f) =>
+    steps.update(tracked(f), at(f)).map((p) => ({ position: [...p.position], orientation: [...p.orientation] })),
+  );
 }
 
 /** Frames in which foot k's target moves. */
 function moving(out: FootPose[][], k: number): number[] {
   const frames: number[] = [];
-  for (let f = 1; f < out.length; f++) if (Math.hypot(...out[f][k].position.map((p, i) => p - out[f - 1][k].position[i])) > 1e-12) frames.push(f);
+  for (let f = 1; f < out.length; f++)
+    if (Math.hypot(...out[f][k].position.map((p, i) => p - out[f - 1][k].position[i])) > 1e-12) frames.push(f);
   return frames;
 }
 
 describe('the avatar feet', () => {
   it('stay where they stand while the body stays over them (a lean, a look aside)', () => {
-    const out = run(120, (f) => yaw(45 * Math.sin(f / 20)), (f) => [0.1 * H * Math.sin(f / 15), 1, 0.05 * H]);
+    const out = run(
+      120,
+      (f) => yaw(45 * Math.sin(f / 20)),
+      (f) => [0.1 * H * Math.sin(f / 15), 1, 0.05 * H],
+    );
     expect(moving(out, 0)).toEqual([]);
     expect(moving(out, 1)).toEqual([]);
   });
 
   it('step, one at a time, when the head turns round: lifted, never below the floor, still between steps, turned with the head', () => {
-    const out = run(240, (f) => yaw(Math.min(180, 1.5 * f)), () => hips);
-    const left = moving(out, 0), right = moving(out, 1);
+    const out = run(
+      240,
+      (f) => yaw(Math.min(180, 1.5 * f)),
+      () => hips,
+    );
+    const left = moving(out, 0),
+      right = moving(out, 1);
     expect(left.length).toBeGreaterThan(0);
     expect(right.length).toBeGreaterThan(0);
     expect(left.filter((f) => right.includes(f))).toEqual([]); // never both feet in the air
@@ -50,7 +62,11 @@ describe('the avatar feet', () => {
   });
 
   it('step towards the hips when they move away from the feet', () => {
-    const out = run(90, () => identity, (f) => [Math.min(0.3 * H, 0.01 * H * f), 1, 0]);
+    const out = run(
+      90,
+      () => identity,
+      (f) => [Math.min(0.3 * H, 0.01 * H * f), 1, 0],
+    );
     const last = out[out.length - 1];
     expect(last[0].position[0]).toBeGreaterThan(rest[0].position[0] + 0.1 * H);
     expect(last[1].position[0]).toBeGreaterThan(rest[1].position[0] + 0.1 * H);

@@ -37,7 +37,8 @@ describe('the part of a rig that moves a few bones', () => {
     expect(part.bones.length).toBeLessThan(numBones / 2); // the character's fingers, toes and eyes are left out
     expect(Array.from(part.spec.effectors, (i) => part.bones[i])).toEqual(moved);
 
-    const whole = new IkRig(ik, spec), sub = new IkRig(ik, part.spec);
+    const whole = new IkRig(ik, spec),
+      sub = new IkRig(ik, part.spec);
     rigs.push(whole, sub);
     // A pose of the part: each angle somewhere in its range, the root moved.
     const subAngles = new Float64Array(sub.numAngles);
@@ -49,9 +50,11 @@ describe('the part of a rig that moves a few bones', () => {
     scatterAngles(part, subAngles, angles);
     const kept = new Set(part.bones);
     for (let b = 0; b < numBones; b++)
-      if (!kept.has(b)) expect(Array.from(angles.subarray(3 * b, 3 * b + 3))).toEqual(Array.from(before.subarray(3 * b, 3 * b + 3)));
+      if (!kept.has(b))
+        expect(Array.from(angles.subarray(3 * b, 3 * b + 3))).toEqual(Array.from(before.subarray(3 * b, 3 * b + 3)));
     expect(Array.from(angles.subarray(3 * numBones))).toEqual([0.2, -0.1, 0.05]);
-    const wholeTips = whole.boneTips(angles), subTips = sub.boneTips(subAngles);
+    const wholeTips = whole.boneTips(angles),
+      subTips = sub.boneTips(subAngles);
     part.bones.forEach((b, i) => {
       for (let k = 0; k < 3; k++) expect(subTips[3 * i + k]).toBeCloseTo(wholeTips[3 * b + k], 12);
     });

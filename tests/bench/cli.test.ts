@@ -30,12 +30,13 @@ const knight = rigsLike('knight')[0].path; // an A7 file: the project's knight (
 const dir = mkdtempSync(join(tmpdir(), 'bench-cli-test-'));
 afterAll(() => rmSync(dir, { recursive: true, force: true }));
 
-
 function bench(...args: string[]): Outcome {
-  const r = spawnSync(process.execPath, ['--import', 'tsx', 'bench-node/cli.ts', ...args], { cwd: root, encoding: 'utf8' });
+  const r = spawnSync(process.execPath, ['--import', 'tsx', 'bench-node/cli.ts', ...args], {
+    cwd: root,
+    encoding: 'utf8',
+  });
   return { code: r.status ?? -1, stdout: r.stdout, stderr: r.stderr };
 }
-
 
 /** Exit code `code`, nothing on stdout, one line `bench: ...` matching `pattern` on stderr, no stack. */
 function expectOneLineError(r: Outcome, code: number, pattern: RegExp): void {
@@ -89,12 +90,30 @@ describe('errors: one line on stderr, non-zero exit', () => {
 });
 
 describe('careless values: a usage error naming the option and the value', () => {
-  const options = ['--rig', '--experiment', '--methods', '--samples', '--seed', '--gradient-tolerance', '--error-tolerance', '--time-budget', '--engine',
-    '--workers', '--json', '--csv', '--markdown', '--compare', '--warm-up'];
-  it.each(options.flatMap((flag) => ['', '  '].map((value) => [flag, value])))('%s %j: empty value', async (flag, value) => {
-    const rig = flag === '--rig' ? [] : ['--rig', knight];
-    expectOneLineError(await benchHere(...rig, flag, value), 2, new RegExp(`^bench: ${flag}: empty value$`));
-  });
+  const options = [
+    '--rig',
+    '--experiment',
+    '--methods',
+    '--samples',
+    '--seed',
+    '--gradient-tolerance',
+    '--error-tolerance',
+    '--time-budget',
+    '--engine',
+    '--workers',
+    '--json',
+    '--csv',
+    '--markdown',
+    '--compare',
+    '--warm-up',
+  ];
+  it.each(options.flatMap((flag) => ['', '  '].map((value) => [flag, value])))(
+    '%s %j: empty value',
+    async (flag, value) => {
+      const rig = flag === '--rig' ? [] : ['--rig', knight];
+      expectOneLineError(await benchHere(...rig, flag, value), 2, new RegExp(`^bench: ${flag}: empty value$`));
+    },
+  );
 
   it.each([
     [['--samples', ','], /--samples: empty list ","/],
@@ -121,16 +140,26 @@ describe('careless values: a usage error naming the option and the value', () =>
     [['--error-tolerance', 'Infinity'], /--error-tolerance: "Infinity" is not a positive number/],
     [['--error-tolerance', '0'], /--error-tolerance: "0" is not a positive number/],
     [['--warm-up', '-1'], /--warm-up: "-1" is not an integer in 0\.\.60000$/],
-    [['--experiment', 'random,Drag'], /--experiment: unknown experiment "Drag" \(known: random, incremental, drag, reach, gestures, tracik, track\)/],
+    [
+      ['--experiment', 'random,Drag'],
+      /--experiment: unknown experiment "Drag" \(known: random, incremental, drag, reach, gestures, tracik, track\)/,
+    ],
     [['--methods', `lm,${'y'.repeat(500)}`], /--methods: unknown method "y{57}\.\.\." \(known:/],
   ] as Array<[string[], RegExp]>)('%j', async (args, pattern) => {
     expectOneLineError(await benchHere('--rig', knight, ...args), 2, pattern);
   });
 
-  it.each(['0x10', '1e3', '1.0', '+5', '0b11', '5_000', '١٢'])('--seed, --samples, --restarts, --workers and --warm-up take only decimal digits, not %j', async (value) => {
-    for (const flag of ['--seed', '--samples', '--restarts', '--workers', '--warm-up'])
-      expectOneLineError(await benchHere('--rig', knight, flag, value), 2, new RegExp(`^bench: ${flag}: ${JSON.stringify(value).replace(/[.+]/g, '\\$&')} is not an integer in `));
-  });
+  it.each(['0x10', '1e3', '1.0', '+5', '0b11', '5_000', '١٢'])(
+    '--seed, --samples, --restarts, --workers and --warm-up take only decimal digits, not %j',
+    async (value) => {
+      for (const flag of ['--seed', '--samples', '--restarts', '--workers', '--warm-up'])
+        expectOneLineError(
+          await benchHere('--rig', knight, flag, value),
+          2,
+          new RegExp(`^bench: ${flag}: ${JSON.stringify(value).replace(/[.+]/g, '\\$&')} is not an integer in `),
+        );
+    },
+  );
 
   it('takes the old names of the renamed flags (--gtol, --ftol, --timeout), saying the new name once each', async () => {
     const old = await benchHere('--rig', knight, '--gtol', '-1', '--ftol=1e-6', '--timeout', '1');
@@ -143,30 +172,66 @@ describe('careless values: a usage error naming the option and the value', () =>
   });
 
   it('takes plain decimal integers, leading zeros included', () => {
-    const o = parseOptions(['--rig', knight, '--seed', '016', '--samples', '40,gd=07', '--restarts', '0', '--warm-up', '250'], false, methods)!;
+    const o = parseOptions(
+      ['--rig', knight, '--seed', '016', '--samples', '40,gd=07', '--restarts', '0', '--warm-up', '250'],
+      false,
+      methods,
+    )!;
     expect([o.seed, o.samples.lm, o.samples.gd, o.restarts, o.warmUpMs]).toEqual([16, 40, 7, 0, 250]);
   });
 
   it('merges a repeated --rig, --experiment or --methods into one list, the first replacing the default', () => {
-    const o = parseOptions(['--rig', 'lamp', '--rig', `${knight},hand`, '--experiment', 'drag', '--experiment', 'reach,drag', '--methods', 'lm', '--methods', 'gn'],
-      false, methods)!;
+    const o = parseOptions(
+      [
+        '--rig',
+        'lamp',
+        '--rig',
+        `${knight},hand`,
+        '--experiment',
+        'drag',
+        '--experiment',
+        'reach,drag',
+        '--methods',
+        'lm',
+        '--methods',
+        'gn',
+      ],
+      false,
+      methods,
+    )!;
     expect(o.rigs).toEqual(['lamp', knight, 'hand']);
     expect(o.experiments).toEqual(['drag', 'reach']);
     expect(o.methods).toEqual(['lm', 'gn']);
   });
 
   it.each([
-    ['--seed', '5', '6'], ['--samples', '10', '20'], ['--time-budget', '1', '2'], ['--workers', '1', '2'], ['--engine', 'wasm', 'native'],
-    ['--json', 'a.json', 'b.json'], ['--goals', 'pose', 'position'], ['--warm-up', '0', '10'],
+    ['--seed', '5', '6'],
+    ['--samples', '10', '20'],
+    ['--time-budget', '1', '2'],
+    ['--workers', '1', '2'],
+    ['--engine', 'wasm', 'native'],
+    ['--json', 'a.json', 'b.json'],
+    ['--goals', 'pose', 'position'],
+    ['--warm-up', '0', '10'],
   ])('refuses %s given twice instead of keeping the last', async (flag, first, second) => {
-    expectOneLineError(await benchHere('--rig', knight, flag, first, `${flag}=${second}`), 2,
-      new RegExp(`^bench: ${flag} given twice \\("${second.replace('.', '\\.')}" the second time\\); give it once$`));
+    expectOneLineError(
+      await benchHere('--rig', knight, flag, first, `${flag}=${second}`),
+      2,
+      new RegExp(`^bench: ${flag} given twice \\("${second.replace('.', '\\.')}" the second time\\); give it once$`),
+    );
   });
 
   it('refuses a rig given twice, by any name', async () => {
-    expectOneLineError(await benchHere('--rig', `${knight},lamp,${knight}`), 2, /^bench: --rig: ".*knight\.json" given twice$/);
-    expectOneLineError(await benchHere('--rig', 'lamp,web/public/models/lamp.glb'), 2,
-      /^bench: --rig: "lamp" and "web\/public\/models\/lamp\.glb" are the same file$/);
+    expectOneLineError(
+      await benchHere('--rig', `${knight},lamp,${knight}`),
+      2,
+      /^bench: --rig: ".*knight\.json" given twice$/,
+    );
+    expectOneLineError(
+      await benchHere('--rig', 'lamp,web/public/models/lamp.glb'),
+      2,
+      /^bench: --rig: "lamp" and "web\/public\/models\/lamp\.glb" are the same file$/,
+    );
   });
 
   it('refuses samples whose target sets would pass 512 MiB for the rig, before making them', async () => {
@@ -211,15 +276,23 @@ describe('output files: checked before the run', () => {
     [['--json', knight], /--json .*knight\.json: is an input of this run$/],
     // Root passes every permission check, yet nothing can be created in /proc: only opening tells.
     [['--json', '/proc/x.json'], /^bench: --json \/proc\/x\.json: cannot be written: ENOENT/],
-    [['--csv', join(dir, 'x.csv'), '--markdown', '/sys/x.md'], /^bench: --markdown \/sys\/x\.md: cannot be written: EACCES/],
+    [
+      ['--csv', join(dir, 'x.csv'), '--markdown', '/sys/x.md'],
+      /^bench: --markdown \/sys\/x\.md: cannot be written: EACCES/,
+    ],
   ] as Array<[string[], RegExp]>)('%j', async (args, pattern) => {
     expectOneLineError(await benchHere('--rig', knight, ...args), 2, pattern);
   });
 
   it('leaves no trace of the check: a new file is removed, an existing one keeps its bytes', async () => {
-    const fresh = join(dir, 'fresh.csv'), kept = join(dir, 'kept.md');
+    const fresh = join(dir, 'fresh.csv'),
+      kept = join(dir, 'kept.md');
     writeFileSync(kept, 'old results\n');
-    expectOneLineError(await benchHere('--rig', knight, '--csv', fresh, '--markdown', kept, '--json', '/proc/x.json'), 2, /--json \/proc\/x\.json/);
+    expectOneLineError(
+      await benchHere('--rig', knight, '--csv', fresh, '--markdown', kept, '--json', '/proc/x.json'),
+      2,
+      /--json \/proc\/x\.json/,
+    );
     expect(existsSync(fresh)).toBe(false);
     expect(readFileSync(kept, 'utf8')).toBe('old results\n');
   });
@@ -227,30 +300,61 @@ describe('output files: checked before the run', () => {
   it.skipIf(process.getuid?.() === 0)('refuses a folder without write permission', async () => {
     const locked = join(dir, 'locked');
     mkdirSync(locked, { mode: 0o555 });
-    expectOneLineError(await benchHere('--rig', knight, '--json', join(locked, 'x.json')), 2, /--json .*locked\/x\.json: folder .*locked is not writable$/);
+    expectOneLineError(
+      await benchHere('--rig', knight, '--json', join(locked, 'x.json')),
+      2,
+      /--json .*locked\/x\.json: folder .*locked is not writable$/,
+    );
   });
 
   it.skipIf(!existsSync(fifo))('refuses a FIFO (writing it would wait for a reader)', async () => {
-    expectOneLineError(await benchHere('--rig', knight, '--json', fifo), 2, /--json .*fifo\.json: is not a regular file$/);
+    expectOneLineError(
+      await benchHere('--rig', knight, '--json', fifo),
+      2,
+      /--json .*fifo\.json: is not a regular file$/,
+    );
   });
 
   it('lets outputs share a character device such as /dev/null', () => {
-    expect(() => checkOutputs([['--json', '/dev/null'], ['--csv', '/dev/null']], [knight])).not.toThrow();
+    expect(() =>
+      checkOutputs(
+        [
+          ['--json', '/dev/null'],
+          ['--csv', '/dev/null'],
+        ],
+        [knight],
+      ),
+    ).not.toThrow();
   });
 });
 
 describe('rigs past the limits', () => {
   it('a rig of 10,000 end effectors: one line naming the file', () => {
     // A root with 10,000 leaf bones, each an end effector.
-    const leaves = Array.from({ length: 10_000 }, (_, i) => ({ parent: 0, at: [1, 0, 0.001 * i] as [number, number, number], length: 1 }));
+    const leaves = Array.from({ length: 10_000 }, (_, i) => ({
+      parent: 0,
+      at: [1, 0, 0.001 * i] as [number, number, number],
+      length: 1,
+    }));
     const file = join(dir, 'leaves.json');
-    writeFileSync(file, writeA7Rig(sketchRig([{ parent: -1, at: [0, 0, 0], length: 1 }, ...leaves], leaves.map((_, i) => i + 1))));
+    writeFileSync(
+      file,
+      writeA7Rig(
+        sketchRig(
+          [{ parent: -1, at: [0, 0, 0], length: 1 }, ...leaves],
+          leaves.map((_, i) => i + 1),
+        ),
+      ),
+    );
     expectOneLineError(bench('--rig', file, '--samples', '2'), 1, /^bench: .*leaves\.json: .*10000 end effectors/);
   });
 
-  it('--no-humanoid-limits benches a recognised humanoid with the file\'s own limits', async () => {
+  it("--no-humanoid-limits benches a recognised humanoid with the file's own limits", async () => {
     const on = await loadBenchRig('character');
-    const off = await loadBenchRig('character', parseOptions(['--rig', 'character', '--no-humanoid-limits'], false, methods)!.humanoidLimits);
+    const off = await loadBenchRig(
+      'character',
+      parseOptions(['--rig', 'character', '--no-humanoid-limits'], false, methods)!.humanoidLimits,
+    );
     expect(parseOptions(['--rig', 'character'], false, methods)!.humanoidLimits).toBe(true);
     const knee = on.spec.names.indexOf('mixamorig:LeftLeg');
     expect(Array.from(on.spec.upper.subarray(3 * knee, 3 * knee + 3)).map(Math.round)).toEqual([3, 150, 3]);
@@ -260,19 +364,31 @@ describe('rigs past the limits', () => {
   it('the native tool knows the same methods as the module, and one that lacks a method is refused', () => {
     expect(() => checkNativeTool(methods)).not.toThrow();
     expect(() => checkNativeTool(['lm', 'simplex'])).toThrow(
-      new RegExp(`^native engine: .*ik_bench_native has no method "simplex" \\(it knows: ${methods.join(', ')}(, kdl, kdl_nr_jl)?\\); rebuild it`),
+      new RegExp(
+        `^native engine: .*ik_bench_native has no method "simplex" \\(it knows: ${methods.join(', ')}(, kdl, kdl_nr_jl)?\\); rebuild it`,
+      ),
     );
   });
 
   it('any error of the core while preparing a rig becomes one line naming the rig', async () => {
     const failing = (thrown: unknown): IkCoreModule =>
-      new Proxy({}, { get: () => { throw thrown; } }) as IkCoreModule;
+      new Proxy(
+        {},
+        {
+          get: () => {
+            throw thrown;
+          },
+        },
+      ) as IkCoreModule;
     const opts = parseOptions(['--rig', knight], false, methods)!;
     await expect(prepareRigs(opts, failing(new Error('too large\n  details')))).rejects.toMatchObject({
-      name: 'BenchError', exitCode: 1, message: `${knight}: too large`,
+      name: 'BenchError',
+      exitCode: 1,
+      message: `${knight}: too large`,
     });
     await expect(prepareRigs(opts, failing(7))).rejects.toMatchObject({
-      name: 'BenchError', message: `${knight}: an exception without a message ([object Number]; out of memory?)`,
+      name: 'BenchError',
+      message: `${knight}: an exception without a message ([object Number]; out of memory?)`,
     });
   });
 });
@@ -282,9 +398,21 @@ interface JsonRow {
 }
 
 const schema: Record<string, string> = {
-  rig: 'string', experiment: 'string', method: 'string', engine: 'string', samples: 'number',
-  t_avg_s: 'number', t_median_s: 'number', t_p95_s: 'number', t_max_s: 'number',
-  iter_avg: 'number', E_avg: 'number', E_iqm: 'number', E_max: 'number', success_rate: 'number', unreachable: 'number',
+  rig: 'string',
+  experiment: 'string',
+  method: 'string',
+  engine: 'string',
+  samples: 'number',
+  t_avg_s: 'number',
+  t_median_s: 'number',
+  t_p95_s: 'number',
+  t_max_s: 'number',
+  iter_avg: 'number',
+  E_avg: 'number',
+  E_iqm: 'number',
+  E_max: 'number',
+  success_rate: 'number',
+  unreachable: 'number',
 };
 
 /** The rows of a run in this process without warm-up, from its --json file. */
@@ -303,8 +431,26 @@ describe('a small run', () => {
     const csv = join(dir, 'out.csv');
     const md = join(dir, 'out.md');
     const file = join(dir, 'smoke.json');
-    const r = bench('--rig', knight, '--samples', '5', '--methods', 'three-ccd,closed-chain-ik', '--time-budget', '0.05', '--workers', '2',
-      '--warm-up', '20', '--json', file, '--csv', csv, '--markdown', md);
+    const r = bench(
+      '--rig',
+      knight,
+      '--samples',
+      '5',
+      '--methods',
+      'three-ccd,closed-chain-ik',
+      '--time-budget',
+      '0.05',
+      '--workers',
+      '2',
+      '--warm-up',
+      '20',
+      '--json',
+      file,
+      '--csv',
+      csv,
+      '--markdown',
+      md,
+    );
     expect(r.stderr).toBe('');
     expect(r.code).toBe(0);
     expect(r.stdout).toMatch(/knight, random targets/);
@@ -320,7 +466,10 @@ describe('a small run', () => {
       expect(row.t_max_s as number).toBeLessThan(0.5);
     }
     expect(rows.map((row) => `${row.experiment} ${row.method} ${row.engine}`)).toEqual([
-      'random three-ccd js', 'random closed-chain-ik js', 'incremental three-ccd js', 'incremental closed-chain-ik js',
+      'random three-ccd js',
+      'random closed-chain-ik js',
+      'incremental three-ccd js',
+      'incremental closed-chain-ik js',
     ]);
     expect(readFileSync(csv, 'utf8').split('\n')[0]).toMatch(/^rig,experiment,method,engine,samples,t_avg_s/);
     expect(readFileSync(md, 'utf8')).toMatch(/### knight, random targets\n\n\| method \| engine \|/);
@@ -329,7 +478,18 @@ describe('a small run', () => {
   it('the same seed gives the same solves across engines and worker counts', async () => {
     // The hand: the knight's first reach path is mostly out of reach, which only makes the run slower.
     const hand = rigsLike('chimpanzee-hand')[0].path;
-    const args = ['--rig', hand, '--samples', '12', '--methods', 'gn,lm', '--experiment', 'incremental,drag,reach', '--seed', '5'];
+    const args = [
+      '--rig',
+      hand,
+      '--samples',
+      '12',
+      '--methods',
+      'gn,lm',
+      '--experiment',
+      'incremental,drag,reach',
+      '--seed',
+      '5',
+    ];
     const one = await runJson([...args, '--workers', '1', '--engine', 'wasm,native']);
     const three = await runJson([...args, '--workers', '3', '--engine', 'wasm,native']);
     const key = (row: JsonRow): string => `${row.experiment} ${row.method} ${row.engine}`;
@@ -342,7 +502,9 @@ describe('a small run', () => {
     // The same core natively: the same iterations and E to rounding on independent targets (drag
     // paths chain each step's result into the next start, so rounding differences accumulate there).
     for (const w of one.filter((row) => row.engine === 'wasm' && row.experiment === 'incremental')) {
-      const n = one.find((row) => row.engine === 'native' && row.method === w.method && row.experiment === w.experiment)!;
+      const n = one.find(
+        (row) => row.engine === 'native' && row.method === w.method && row.experiment === w.experiment,
+      )!;
       expect(n.iter_avg).toBe(w.iter_avg);
       expect(Math.abs((n.E_avg as number) - (w.E_avg as number))).toBeLessThanOrEqual(1e-9 * (w.E_avg as number));
     }
@@ -353,17 +515,34 @@ describe('the reach experiment', () => {
   it('runs on a project rig, with the drag columns', async () => {
     const file = join(dir, 'reach.json');
     const csv = join(dir, 'reach.csv');
-    const r = await benchHere('--rig', 'lamp', '--experiment', 'reach', '--methods', 'lm', '--samples', '40', '--warm-up', '0', '--json', file, '--csv', csv);
+    const r = await benchHere(
+      '--rig',
+      'lamp',
+      '--experiment',
+      'reach',
+      '--methods',
+      'lm',
+      '--samples',
+      '40',
+      '--warm-up',
+      '0',
+      '--json',
+      file,
+      '--csv',
+      csv,
+    );
     expect(r.stderr).toBe('');
     expect(r.code).toBe(0);
     expect(r.stdout).toMatch(/lamp, reach targets/);
-    expect(r.stdout).toMatch(/unreachable .* wobble_unreach max  jumps  flips  jump_max_deg/);
+    expect(r.stdout).toMatch(/unreachable .* wobble_unreach max {2}jumps {2}flips {2}jump_max_deg/);
     const [row] = (JSON.parse(readFileSync(file, 'utf8')) as { rows: JsonRow[] }).rows;
     for (const [key, type] of Object.entries(schema)) expect(typeof row[key], key).toBe(type);
     expect(row).toMatchObject({ rig: 'lamp', experiment: 'reach', method: 'lm', samples: 40 });
     expect(row.jump_max_deg as number).toBeGreaterThan(0);
     expect(row.jumps).toBe(0); // 1% steps of a lamp's arm: no joint moves 5% of the rig in a step
-    expect(readFileSync(csv, 'utf8').split('\n')[0]).toMatch(/,success_rate,unreachable,.*,wobble_unreachable_max,jump_max_deg,jumps,flips,stop_reasons$/);
+    expect(readFileSync(csv, 'utf8').split('\n')[0]).toMatch(
+      /,success_rate,unreachable,.*,wobble_unreachable_max,jump_max_deg,jumps,flips,stop_reasons$/,
+    );
   });
 
   it('counts steps out of reach as unreachable and leaves them out of success, on both engines', async () => {
@@ -373,9 +552,23 @@ describe('the reach experiment', () => {
     // tip tolerance) from t = 3 on.
     const limb = join(dir, 'limb.json');
     writeFileSync(limb, writeA7Rig(straightLimb()));
-    const outOfReach = Array.from({ length: 40 }, (_, i) => Math.hypot(2, 0.02 * (i + 1)) - 2 >= REACH_MARGIN * 0.001).filter(Boolean).length;
+    const outOfReach = Array.from(
+      { length: 40 },
+      (_, i) => Math.hypot(2, 0.02 * (i + 1)) - 2 >= REACH_MARGIN * 0.001,
+    ).filter(Boolean).length;
     expect(outOfReach).toBe(38);
-    const rows = await runJson(['--rig', limb, '--experiment', 'reach', '--methods', 'lm', '--engine', 'wasm,native', '--time-budget', '0.2']);
+    const rows = await runJson([
+      '--rig',
+      limb,
+      '--experiment',
+      'reach',
+      '--methods',
+      'lm',
+      '--engine',
+      'wasm,native',
+      '--time-budget',
+      '0.2',
+    ]);
     expect(rows.map((row) => row.engine)).toEqual(['wasm', 'native']);
     for (const row of rows) {
       expect(row).toMatchObject({ experiment: 'reach', samples: 120, unreachable: 2 * outOfReach });

@@ -15,10 +15,15 @@ beforeAll(async () => {
 
 /** The motion (16 row-major numbers per bone) that turns bone `bone` and everything below it by `degrees` about its own swing axis. */
 function swung(bone: number, degrees: number): Float64Array {
-  const spec = rig.spec, n = spec.parents.length, motion = new Float64Array(16 * n);
+  const spec = rig.spec,
+    n = spec.parents.length,
+    motion = new Float64Array(16 * n);
   for (let b = 0; b < n; b++) motion.set([1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1], 16 * b);
-  const rest = spec.rest.subarray(16 * bone, 16 * bone + 16), inverse = invertAffine(rest)!;
-  const a = (degrees * Math.PI) / 180, c = Math.cos(a), s = Math.sin(a);
+  const rest = spec.rest.subarray(16 * bone, 16 * bone + 16),
+    inverse = invertAffine(rest)!;
+  const a = (degrees * Math.PI) / 180,
+    c = Math.cos(a),
+    s = Math.sin(a);
   const turn = multiply(multiply(rest, [c, -s, 0, 0, s, c, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1]), inverse); // Rz in the bone's frame
   const below = (b: number): boolean => b === bone || (spec.parents[b] >= 0 && below(spec.parents[b]));
   for (let b = 0; b < n; b++) if (below(b)) motion.set(turn, 16 * b);

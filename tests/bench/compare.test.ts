@@ -11,13 +11,42 @@ import type { Row } from '../../bench-node/metrics.js';
 import { needsA7, paperDir } from '../helpers/a7.js';
 
 const ours = (over: Partial<Row>): Row => ({
-  rig: 'knight', experiment: 'random', method: 'gn', engine: 'wasm', goals: 'position', samples: 300,
-  t_avg_s: 0.01, t_median_s: 0.01, t_p95_s: 0.02, t_p99_s: 0.025, t_max_s: 0.03, iter_avg: 16, E_avg: 0.06, E_iqm: 0.04, E_max: 0.4,
-  success_rate: 0.3, unreachable: 0, stop_reasons: { converged_E: 90 }, restarts: 0,
-  wobble_during_avg: null, wobble_during_max: null, wobble_after_avg: null, wobble_after_max: null, jump_max_deg: null,
-  wobble_unreachable_avg: null, wobble_unreachable_max: null, jumps: null, flips: null,
-  rot_err_avg_deg: null, rot_err_max_deg: null, twist_rate: null,
-  t_success_median_s: 0.008, t_success_p95_s: 0.015, success_within_1ms: 0, success_within_10ms: 0.2, success_within_100ms: 0.3,
+  rig: 'knight',
+  experiment: 'random',
+  method: 'gn',
+  engine: 'wasm',
+  goals: 'position',
+  samples: 300,
+  t_avg_s: 0.01,
+  t_median_s: 0.01,
+  t_p95_s: 0.02,
+  t_p99_s: 0.025,
+  t_max_s: 0.03,
+  iter_avg: 16,
+  E_avg: 0.06,
+  E_iqm: 0.04,
+  E_max: 0.4,
+  success_rate: 0.3,
+  unreachable: 0,
+  stop_reasons: { converged_E: 90 },
+  restarts: 0,
+  wobble_during_avg: null,
+  wobble_during_max: null,
+  wobble_after_avg: null,
+  wobble_after_max: null,
+  jump_max_deg: null,
+  wobble_unreachable_avg: null,
+  wobble_unreachable_max: null,
+  jumps: null,
+  flips: null,
+  rot_err_avg_deg: null,
+  rot_err_max_deg: null,
+  twist_rate: null,
+  t_success_median_s: 0.008,
+  t_success_p95_s: 0.015,
+  success_within_1ms: 0,
+  success_within_10ms: 0.2,
+  success_within_100ms: 0.3,
   ...over,
 });
 
@@ -47,7 +76,9 @@ describe('reference CSVs', () => {
 
   it('rejects files without the needed columns or with bad numbers, in one line', () => {
     expect(() => parseReferenceCsv('rig,method,t_avg_s\nknight,GN,1\n', 'x.csv')).toThrow(/no "experiment" column/);
-    expect(() => parseReferenceCsv('rig,experiment,method,t_avg_s\nknight,random,GN,fast\n', 'x.csv')).toThrow(/line 2: t_avg_s "fast"/);
+    expect(() => parseReferenceCsv('rig,experiment,method,t_avg_s\nknight,random,GN,fast\n', 'x.csv')).toThrow(
+      /line 2: t_avg_s "fast"/,
+    );
     const dir = mkdtempSync(join(tmpdir(), 'bench-compare-test-'));
     try {
       expect(() => readReferenceCsv(join(dir, 'missing.csv'))).toThrow(/missing\.csv: no such file/);

@@ -33,7 +33,9 @@ describe('settings', () => {
     const opts = parseOptions(['--rig', 'lamp', ...args], false, IkSolver.methods(ik))!;
     const [lamp] = await prepareRigs(opts, ik);
     expect(lamp.size).toBeGreaterThan(0);
-    return Object.fromEntries((['random', 'incremental', 'drag', 'reach'] as const).map((e) => [e, runSettings(lamp, e, 'lm', opts)]));
+    return Object.fromEntries(
+      (['random', 'incremental', 'drag', 'reach'] as const).map((e) => [e, runSettings(lamp, e, 'lm', opts)]),
+    );
   };
 
   it('drag and reach: the drag tolerances and no restarts; random and incremental: the report tolerances', async () => {
@@ -66,7 +68,8 @@ describe('settings', () => {
 
 /** Runs the samples [begin, end) of `set` through `runner`, chained as the workers chain them. */
 function runAll(runner: Runner, set: TargetSet, [begin, end] = [0, set.count]): ReturnType<Runner['solve']>[] {
-  const m = set.numAngles, r = set.numResiduals;
+  const m = set.numAngles,
+    r = set.numResiduals;
   return Array.from({ length: end - begin }, (_, i) => {
     const k = begin + i;
     return runner.solve({
@@ -88,7 +91,16 @@ describe.each(rigsLike('knight'))('the drag runners on $label', (knight) => {
     reach = generateTargets(spec, 'reach', 10000, 1, (a) => rig.tips(a));
     const size = rigSize(rig.boneTips(new Float64Array(rig.numAngles)));
     const { tipTolerance, gradientTolerance } = dragTolerances(size);
-    drag = { method: 'lm', gradientTolerance: gradientTolerance, errorTolerance: 2e-4, tipTolerance, timeBudgetSeconds: 1, paper: false, rigSize: size, restarts: 0 };
+    drag = {
+      method: 'lm',
+      gradientTolerance: gradientTolerance,
+      errorTolerance: 2e-4,
+      tipTolerance,
+      timeBudgetSeconds: 1,
+      paper: false,
+      rigSize: size,
+      restarts: 0,
+    };
   });
   afterAll(() => rig.dispose());
 
@@ -101,10 +113,15 @@ describe.each(rigsLike('knight'))('the drag runners on $label', (knight) => {
       runner.dispose();
       // The same solves made directly through the API, each on a new solver.
       let pose: Float64Array = path.starts.slice(0, path.numAngles);
-      let largest = 0, chainRestarts = 0;
+      let largest = 0,
+        chainRestarts = 0;
       results.forEach((result, k) => {
         const target = path.targets.subarray(k * path.numResiduals, (k + 1) * path.numResiduals);
-        const solver = new IkSolver(rig, 'lm', { gradientTolerance: drag.gradientTolerance, tipTolerance: drag.tipTolerance, restarts: 0 });
+        const solver = new IkSolver(rig, 'lm', {
+          gradientTolerance: drag.gradientTolerance,
+          tipTolerance: drag.tipTolerance,
+          restarts: 0,
+        });
         const r = solver.solve(pose, target);
         solver.dispose();
         const jump = largestChange(pose, r.angles, spec.lower, spec.upper);
@@ -154,7 +171,8 @@ describe.each(rigsLike('knight'))('the drag runners on $label', (knight) => {
       const native = await runNative(spec, drag, set, 1, () => {});
       const precision = 1e-3 * drag.tipTolerance;
       const alike = native.flatMap((n, k) =>
-        n.iterations === wasm[k].iterations && Math.abs(n.tipDistance - wasm[k].tipDistance) <= precision ? [k] : []);
+        n.iterations === wasm[k].iterations && Math.abs(n.tipDistance - wasm[k].tipDistance) <= precision ? [k] : [],
+      );
       expect(alike.length).toBeGreaterThanOrEqual(DRAG_PATH_STEPS);
       for (const k of alike) {
         expect(Math.abs(native[k].wobbleDuring - wasm[k].wobbleDuring), `step ${k}`).toBeLessThanOrEqual(precision);
@@ -166,10 +184,12 @@ describe.each(rigsLike('knight'))('the drag runners on $label', (knight) => {
   describe.each(['three-ccd', 'closed-chain-ik'])('%s on reach paths', (method) => {
     it('stops on the tip test and reports the tip distance and jump of its pose', () => {
       const settings = { ...drag, method, timeBudgetSeconds: 0.05 };
-      const runner = method === 'three-ccd' ? new ThreeCcdRunner(spec, settings) : new ClosedChainIkRunner(spec, settings);
+      const runner =
+        method === 'three-ccd' ? new ThreeCcdRunner(spec, settings) : new ClosedChainIkRunner(spec, settings);
       // The second draggable effector's paths, up to the first with a solve on target (CCD misses
       // whole paths; the first effector's are mostly out of the peers' reach on the project's knight).
-      let onTarget = 0, largestJump = 0;
+      let onTarget = 0,
+        largestJump = 0;
       for (const path of independentRanges(reach).slice(3, 6)) {
         for (const result of runAll(runner, reach, path)) {
           // E bounds the largest tip distance: max^2 <= 2E <= #effectors * max^2.

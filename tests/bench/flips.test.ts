@@ -78,7 +78,10 @@ describe('a flip on a hand-made limb', () => {
 
 describe.each([
   ['the project character', async () => loadRigFromPath('web/public/models/character.glb')],
-  ['a Mixamo character facing +X, hinges on local X', async () => loadRig(await mixamoCharacterGlb({ yawDeg: 90, hingeOnLocalX: true }), 'turned.glb')],
+  [
+    'a Mixamo character facing +X, hinges on local X',
+    async () => loadRig(await mixamoCharacterGlb({ yawDeg: 90, hingeOnLocalX: true }), 'turned.glb'),
+  ],
 ])('anatomical bends on %s', (_, load) => {
   let spec: RigSpec, humanoid: HumanoidMap, limbs: FlipLimb[], body: IkRig;
   beforeAll(async () => {
@@ -105,7 +108,11 @@ describe.each([
       for (const limb of limbs) {
         expect(bentAgainst(spec, limb, p)).toBe(false);
         // The flexion: the limb's angle whose limits reach farthest from 0 (0..150 on these rigs).
-        const k = [0, 1, 2].reduce((best, i) => (Math.abs(spec.upper[3 * limb.bone + i]) > Math.abs(spec.upper[3 * limb.bone + best]) ? i : best), 0);
+        const k = [0, 1, 2].reduce(
+          (best, i) =>
+            Math.abs(spec.upper[3 * limb.bone + i]) > Math.abs(spec.upper[3 * limb.bone + best]) ? i : best,
+          0,
+        );
         const flexion = angles[3 * limb.bone + k];
         if (flexion < 10) continue;
         bentLimbs++;

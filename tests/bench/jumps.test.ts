@@ -63,18 +63,40 @@ describe('a jump', () => {
 
   it('is counted per step in the row: jumps', () => {
     const m = measurer();
-    const steps: [number, number][] = [[0.06, 0.005], [0.04, 0.005], [0.06, 0.02], [0.08, 0.001]];
+    const steps: [number, number][] = [
+      [0.06, 0.005],
+      [0.04, 0.005],
+      [0.06, 0.02],
+      [0.08, 0.001],
+    ];
     const results: SolveResult[] = steps.map(([chord]) => ({
-      E: 0, tipDistance: 0, iterations: 1, seconds: 1e-5, stopReason: 'converged_E', wobbleDuring: NaN, wobbleAfter: NaN, jumpDeg: 0,
+      E: 0,
+      tipDistance: 0,
+      iterations: 1,
+      seconds: 1e-5,
+      stopReason: 'converged_E',
+      wobbleDuring: NaN,
+      wobbleAfter: NaN,
+      jumpDeg: 0,
       jointMove: m.measure(bent(0), bent(turnFor(chord))).jointMove,
     }));
     const targetMoves = steps.map(([, target]) => target);
-    expect(countJumps(results.map((r) => r.jointMove!), targetMoves, 1)).toBe(2);
+    expect(
+      countJumps(
+        results.map((r) => r.jointMove!),
+        targetMoves,
+        1,
+      ),
+    ).toBe(2);
     const test = { errorTolerance: 1, tipTolerance: 0.001 };
     const key = { rig: 'limb', method: 'lm', engine: 'wasm' };
     const reachable = new Uint8Array(4).fill(1);
-    expect(summarize({ ...key, experiment: 'reach' }, results, test, reachable, { targetMoves, size: 1 }).jumps).toBe(2);
-    expect(summarize({ ...key, experiment: 'random' }, results, test, reachable, { targetMoves, size: 1 }).jumps).toBeNull();
+    expect(summarize({ ...key, experiment: 'reach' }, results, test, reachable, { targetMoves, size: 1 }).jumps).toBe(
+      2,
+    );
+    expect(
+      summarize({ ...key, experiment: 'random' }, results, test, reachable, { targetMoves, size: 1 }).jumps,
+    ).toBeNull();
     expect(summarize({ ...key, experiment: 'drag' }, results, test, reachable).jumps).toBeNull(); // no rule: not measured
   });
 
@@ -112,10 +134,20 @@ describe.each(rigsLike('knight'))('the native engine on $label', (knight) => {
     try {
       const set = generateTargets(spec, 'reach', 12, 1, (a) => core.tips(a));
       const size = rigSize(core.boneTips(new Float64Array(core.numAngles)));
-      const settings = { method: 'lm', gradientTolerance: 1e-9, errorTolerance: 2e-4, tipTolerance: 0.001 * size, timeBudgetSeconds: 0.2, paper: false, rigSize: size, restarts: 0 };
+      const settings = {
+        method: 'lm',
+        gradientTolerance: 1e-9,
+        errorTolerance: 2e-4,
+        tipTolerance: 0.001 * size,
+        timeBudgetSeconds: 0.2,
+        paper: false,
+        rigSize: size,
+        restarts: 0,
+      };
       const results = await runNative(spec, settings, set, 1, () => {});
       const measurer = new StepMeasurer(spec, core, []);
-      let from: Float64Array = set.starts.slice(0, core.numAngles), largest = 0;
+      let from: Float64Array = set.starts.slice(0, core.numAngles),
+        largest = 0;
       for (const r of results) {
         expect(r.angles).toHaveLength(core.numAngles);
         expect(r.jointMove).toBeCloseTo(measurer.measure(from, r.angles!).jointMove, 9);

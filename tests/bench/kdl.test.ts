@@ -33,7 +33,9 @@ describe('kdl on the command line', () => {
     );
     const out = { stdout: '', stderr: '' };
     const code = await runCommand(['--rig', lamp, '--methods', 'lm,kdl', '--engine', 'wasm'], {
-      out: (t) => (out.stdout += t), err: (t) => (out.stderr += t), isTTY: false,
+      out: (t) => (out.stdout += t),
+      err: (t) => (out.stderr += t),
+      isTTY: false,
     });
     expect(code).toBe(2);
     expect(out.stdout).toBe('');
@@ -42,8 +44,12 @@ describe('kdl on the command line', () => {
 
   it('is not in the --methods default, and runs on native alone when both engines are asked for', () => {
     expect(parseOptions(['--rig', lamp], false, methods)!.methods).not.toContain('kdl');
-    expect(parseOptions(['--rig', lamp, '--methods', 'kdl', '--engine', 'native'], false, methods)!.methods).toEqual(['kdl']);
-    expect(parseOptions(['--rig', lamp, '--methods', 'kdl', '--engine', 'wasm,native'], false, methods)!.engines).toEqual(['wasm', 'native']);
+    expect(parseOptions(['--rig', lamp, '--methods', 'kdl', '--engine', 'native'], false, methods)!.methods).toEqual([
+      'kdl',
+    ]);
+    expect(
+      parseOptions(['--rig', lamp, '--methods', 'kdl', '--engine', 'wasm,native'], false, methods)!.engines,
+    ).toEqual(['wasm', 'native']);
   });
 });
 
@@ -57,13 +63,31 @@ describe('kdl on the native engine', () => {
     const file = join(dir, 'kdl.json');
     const out = { stdout: '', stderr: '' };
     const code = await runCommand(
-      ['--rig', lamp, '--methods', 'kdl', '--engine', 'wasm,native', '--samples', '5', '--workers', '1', '--warm-up', '0', '--json', file],
+      [
+        '--rig',
+        lamp,
+        '--methods',
+        'kdl',
+        '--engine',
+        'wasm,native',
+        '--samples',
+        '5',
+        '--workers',
+        '1',
+        '--warm-up',
+        '0',
+        '--json',
+        file,
+      ],
       { out: (t) => (out.stdout += t), err: (t) => (out.stderr += t), isTTY: false },
     );
     expect(out.stderr).toBe('');
     expect(code).toBe(0);
     const rows = (JSON.parse(readFileSync(file, 'utf8')) as { rows: Record<string, unknown>[] }).rows;
-    expect(rows.map((r) => `${r.experiment} ${r.method} ${r.engine}`)).toEqual(['random kdl native', 'incremental kdl native']);
+    expect(rows.map((r) => `${r.experiment} ${r.method} ${r.engine}`)).toEqual([
+      'random kdl native',
+      'incremental kdl native',
+    ]);
     for (const row of rows) {
       expect(row.samples).toBe(5);
       expect(row.success_rate).toBe(1);

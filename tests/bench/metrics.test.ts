@@ -44,7 +44,10 @@ describe('quantiles', () => {
     expect(quantile([0, 10], 0.95)).toBeCloseTo(9.5, 12);
     const hundred = Array.from({ length: 101 }, (_, i) => i); // 0..100
     expect(quantile(hundred, 0.95)).toBe(95);
-    expect(quantile([1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 18, 19, 20], 0.95)).toBeCloseTo(19.05, 12);
+    expect(quantile([1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 18, 19, 20], 0.95)).toBeCloseTo(
+      19.05,
+      12,
+    );
     expect(quantile([5], 0.95)).toBe(5);
     expect(quantile([], 0.5)).toBeNaN();
     expect(mean([1, 2, 3, 6])).toBe(3);
@@ -53,7 +56,14 @@ describe('quantiles', () => {
 
 describe('summarize', () => {
   const result = (E: number, seconds: number, stopReason: string, iterations = 3): SolveResult => ({
-    E, tipDistance: Math.sqrt(2 * E), seconds, stopReason, iterations, wobbleDuring: NaN, wobbleAfter: NaN, jumpDeg: NaN,
+    E,
+    tipDistance: Math.sqrt(2 * E),
+    seconds,
+    stopReason,
+    iterations,
+    wobbleDuring: NaN,
+    wobbleAfter: NaN,
+    jumpDeg: NaN,
   });
   const eTest = { errorTolerance: 2e-4, tipTolerance: 0 };
   const all = (n: number): Uint8Array => new Uint8Array(n).fill(1);
@@ -98,7 +108,12 @@ describe('summarize', () => {
       { ...result(1e-8, 0.001, 'converged_grad'), tipDistance: 0.001 }, // E tiny, a tip not within 0.001
       { ...result(0.5, 0.001, 'converged_E'), tipDistance: 1e-4 }, // E above errorTolerance, every tip within
     ];
-    const row = summarize({ rig: 'knight', experiment: 'reach', method: 'lm', engine: 'wasm' }, rows, { errorTolerance: 2e-4, tipTolerance: 0.001 }, all(3));
+    const row = summarize(
+      { rig: 'knight', experiment: 'reach', method: 'lm', engine: 'wasm' },
+      rows,
+      { errorTolerance: 2e-4, tipTolerance: 0.001 },
+      all(3),
+    );
     expect(row.success_rate).toBeCloseTo(2 / 3, 12);
   });
 
@@ -110,20 +125,38 @@ describe('summarize', () => {
       { ...result(0, 0.001, 'converged_grad'), tipDistance: 0.4 }, // unreachable, missed
     ];
     const test = { errorTolerance: 2e-4, tipTolerance: 0.01 };
-    const row = summarize({ rig: 'knight', experiment: 'reach', method: 'lm', engine: 'wasm' }, rows, test, Uint8Array.from([1, 0, 1, 0]));
+    const row = summarize(
+      { rig: 'knight', experiment: 'reach', method: 'lm', engine: 'wasm' },
+      rows,
+      test,
+      Uint8Array.from([1, 0, 1, 0]),
+    );
     expect(row.unreachable).toBe(2);
     expect(row.success_rate).toBe(0.5);
     expect(row.samples).toBe(4);
-    const none = summarize({ rig: 'knight', experiment: 'reach', method: 'lm', engine: 'wasm' }, rows, test, new Uint8Array(4));
+    const none = summarize(
+      { rig: 'knight', experiment: 'reach', method: 'lm', engine: 'wasm' },
+      rows,
+      test,
+      new Uint8Array(4),
+    );
     expect(none.unreachable).toBe(4);
     expect(none.success_rate).toBeNaN();
   });
 
   it('jump_max_deg: the largest step jump of drag and reach rows, finite values only', () => {
     const rows = [2.5, 40, NaN, 0].map((jumpDeg) => ({ ...result(0, 0.001, 'converged_E'), jumpDeg }));
-    expect(summarize({ rig: 'knight', experiment: 'reach', method: 'lm', engine: 'wasm' }, rows, eTest, all(4)).jump_max_deg).toBe(40);
-    expect(summarize({ rig: 'knight', experiment: 'drag', method: 'lm', engine: 'wasm' }, rows.slice(0, 1), eTest, all(1)).jump_max_deg).toBe(2.5);
-    expect(summarize({ rig: 'knight', experiment: 'incremental', method: 'lm', engine: 'wasm' }, rows, eTest, all(4)).jump_max_deg).toBeNull();
+    expect(
+      summarize({ rig: 'knight', experiment: 'reach', method: 'lm', engine: 'wasm' }, rows, eTest, all(4)).jump_max_deg,
+    ).toBe(40);
+    expect(
+      summarize({ rig: 'knight', experiment: 'drag', method: 'lm', engine: 'wasm' }, rows.slice(0, 1), eTest, all(1))
+        .jump_max_deg,
+    ).toBe(2.5);
+    expect(
+      summarize({ rig: 'knight', experiment: 'incremental', method: 'lm', engine: 'wasm' }, rows, eTest, all(4))
+        .jump_max_deg,
+    ).toBeNull();
   });
 });
 

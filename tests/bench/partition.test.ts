@@ -23,24 +23,28 @@ beforeAll(async () => {
   ik = await loadIkNode();
   const spec = loadTestRig(rigsLike('knight')[0]);
   rig = new IkRig(ik, spec);
-  for (const e of ['random', 'incremental', 'drag', 'reach'] as const) sets[e] = generateTargets(spec, e, 130, 11, (a) => rig.tips(a));
+  for (const e of ['random', 'incremental', 'drag', 'reach'] as const)
+    sets[e] = generateTargets(spec, e, 130, 11, (a) => rig.tips(a));
 });
 afterAll(() => rig.dispose());
 
 describe('batches', () => {
-  it.each(['random', 'incremental', 'drag', 'reach'])('%s: any batch count covers every sample once, in order, whole paths only', (e) => {
-    const set = sets[e];
-    for (let batches = 1; batches <= 40; batches++) {
-      const parts = batchesOf(set, batches);
-      expect(parts[0][0]).toBe(0);
-      expect(parts[parts.length - 1][1]).toBe(set.count);
-      for (let i = 1; i < parts.length; i++) expect(parts[i][0]).toBe(parts[i - 1][1]);
-      for (const [begin, end] of parts) {
-        expect(end).toBeGreaterThan(begin);
-        expect(set.chained[begin]).toBe(0); // a batch never starts inside a drag or reach path
+  it.each(['random', 'incremental', 'drag', 'reach'])(
+    '%s: any batch count covers every sample once, in order, whole paths only',
+    (e) => {
+      const set = sets[e];
+      for (let batches = 1; batches <= 40; batches++) {
+        const parts = batchesOf(set, batches);
+        expect(parts[0][0]).toBe(0);
+        expect(parts[parts.length - 1][1]).toBe(set.count);
+        for (let i = 1; i < parts.length; i++) expect(parts[i][0]).toBe(parts[i - 1][1]);
+        for (const [begin, end] of parts) {
+          expect(end).toBeGreaterThan(begin);
+          expect(set.chained[begin]).toBe(0); // a batch never starts inside a drag or reach path
+        }
       }
-    }
-  });
+    },
+  );
 });
 
 describe('native job file', () => {
@@ -58,8 +62,12 @@ describe('native job file', () => {
       const rec = body.subarray(k * stride, (k + 1) * stride);
       expect(rec[0]).toBe(k === 0 ? 0 : set.chained[begin + k]);
       expect(rec[1]).toBe(set.dragged[begin + k]);
-      expect(Array.from(rec.subarray(2, 2 + m))).toEqual(Array.from(set.starts.subarray((begin + k) * m, (begin + k + 1) * m)));
-      expect(Array.from(rec.subarray(2 + m))).toEqual(Array.from(set.targets.subarray((begin + k) * r, (begin + k + 1) * r)));
+      expect(Array.from(rec.subarray(2, 2 + m))).toEqual(
+        Array.from(set.starts.subarray((begin + k) * m, (begin + k + 1) * m)),
+      );
+      expect(Array.from(rec.subarray(2 + m))).toEqual(
+        Array.from(set.targets.subarray((begin + k) * r, (begin + k + 1) * r)),
+      );
     }
   });
 
@@ -67,10 +75,37 @@ describe('native job file', () => {
     const line = (fields: Record<string, unknown>): string =>
       JSON.stringify({ gradient_norm: 1, function_evaluations: 4, jacobian_evaluations: 2, ...fields });
     const text =
-      line({ E: 0.5, iterations: 3, seconds: 0.25, stop_reason: 'converged_E', wobble_during: null, wobble_after: null, tip_distance: 0.01, jump_deg: 2.5 }) + '\n' +
-      line({ E: 1e-5, iterations: 0, seconds: 1e-6, stop_reason: 'timeout', wobble_during: 0.1, wobble_after: 0.2, tip_distance: null, jump_deg: null }) + '\n';
+      line({
+        E: 0.5,
+        iterations: 3,
+        seconds: 0.25,
+        stop_reason: 'converged_E',
+        wobble_during: null,
+        wobble_after: null,
+        tip_distance: 0.01,
+        jump_deg: 2.5,
+      }) +
+      '\n' +
+      line({
+        E: 1e-5,
+        iterations: 0,
+        seconds: 1e-6,
+        stop_reason: 'timeout',
+        wobble_during: 0.1,
+        wobble_after: 0.2,
+        tip_distance: null,
+        jump_deg: null,
+      }) +
+      '\n';
     const results = decodeResults(text, 2, 'x.jsonl');
-    expect(results[0]).toMatchObject({ E: 0.5, iterations: 3, seconds: 0.25, stopReason: 'converged_E', tipDistance: 0.01, jumpDeg: 2.5 });
+    expect(results[0]).toMatchObject({
+      E: 0.5,
+      iterations: 3,
+      seconds: 0.25,
+      stopReason: 'converged_E',
+      tipDistance: 0.01,
+      jumpDeg: 2.5,
+    });
     expect(results[0].wobbleDuring).toBeNaN();
     expect(results[1]).toMatchObject({ E: 1e-5, stopReason: 'timeout', wobbleDuring: 0.1, wobbleAfter: 0.2 });
     expect(results[1].tipDistance).toBeNaN();

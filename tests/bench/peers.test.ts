@@ -30,7 +30,8 @@ describe('XZX angles from a rotation', () => {
       const q = xzxQuaternion(a[0], a[1], a[2]);
       xzxWithinLimits(q, [-1e10, -1e10, -1e10], [1e10, 1e10, 1e10], out);
       expect(1 - Math.abs(q.dot(xzxQuaternion(out[0], out[1], out[2])))).toBeLessThan(1e-12);
-      const lo = a.map((v) => v - 2), hi = a.map((v) => v + 2);
+      const lo = a.map((v) => v - 2),
+        hi = a.map((v) => v + 2);
       xzxWithinLimits(q, lo, hi, out);
       for (let k = 0; k < 3; k++) {
         expect(out[k]).toBeGreaterThanOrEqual(lo[k]);
@@ -66,7 +67,8 @@ describe('Euler XYZ box for CCD', () => {
   });
 
   it('bounds the first-order XYZ angles of every XZX rotation inside the limits', () => {
-    const lo = [-70, -30, -10], hi = [70, 100, 10];
+    const lo = [-70, -30, -10],
+      hi = [70, 100, 10];
     const box = eulerBox(lo, hi);
     expect(box.min.x).toBeCloseTo(-80 * deg, 12);
     expect(box.max.z).toBeCloseTo(100 * deg, 12);
@@ -78,37 +80,51 @@ describe('Euler XYZ box for CCD', () => {
 function settingsFor(testRig: TestRig, rig: IkRig, method: string): RunSettings {
   const size = rigSize(rig.boneTips(new Float64Array(rig.numAngles)));
   const { gradientTolerance, errorTolerance } = defaultTolerances(testRig.name, testRig.a7, size);
-  return { method, gradientTolerance, errorTolerance, tipTolerance: 0, timeBudgetSeconds: 1, paper: false, rigSize: size };
+  return {
+    method,
+    gradientTolerance,
+    errorTolerance,
+    tipTolerance: 0,
+    timeBudgetSeconds: 1,
+    paper: false,
+    rigSize: size,
+  };
 }
 
 describe.each(testRigs)('peers on $label', (testRig) => {
-  it.each(['three-ccd', 'closed-chain-ik'])('%s: a solve from the target pose stops at once; incremental targets converge', (method) => {
-    const spec = loadTestRig(testRig);
-    const rig = new IkRig(ik, spec);
-    rigs.push(rig);
-    const settings = settingsFor(testRig, rig, method);
-    const runner = method === 'three-ccd' ? new ThreeCcdRunner(spec, settings) : new ClosedChainIkRunner(spec, settings);
-    const set = generateTargets(spec, 'incremental', 20, 3, (a) => rig.tips(a));
-    const m = set.numAngles, r = set.numResiduals;
-    let converged = 0, improved = 0;
-    for (let k = 0; k < set.count; k++) {
-      const target = set.targets.subarray(k * r, (k + 1) * r);
-      // Started at the very angles the target was made from, the scene graph's tips are the target.
-      const there = runner.solve({ start: set.targetAngles!.slice(k * m, (k + 1) * m), target, dragged: -1 });
-      expect(there.iterations).toBe(0);
-      expect(there.E).toBeLessThan(1e-9 * settings.rigSize ** 2);
-      const result = runner.solve({ start: set.starts.slice(k * m, (k + 1) * m), target, dragged: -1 });
-      expect(result.seconds).toBeGreaterThan(0);
-      if (result.E < settings.errorTolerance) converged++;
-      const E0 = rig.objective(set.starts.subarray(k * m, (k + 1) * m), target);
-      if (result.E <= E0 * (1 + 1e-3) + 1e-9 * settings.rigSize ** 2) improved++; // float32 rounding (closed-chain-ik)
-    }
-    // Quality is the benchmark's business; here only that the adapters work: every solve ends no
-    // worse than it started (to rounding), and most converge (CCD with its Euler box fails often on beast).
-    expect(improved).toBe(set.count);
-    expect(converged).toBeGreaterThanOrEqual(testRig.name === 'beast' && method === 'three-ccd' ? 1 : 12);
-    runner.dispose();
-  });
+  it.each(['three-ccd', 'closed-chain-ik'])(
+    '%s: a solve from the target pose stops at once; incremental targets converge',
+    (method) => {
+      const spec = loadTestRig(testRig);
+      const rig = new IkRig(ik, spec);
+      rigs.push(rig);
+      const settings = settingsFor(testRig, rig, method);
+      const runner =
+        method === 'three-ccd' ? new ThreeCcdRunner(spec, settings) : new ClosedChainIkRunner(spec, settings);
+      const set = generateTargets(spec, 'incremental', 20, 3, (a) => rig.tips(a));
+      const m = set.numAngles,
+        r = set.numResiduals;
+      let converged = 0,
+        improved = 0;
+      for (let k = 0; k < set.count; k++) {
+        const target = set.targets.subarray(k * r, (k + 1) * r);
+        // Started at the very angles the target was made from, the scene graph's tips are the target.
+        const there = runner.solve({ start: set.targetAngles!.slice(k * m, (k + 1) * m), target, dragged: -1 });
+        expect(there.iterations).toBe(0);
+        expect(there.E).toBeLessThan(1e-9 * settings.rigSize ** 2);
+        const result = runner.solve({ start: set.starts.slice(k * m, (k + 1) * m), target, dragged: -1 });
+        expect(result.seconds).toBeGreaterThan(0);
+        if (result.E < settings.errorTolerance) converged++;
+        const E0 = rig.objective(set.starts.subarray(k * m, (k + 1) * m), target);
+        if (result.E <= E0 * (1 + 1e-3) + 1e-9 * settings.rigSize ** 2) improved++; // float32 rounding (closed-chain-ik)
+      }
+      // Quality is the benchmark's business; here only that the adapters work: every solve ends no
+      // worse than it started (to rounding), and most converge (CCD with its Euler box fails often on beast).
+      expect(improved).toBe(set.count);
+      expect(converged).toBeGreaterThanOrEqual(testRig.name === 'beast' && method === 'three-ccd' ? 1 : 12);
+      runner.dispose();
+    },
+  );
 });
 
 it('CCD keeps quaternions of joints unit length', () => {

@@ -50,7 +50,8 @@ const rows = (flat: Float64Array, width: number): number[][] =>
 const unsigned = (values: number[][]): number[][] => values.map((row) => row.map((x) => x + 0));
 
 /** |a - b| within `relative` of |b|. */
-const expectClose = (a: number, b: number, relative = 1e-14): void => expect(Math.abs(a - b)).toBeLessThanOrEqual(relative * Math.abs(b));
+const expectClose = (a: number, b: number, relative = 1e-14): void =>
+  expect(Math.abs(a - b)).toBeLessThanOrEqual(relative * Math.abs(b));
 
 describe.each(testRigs)('$label', (testRig) => {
   const native = JSON.parse(
@@ -77,6 +78,8 @@ describe.each(testRigs)('$label', (testRig) => {
     expect(unsigned(theirs.goals)).toEqual(unsigned(rows(set.targetAngles!, set.numAngles)));
     const ours = rows(set.targets, set.numResiduals);
     const scale = Math.max(1, native.size);
-    theirs.targets.forEach((row, k) => row.forEach((x, i) => expect(Math.abs(x - ours[k][i]), `sample ${k}`).toBeLessThan(1e-12 * scale)));
+    theirs.targets.forEach((row, k) =>
+      row.forEach((x, i) => expect(Math.abs(x - ours[k][i]), `sample ${k}`).toBeLessThan(1e-12 * scale)),
+    );
   });
 });

@@ -3,7 +3,14 @@
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 
 import { chainRootBone, draggableEffectors } from '../../bench-node/effectors.js';
-import { orthonormalFrame, REACH_PATH_STEPS, REACH_SHARE, reachPaths, restBase, type Vec3 } from '../../bench-node/reach.js';
+import {
+  orthonormalFrame,
+  REACH_PATH_STEPS,
+  REACH_SHARE,
+  reachPaths,
+  restBase,
+  type Vec3,
+} from '../../bench-node/reach.js';
 import { independentRanges, project } from '../../bench-node/target_set.js';
 import { generateTargets } from '../../bench-node/targets.js';
 import type { IkCoreModule } from '../../web/src/ik/module.js';
@@ -80,13 +87,22 @@ describe('orthonormal frame', () => {
     for (let i = 0; i < 200; i++) {
       const d: Vec3 = [rand() - 0.5, rand() - 0.5, i % 10 === 0 ? 0 : rand() - 0.5];
       const [u, v, w] = orthonormalFrame(d);
-      expect(maxAbsDiff(u, d.map((x) => x / norm(d)))).toBeLessThan(1e-15);
+      expect(
+        maxAbsDiff(
+          u,
+          d.map((x) => x / norm(d)),
+        ),
+      ).toBeLessThan(1e-15);
       for (const x of [u, v, w]) expect(norm(x)).toBeCloseTo(1, 14);
       expect(Math.abs(dot(u, v)) + Math.abs(dot(u, w)) + Math.abs(dot(v, w))).toBeLessThan(1e-14);
       const cross = [u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]];
       expect(maxAbsDiff(cross, w)).toBeLessThan(1e-15);
     }
-    expect(orthonormalFrame([-2, 0, 0])).toEqual([[-1, 0, 0], [0, 1, 0], [0, 0, -1]]);
+    expect(orthonormalFrame([-2, 0, 0])).toEqual([
+      [-1, 0, 0],
+      [0, 1, 0],
+      [0, 0, -1],
+    ]);
   });
 });
 
@@ -96,7 +112,8 @@ describe.each(testRigs)('reach on $label', (testRig) => {
     const rig = new IkRig(ik, spec);
     rigs.push(rig);
     const set = generateTargets(spec, 'reach', 100000, 1, (a) => rig.tips(a));
-    const m = set.numAngles, r = set.numResiduals;
+    const m = set.numAngles,
+      r = set.numResiduals;
     const rest = project(spec, new Float64Array(m));
     const restTips = referenceTips(spec, rest);
     const scale = Math.max(1, ...Array.from(restTips, Math.abs));
@@ -120,17 +137,27 @@ describe.each(testRigs)('reach on $label', (testRig) => {
         expect(Array.from(set.starts.subarray(k * m, (k + 1) * m))).toEqual(Array.from(rest));
         // Equal steps on a straight line.
         const t = k - begin + 1;
-        expect(maxAbsDiff(moved(k), last.map((x) => (x * t) / REACH_PATH_STEPS))).toBeLessThan(1e-9 * scale);
+        expect(
+          maxAbsDiff(
+            moved(k),
+            last.map((x) => (x * t) / REACH_PATH_STEPS),
+          ),
+        ).toBeLessThan(1e-9 * scale);
         // Every other target stays at its rest tip.
         const target = set.targets.subarray(k * r, (k + 1) * r);
         for (let e = 0; e < spec.effectors.length; e++)
-          if (e !== effector) expect(maxAbsDiff(target.subarray(3 * e, 3 * e + 3), restTips.subarray(3 * e, 3 * e + 3))).toBeLessThan(1e-9 * scale);
+          if (e !== effector)
+            expect(maxAbsDiff(target.subarray(3 * e, 3 * e + 3), restTips.subarray(3 * e, 3 * e + 3))).toBeLessThan(
+              1e-9 * scale,
+            );
       }
       if (path % 3 === 0) {
         // The first direction points at the chain root; the next two are perpendicular to it and to each other.
         const [towards, side, other] = [0, 1, 2].map((j) => moved(ranges[path + j][1] - 1));
         expect(dot(towards, toRoot) / (norm(towards) * norm(toRoot))).toBeCloseTo(1, 9);
-        expect(Math.abs(dot(towards, side)) + Math.abs(dot(towards, other)) + Math.abs(dot(side, other))).toBeLessThan(1e-9 * scale ** 2);
+        expect(Math.abs(dot(towards, side)) + Math.abs(dot(towards, other)) + Math.abs(dot(side, other))).toBeLessThan(
+          1e-9 * scale ** 2,
+        );
         expect(norm(side)).toBeCloseTo(norm(towards), 9);
         expect(norm(other)).toBeCloseTo(norm(towards), 9);
       }

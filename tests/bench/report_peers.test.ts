@@ -11,8 +11,16 @@ import { Verdicts } from '../../bench-node/report/verdicts.js';
 /** A row with only what section 4 reads. */
 function row(method: string, engine: string, restarts: number, success: number, toSuccess: number | null): Row {
   return {
-    rig: 'knight', experiment: 'random', method, engine, restarts, success_rate: success,
-    t_success_median_s: toSuccess, success_within_1ms: 0.5, success_within_10ms: 0.75, success_within_100ms: 1,
+    rig: 'knight',
+    experiment: 'random',
+    method,
+    engine,
+    restarts,
+    success_rate: success,
+    t_success_median_s: toSuccess,
+    success_within_1ms: 0.5,
+    success_within_10ms: 0.75,
+    success_within_100ms: 1,
   } as Row;
 }
 
@@ -22,14 +30,24 @@ function section(peers: Row[]): { text: string; verdicts: Verdicts } {
   return { text, verdicts };
 }
 
-const ours = [row('lm', 'wasm', 1000, 1, 50e-6), row('lm', 'wasm', 0, 0.56, 40e-6), row('lm', 'native', 1000, 1, 30e-6), row('lm', 'native', 0, 0.56, 25e-6)];
+const ours = [
+  row('lm', 'wasm', 1000, 1, 50e-6),
+  row('lm', 'wasm', 0, 0.56, 40e-6),
+  row('lm', 'native', 1000, 1, 30e-6),
+  row('lm', 'native', 0, 0.56, 25e-6),
+];
 
 describe('section 4: lm against the peers', () => {
   it('shows every peer with and without restarts, time to success included', () => {
-    const { text, verdicts } = section([...ours,
-      row('three-ccd', 'js', 1000, 0.55, 2e-3), row('three-ccd', 'js', 0, 0.2, 1e-3),
-      row('closed-chain-ik', 'js', 1000, 0.92, 23e-3), row('closed-chain-ik', 'js', 0, 0.3, 5e-3),
-      row('kdl', 'native', 1000, 0.9, 45e-3), row('kdl', 'native', 0, 0.3, 40e-3)]);
+    const { text, verdicts } = section([
+      ...ours,
+      row('three-ccd', 'js', 1000, 0.55, 2e-3),
+      row('three-ccd', 'js', 0, 0.2, 1e-3),
+      row('closed-chain-ik', 'js', 1000, 0.92, 23e-3),
+      row('closed-chain-ik', 'js', 0, 0.3, 5e-3),
+      row('kdl', 'native', 1000, 0.9, 45e-3),
+      row('kdl', 'native', 0, 0.3, 40e-3),
+    ]);
     expect(verdicts.missed).toEqual([]);
     const lines = text.split('\n').filter((l) => l.startsWith('| knight'));
     expect(lines).toHaveLength(3);
@@ -40,9 +58,13 @@ describe('section 4: lm against the peers', () => {
   });
 
   it('marks a peer that succeeds more often, or reaches its targets sooner, as a miss', () => {
-    const { verdicts } = section([...ours,
-      row('three-ccd', 'js', 1000, 1, 20e-6), row('three-ccd', 'js', 0, 1, 20e-6),
-      row('closed-chain-ik', 'js', 1000, 0.92, 23e-3), row('closed-chain-ik', 'js', 0, 0.3, 5e-3)]);
+    const { verdicts } = section([
+      ...ours,
+      row('three-ccd', 'js', 1000, 1, 20e-6),
+      row('three-ccd', 'js', 0, 1, 20e-6),
+      row('closed-chain-ik', 'js', 1000, 0.92, 23e-3),
+      row('closed-chain-ik', 'js', 0, 0.3, 5e-3),
+    ]);
     expect(verdicts.missed).toEqual([
       '4. knight random: lm does not beat three-ccd with restarts on both',
       '4. knight random: lm does not beat kdl with restarts on both', // no kdl row measured

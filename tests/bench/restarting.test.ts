@@ -6,19 +6,39 @@ import type { SolveResult } from '../../bench-node/metrics.js';
 import { RestartingRunner } from '../../bench-node/peers/restarting.js';
 import type { Runner, RunSettings, SolveInput } from '../../bench-node/runner.js';
 
-const settings: RunSettings = { method: 'fake', gradientTolerance: 1e-4, errorTolerance: 1e-4, tipTolerance: 0, timeBudgetSeconds: 1, paper: false, rigSize: 1 };
+const settings: RunSettings = {
+  method: 'fake',
+  gradientTolerance: 1e-4,
+  errorTolerance: 1e-4,
+  tipTolerance: 0,
+  timeBudgetSeconds: 1,
+  paper: false,
+  rigSize: 1,
+};
 
 /** A peer that reaches the target only from the start whose first angle is `good`, taking 5 iterations per run. */
 class FakePeer implements Runner {
   readonly seen: { start: number | null; budget: number | undefined }[] = [];
-  constructor(private readonly good: number, private readonly spendMs = 0) {}
+  constructor(
+    private readonly good: number,
+    private readonly spendMs = 0,
+  ) {}
   solve(input: SolveInput): SolveResult {
     const t0 = performance.now();
     while (performance.now() - t0 < this.spendMs);
     this.seen.push({ start: input.start ? input.start[0] : null, budget: input.budgetSeconds });
     const hit = input.start !== null && input.start[0] === this.good;
     const E = hit ? 1e-6 : 1 + (input.start ? input.start[0] : 0);
-    return { E, tipDistance: Math.sqrt(2 * E), iterations: 5, seconds: 0, stopReason: hit ? 'converged_E' : 'zero_step', wobbleDuring: NaN, wobbleAfter: NaN, jumpDeg: 0 };
+    return {
+      E,
+      tipDistance: Math.sqrt(2 * E),
+      iterations: 5,
+      seconds: 0,
+      stopReason: hit ? 'converged_E' : 'zero_step',
+      wobbleDuring: NaN,
+      wobbleAfter: NaN,
+      jumpDeg: 0,
+    };
   }
   dispose(): void {}
 }

@@ -37,7 +37,8 @@ function expectInsideLimits(spec: RigSpec, angles: Float64Array): void {
 }
 
 function expectReachable(spec: RigSpec, set: TargetSet): void {
-  const m = set.numAngles, r = set.numResiduals;
+  const m = set.numAngles,
+    r = set.numResiduals;
   expect(set.reachable.every((v) => v === 1)).toBe(true);
   for (let k = 0; k < set.count; k++) {
     const x = referenceTips(spec, row(set.targetAngles!, k, m));
@@ -62,7 +63,9 @@ describe.each(testRigs)('$label', (testRig) => {
     const m = set.numAngles;
     expectInsideLimits(spec, set.targetAngles!);
     expectReachable(spec, set);
-    expect(Array.from(row(set.starts, 0, m))).toEqual(Array.from(spec.lower, (lo, i) => Math.min(spec.upper[i], Math.max(lo, 0))));
+    expect(Array.from(row(set.starts, 0, m))).toEqual(
+      Array.from(spec.lower, (lo, i) => Math.min(spec.upper[i], Math.max(lo, 0))),
+    );
     let largest = 0;
     for (let k = 1; k < set.count; k++) {
       expect(Array.from(row(set.starts, k, m))).toEqual(Array.from(row(set.targetAngles!, k - 1, m)));
@@ -74,7 +77,8 @@ describe.each(testRigs)('$label', (testRig) => {
 
   it('drag: one effector moves along a path, every other target stays where it was', () => {
     const { spec, set } = setOf(testRig, 'drag', 2 * DRAG_PATH_STEPS + 5);
-    const m = set.numAngles, r = set.numResiduals;
+    const m = set.numAngles,
+      r = set.numResiduals;
     expectInsideLimits(spec, set.targetAngles!);
     expectReachable(spec, set);
     const ranges = independentRanges(set);
@@ -88,12 +92,14 @@ describe.each(testRigs)('$label', (testRig) => {
         expect(set.dragged[k]).toBe(dragged);
         expect(set.chained[k]).toBe(k > begin ? 1 : 0);
         // Only the dragged effector's exclusive angles change, by at most 5 degrees a step.
-        const a = row(set.targetAngles!, k, m), before = row(set.starts, k, m);
+        const a = row(set.targetAngles!, k, m),
+          before = row(set.starts, k, m);
         for (let i = 0; i < m; i++) if (!exclusive[dragged].includes(i)) expect(a[i]).toBe(before[i]);
         expect(maxAbsDiff(a, before)).toBeLessThanOrEqual(INCREMENTAL_STEP_DEG);
         const x = row(set.targets, k, r);
         for (let e = 0; e < spec.effectors.length; e++)
-          if (e !== dragged) expect(maxAbsDiff(x.subarray(3 * e, 3 * e + 3), base.subarray(3 * e, 3 * e + 3))).toBeLessThan(1e-9);
+          if (e !== dragged)
+            expect(maxAbsDiff(x.subarray(3 * e, 3 * e + 3), base.subarray(3 * e, 3 * e + 3))).toBeLessThan(1e-9);
       }
       // The dragged effector does move.
       const first = row(set.targets, begin, r).subarray(3 * dragged, 3 * dragged + 3);
@@ -112,26 +118,34 @@ describe('seeds', () => {
     expect(Array.from(c.targets)).not.toEqual(Array.from(a.targets));
   });
 
-  it.each(rigsLike('beast'))('a shorter run is a prefix of a longer one (a method with fewer samples gets the first ones) ($label)', (beast) => {
-    for (const experiment of ['random', 'incremental', 'drag', 'reach'] as const) {
-      const long = setOf(beast, experiment, 90).set;
-      const short = setOf(beast, experiment, 50).set;
-      const head = prefix(long, 50);
-      expect(Array.from(short.targets)).toEqual(Array.from(head.targets));
-      expect(Array.from(short.starts)).toEqual(Array.from(head.starts));
-      expect(Array.from(short.chained)).toEqual(Array.from(head.chained));
-    }
-  });
+  it.each(rigsLike('beast'))(
+    'a shorter run is a prefix of a longer one (a method with fewer samples gets the first ones) ($label)',
+    (beast) => {
+      for (const experiment of ['random', 'incremental', 'drag', 'reach'] as const) {
+        const long = setOf(beast, experiment, 90).set;
+        const short = setOf(beast, experiment, 50).set;
+        const head = prefix(long, 50);
+        expect(Array.from(short.targets)).toEqual(Array.from(head.targets));
+        expect(Array.from(short.starts)).toEqual(Array.from(head.starts));
+        expect(Array.from(short.chained)).toEqual(Array.from(head.chained));
+      }
+    },
+  );
 
-  it.each(rigsLike('knight'))('each experiment has its own stream: random targets do not depend on which experiments run ($label)', (knight) => {
-    // generateTargets takes no state but (spec, experiment, count, seed): generating another
-    // experiment in between changes nothing.
-    const first = setOf(knight, 'random', 10).set;
-    setOf(knight, 'incremental', 10);
-    const again = setOf(knight, 'random', 10).set;
-    expect(Array.from(again.targets)).toEqual(Array.from(first.targets));
-    expect(Array.from(setOf(knight, 'incremental', 10).set.targetAngles!)).not.toEqual(Array.from(first.targetAngles!));
-  });
+  it.each(rigsLike('knight'))(
+    'each experiment has its own stream: random targets do not depend on which experiments run ($label)',
+    (knight) => {
+      // generateTargets takes no state but (spec, experiment, count, seed): generating another
+      // experiment in between changes nothing.
+      const first = setOf(knight, 'random', 10).set;
+      setOf(knight, 'incremental', 10);
+      const again = setOf(knight, 'random', 10).set;
+      expect(Array.from(again.targets)).toEqual(Array.from(first.targets));
+      expect(Array.from(setOf(knight, 'incremental', 10).set.targetAngles!)).not.toEqual(
+        Array.from(first.targetAngles!),
+      );
+    },
+  );
 
   it('seed 1 still gives the sets of the published benchmarks, bit for bit', () => {
     // A Y of two limbs with limits; digests of the angles only (starts, target angles) and the
@@ -156,7 +170,9 @@ describe('seeds', () => {
         hash.update(new Uint8Array(a.buffer, a.byteOffset, a.byteLength));
       return hash.digest('hex').slice(0, 16);
     };
-    expect(Object.fromEntries((['random', 'incremental', 'drag', 'reach'] as const).map((e) => [e, digest(e)]))).toEqual({
+    expect(
+      Object.fromEntries((['random', 'incremental', 'drag', 'reach'] as const).map((e) => [e, digest(e)])),
+    ).toEqual({
       random: 'c5dbd27d98746dd5',
       incremental: '249a20d49fb849c7',
       drag: '6a58f98566cb9c20',

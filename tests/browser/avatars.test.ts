@@ -17,6 +17,7 @@ describe('ten avatars on one page', () => {
     const result = await page.evaluate(async () => {
       // The page's own modules, as vite serves them (an import() written here would be rewritten by
       // vitest's transform of this file, which the page does not have).
+      // eslint-disable-next-line @typescript-eslint/no-explicit-any -- the page's modules, untyped on this side
       const load = new Function('path', 'return import(path)') as (path: string) => Promise<any>;
       const { loadIk } = await load('/src/ik/module.ts');
       const { loadRig } = await load('/src/rig/load_rig.ts');
@@ -26,15 +27,32 @@ describe('ten avatars on one page', () => {
       const bytes = new Uint8Array(await (await fetch('/models/character.glb')).arrayBuffer());
       const rig = await loadRig(bytes, 'character.glb');
       const humanoid = rig.gltf.humanoid;
-      const roles = ['spine', 'chest', 'upperChest', 'neck', 'head', 'leftShoulder', 'leftUpperArm', 'leftLowerArm', 'leftHand', 'rightShoulder', 'rightUpperArm', 'rightLowerArm', 'rightHand'];
+      const roles = [
+        'spine',
+        'chest',
+        'upperChest',
+        'neck',
+        'head',
+        'leftShoulder',
+        'leftUpperArm',
+        'leftLowerArm',
+        'leftHand',
+        'rightShoulder',
+        'rightUpperArm',
+        'rightLowerArm',
+        'rightHand',
+      ];
       const moving: number[] = roles.map((r) => humanoid.bones[r]).filter((b: number | undefined) => b !== undefined);
-      const count = 10, frames = 240, warmUp = 60;
+      const count = 10,
+        frames = 240,
+        warmUp = 60;
       const avatars = Array.from({ length: count }, () => new AvatarSolver(ik, rig.spec, humanoid));
       const truth = new IkRig(ik, avatars[0].rig.spec);
       const a = new Float64Array(truth.numAngles);
       const delta = 1e-3 * avatars[0].height;
       const perFrame: number[] = [];
-      let onTarget = 0, samples = 0;
+      let onTarget = 0,
+        samples = 0;
       for (let f = 0; f < warmUp + frames; f++) {
         let spent = 0;
         avatars.forEach((avatar, k) => {
@@ -43,20 +61,38 @@ describe('ten avatars on one page', () => {
           a.fill(0);
           moving.forEach((b, i) => {
             for (let c = 0; c < 3; c++) {
-              const j = 3 * b + c, lo = truth.lower[j], hi = truth.upper[j];
-              const mid = Math.max(lo, Math.min(hi, 0)), span = Math.min(hi - mid, mid - lo, 60);
+              const j = 3 * b + c,
+                lo = truth.lower[j],
+                hi = truth.upper[j];
+              const mid = Math.max(lo, Math.min(hi, 0)),
+                span = Math.min(hi - mid, mid - lo, 60);
               a[j] = mid + 0.6 * span * Math.sin(2 * Math.PI * (0.15 + 0.05 * ((i + c) % 5)) * t + i + 2 * c);
             }
           });
-          const pose = truth.project(a), tips = truth.tips(pose), turns = truth.tipRotations(pose);
-          const at = (e: number) => ({ position: tips.subarray(3 * e, 3 * e + 3), orientation: turns.subarray(4 * e, 4 * e + 4) });
+          const pose = truth.project(a),
+            tips = truth.tips(pose),
+            turns = truth.tipRotations(pose);
+          const at = (e: number) => ({
+            position: tips.subarray(3 * e, 3 * e + 3),
+            orientation: turns.subarray(4 * e, 4 * e + 4),
+          });
           const t0 = performance.now();
           avatar.update({ head: at(0), leftHand: at(1), rightHand: at(2) });
           spent += performance.now() - t0;
           if (f >= warmUp) {
             const mine = avatar.tips();
             samples++;
-            if ([0, 1, 2].every((e) => Math.hypot(mine[3 * e] - tips[3 * e], mine[3 * e + 1] - tips[3 * e + 1], mine[3 * e + 2] - tips[3 * e + 2]) < delta)) onTarget++;
+            if (
+              [0, 1, 2].every(
+                (e) =>
+                  Math.hypot(
+                    mine[3 * e] - tips[3 * e],
+                    mine[3 * e + 1] - tips[3 * e + 1],
+                    mine[3 * e + 2] - tips[3 * e + 2],
+                  ) < delta,
+              )
+            )
+              onTarget++;
           }
         });
         if (f >= warmUp) perFrame.push(spent);

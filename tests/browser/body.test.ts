@@ -11,7 +11,16 @@ import type { Page } from 'playwright-core';
 import { describe, expect, it } from 'vitest';
 
 import { nextFrame, openPage, renderedFrames, repoRoot } from './harness.js';
-import { effectorNamed, gotoRig, panelControl, selectTarget, statText, targetScreen, usePageServer, waitForSettled } from './page_helpers.js';
+import {
+  effectorNamed,
+  gotoRig,
+  panelControl,
+  selectTarget,
+  statText,
+  targetScreen,
+  usePageServer,
+  waitForSettled,
+} from './page_helpers.js';
 
 const env = usePageServer();
 
@@ -41,12 +50,16 @@ describe('the body moves as a body', () => {
     const from = await targetScreen(page, left);
     const start = await page.evaluate((k) => window.ikPage?.targetPosition(k) ?? null, left);
     if (!start) throw new Error('no target');
-    const out = await page.evaluate(([x, y, z]) => window.ikPage?.worldToScreen([x + 1, y, z]) ?? null, start as [number, number, number]);
+    const out = await page.evaluate(
+      ([x, y, z]) => window.ikPage?.worldToScreen([x + 1, y, z]) ?? null,
+      start as [number, number, number],
+    );
     if (!out) throw new Error('no screen point');
     await page.mouse.move(from.x, from.y);
     await page.mouse.down();
     let worst = 0;
-    const steps = 30, kinds: string[] = [];
+    const steps = 30,
+      kinds: string[] = [];
     for (let i = 1; i <= steps; i++) {
       await page.mouse.move(from.x + ((out.x - from.x) * i) / steps, from.y + ((out.y - from.y) * i) / steps);
       await nextFrame(page);
@@ -98,23 +111,33 @@ describe('the body moves as a body', () => {
     const aim = await page.evaluate((q) => window.ikPage?.worldToScreen(q) ?? null, shoulder);
     if (!aim) throw new Error('no screen point');
     const length = Math.hypot(aim.x - from.x, aim.y - from.y);
-    const to = { x: from.x + ((aim.x - from.x) * Math.min(144, length)) / length, y: from.y + ((aim.y - from.y) * Math.min(144, length)) / length };
+    const to = {
+      x: from.x + ((aim.x - from.x) * Math.min(144, length)) / length,
+      y: from.y + ((aim.y - from.y) * Math.min(144, length)) / length,
+    };
     await page.mouse.move(from.x, from.y);
     await page.mouse.down();
-    let before = await joints(), worst = 0, worstStep = 0;
+    let before = await joints(),
+      worst = 0,
+      worstStep = 0;
     for (let i = 1; i <= 40; i++) {
       await page.mouse.move(from.x + ((to.x - from.x) * i) / 40, from.y + ((to.y - from.y) * i) / 40);
       await nextFrame(page);
       const now = await joints();
       now.forEach((q, j) => {
         const d = Math.hypot(q[0] - before[j][0], q[1] - before[j][1], q[2] - before[j][2]);
-        if (d > worst) (worst = d), (worstStep = i);
+        if (d > worst) {
+          worst = d;
+          worstStep = i;
+        }
       });
       before = now;
     }
     await page.mouse.up();
     await waitForSettled(page);
-    console.log(`[across] ${Math.min(144, length).toFixed(0)} px of ${length.toFixed(0)}: largest joint move in one frame ${((100 * worst) / height).toFixed(2)}% of the height (step ${worstStep}); ${await statText(page, 'status')}`);
+    console.log(
+      `[across] ${Math.min(144, length).toFixed(0)} px of ${length.toFixed(0)}: largest joint move in one frame ${((100 * worst) / height).toFixed(2)}% of the height (step ${worstStep}); ${await statText(page, 'status')}`,
+    );
     expect(worst / height).toBeLessThan(0.05);
     expect((await tipErrors(page))[hand]).toBeLessThan(tolerance);
     await screenshot(page, 'hand-across-chest.png');
@@ -156,14 +179,18 @@ async function bowWithPinnedHands(page: Page): Promise<{ turn: number; drift: nu
   const start = await page.evaluate((k) => window.ikPage?.targetPosition(k) ?? null, head);
   if (!start) throw new Error('no target');
   const from = await targetScreen(page, head);
-  const to = await page.evaluate(([x, y, z]) => window.ikPage?.worldToScreen([x, y - 0.3, z + 0.3]) ?? null, start as [number, number, number]);
+  const to = await page.evaluate(
+    ([x, y, z]) => window.ikPage?.worldToScreen([x, y - 0.3, z + 0.3]) ?? null,
+    start as [number, number, number],
+  );
   if (!to) throw new Error('no screen point');
   const frames = async (): Promise<number[][]> =>
     page.evaluate((ks) => ks.map((k) => window.ikPage?.tipRotation(k) ?? [0, 0, 0, 1]), hands);
   const before = await frames();
   await page.mouse.move(from.x, from.y);
   await page.mouse.down();
-  let turn = 0, drift = 0;
+  let turn = 0,
+    drift = 0;
   for (let i = 1; i <= 30; i++) {
     await page.mouse.move(from.x + ((to.x - from.x) * i) / 30, from.y + ((to.y - from.y) * i) / 30);
     await nextFrame(page);
@@ -183,7 +210,9 @@ describe('pinned means pinned', () => {
     await gotoRig(page, env.url, 'character');
     const tolerance = await page.evaluate(() => window.ikPage?.tipTolerance() ?? 0);
     const pinned = await bowWithPinnedHands(page);
-    console.log(`[pinned] head bowed, hands pinned: turned at most ${pinned.turn.toFixed(3)} deg, drift ${pinned.drift.toExponential(2)}`);
+    console.log(
+      `[pinned] head bowed, hands pinned: turned at most ${pinned.turn.toFixed(3)} deg, drift ${pinned.drift.toExponential(2)}`,
+    );
     expect(pinned.drift).toBeLessThan(tolerance);
     expect(pinned.turn).toBeLessThan(0.5);
     // The panel's "pin orientations" off: only places are pinned, and the hands turn with the body.

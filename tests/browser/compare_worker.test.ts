@@ -9,7 +9,16 @@ import type { Page } from 'playwright-core';
 import { describe, expect, it } from 'vitest';
 
 import { openPage } from './harness.js';
-import { dragBy, effectorNamed, gotoRig, panelControl, selectTarget, usePageServer, waitForConvergence, waitForSettled } from './page_helpers.js';
+import {
+  dragBy,
+  effectorNamed,
+  gotoRig,
+  panelControl,
+  selectTarget,
+  usePageServer,
+  waitForConvergence,
+  waitForSettled,
+} from './page_helpers.js';
 
 const env = usePageServer();
 
@@ -29,7 +38,9 @@ async function longCompare(page: Page, budgetMs: number): Promise<number> {
   await setNumber(page, /^compare: ms budget/, budgetMs);
   // Restarts and iterations beyond the panel's sliders: every method restarts until its time budget ends.
   // Strict priority off: with it a target beyond the arm's reach is given up at once, and the compare ends in a millisecond.
-  await page.evaluate(() => Object.assign(window.ikPage!.settings(), { restarts: 1e9, compareMaxIterations: 1e9, strictPriority: false }));
+  await page.evaluate(() =>
+    Object.assign(window.ikPage!.settings(), { restarts: 1e9, compareMaxIterations: 1e9, strictPriority: false }),
+  );
   return hand;
 }
 
@@ -63,7 +74,9 @@ async function watchCompare(page: Page): Promise<void> {
 const state = (page: Page) => page.getAttribute('#compare', 'data-state');
 
 const compareLog = (page: Page) =>
-  page.evaluate(() => (window as unknown as { compareLog: { frames: number[]; started: number[]; rows: number[] } }).compareLog);
+  page.evaluate(
+    () => (window as unknown as { compareLog: { frames: number[]; started: number[]; rows: number[] } }).compareLog,
+  );
 
 describe('compare in a worker', () => {
   it('keeps the page drawing during a 2 s compare: frames while each method solves; rows come one by one', async (ctx) => {
@@ -72,7 +85,9 @@ describe('compare in a worker', () => {
     await longCompare(page, budget);
     await watchCompare(page);
     await page.keyboard.press('c');
-    await page.waitForFunction(() => document.getElementById('compare')?.dataset.state !== 'running', null, { timeout: 30_000 });
+    await page.waitForFunction(() => document.getElementById('compare')?.dataset.state !== 'running', null, {
+      timeout: 30_000,
+    });
     expect(await state(page)).toBe('done');
     expect(await page.locator('#compare .compare-table tbody tr').count()).toBe(5);
     expect(await page.textContent('.compare-status')).toMatch(/^done in \d+\.\d s$/);
@@ -86,7 +101,9 @@ describe('compare in a worker', () => {
     for (let i = 1; i < during.length; i++) gap = Math.max(gap, during[i] - during[i - 1]);
     // Frames drawn while each method was solving: none at all if the solves blocked the main thread.
     const perMethod = log.started.map((t, i) => log.frames.filter((f) => f > t && f < log.rows[i]).length);
-    console.log(`compare: ${seconds.toFixed(2)} s, ${during.length} frames drawn, longest gap ${gap.toFixed(0)} ms, frames per method ${perMethod.join(' ')}`);
+    console.log(
+      `compare: ${seconds.toFixed(2)} s, ${during.length} frames drawn, longest gap ${gap.toFixed(0)} ms, frames per method ${perMethod.join(' ')}`,
+    );
     expect(seconds).toBeGreaterThan(1.5);
     // Every method, unloaded; on a machine loaded by two test suites at once the main thread was
     // starved for up to 667 ms and one window in five stayed empty.
@@ -105,8 +122,12 @@ describe('compare in a worker', () => {
     await waitForSettled(page);
     await setNumber(page, /^compare: ms budget/, 100);
     await page.keyboard.press('c');
-    await page.waitForFunction(() => document.getElementById('compare')?.dataset.state === 'done', null, { timeout: 30_000 });
-    expect(await page.locator('#compare .compare-table tbody td', { hasText: 'out of reach (closest point)' }).count()).toBeGreaterThan(0);
+    await page.waitForFunction(() => document.getElementById('compare')?.dataset.state === 'done', null, {
+      timeout: 30_000,
+    });
+    expect(
+      await page.locator('#compare .compare-table tbody td', { hasText: 'out of reach (closest point)' }).count(),
+    ).toBeGreaterThan(0);
     const box = await page.evaluate(() => {
       const c = document.getElementById('compare')!;
       return { scroll: c.scrollWidth, width: c.clientWidth };
@@ -125,7 +146,9 @@ describe('compare in a worker', () => {
     await page.waitForFunction(() => /solving with/.test(document.querySelector('.compare-status')?.textContent ?? ''));
     await page.locator('.compare-cancel').click();
     // Stopped within the first method's 5 s budget: a solve on the main thread could not be interrupted.
-    await page.waitForFunction(() => document.getElementById('compare')?.dataset.state === 'cancelled', null, { timeout: 4_000 });
+    await page.waitForFunction(() => document.getElementById('compare')?.dataset.state === 'cancelled', null, {
+      timeout: 4_000,
+    });
     expect(await page.textContent('.compare-status')).toMatch(/^cancelled after \d+\.\d s \(0 of 5 methods done\)$/);
     expect(await page.locator('.compare-cancel').isHidden()).toBe(true);
 
@@ -139,7 +162,9 @@ describe('compare in a worker', () => {
     await page.keyboard.press('c');
     await page.waitForFunction(() => document.getElementById('compare')?.dataset.state === 'running');
     await page.keyboard.press('c');
-    await page.waitForFunction(() => document.getElementById('compare')?.dataset.state === 'cancelled', null, { timeout: 4_000 });
+    await page.waitForFunction(() => document.getElementById('compare')?.dataset.state === 'cancelled', null, {
+      timeout: 4_000,
+    });
     expect(errors).toEqual([]);
   });
 });

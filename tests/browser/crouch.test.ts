@@ -15,7 +15,17 @@ import { describe, expect, it } from 'vitest';
 import { skeletonGlb } from '../helpers/skeleton_glb.js';
 import { type NamingStyle, styledHumanoid, styledRoles } from '../rig/synthetic_rigs.js';
 import { openPage, renderedFrames, resultsDir } from './harness.js';
-import { dragTargetAlongY, effectorNamed, gotoRig, selectTarget, statText, targetAt, tipAt, usePageServer, waitForConvergence } from './page_helpers.js';
+import {
+  dragTargetAlongY,
+  effectorNamed,
+  gotoRig,
+  selectTarget,
+  statText,
+  targetAt,
+  tipAt,
+  usePageServer,
+  waitForConvergence,
+} from './page_helpers.js';
 
 const env = usePageServer();
 
@@ -54,7 +64,13 @@ async function crouch(page: Page, body: Body, label: string): Promise<void> {
     return b ? b.max[1] - b.min[1] : NaN;
   });
   const hipsBone = await boneNamed(page, body.hips);
-  const legs = await Promise.all(body.legs.map(async (l) => ({ upper: await boneNamed(page, l.upper), lower: await boneNamed(page, l.lower), foot: await effectorNamed(page, exactly(l.foot)) })));
+  const legs = await Promise.all(
+    body.legs.map(async (l) => ({
+      upper: await boneNamed(page, l.upper),
+      lower: await boneNamed(page, l.lower),
+      foot: await effectorNamed(page, exactly(l.foot)),
+    })),
+  );
   const head = await effectorNamed(page, exactly(body.head));
   const hips = await effectorNamed(page, exactly(body.hips)); // the hips are a target of their own
   const hipsStood = await boneTip(page, hipsBone);
@@ -74,10 +90,13 @@ async function crouch(page: Page, body: Body, label: string): Promise<void> {
   const kneeAhead = await Promise.all(
     legs.map(async (l) => {
       const hipJoint = await page.evaluate((i) => window.ikPage?.boneBase(i) ?? null, l.upper);
-      const knee = await boneTip(page, l.upper), ankleNow = await boneTip(page, l.lower);
+      const knee = await boneTip(page, l.upper),
+        ankleNow = await boneTip(page, l.lower);
       if (!hipJoint) throw new Error('no hip joint');
-      const along = sub(ankleNow, hipJoint as Point), rel = sub(knee, hipJoint as Point);
-      const t = (rel[0] * along[0] + rel[1] * along[1] + rel[2] * along[2]) / (along[0] ** 2 + along[1] ** 2 + along[2] ** 2);
+      const along = sub(ankleNow, hipJoint as Point),
+        rel = sub(knee, hipJoint as Point);
+      const t =
+        (rel[0] * along[0] + rel[1] * along[1] + rel[2] * along[2]) / (along[0] ** 2 + along[1] ** 2 + along[2] ** 2);
       const off: Point = [rel[0] - t * along[0], rel[1] - t * along[1], rel[2] - t * along[2]];
       return off[0] * forward[0] + off[2] * forward[2];
     }),
@@ -95,10 +114,12 @@ async function crouch(page: Page, body: Body, label: string): Promise<void> {
 
   // The hips' own target, down a further 5%: the body follows, the feet stay planted.
   await selectTarget(page, hips);
-  const headBefore = await tipAt(page, head), hipsBefore = await targetAt(page, hips);
+  const headBefore = await tipAt(page, head),
+    hipsBefore = await targetAt(page, hips);
   await dragTargetAlongY(page, hips, -0.05 * height, 10);
   await waitForConvergence(page);
-  const hipsTip = await tipAt(page, hips), headAfter = await tipAt(page, head);
+  const hipsTip = await tipAt(page, hips),
+    headAfter = await tipAt(page, head);
   const feetAfter = await Promise.all(legs.map(async (l, i) => distance(await tipAt(page, l.foot), feetStood[i])));
   console.log(
     `[crouch ${label}] hips dragged down 5%: hips ${(distance(hipsTip, await targetAt(page, hips)) / delta).toFixed(3)} δ from their target, ${((100 * (hipsBefore[1] - hipsTip[1])) / height).toFixed(1)}% lower; ` +
@@ -115,28 +136,53 @@ describe('the crouch', () => {
     const { page, errors } = await openPage(env.browser, ctx);
     await gotoRig(page, env.url, 'character');
     const m = (s: string): string => `mixamorig:${s}`;
-    await crouch(page, { hips: m('Hips'), head: m('Head'), legs: ['Left', 'Right'].map((s) => ({ upper: m(`${s}UpLeg`), lower: m(`${s}Leg`), foot: m(`${s}Foot`) })) }, 'character');
+    await crouch(
+      page,
+      {
+        hips: m('Hips'),
+        head: m('Head'),
+        legs: ['Left', 'Right'].map((s) => ({ upper: m(`${s}UpLeg`), lower: m(`${s}Leg`), foot: m(`${s}Foot`) })),
+      },
+      'character',
+    );
     await renderedFrames(page);
     mkdirSync(resultsDir, { recursive: true });
     await page.screenshot({ path: join(resultsDir, 'crouch.png') });
     expect(errors).toEqual([]);
   });
 
-  it.for(['CamelSuffix', 'dotSuffix', 'lowerSnake', 'sidePrefix'] as NamingStyle[])('a %s skeleton crouches the same way', async (style, ctx) => {
-    const { page, errors } = await openPage(env.browser, ctx);
-    await gotoRig(page, env.url, 'character');
-    const file = join(resultsDir, `crouch-${style}.glb`);
-    mkdirSync(resultsDir, { recursive: true });
-    writeFileSync(file, await skeletonGlb(styledHumanoid(style)));
-    await page.setInputFiles('#rig-file', file);
-    await page.waitForFunction((name) => window.ikPage?.rigName() === name && document.getElementById('app')?.dataset.state === 'ready', `crouch-${style}`);
-    await renderedFrames(page, 3);
-    const r = styledRoles(style);
-    await crouch(
-      page,
-      { hips: r.hips!, head: r.head!, legs: [['leftUpperLeg', 'leftLowerLeg', 'leftFoot'], ['rightUpperLeg', 'rightLowerLeg', 'rightFoot']].map(([u, l, f]) => ({ upper: r[u as 'leftUpperLeg']!, lower: r[l as 'leftLowerLeg']!, foot: r[f as 'leftFoot']! })) },
-      style,
-    );
-    expect(errors).toEqual([]);
-  });
+  it.for(['CamelSuffix', 'dotSuffix', 'lowerSnake', 'sidePrefix'] as NamingStyle[])(
+    'a %s skeleton crouches the same way',
+    async (style, ctx) => {
+      const { page, errors } = await openPage(env.browser, ctx);
+      await gotoRig(page, env.url, 'character');
+      const file = join(resultsDir, `crouch-${style}.glb`);
+      mkdirSync(resultsDir, { recursive: true });
+      writeFileSync(file, await skeletonGlb(styledHumanoid(style)));
+      await page.setInputFiles('#rig-file', file);
+      await page.waitForFunction(
+        (name) => window.ikPage?.rigName() === name && document.getElementById('app')?.dataset.state === 'ready',
+        `crouch-${style}`,
+      );
+      await renderedFrames(page, 3);
+      const r = styledRoles(style);
+      await crouch(
+        page,
+        {
+          hips: r.hips!,
+          head: r.head!,
+          legs: [
+            ['leftUpperLeg', 'leftLowerLeg', 'leftFoot'],
+            ['rightUpperLeg', 'rightLowerLeg', 'rightFoot'],
+          ].map(([u, l, f]) => ({
+            upper: r[u as 'leftUpperLeg']!,
+            lower: r[l as 'leftLowerLeg']!,
+            foot: r[f as 'leftFoot']!,
+          })),
+        },
+        style,
+      );
+      expect(errors).toEqual([]);
+    },
+  );
 });

@@ -28,7 +28,18 @@ function countArrayConstructions(): void {
   w.arraysMade = new Map();
   Error.stackTraceLimit = 80; // frame() may sit deep below the construction (three.js calls)
   let inside = false; // the counting code makes arrays itself
-  const names = ['Array', 'Float64Array', 'Float32Array', 'Int32Array', 'Uint32Array', 'Int16Array', 'Uint16Array', 'Int8Array', 'Uint8Array', 'Uint8ClampedArray'];
+  const names = [
+    'Array',
+    'Float64Array',
+    'Float32Array',
+    'Int32Array',
+    'Uint32Array',
+    'Int16Array',
+    'Uint16Array',
+    'Int8Array',
+    'Uint8Array',
+    'Uint8ClampedArray',
+  ];
   const globals = globalThis as unknown as Record<string, new (...args: unknown[]) => object>;
   for (const name of names) {
     const original = globals[name];
@@ -38,7 +49,10 @@ function countArrayConstructions(): void {
           inside = true;
           const stack = (new Error().stack ?? '').split('\n').slice(2);
           if (stack.some((line) => line.includes('LiveController.frame'))) {
-            const where = `${name}: ${stack.slice(0, 4).map((l) => l.trim()).join(' < ')}`;
+            const where = `${name}: ${stack
+              .slice(0, 4)
+              .map((l) => l.trim())
+              .join(' < ')}`;
             w.arraysMade.set(where, (w.arraysMade.get(where) ?? 0) + 1);
           }
           inside = false;

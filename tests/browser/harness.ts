@@ -128,7 +128,10 @@ export async function openPage(
   page.on('pageerror', (e) => errors.push(`${e.name}: ${e.message}`));
   ctx.onTestFailed(async () => {
     mkdirSync(resultsDir, { recursive: true });
-    const name = ctx.task.name.replace(/[^a-z0-9]+/gi, '-').replace(/^-|-$/g, '').slice(0, 80);
+    const name = ctx.task.name
+      .replace(/[^a-z0-9]+/gi, '-')
+      .replace(/^-|-$/g, '')
+      .slice(0, 80);
     await page.screenshot({ path: join(resultsDir, `${name}.png`) }).catch(() => {});
     if (errors.length) console.error(`console errors in "${ctx.task.name}":\n${errors.join('\n')}`);
   });
@@ -148,5 +151,7 @@ export async function renderedFrames(page: Page, n = 2): Promise<void> {
     for (let i = 0; i < n; i++) await nextFrame(page);
     return;
   }
-  await page.waitForFunction((until) => (window.ikPage?.drawnFrames() ?? Infinity) >= until, before + n, { timeout: 30_000 });
+  await page.waitForFunction((until) => (window.ikPage?.drawnFrames() ?? Infinity) >= until, before + n, {
+    timeout: 30_000,
+  });
 }

@@ -11,7 +11,16 @@ import { describe, expect, it } from 'vitest';
 import { a7Dir, a7MissingMessage, a7Present, a7Required } from '../../scripts/a7_folder.js';
 import { manyNodesGltf, zeroAccessorGlb } from '../rig/hostile_rigs.js';
 import { openPage, renderedFrames, resultsDir } from './harness.js';
-import { dragBy, dragTowardsRoot, gotoRig, panelControl, selectTarget, usePageServer, waitForConvergence, waitForSettled } from './page_helpers.js';
+import {
+  dragBy,
+  dragTowardsRoot,
+  gotoRig,
+  panelControl,
+  selectTarget,
+  usePageServer,
+  waitForConvergence,
+  waitForSettled,
+} from './page_helpers.js';
 
 const env = usePageServer();
 
@@ -27,7 +36,11 @@ const bombs: [string, () => Uint8Array, RegExp][] = [
   ['nodes-4m.gltf', () => manyNodesGltf(4_000_000), /more than 1000000 arrays and objects/],
   ['nodes-1m.gltf', () => manyNodesGltf(1_000_000), /more than 1000000 arrays and objects/],
   ['nodes-100k.gltf', () => manyNodesGltf(100_001), /100001 nodes; at most 100000 \(the limit on glTF nodes\)/],
-  ['zeros-40.glb', () => zeroAccessorGlb(40), /bytes of accessor data in accessors\[0\] .* at most 268435456 bytes \(256 MiB\) in one file/],
+  [
+    'zeros-40.glb',
+    () => zeroAccessorGlb(40),
+    /bytes of accessor data in accessors\[0\] .* at most 268435456 bytes \(256 MiB\) in one file/,
+  ],
   ['zeros-3.glb', () => zeroAccessorGlb(3), /bytes of accessor data .* at most 268435456 bytes/],
 ];
 
@@ -74,7 +87,9 @@ describe('hostile files on the page', () => {
     await page.keyboard.press('r');
     await page.waitForFunction(() => (window.ikPage?.angles() ?? [1]).every((a) => a === 0));
     await page.setInputFiles('#pose-file', file);
-    await page.waitForFunction(() => /pose loaded|Could not/.test(document.getElementById('message')?.textContent ?? ''));
+    await page.waitForFunction(() =>
+      /pose loaded|Could not/.test(document.getElementById('message')?.textContent ?? ''),
+    );
     expect(await page.textContent('#message')).toMatch(/pose loaded/);
     await renderedFrames(page, 3);
     expect(await page.evaluate(() => window.ikPage?.angles() ?? [])).toEqual(posed);

@@ -13,7 +13,16 @@ import type { Page } from 'playwright-core';
 import { describe, expect, it } from 'vitest';
 
 import { openPage, renderedFrames, repoRoot } from './harness.js';
-import { dragBy, effectorNamed, gotoRig, selectTarget, stat, statText, usePageServer, waitForConvergence } from './page_helpers.js';
+import {
+  dragBy,
+  effectorNamed,
+  gotoRig,
+  selectTarget,
+  stat,
+  statText,
+  usePageServer,
+  waitForConvergence,
+} from './page_helpers.js';
 
 const env = usePageServer();
 
@@ -26,10 +35,18 @@ function angleDeg(a: Quat, b: Quat): number {
 }
 
 /** What the page says of effector k's orientation: its goal, its frame, the error (degrees), whether its axes show. */
-async function orientation(page: Page, k: number): Promise<{ goal: Quat | null; tip: Quat | null; error: number; axes: boolean }> {
+async function orientation(
+  page: Page,
+  k: number,
+): Promise<{ goal: Quat | null; tip: Quat | null; error: number; axes: boolean }> {
   return page.evaluate((i) => {
     const p = window.ikPage;
-    return { goal: p?.orientationGoal(i) ?? null, tip: p?.tipRotation(i) ?? null, error: p?.orientationError(i) ?? NaN, axes: p?.axesShown(i) ?? false };
+    return {
+      goal: p?.orientationGoal(i) ?? null,
+      tip: p?.tipRotation(i) ?? null,
+      error: p?.orientationError(i) ?? NaN,
+      axes: p?.axesShown(i) ?? false,
+    };
   }, k);
 }
 
@@ -43,7 +60,9 @@ async function worstTipError(page: Page): Promise<number> {
 
 /** The panel's "orientation goal" checkbox. */
 function orientationBox(page: Page) {
-  return page.locator('.lil-controller', { has: page.locator('.lil-name', { hasText: /^orientation goal/ }) }).locator('input');
+  return page
+    .locator('.lil-controller', { has: page.locator('.lil-name', { hasText: /^orientation goal/ }) })
+    .locator('input');
 }
 
 describe('orientation goals on the page', () => {
@@ -87,10 +106,14 @@ describe('orientation goals on the page', () => {
     expect(after.error).toBeLessThan(0.5);
     expect(angleDeg(after.tip, before.tip)).toBeGreaterThan(69); // the hand did turn
     expect(await worstTipError(page)).toBeLessThan(await page.evaluate(() => window.ikPage?.tipTolerance() ?? 0));
-    const onTargetErrors = await page.evaluate(() => (window as unknown as { onTargetErrors: number[] }).onTargetErrors);
+    const onTargetErrors = await page.evaluate(
+      () => (window as unknown as { onTargetErrors: number[] }).onTargetErrors,
+    );
     for (const e of onTargetErrors) expect(e).toBeLessThan(0.5);
     // The panel shows the orientation error in degrees, 3 significant digits.
-    await page.waitForFunction(() => document.querySelector('[data-stat="orientationErrorDeg"]')?.textContent?.endsWith('°'));
+    await page.waitForFunction(() =>
+      document.querySelector('[data-stat="orientationErrorDeg"]')?.textContent?.endsWith('°'),
+    );
     expect(await page.isVisible('[data-stat="orientationErrorDeg"]')).toBe(true);
     expect(Number(await stat(page, 'orientationErrorDeg'))).toBeLessThan(0.5);
     expect(await statText(page, 'orientationErrorDeg')).toMatch(/^\d\.\d\d°$|^\d\.\d\de-\d+°$|^0\.\d+°$/);
@@ -102,7 +125,8 @@ describe('orientation goals on the page', () => {
     await page.mouse.wheel(0, -800);
     await page.mouse.move(view.x + 10, view.y + 10); // off the gizmo: no hover highlight
     await renderedFrames(page, 3);
-    const shot = process.env.UPDATE_SCREENSHOT === '1' ? 'docs/orientation-goal.png' : 'test-results/orientation-goal.png';
+    const shot =
+      process.env.UPDATE_SCREENSHOT === '1' ? 'docs/orientation-goal.png' : 'test-results/orientation-goal.png';
     mkdirSync(join(repoRoot, shot, '..'), { recursive: true });
     await page.screenshot({ path: join(repoRoot, shot) });
     expect(errors).toEqual([]);
@@ -143,7 +167,8 @@ describe('orientation goals on the page', () => {
     await page.evaluate(() => window.ikPage?.turnGizmo([0, 1, 0], 20, 8));
     const to = await page.evaluate((k) => window.ikPage?.targetPosition(k) ?? null, hand);
     if (!to) throw new Error('no target');
-    const r0 = from.map((x, i) => x - root[i]), r1 = to.map((x, i) => x - root[i]);
+    const r0 = from.map((x, i) => x - root[i]),
+      r1 = to.map((x, i) => x - root[i]);
     expect(Math.hypot(...r1)).toBeCloseTo(Math.hypot(...r0), 6); // on a sphere about the root joint
     expect(r1[1]).toBeCloseTo(r0[1], 6); // about the vertical axis: the height stays
     const swung = ((Math.atan2(r0[2], r0[0]) - Math.atan2(r1[2], r1[0])) * 180) / Math.PI;
@@ -161,7 +186,8 @@ describe('orientation goals on the page', () => {
     await page.evaluate(() => window.ikPage?.turnGizmo([0, 1, 0], 20, 8));
     const carried = (await orientation(page, hand)).goal;
     if (!carried) throw new Error('swinging dropped the orientation goal');
-    const s = Math.sin((10 * Math.PI) / 180), c = Math.cos((10 * Math.PI) / 180); // 20° about +y
+    const s = Math.sin((10 * Math.PI) / 180),
+      c = Math.cos((10 * Math.PI) / 180); // 20° about +y
     const [x, y, z, w] = held;
     const expected: Quat = [c * x + s * z, c * y + s * w, c * z - s * x, c * w - s * y];
     expect(angleDeg(carried, expected)).toBeLessThan(1e-3);
@@ -207,7 +233,10 @@ describe('orientation goals on the page', () => {
     // On again with the box, then the panel's reset clears it.
     await orientationBox(page).click();
     await page.waitForFunction((k) => window.ikPage?.axesShown(k) === true, hand, { timeout: 5_000 }); // shown at the next frame's redraw
-    await page.locator('.lil-controller', { has: page.locator('.lil-name', { hasText: /^reset pose/ }) }).locator('button').click();
+    await page
+      .locator('.lil-controller', { has: page.locator('.lil-name', { hasText: /^reset pose/ }) })
+      .locator('button')
+      .click();
     await renderedFrames(page);
     const reset = await orientation(page, hand);
     expect(reset.goal).toBeNull();

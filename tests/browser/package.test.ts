@@ -15,7 +15,15 @@ import type { Camera } from 'three';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 
 import type { AvatarIK } from '../../web/src/lib/index.js';
-import { launchBrowser, openPage, renderedFrames, repoRoot, resultsDir, startStatic, type BrowserSession } from './harness.js';
+import {
+  launchBrowser,
+  openPage,
+  renderedFrames,
+  repoRoot,
+  resultsDir,
+  startStatic,
+  type BrowserSession,
+} from './harness.js';
 
 /** What the example page leaves on window for the console (and this test). */
 interface ExampleWindow {
@@ -29,16 +37,34 @@ let app: string;
 let packedFiles: string[];
 
 beforeAll(() => {
-  execFileSync('npx', ['vite', 'build', '--config', 'vite.lib.config.ts', '--logLevel', 'warn'], { cwd: repoRoot, stdio: ['ignore', 'ignore', 'inherit'] });
+  execFileSync('npx', ['vite', 'build', '--config', 'vite.lib.config.ts', '--logLevel', 'warn'], {
+    cwd: repoRoot,
+    stdio: ['ignore', 'ignore', 'inherit'],
+  });
   folder = mkdtempSync(join(tmpdir(), 'ik-package-'));
-  const [packed] = JSON.parse(execFileSync('npm', ['pack', join(repoRoot, 'dist/lib'), '--pack-destination', folder, '--json'], { cwd: folder, encoding: 'utf8', stdio: ['ignore', 'pipe', 'pipe'] })) as [
-    { filename: string; files: { path: string }[] },
-  ];
+  const [packed] = JSON.parse(
+    execFileSync('npm', ['pack', join(repoRoot, 'dist/lib'), '--pack-destination', folder, '--json'], {
+      cwd: folder,
+      encoding: 'utf8',
+      stdio: ['ignore', 'pipe', 'pipe'],
+    }),
+  ) as [{ filename: string; files: { path: string }[] }];
   packedFiles = packed.files.map((f) => f.path);
   app = join(folder, 'app');
   mkdirSync(app);
   writeFileSync(join(app, 'package.json'), JSON.stringify({ name: 'app', private: true, type: 'module' }));
-  execFileSync('npm', ['install', '--offline', '--no-audit', '--no-fund', join(folder, packed.filename), join(repoRoot, 'node_modules/three')], { cwd: app, stdio: ['ignore', 'ignore', 'inherit'] });
+  execFileSync(
+    'npm',
+    [
+      'install',
+      '--offline',
+      '--no-audit',
+      '--no-fund',
+      join(folder, packed.filename),
+      join(repoRoot, 'node_modules/three'),
+    ],
+    { cwd: app, stdio: ['ignore', 'ignore', 'inherit'] },
+  );
 }, 120_000);
 
 afterAll(() => {
@@ -47,11 +73,24 @@ afterAll(() => {
 
 describe('the ik-web-avatar package', () => {
   it('packs the module, its types, the WebAssembly, the example and a package.json with three as a peer', () => {
-    for (const file of ['index.js', 'index.d.ts', 'avatar_ik.d.ts', 'ik_core.wasm', 'package.json', 'avatar-example.html', 'models/character.glb'])
+    for (const file of [
+      'index.js',
+      'index.d.ts',
+      'avatar_ik.d.ts',
+      'ik_core.wasm',
+      'package.json',
+      'avatar-example.html',
+      'models/character.glb',
+    ])
       expect(packedFiles, file).toContain(file);
     const manifest = JSON.parse(readFileSync(join(app, 'node_modules/ik-web-avatar/package.json'), 'utf8'));
     const root = JSON.parse(readFileSync(join(repoRoot, 'package.json'), 'utf8'));
-    expect(manifest).toMatchObject({ name: 'ik-web-avatar', version: root.version, type: 'module', types: './index.d.ts' });
+    expect(manifest).toMatchObject({
+      name: 'ik-web-avatar',
+      version: root.version,
+      type: 'module',
+      types: './index.d.ts',
+    });
     expect(manifest.peerDependencies).toHaveProperty('three');
     expect(manifest.dependencies).toBeUndefined();
   });
@@ -82,7 +121,9 @@ describe('the ik-web-avatar package', () => {
     });
 
     /** The left hand's target on the screen (CSS pixels), its world position and the left hand bone's. */
-    async function leftHand(page: Page): Promise<{ screen: { x: number; y: number }; target: number[]; bone: number[] }> {
+    async function leftHand(
+      page: Page,
+    ): Promise<{ screen: { x: number; y: number }; target: number[]; bone: number[] }> {
       return page.evaluate(() => {
         const { avatar, camera } = (window as unknown as ExampleWindow).avatarExample;
         const ndc = avatar.leftHand.position.clone().project(camera);

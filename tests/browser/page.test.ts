@@ -39,7 +39,10 @@ describe('the page', () => {
       expect((await page.evaluate(() => window.ikPage?.effectors() ?? [])).length).toBeGreaterThan(0);
       expect(await page.textContent('#rig-name')).toContain(rig);
       // The canvas is drawn at the viewport's size.
-      const size = await page.$eval('#viewport canvas', (c) => [(c as HTMLCanvasElement).width, (c as HTMLCanvasElement).height]);
+      const size = await page.$eval('#viewport canvas', (c) => [
+        (c as HTMLCanvasElement).width,
+        (c as HTMLCanvasElement).height,
+      ]);
       expect(size[0]).toBeGreaterThan(100);
       expect(size[1]).toBeGreaterThan(100);
     }
@@ -74,7 +77,8 @@ describe('the page', () => {
       expect(new URL(page.url()).searchParams.get('method')).toBe(method);
       await dragTowardsRoot(page, 0, 0.08, 6);
       await page.waitForFunction(
-        (m) => document.querySelector('[data-stat="method"]')?.textContent === m &&
+        (m) =>
+          document.querySelector('[data-stat="method"]')?.textContent === m &&
           Number(document.querySelector<HTMLElement>('[data-stat="iterations"]')?.dataset.value) >= 0 &&
           (document.querySelector('[data-stat="status"]')?.textContent ?? '–') !== '–',
         method,
@@ -198,17 +202,27 @@ describe('the page', () => {
     await waitForConvergence(page);
     await renderedFrames(page);
     const first = await page.evaluate(() => window.ikPage?.alive());
-    const select = page.locator('.lil-controller', { has: page.locator('.lil-name', { hasText: /^project rig$/ }) }).locator('select');
-    for (const [rig, label] of [['knight', 'knight'], ['character', 'character (60+ joints)'], ['lamp', 'lamp']]) {
+    const select = page
+      .locator('.lil-controller', { has: page.locator('.lil-name', { hasText: /^project rig$/ }) })
+      .locator('select');
+    for (const [rig, label] of [
+      ['knight', 'knight'],
+      ['character', 'character (60+ joints)'],
+      ['lamp', 'lamp'],
+    ]) {
       const n = await page.evaluate(() => window.ikPage?.loads() ?? 0);
       await select.selectOption({ label });
       await page.waitForFunction((k) => (window.ikPage?.loads() ?? 0) > k, n);
       expect(await page.evaluate(() => window.ikPage?.rigName())).toBe(rig);
       await page.keyboard.press('c'); // every method solves (in the compare worker, which frees its own session)
-      await page.waitForFunction(() => document.getElementById('compare')?.dataset.state === 'done', null, { timeout: 30_000 });
+      await page.waitForFunction(() => document.getElementById('compare')?.dataset.state === 'done', null, {
+        timeout: 30_000,
+      });
       expect(await page.evaluate(() => window.ikPage?.alive().sessions)).toBe(1);
       // From the rest pose every method starts with E = 0: the plot says there is nothing to plot.
-      await page.waitForFunction(() => document.querySelector<HTMLElement>('#compare .plot')?.dataset.state === 'drawn');
+      await page.waitForFunction(
+        () => document.querySelector<HTMLElement>('#compare .plot')?.dataset.state === 'drawn',
+      );
       expect(await page.locator('#compare .plot-note').isVisible()).toBe(true);
     }
     await dragTowardsRoot(page, 0, 0.1);
@@ -245,7 +259,9 @@ describe('the page', () => {
       await page.keyboard.up('Shift');
     }
     await page.keyboard.press('c');
-    await page.waitForFunction(() => document.getElementById('compare')?.dataset.state === 'done', null, { timeout: 30_000 });
+    await page.waitForFunction(() => document.getElementById('compare')?.dataset.state === 'done', null, {
+      timeout: 30_000,
+    });
     // The compare's plot has drawn what it was given (the side column's own plot is below it, off
     // screen, and draws when scrolled to), and the page has rendered since.
     await page.waitForFunction(() => document.querySelector<HTMLElement>('#compare .plot')?.dataset.state === 'drawn');
@@ -254,8 +270,15 @@ describe('the page', () => {
     mkdirSync(join(repoRoot, shot, '..'), { recursive: true });
     await page.screenshot({ path: join(repoRoot, shot) });
     // One row per method, in the menu's order.
-    expect(await page.$$eval('#compare .compare-table tbody tr', (rows) => rows.map((r) => (r as HTMLElement).dataset.method))).toEqual(
-      await page.locator('.lil-controller', { has: page.locator('.lil-name', { hasText: /^method$/ }) }).locator('option').allTextContents(),
+    expect(
+      await page.$$eval('#compare .compare-table tbody tr', (rows) =>
+        rows.map((r) => (r as HTMLElement).dataset.method),
+      ),
+    ).toEqual(
+      await page
+        .locator('.lil-controller', { has: page.locator('.lil-name', { hasText: /^method$/ }) })
+        .locator('option')
+        .allTextContents(),
     );
     expect(errors).toEqual([]);
   });
@@ -275,7 +298,11 @@ describe('the page', () => {
       await dragTowardsRoot(page, hand, round % 2 ? 0.15 : -0.15, 30, false);
     // The last solve has stopped for a reason other than its budget, and the stats show it.
     await waitForSettled(page);
-    await page.waitForFunction(() => Number(document.querySelector<HTMLElement>('[data-stat="median"]')?.dataset.value) === window.ikPage?.solveMs().median);
+    await page.waitForFunction(
+      () =>
+        Number(document.querySelector<HTMLElement>('[data-stat="median"]')?.dataset.value) ===
+        window.ikPage?.solveMs().median,
+    );
     const ms = await page.evaluate(() => window.ikPage?.solveMs());
     const isolated = await page.evaluate(() => crossOriginIsolated);
     const f = (x: number | undefined): string => (x ?? NaN).toFixed(3);

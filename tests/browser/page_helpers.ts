@@ -65,18 +65,32 @@ export async function targetScreen(page: Page, k: number): Promise<ScreenPoint> 
  * Drags the gizmo of the selected target with the mouse by a fraction of the way towards the root
  * joint; `perFrame`: wait for an animation frame after each of the `steps` moves.
  */
-export async function dragTowardsRoot(page: Page, k: number, fraction: number, steps = 12, perFrame = true): Promise<{ from: ScreenPoint; to: ScreenPoint }> {
+export async function dragTowardsRoot(
+  page: Page,
+  k: number,
+  fraction: number,
+  steps = 12,
+  perFrame = true,
+): Promise<{ from: ScreenPoint; to: ScreenPoint }> {
   const from = await targetScreen(page, k);
   const root = await page.evaluate(() => window.ikPage?.boneScreen(0) ?? null);
   if (!root) throw new Error('no root bone');
-  let dx = (root.x - from.x) * fraction, dy = (root.y - from.y) * fraction;
+  let dx = (root.x - from.x) * fraction,
+    dy = (root.y - from.y) * fraction;
   const len = Math.hypot(dx, dy);
   if (len < 25) [dx, dy] = len > 0 ? [(dx / len) * 25, (dy / len) * 25] : [25, 0];
   return dragBy(page, k, dx, dy, steps, perFrame);
 }
 
 /** Drags the mouse from `from` by (dx, dy) pixels in `steps` equal moves, waiting a frame after each when `perFrame`. */
-export async function dragMouse(page: Page, from: ScreenPoint, dx: number, dy: number, steps = 12, perFrame = true): Promise<void> {
+export async function dragMouse(
+  page: Page,
+  from: ScreenPoint,
+  dx: number,
+  dy: number,
+  steps = 12,
+  perFrame = true,
+): Promise<void> {
   await page.mouse.move(from.x, from.y);
   await page.mouse.down();
   for (let i = 1; i <= steps; i++) {
@@ -87,7 +101,14 @@ export async function dragMouse(page: Page, from: ScreenPoint, dx: number, dy: n
 }
 
 /** Drags the gizmo of the selected target k by (dx, dy) pixels with the mouse; `perFrame` as in dragTowardsRoot. */
-export async function dragBy(page: Page, k: number, dx: number, dy: number, steps = 12, perFrame = true): Promise<{ from: ScreenPoint; to: ScreenPoint }> {
+export async function dragBy(
+  page: Page,
+  k: number,
+  dx: number,
+  dy: number,
+  steps = 12,
+  perFrame = true,
+): Promise<{ from: ScreenPoint; to: ScreenPoint }> {
   const from = await targetScreen(page, k);
   await dragMouse(page, from, dx, dy, steps, perFrame);
   return { from, to: { x: from.x + dx, y: from.y + dy } };
@@ -104,25 +125,36 @@ export async function selectTarget(page: Page, k: number): Promise<number> {
 
 /** The effector (index in effector order) on a bone whose name matches `pattern`, else 0. */
 export async function effectorNamed(page: Page, pattern: RegExp): Promise<number> {
-  const { effectors, names } = await page.evaluate(() => ({ effectors: window.ikPage?.effectors() ?? [], names: window.ikPage?.boneNames() ?? [] }));
+  const { effectors, names } = await page.evaluate(() => ({
+    effectors: window.ikPage?.effectors() ?? [],
+    names: window.ikPage?.boneNames() ?? [],
+  }));
   const k = effectors.findIndex((b) => pattern.test(names[b]));
   return k < 0 ? 0 : k;
 }
 
 /** Waits until the per-frame solve has stopped for a reason other than its budget; returns the stop reason. */
 export async function waitForSettled(page: Page): Promise<string> {
-  await page.waitForFunction(() => {
-    const r = document.querySelector<HTMLElement>('[data-stat="status"]')?.dataset.reason ?? '';
-    return ['converged_E', 'converged_grad', 'zero_step'].includes(r);
-  }, null, { timeout: 20_000 });
+  await page.waitForFunction(
+    () => {
+      const r = document.querySelector<HTMLElement>('[data-stat="status"]')?.dataset.reason ?? '';
+      return ['converged_E', 'converged_grad', 'zero_step'].includes(r);
+    },
+    null,
+    { timeout: 20_000 },
+  );
   return (await page.getAttribute('[data-stat="status"]', 'data-reason')) ?? '';
 }
 
 /** Waits until the stats say "on target" (every effector within the tip tolerance). */
 export async function waitForConvergence(page: Page): Promise<void> {
-  await page.waitForFunction(() => document.querySelector<HTMLElement>('[data-stat="status"]')?.dataset.reached === 'true', null, {
-    timeout: 20_000,
-  });
+  await page.waitForFunction(
+    () => document.querySelector<HTMLElement>('[data-stat="status"]')?.dataset.reached === 'true',
+    null,
+    {
+      timeout: 20_000,
+    },
+  );
   expect(await statText(page, 'status')).toBe('on target');
 }
 
@@ -174,7 +206,11 @@ export async function dragTargetAlongY(page: Page, k: number, dy: number, steps 
   const start = await page.evaluate((i) => window.ikPage?.targetPosition(i) ?? null, k);
   if (!start) throw new Error(`no target ${k}`);
   const at = async (up: number): Promise<ScreenPoint> => {
-    const p = await page.evaluate((q) => window.ikPage?.worldToScreen(q) ?? null, [start[0], start[1] + up, start[2]] as [number, number, number]);
+    const p = await page.evaluate((q) => window.ikPage?.worldToScreen(q) ?? null, [
+      start[0],
+      start[1] + up,
+      start[2],
+    ] as [number, number, number]);
     if (!p) throw new Error('no screen point');
     return p;
   };
@@ -211,6 +247,10 @@ export async function targetAt(page: Page, k: number): Promise<[number, number, 
 /** A one-finger touch drag from (x, y) by (dx, dy) pixels in `steps` moves (CDP touch events, as a finger makes). */
 export async function swipe(cdp: CDPSession, x: number, y: number, dx: number, dy: number, steps = 12): Promise<void> {
   await cdp.send('Input.dispatchTouchEvent', { type: 'touchStart', touchPoints: [{ x, y }] });
-  for (let i = 1; i <= steps; i++) await cdp.send('Input.dispatchTouchEvent', { type: 'touchMove', touchPoints: [{ x: x + (dx * i) / steps, y: y + (dy * i) / steps }] });
+  for (let i = 1; i <= steps; i++)
+    await cdp.send('Input.dispatchTouchEvent', {
+      type: 'touchMove',
+      touchPoints: [{ x: x + (dx * i) / steps, y: y + (dy * i) / steps }],
+    });
   await cdp.send('Input.dispatchTouchEvent', { type: 'touchEnd', touchPoints: [] });
 }

@@ -56,7 +56,9 @@ describe('the page on a phone', () => {
     expect(t!.y).toBeGreaterThanOrEqual(open.top);
     expect(t!.y + t!.height).toBeLessThanOrEqual(HEIGHT);
     await teaching.tap();
-    const compare = page.locator('.lil-controller', { has: page.locator('.lil-name', { hasText: /^compare all methods/ }) });
+    const compare = page.locator('.lil-controller', {
+      has: page.locator('.lil-name', { hasText: /^compare all methods/ }),
+    });
     await compare.scrollIntoViewIfNeeded();
     expect(await compare.isVisible()).toBe(true);
     expect(await page.evaluate(() => window.scrollY)).toBe(0);
@@ -88,7 +90,9 @@ describe('the page on a phone', () => {
 
     // Compare (the Teaching folder's button, or C): its box fits the screen's width, no sideways scrolling.
     await page.keyboard.press('c');
-    await page.waitForFunction(() => document.getElementById('compare')?.dataset.state === 'done', null, { timeout: 30_000 });
+    await page.waitForFunction(() => document.getElementById('compare')?.dataset.state === 'done', null, {
+      timeout: 30_000,
+    });
     const box = await page.evaluate(() => {
       const c = document.getElementById('compare')!;
       return { scroll: c.scrollWidth, width: c.clientWidth, right: c.getBoundingClientRect().right };

@@ -48,7 +48,10 @@ async function sideOf(page: Page, pole: number, p?: V3): Promise<number> {
 }
 
 async function poleCount(page: Page): Promise<{ shown: number; sent: number }> {
-  return page.evaluate(() => ({ shown: window.ikPage?.poleHandles().length ?? -1, sent: window.ikPage?.solvePoles().length ?? -1 }));
+  return page.evaluate(() => ({
+    shown: window.ikPage?.poleHandles().length ?? -1,
+    sent: window.ikPage?.solvePoles().length ?? -1,
+  }));
 }
 
 /** The pole handle on the limb whose lower bone's name matches `pattern`. */
@@ -76,7 +79,8 @@ async function dragPoleAcross(page: Page, j: number, towards: V3, distance: numb
   const start = await pole();
   const pixels = await page.evaluate(
     ([p, q]) => {
-      const a = window.ikPage?.worldToScreen(p), b = window.ikPage?.worldToScreen(q);
+      const a = window.ikPage?.worldToScreen(p),
+        b = window.ikPage?.worldToScreen(q);
       return a && b ? { x: b.x - a.x, y: b.y - a.y } : null;
     },
     [start, [start[0] + towards[0], start[1] + towards[1], start[2] + towards[2]]] as [V3, V3],
@@ -89,7 +93,9 @@ async function dragPoleAcross(page: Page, j: number, towards: V3, distance: numb
 }
 
 function poleBox(page: Page) {
-  return page.locator('.lil-controller', { has: page.locator('.lil-name', { hasText: /^pole handles/ }) }).locator('input');
+  return page
+    .locator('.lil-controller', { has: page.locator('.lil-name', { hasText: /^pole handles/ }) })
+    .locator('input');
 }
 
 async function worstTipError(page: Page): Promise<number> {
@@ -115,14 +121,20 @@ describe('pole handles', () => {
     expect(await poleBox(page).isChecked()).toBe(true);
     const poles = await page.evaluate(() => window.ikPage?.poleHandles() ?? []);
     const names = await page.evaluate(() => window.ikPage?.boneNames() ?? []);
-    expect(poles.map((p) => names[p.bone]).sort()).toEqual(['mixamorig:LeftForeArm', 'mixamorig:LeftLeg', 'mixamorig:RightForeArm', 'mixamorig:RightLeg']);
+    expect(poles.map((p) => names[p.bone]).sort()).toEqual([
+      'mixamorig:LeftForeArm',
+      'mixamorig:LeftLeg',
+      'mixamorig:RightForeArm',
+      'mixamorig:RightLeg',
+    ]);
     expect(await page.evaluate(() => window.ikPage?.solvePoles().map((p) => p.bone))).toEqual(poles.map((p) => p.bone));
     for (const p of poles) {
       // About one limb length from the joint, on the side the joint bends to (the character faces +Z).
       const length = Math.hypot(...sub(p.joint, p.root)) + Math.hypot(...sub(p.tip, p.joint));
       expect(Math.hypot(...sub(p.point, p.joint)) / length).toBeCloseTo(1, 1);
       const z = (p.point[2] - p.joint[2]) / length;
-      if (/Leg$/.test(names[p.bone])) expect(z).toBeGreaterThan(0.9); // knees forward
+      if (/Leg$/.test(names[p.bone]))
+        expect(z).toBeGreaterThan(0.9); // knees forward
       else expect(z).toBeLessThan(-0.9); // elbows back
     }
     await page.keyboard.press('p');
@@ -199,7 +211,11 @@ describe('pole handles', () => {
     await page.mouse.click(at.x, at.y);
     await page.waitForFunction((b) => !window.ikPage?.effectors().includes(b), handBone);
     const after = await page.evaluate(() => window.ikPage?.poleHandles() ?? []);
-    expect(after.map((p) => names[p.bone]).sort()).toEqual(['mixamorig:LeftLeg', 'mixamorig:RightForeArm', 'mixamorig:RightLeg']);
+    expect(after.map((p) => names[p.bone]).sort()).toEqual([
+      'mixamorig:LeftLeg',
+      'mixamorig:RightForeArm',
+      'mixamorig:RightLeg',
+    ]);
     expect(after.find((p) => /RightLeg$/.test(names[p.bone]))?.point).toEqual(dragged);
     expect((await poleCount(page)).sent).toBe(3);
 
@@ -213,10 +229,17 @@ describe('pole handles', () => {
     expect((await poleCount(page)).sent).toBe(3);
 
     // Another rig: its own limbs get poles (the knight's forearms and shins).
-    await page.locator('.lil-controller', { has: page.locator('.lil-name', { hasText: /^project rig/ }) }).locator('select').selectOption('knight');
-    await page.waitForFunction(() => window.ikPage?.rigName() === 'knight' && document.getElementById('app')?.dataset.state === 'ready');
+    await page
+      .locator('.lil-controller', { has: page.locator('.lil-name', { hasText: /^project rig/ }) })
+      .locator('select')
+      .selectOption('knight');
+    await page.waitForFunction(
+      () => window.ikPage?.rigName() === 'knight' && document.getElementById('app')?.dataset.state === 'ready',
+    );
     await renderedFrames(page);
-    const knight = await page.evaluate(() => (window.ikPage?.poleHandles() ?? []).map((p) => window.ikPage?.boneNames()[p.bone]));
+    const knight = await page.evaluate(() =>
+      (window.ikPage?.poleHandles() ?? []).map((p) => window.ikPage?.boneNames()[p.bone]),
+    );
     expect(knight.sort()).toEqual(['forearm.L', 'forearm.R', 'shin.L', 'shin.R']);
     expect(await poleCount(page)).toEqual({ shown: 4, sent: 4 });
     expect(errors).toEqual([]);
@@ -253,7 +276,9 @@ describe('pole handles', () => {
     // The elbow follows the pole: it moves at least 0.1 the way the pole went (0.01 before poles
     // were placed where the elbow bends and pulled it within reach of the pole).
     const followed = dot(sub(after.joint, bent.joint), dragged) / Math.hypot(...dragged);
-    console.log(`knight elbow pole dragged ${Math.hypot(...dragged).toFixed(3)}: the elbow moved ${Math.hypot(...sub(after.joint, bent.joint)).toFixed(4)}, ${followed.toFixed(4)} the pole's way, ${(Math.hypot(...sub(after.point, bent.joint)) - Math.hypot(...sub(after.point, after.joint))).toFixed(4)} nearer it; hand error ${(await worstTipError(page)).toExponential(2)}`);
+    console.log(
+      `knight elbow pole dragged ${Math.hypot(...dragged).toFixed(3)}: the elbow moved ${Math.hypot(...sub(after.joint, bent.joint)).toFixed(4)}, ${followed.toFixed(4)} the pole's way, ${(Math.hypot(...sub(after.point, bent.joint)) - Math.hypot(...sub(after.point, after.joint))).toFixed(4)} nearer it; hand error ${(await worstTipError(page)).toExponential(2)}`,
+    );
     expect(followed).toBeGreaterThan(0.1);
     expect(await sideOf(page, pole)).toBeGreaterThan(0.9);
     expect(await worstTipError(page)).toBeLessThan(await page.evaluate(() => window.ikPage?.tipTolerance() ?? 0));

@@ -12,7 +12,15 @@ import { describe, expect, it } from 'vitest';
 
 import { treeA7 } from '../../scripts/rig_files/tree_rigs.js';
 import { openPage, renderedFrames, resultsDir } from './harness.js';
-import { dragBy, effectorNamed, gotoRig, panelControl, selectTarget, usePageServer, waitForConvergence } from './page_helpers.js';
+import {
+  dragBy,
+  effectorNamed,
+  gotoRig,
+  panelControl,
+  selectTarget,
+  usePageServer,
+  waitForConvergence,
+} from './page_helpers.js';
 
 const env = usePageServer();
 
@@ -66,13 +74,23 @@ describe('undo and redo', () => {
 
     await press(page, 'r');
     expect((await snapshot(page)).angles).toEqual(rest.angles);
-    await page.locator('.lil-controller', { has: page.locator('.lil-name', { hasText: /^project rig/ }) }).locator('select').selectOption({ label: 'lamp' });
-    await page.waitForFunction(() => window.ikPage?.rigName() === 'lamp' && document.getElementById('app')?.dataset.state === 'ready');
+    await page
+      .locator('.lil-controller', { has: page.locator('.lil-name', { hasText: /^project rig/ }) })
+      .locator('select')
+      .selectOption({ label: 'lamp' });
+    await page.waitForFunction(
+      () => window.ikPage?.rigName() === 'lamp' && document.getElementById('app')?.dataset.state === 'ready',
+    );
     expect(await page.evaluate(() => window.ikPage?.undoSteps())).toBe(3);
 
     await press(page, 'Control+z'); // the lamp's load
     expect(await snapshot(page)).toEqual(rest);
-    expect(await page.locator('.lil-controller', { has: page.locator('.lil-name', { hasText: /^project rig/ }) }).locator('select').inputValue()).not.toBe('');
+    expect(
+      await page
+        .locator('.lil-controller', { has: page.locator('.lil-name', { hasText: /^project rig/ }) })
+        .locator('select')
+        .inputValue(),
+    ).not.toBe('');
     await press(page, 'Control+z'); // the reset
     expect(await snapshot(page)).toEqual(dragged);
     await press(page, 'Control+z'); // the drag
@@ -129,7 +147,10 @@ describe('pose files', () => {
 
     // A pose file for another rig: refused by name, nothing changes.
     const bad = join(resultsDir, 'bad-pose.json');
-    writeFileSync(bad, JSON.stringify({ format: 'ik-pose', version: 1, rig: 'x', bones: { 'no such bone': [0, 0, 0] }, effectors: [] }));
+    writeFileSync(
+      bad,
+      JSON.stringify({ format: 'ik-pose', version: 1, rig: 'x', bones: { 'no such bone': [0, 0, 0] }, effectors: [] }),
+    );
     await page.setInputFiles('#pose-file', bad);
     await page.waitForFunction(() => document.getElementById('message')?.dataset.kind === 'error');
     expect(await page.textContent('#message')).toMatch(/bad-pose\.json.*no such bone/);
@@ -156,12 +177,15 @@ describe('pose files', () => {
     await saved.saveAs(file);
 
     await page.setInputFiles('#rig-file', file);
-    await page.waitForFunction(() => window.ikPage?.rigName() === 'knight-posed' && document.getElementById('app')?.dataset.state === 'ready');
+    await page.waitForFunction(
+      () => window.ikPage?.rigName() === 'knight-posed' && document.getElementById('app')?.dataset.state === 'ready',
+    );
     await renderedFrames(page, 3);
     const again = await boneTips(page);
     expect(Object.keys(again)).toEqual(Object.keys(tips));
     let worst = 0;
-    for (const [name, p] of Object.entries(tips)) worst = Math.max(worst, Math.hypot(p[0] - again[name][0], p[1] - again[name][1], p[2] - again[name][2]));
+    for (const [name, p] of Object.entries(tips))
+      worst = Math.max(worst, Math.hypot(p[0] - again[name][0], p[1] - again[name][1], p[2] - again[name][2]));
     expect(worst / size).toBeLessThan(1e-6);
     expect(errors).toEqual([]);
   });
@@ -175,10 +199,16 @@ describe('pose files', () => {
       mimeType: 'application/json',
       buffer: Buffer.from(treeA7([-1, 0, 1])),
     });
-    await page.waitForFunction(() => window.ikPage?.rigName() === 'two' || document.getElementById('message')?.dataset.kind === 'error');
+    await page.waitForFunction(
+      () => window.ikPage?.rigName() === 'two' || document.getElementById('message')?.dataset.kind === 'error',
+    );
     expect(await page.textContent('#message')).not.toMatch(/Could not/);
     const button = await panelButton(page, /^save posed model/);
     expect(await button.isDisabled()).toBe(true);
-    expect(await page.locator('.lil-controller', { has: page.locator('.lil-name', { hasText: /^save posed model/ }) }).getAttribute('title')).toMatch(/A7/);
+    expect(
+      await page
+        .locator('.lil-controller', { has: page.locator('.lil-name', { hasText: /^save posed model/ }) })
+        .getAttribute('title'),
+    ).toMatch(/A7/);
   });
 });

@@ -12,7 +12,18 @@ import { join } from 'node:path';
 import { describe, expect, it } from 'vitest';
 
 import { openPage, renderedFrames, resultsDir } from './harness.js';
-import { dragTargetAlongY, effectorNamed, gotoRig, panelControl, selectTarget, statText, targetAt, tipAt, usePageServer, waitForConvergence } from './page_helpers.js';
+import {
+  dragTargetAlongY,
+  effectorNamed,
+  gotoRig,
+  panelControl,
+  selectTarget,
+  statText,
+  targetAt,
+  tipAt,
+  usePageServer,
+  waitForConvergence,
+} from './page_helpers.js';
 
 const env = usePageServer();
 
@@ -32,7 +43,9 @@ describe('the posed .glb round trip', () => {
     await gotoRig(page, env.url, 'character');
     const left = await effectorNamed(page, /LeftFoot$/);
     const right = await effectorNamed(page, /RightFoot$/);
-    const names = await page.evaluate(() => (window.ikPage?.effectors() ?? []).map((b) => window.ikPage?.boneNames()[b] ?? ''));
+    const names = await page.evaluate(() =>
+      (window.ikPage?.effectors() ?? []).map((b) => window.ikPage?.boneNames()[b] ?? ''),
+    );
     expect(names[left]).toMatch(/LeftFoot$/);
     expect(names[right]).toMatch(/RightFoot$/);
     const delta = await page.evaluate(() => window.ikPage?.tipTolerance() ?? 0); // δ: 0.1% of the size
@@ -43,7 +56,8 @@ describe('the posed .glb round trip', () => {
     });
     const limits = await page.evaluate(() => window.ikPage?.limits() ?? { lower: [], upper: [] });
     expect(limits.lower.length).toBeGreaterThan(0);
-    const stood = await tipAt(page, left), rightStood = await tipAt(page, right);
+    const stood = await tipAt(page, left),
+      rightStood = await tipAt(page, right);
 
     // 1. The left foot's target up 30% of the height with the mouse.
     await selectTarget(page, left);
@@ -51,7 +65,8 @@ describe('the posed .glb round trip', () => {
     await waitForConvergence(page);
     const lifted = await targetAt(page, left);
     expect(lifted[1] - stood[1]).toBeGreaterThan(0.29 * height);
-    const savedLeft = await tipAt(page, left), savedRight = await tipAt(page, right);
+    const savedLeft = await tipAt(page, left),
+      savedRight = await tipAt(page, right);
     expect(distance(savedLeft, lifted)).toBeLessThan(delta);
     expect(distance(savedRight, rightStood)).toBeLessThan(delta);
 
@@ -63,7 +78,9 @@ describe('the posed .glb round trip', () => {
     const file = join(resultsDir, 'character-posed.glb');
     await saved.saveAs(file);
     await page.setInputFiles('#rig-file', file);
-    await page.waitForFunction(() => window.ikPage?.rigName() === 'character-posed' && document.getElementById('app')?.dataset.state === 'ready');
+    await page.waitForFunction(
+      () => window.ikPage?.rigName() === 'character-posed' && document.getElementById('app')?.dataset.state === 'ready',
+    );
     await renderedFrames(page, 3);
 
     // 3. The same limits, no warning of a limb bent the other way or nodes out of the bind pose, opened posed.
@@ -72,10 +89,13 @@ describe('the posed .glb round trip', () => {
     expect(message).not.toMatch(/bent the other way/);
     expect(message).not.toMatch(/not in the bind pose/);
     const again = await page.evaluate(() => window.ikPage?.limits() ?? { lower: [], upper: [] });
-    const lowerOff = worstDifference(limits.lower, again.lower), upperOff = worstDifference(limits.upper, again.upper);
+    const lowerOff = worstDifference(limits.lower, again.lower),
+      upperOff = worstDifference(limits.upper, again.upper);
     expect(await page.evaluate(() => window.ikPage?.tipTolerance() ?? 0)).toBeCloseTo(delta, 6);
-    const left2 = await effectorNamed(page, /LeftFoot$/), right2 = await effectorNamed(page, /RightFoot$/);
-    const openedLeft = await tipAt(page, left2), openedRight = await tipAt(page, right2);
+    const left2 = await effectorNamed(page, /LeftFoot$/),
+      right2 = await effectorNamed(page, /RightFoot$/);
+    const openedLeft = await tipAt(page, left2),
+      openedRight = await tipAt(page, right2);
     console.log(
       `[posed round trip] limits: lower off by ${lowerOff.toExponential(2)}°, upper by ${upperOff.toExponential(2)}° over ${again.lower.length} angles; ` +
         `reopened left foot ${(distance(openedLeft, savedLeft) / delta).toExponential(2)} δ from where it was saved, right foot ${(distance(openedRight, rightStood) / delta).toExponential(2)} δ from where it stands (δ = ${delta.toPrecision(3)})`,
@@ -95,7 +115,8 @@ describe('the posed .glb round trip', () => {
     const from = await targetAt(page, left2);
     await dragTargetAlongY(page, left2, stood[1] - from[1], 20);
     await waitForConvergence(page);
-    const down = await tipAt(page, left2), downTarget = await targetAt(page, left2);
+    const down = await tipAt(page, left2),
+      downTarget = await targetAt(page, left2);
     const pixels = await page.evaluate(() => window.ikPage?.pixelsPerUnit() ?? NaN);
     console.log(
       `[posed round trip] dragged back down: target ${(distance(downTarget, stood) / delta).toFixed(3)} δ from where the foot stood (${(distance(downTarget, stood) * pixels).toFixed(2)} px; δ is ${(delta * pixels).toFixed(2)} px), ` +
@@ -108,7 +129,9 @@ describe('the posed .glb round trip', () => {
     await page.keyboard.press('r');
     await renderedFrames(page, 3);
     const reset = await tipAt(page, left2);
-    console.log(`[posed round trip] after R: left foot ${(distance(reset, stood) / delta).toExponential(2)} δ from its rest place`);
+    console.log(
+      `[posed round trip] after R: left foot ${(distance(reset, stood) / delta).toExponential(2)} δ from its rest place`,
+    );
     expect(distance(reset, stood)).toBeLessThan(delta);
     expect(errors).toEqual([]);
   });

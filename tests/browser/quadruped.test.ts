@@ -13,7 +13,16 @@ import type { Page } from 'playwright-core';
 import { describe, expect, it } from 'vitest';
 
 import { openPage, renderedFrames, resultsDir } from './harness.js';
-import { dragMouse, dragTargetAlongY, effectorNamed, gotoRig, panelControl, selectTarget, usePageServer, waitForConvergence } from './page_helpers.js';
+import {
+  dragMouse,
+  dragTargetAlongY,
+  effectorNamed,
+  gotoRig,
+  panelControl,
+  selectTarget,
+  usePageServer,
+  waitForConvergence,
+} from './page_helpers.js';
 import { QUADRUPED_BODY, QUADRUPED_TAIL_TIP, quadrupedGlb } from './quadruped_model.js';
 
 const env = usePageServer();
@@ -25,8 +34,18 @@ const distance = (a: Point, b: Point): number => Math.hypot(a[0] - b[0], a[1] - 
 /** Opens the quadruped through the file input and waits until it is shown (its stats start afresh). */
 async function openQuadruped(page: Page): Promise<void> {
   const loads = (await page.evaluate(() => window.ikPage?.loads())) ?? 0;
-  await page.setInputFiles('#rig-file', { name: 'quadruped.glb', mimeType: 'model/gltf-binary', buffer: Buffer.from(await quadrupedGlb()) });
-  await page.waitForFunction((n) => (window.ikPage?.loads() ?? 0) > n && window.ikPage?.rigName() === 'quadruped' && document.getElementById('app')?.dataset.state === 'ready', loads);
+  await page.setInputFiles('#rig-file', {
+    name: 'quadruped.glb',
+    mimeType: 'model/gltf-binary',
+    buffer: Buffer.from(await quadrupedGlb()),
+  });
+  await page.waitForFunction(
+    (n) =>
+      (window.ikPage?.loads() ?? 0) > n &&
+      window.ikPage?.rigName() === 'quadruped' &&
+      document.getElementById('app')?.dataset.state === 'ready',
+    loads,
+  );
   await renderedFrames(page, 3);
 }
 
@@ -40,7 +59,10 @@ async function boneTip(page: Page, name: string): Promise<Point> {
 }
 
 async function point(page: Page, what: 'tip' | 'target', k: number): Promise<Point> {
-  const p = await page.evaluate(([w, i]) => (w === 'tip' ? window.ikPage?.tipPosition(i) : window.ikPage?.targetPosition(i)) ?? null, [what, k] as const);
+  const p = await page.evaluate(
+    ([w, i]) => (w === 'tip' ? window.ikPage?.tipPosition(i) : window.ikPage?.targetPosition(i)) ?? null,
+    [what, k] as const,
+  );
   if (!p) throw new Error(`no ${what} ${k}`);
   return p;
 }
@@ -62,7 +84,8 @@ interface Lift {
 /** Puts the gizmo on target k: a click on it, else Tab through the targets (a paw behind another on screen). */
 async function select(page: Page, k: number): Promise<void> {
   await selectTarget(page, k).catch(() => undefined);
-  for (let i = 0; i < 8 && (await page.evaluate(() => window.ikPage?.selectedTarget())) !== k; i++) await page.keyboard.press('Tab');
+  for (let i = 0; i < 8 && (await page.evaluate(() => window.ikPage?.selectedTarget())) !== k; i++)
+    await page.keyboard.press('Tab');
   expect(await page.evaluate(() => window.ikPage?.selectedTarget())).toBe(k);
 }
 
@@ -71,7 +94,9 @@ async function liftPaw(page: Page, k: number, height: number): Promise<Lift> {
   await page.keyboard.press('r');
   await page.waitForFunction(() => (window.ikPage?.angles() ?? [1]).every((a) => a === 0));
   await renderedFrames(page, 2);
-  const hips0 = await boneTip(page, QUADRUPED_BODY), tail0 = await boneTip(page, QUADRUPED_TAIL_TIP), paw0 = await point(page, 'tip', k);
+  const hips0 = await boneTip(page, QUADRUPED_BODY),
+    tail0 = await boneTip(page, QUADRUPED_TAIL_TIP),
+    paw0 = await point(page, 'tip', k);
   const effectors = (await page.evaluate(() => window.ikPage?.effectors() ?? [])).length;
   const others0 = await Promise.all(Array.from({ length: effectors }, (_, j) => point(page, 'tip', j)));
   const solvesBefore = (await page.evaluate(() => window.ikPage?.solveMs().total)) ?? 0;
@@ -80,9 +105,11 @@ async function liftPaw(page: Page, k: number, height: number): Promise<Lift> {
   await waitForConvergence(page);
   const ms = await page.evaluate(() => window.ikPage?.solveMs() ?? null);
   expect(ms!.total).toBeGreaterThan(solvesBefore + 10); // the drag solved frame by frame
-  const target = await point(page, 'target', k), paw = await point(page, 'tip', k);
+  const target = await point(page, 'target', k),
+    paw = await point(page, 'tip', k);
   let othersOff = 0;
-  for (let j = 0; j < effectors; j++) if (j !== k) othersOff = Math.max(othersOff, distance(await point(page, 'tip', j), others0[j]));
+  for (let j = 0; j < effectors; j++)
+    if (j !== k) othersOff = Math.max(othersOff, distance(await point(page, 'tip', j), others0[j]));
   return {
     rise: (target[1] - paw0[1]) / height,
     hips: distance(await boneTip(page, QUADRUPED_BODY), hips0) / height,
@@ -103,7 +130,9 @@ describe('a still body on a quadruped without a humanoid map', () => {
     const message = (await page.textContent('#message')) ?? '';
     expect(message).not.toMatch(/humanoid/); // no humanoid map
     expect(await page.evaluate(() => window.ikPage?.settings().stillBody)).toBe(true); // the default
-    const names = await page.evaluate(() => (window.ikPage?.effectors() ?? []).map((b) => window.ikPage?.boneNames()[b] ?? ''));
+    const names = await page.evaluate(() =>
+      (window.ikPage?.effectors() ?? []).map((b) => window.ikPage?.boneNames()[b] ?? ''),
+    );
     expect(names).toEqual(['head', 'fore_paw.L', 'fore_paw.R', 'hind_paw.L', 'hind_paw.R']);
     const limits = await page.evaluate(() => window.ikPage?.limits() ?? { lower: [], upper: [] });
     expect(Math.max(...limits.lower)).toBe(-180); // no limits anywhere
@@ -115,13 +144,19 @@ describe('a still body on a quadruped without a humanoid map', () => {
     });
     expect(delta).toBeGreaterThan(0);
     expect(height).toBeGreaterThan(0.5);
-    const front = await effectorNamed(page, /^fore_paw\.L$/), hind = await effectorNamed(page, /^hind_paw\.L$/);
+    const front = await effectorNamed(page, /^fore_paw\.L$/),
+      hind = await effectorNamed(page, /^hind_paw\.L$/);
     expect([names[front], names[hind]]).toEqual(['fore_paw.L', 'hind_paw.L']);
 
     const on: Record<string, Lift> = {};
-    for (const [label, k] of [['front', front], ['hind', hind]] as const) {
+    for (const [label, k] of [
+      ['front', front],
+      ['hind', hind],
+    ] as const) {
       const lift = (on[label] = await liftPaw(page, k, height));
-      console.log(`[quadruped] still body on, ${label} paw up ${pct(lift.rise)}: hips ${pct(lift.hips)}, tail tip ${pct(lift.tail)} of the height; paw ${(lift.pawOff / delta).toFixed(2)} δ off its target, other tips moved ≤ ${(lift.othersOff / delta).toFixed(2)} δ; solve median ${lift.solveMs.toFixed(3)} ms`);
+      console.log(
+        `[quadruped] still body on, ${label} paw up ${pct(lift.rise)}: hips ${pct(lift.hips)}, tail tip ${pct(lift.tail)} of the height; paw ${(lift.pawOff / delta).toFixed(2)} δ off its target, other tips moved ≤ ${(lift.othersOff / delta).toFixed(2)} δ; solve median ${lift.solveMs.toFixed(3)} ms`,
+      );
       expect(lift.rise).toBeGreaterThan(0.14);
       expect(lift.pawOff).toBeLessThan(delta);
       expect(lift.othersOff).toBeLessThan(delta);
@@ -140,9 +175,14 @@ describe('a still body on a quadruped without a humanoid map', () => {
     await (await panelControl(page, /^still body/)).locator('input').click();
     expect(await page.evaluate(() => window.ikPage?.settings().stillBody)).toBe(false);
     await openQuadruped(page);
-    for (const [label, k] of [['front', front], ['hind', hind]] as const) {
+    for (const [label, k] of [
+      ['front', front],
+      ['hind', hind],
+    ] as const) {
       const lift = await liftPaw(page, k, height);
-      console.log(`[quadruped] still body off, ${label} paw up ${pct(lift.rise)}: hips ${pct(lift.hips)}, tail tip ${pct(lift.tail)} of the height; paw ${(lift.pawOff / delta).toFixed(2)} δ off its target; solve median ${lift.solveMs.toFixed(3)} ms (on: ${on[label].solveMs.toFixed(3)} ms)`);
+      console.log(
+        `[quadruped] still body off, ${label} paw up ${pct(lift.rise)}: hips ${pct(lift.hips)}, tail tip ${pct(lift.tail)} of the height; paw ${(lift.pawOff / delta).toFixed(2)} δ off its target; solve median ${lift.solveMs.toFixed(3)} ms (on: ${on[label].solveMs.toFixed(3)} ms)`,
+      );
       expect(lift.pawOff).toBeLessThan(delta);
       expect(lift.hips).toBeGreaterThan(0.02);
       expect(lift.tail).toBeGreaterThan(0.02);

@@ -30,7 +30,12 @@ function leg(front: boolean, side: 'L' | 'R'): QuadrupedJoint[] {
     { name: `${p}1.${side}`, parent, head: [x, y[0], z[0]] },
     { name: `${p}2.${side}`, parent: `${p}1.${side}`, head: [x, y[1], z[1]] },
     { name: `${p}3.${side}`, parent: `${p}2.${side}`, head: [x, y[2], z[2]] },
-    { name: `${p}_paw.${side}`, parent: `${p}3.${side}`, head: [x, y[3], z[3]], ik: { tail: [0, -0.05, 0.06], effector: true } },
+    {
+      name: `${p}_paw.${side}`,
+      parent: `${p}3.${side}`,
+      head: [x, y[3], z[3]],
+      ik: { tail: [0, -0.05, 0.06], effector: true },
+    },
   ];
 }
 
@@ -64,7 +69,9 @@ export async function quadrupedGlb(): Promise<Uint8Array> {
   const nodes = new Map<string, { node: Node; head: Vec3 }>();
   for (const j of QUADRUPED_JOINTS) {
     const parent = j.parent === undefined ? undefined : nodes.get(j.parent)!;
-    const local: Vec3 = parent ? [j.head[0] - parent.head[0], j.head[1] - parent.head[1], j.head[2] - parent.head[2]] : j.head;
+    const local: Vec3 = parent
+      ? [j.head[0] - parent.head[0], j.head[1] - parent.head[1], j.head[2] - parent.head[2]]
+      : j.head;
     const node = doc.createNode(j.name).setTranslation(local);
     if (j.ik) node.setExtras({ ik: j.ik });
     if (parent) parent.node.addChild(node);
@@ -75,7 +82,9 @@ export async function quadrupedGlb(): Promise<Uint8Array> {
   // Column-major inverse bind matrices: a translation by -head (the bind pose).
   const ibm = new Float32Array(16 * list.length);
   list.forEach((j, k) => ibm.set([1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, -j.head[0], -j.head[1], -j.head[2], 1], 16 * k));
-  const skin = doc.createSkin('quadruped').setInverseBindMatrices(doc.createAccessor().setType('MAT4').setArray(ibm).setBuffer(buffer));
+  const skin = doc
+    .createSkin('quadruped')
+    .setInverseBindMatrices(doc.createAccessor().setType('MAT4').setArray(ibm).setBuffer(buffer));
   list.forEach((j) => skin.addJoint(j.node));
   return new WebIO().writeBinary(doc);
 }

@@ -16,7 +16,15 @@ import { describe, expect, it } from 'vitest';
 
 import { robotGlb } from '../helpers/robot_glb.js';
 import { openPage, renderedFrames, resultsDir } from './harness.js';
-import { dragTargetAlongY, effectorNamed, gotoRig, panelControl, selectTarget, usePageServer, waitForConvergence } from './page_helpers.js';
+import {
+  dragTargetAlongY,
+  effectorNamed,
+  gotoRig,
+  panelControl,
+  selectTarget,
+  usePageServer,
+  waitForConvergence,
+} from './page_helpers.js';
 
 const env = usePageServer();
 
@@ -36,21 +44,34 @@ const add = (a: Point, b: Point): Point => [a[0] + b[0], a[1] + b[1], a[2] + b[2
 function rotate(q: Quat, p: Point): Point {
   const [x, y, z, w] = q;
   const t = [2 * (y * p[2] - z * p[1]), 2 * (z * p[0] - x * p[2]), 2 * (x * p[1] - y * p[0])];
-  return [p[0] + w * t[0] + y * t[2] - z * t[1], p[1] + w * t[1] + z * t[0] - x * t[2], p[2] + w * t[2] + x * t[1] - y * t[0]];
+  return [
+    p[0] + w * t[0] + y * t[2] - z * t[1],
+    p[1] + w * t[1] + z * t[0] - x * t[2],
+    p[2] + w * t[2] + x * t[1] - y * t[0],
+  ];
 }
 const conjugate = (q: Quat): Quat => [-q[0], -q[1], -q[2], q[3]];
 /** Angle between two unit quaternions' rotations, degrees. */
-const turnDeg = (a: Quat, b: Quat): number => (2 * Math.acos(Math.min(1, Math.abs(a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + a[3] * b[3]))) * 180) / Math.PI;
+const turnDeg = (a: Quat, b: Quat): number =>
+  (2 * Math.acos(Math.min(1, Math.abs(a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + a[3] * b[3]))) * 180) / Math.PI;
 
-async function probe<T>(page: Page, what: string, read: (arg: number | string) => T | null | undefined, arg: number | string): Promise<T> {
+async function probe<T>(
+  page: Page,
+  what: string,
+  read: (arg: number | string) => T | null | undefined,
+  arg: number | string,
+): Promise<T> {
   const value = await page.evaluate(read, arg);
   if (value === null || value === undefined) throw new Error(`no ${what} ${arg}`);
   return value;
 }
 const tip = (page: Page, k: number) => probe<Point>(page, 'tip', (i) => window.ikPage?.tipPosition(i as number), k);
-const target = (page: Page, k: number) => probe<Point>(page, 'target', (i) => window.ikPage?.targetPosition(i as number), k);
-const tipTurn = (page: Page, k: number) => probe<Quat>(page, 'tip rotation', (i) => window.ikPage?.tipRotation(i as number), k);
-const meshBox = (page: Page, name: string) => probe<Box>(page, 'mesh', (n) => window.ikPage?.objectBounds(n as string), name);
+const target = (page: Page, k: number) =>
+  probe<Point>(page, 'target', (i) => window.ikPage?.targetPosition(i as number), k);
+const tipTurn = (page: Page, k: number) =>
+  probe<Quat>(page, 'tip rotation', (i) => window.ikPage?.tipRotation(i as number), k);
+const meshBox = (page: Page, name: string) =>
+  probe<Box>(page, 'mesh', (n) => window.ikPage?.objectBounds(n as string), name);
 
 describe('a robot whose feet are control bones off the root (RobotExpressive-like)', () => {
   it('gets the leg ends as foot effectors, and a leg lifted with the mouse takes its foot mesh along', async (ctx) => {
@@ -60,11 +81,15 @@ describe('a robot whose feet are control bones off the root (RobotExpressive-lik
     const file = join(resultsDir, 'robot_legs.glb');
     writeFileSync(file, await robotGlb());
     await page.setInputFiles('#rig-file', file);
-    await page.waitForFunction(() => window.ikPage?.rigName() === 'robot_legs' && document.getElementById('app')?.dataset.state === 'ready');
+    await page.waitForFunction(
+      () => window.ikPage?.rigName() === 'robot_legs' && document.getElementById('app')?.dataset.state === 'ready',
+    );
     await renderedFrames(page, 3);
 
     // 1. The legs' effectors are the ends of the leg chains; the message names the controls left out.
-    const names = await page.evaluate(() => (window.ikPage?.effectors() ?? []).map((b) => window.ikPage?.boneNames()[b] ?? ''));
+    const names = await page.evaluate(() =>
+      (window.ikPage?.effectors() ?? []).map((b) => window.ikPage?.boneNames()[b] ?? ''),
+    );
     expect(names).toContain('LowerLegL');
     expect(names).toContain('LowerLegR');
     for (const control of ['FootL', 'FootR', 'PoleTargetL', 'PoleTargetR']) expect(names).not.toContain(control);
@@ -75,7 +100,8 @@ describe('a robot whose feet are control bones off the root (RobotExpressive-lik
       'end effectors are the hands, feet and head of the humanoid mapping, the ends of the limbs (LowerLegL, LowerLegR) in place of the control bones off the root (FootL, FootR) (Head, Palm2L, Palm2R, LowerLegL, LowerLegR)',
     );
 
-    const left = await effectorNamed(page, /^LowerLegL$/), right = await effectorNamed(page, /^LowerLegR$/);
+    const left = await effectorNamed(page, /^LowerLegL$/),
+      right = await effectorNamed(page, /^LowerLegR$/);
     // The importer's other effectors (the page may add a hips target of its own, free while another is dragged).
     const others = ['Head', 'Palm2L', 'Palm2R', 'LowerLegR'].map((n) => names.indexOf(n));
     expect(others).not.toContain(-1);
@@ -86,10 +112,12 @@ describe('a robot whose feet are control bones off the root (RobotExpressive-lik
       return b ? b.max[1] - b.min[1] : NaN;
     });
     expect(height).toBeGreaterThan(1.5); // the robot stands about 1.95 tall
-    const stood = await tip(page, left), stoodTurn = await tipTurn(page, left);
+    const stood = await tip(page, left),
+      stoodTurn = await tipTurn(page, left);
     const othersStood = await Promise.all(others.map((k) => tip(page, k)));
     const rightTurn = await tipTurn(page, right);
-    const footL = await meshBox(page, 'FootMeshL'), footR = await meshBox(page, 'FootMeshR');
+    const footL = await meshBox(page, 'FootMeshL'),
+      footR = await meshBox(page, 'FootMeshR');
     expect(footL.min[1]).toBeLessThan(0.01); // on the floor, below the leg's end
     expect(footL.max[1]).toBeLessThan(stood[1]);
 
@@ -98,7 +126,8 @@ describe('a robot whose feet are control bones off the root (RobotExpressive-lik
     await dragTargetAlongY(page, left, 0.15 * height, 20);
     await waitForConvergence(page);
     await renderedFrames(page, 2);
-    const lifted = await target(page, left), reached = await tip(page, left);
+    const lifted = await target(page, left),
+      reached = await tip(page, left);
     const rise = reached[1] - stood[1];
     expect(lifted[1] - stood[1]).toBeGreaterThan(0.14 * height);
     expect(distance(reached, lifted)).toBeLessThan(delta);

@@ -174,7 +174,11 @@ describe('selection you can always make', () => {
       const b = window.ikPage!.bounds()!;
       return b.max[1] - b.min[1];
     });
-    const ahead = await page.evaluate(([x, y, z]) => window.ikPage!.worldToScreen([x, y, z]), [at[0] + 0.1 * size, at[1], at[2]] as [number, number, number]);
+    const ahead = await page.evaluate(([x, y, z]) => window.ikPage!.worldToScreen([x, y, z]), [
+      at[0] + 0.1 * size,
+      at[1],
+      at[2],
+    ] as [number, number, number]);
     const len = Math.hypot(ahead.x - l.x, ahead.y - l.y);
     const dir = { x: (ahead.x - l.x) / len, y: (ahead.y - l.y) / len };
     let grip: ScreenPoint | null = null;

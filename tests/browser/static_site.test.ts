@@ -28,7 +28,8 @@ afterAll(async () => {
 
 describe('the static build (dist/site/)', () => {
   it('holds the page, the embed example, the widget script, the models and the WebAssembly', () => {
-    for (const file of ['index.html', 'embed-example.html', 'ik-widget.js', 'models/knight.glb']) expect(existsSync(join(site, file)), file).toBe(true);
+    for (const file of ['index.html', 'embed-example.html', 'ik-widget.js', 'models/knight.glb'])
+      expect(existsSync(join(site, file)), file).toBe(true);
     const assets = execFileSync('ls', [join(site, 'assets')], { encoding: 'utf8' });
     expect(assets).toMatch(/\.wasm/);
   });
@@ -60,10 +61,17 @@ describe('the static build (dist/site/)', () => {
   it('served by a plain static server, the embed example shows its widgets ready', async (ctx) => {
     const { page, errors } = await openPage(browser, ctx);
     await page.goto(`${server.url}embed-example.html`);
-    await page.waitForFunction(() => {
-      const widgets = [...document.querySelectorAll('ik-widget')];
-      return widgets.length > 0 && widgets.every((w) => ['ready', 'error'].includes((w as HTMLElement).dataset.state ?? ''));
-    }, null, { timeout: 30_000 });
+    await page.waitForFunction(
+      () => {
+        const widgets = [...document.querySelectorAll('ik-widget')];
+        return (
+          widgets.length > 0 &&
+          widgets.every((w) => ['ready', 'error'].includes((w as HTMLElement).dataset.state ?? ''))
+        );
+      },
+      null,
+      { timeout: 30_000 },
+    );
     const states = await page.$$eval('ik-widget', (ws) => ws.map((w) => (w as HTMLElement).dataset.state));
     expect(states.every((s) => s === 'ready')).toBe(true);
     expect(errors).toEqual([]);

@@ -24,12 +24,27 @@ import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 
 import { type BrowserSession, launchBrowser, openPage, renderedFrames, resultsDir } from './harness.js';
 import {
-  dragTargetAlongY, dragTowardsRoot, effectorNamed, gotoRig, panelControl, selectTarget, stat, statText, swipe, targetAt, targetScreen, tipAt, usePageServer, waitForConvergence,
+  dragTargetAlongY,
+  dragTowardsRoot,
+  effectorNamed,
+  gotoRig,
+  panelControl,
+  selectTarget,
+  stat,
+  statText,
+  swipe,
+  targetAt,
+  targetScreen,
+  tipAt,
+  usePageServer,
+  waitForConvergence,
 } from './page_helpers.js';
 
 /** Whether two client rectangles overlap. */
-const overlaps = (a: { x: number; y: number; width: number; height: number }, b: { x: number; y: number; width: number; height: number }): boolean =>
-  a.x < b.x + b.width && b.x < a.x + a.width && a.y < b.y + b.height && b.y < a.y + a.height;
+const overlaps = (
+  a: { x: number; y: number; width: number; height: number },
+  b: { x: number; y: number; width: number; height: number },
+): boolean => a.x < b.x + b.width && b.x < a.x + a.width && a.y < b.y + b.height && b.y < a.y + a.height;
 
 const env = usePageServer();
 let phone: BrowserSession;
@@ -51,11 +66,19 @@ describe('what a student sees', () => {
     const px = await page.evaluate(() => window.ikPage?.pixelsPerUnit() ?? NaN);
     await dragTargetAlongY(page, hand, 120 / px);
     await renderedFrames(page, 3);
-    const target = await targetAt(page, hand), tip = await tipAt(page, hand);
+    const target = await targetAt(page, hand),
+      tip = await tipAt(page, hand);
     const distance = Math.hypot(target[0] - tip[0], target[1] - tip[1], target[2] - tip[2]);
     expect(distance * px).toBeGreaterThan(100); // the hand stayed where it was: step mode solves nothing by itself
-    await page.waitForFunction(() => document.querySelector('[data-stat="status"]')?.textContent === 'not solved yet: press S');
-    await page.waitForFunction((d) => Math.abs(Number(document.querySelector('[data-stat="tipDistance"]')?.getAttribute('data-value')) - d) < 1e-9 * (1 + d), distance);
+    await page.waitForFunction(
+      () => document.querySelector('[data-stat="status"]')?.textContent === 'not solved yet: press S',
+    );
+    await page.waitForFunction(
+      (d) =>
+        Math.abs(Number(document.querySelector('[data-stat="tipDistance"]')?.getAttribute('data-value')) - d) <
+        1e-9 * (1 + d),
+      distance,
+    );
     expect(await statText(page, 'tipDistance')).toMatch(/\(1\d\d\.\d px\)$/);
     expect(Number(await stat(page, 'E'))).toBeCloseTo((distance * distance) / 2, 6);
     expect(await statText(page, 'iterations')).toBe('0');
@@ -65,7 +88,9 @@ describe('what a student sees', () => {
     await page.screenshot({ path: join(resultsDir, 'step-mode-after-drag.png') });
     // One S: an iteration towards the new target, and the stats say so.
     await page.keyboard.press('s');
-    await page.waitForFunction(() => document.querySelector('[data-stat="status"]')?.textContent !== 'not solved yet: press S');
+    await page.waitForFunction(
+      () => document.querySelector('[data-stat="status"]')?.textContent !== 'not solved yet: press S',
+    );
     expect(await statText(page, 'iterations')).toBe('1');
     expect(await page.textContent('#step-info')).toMatch(/iteration 1: E/);
     expect(Number(await stat(page, 'tipDistance'))).toBeLessThan(distance);
@@ -79,13 +104,18 @@ describe('what a student sees', () => {
     await dragTowardsRoot(page, hand, 0.3);
     await waitForConvergence(page);
     await page.keyboard.press('c');
-    await page.waitForFunction(() => document.getElementById('compare')?.dataset.state === 'done', null, { timeout: 60_000 });
+    await page.waitForFunction(() => document.getElementById('compare')?.dataset.state === 'done', null, {
+      timeout: 60_000,
+    });
     expect(await page.textContent('#compare h2')).toMatch(/from the rest pose/);
-    const iterations = await page.$$eval('#compare .compare-table tbody tr', (rows) => rows.map((r) => Number((r as HTMLTableRowElement).cells[2].textContent)));
-    console.log(`[student] compare iterations: ${iterations.join(", ")}`);
+    const iterations = await page.$$eval('#compare .compare-table tbody tr', (rows) =>
+      rows.map((r) => Number((r as HTMLTableRowElement).cells[2].textContent)),
+    );
+    console.log(`[student] compare iterations: ${iterations.join(', ')}`);
     expect(iterations.length).toBe(5);
     for (const n of iterations) expect(n).toBeGreaterThan(0);
-    const view = (await page.locator('#viewport').boundingBox())!, box = (await page.locator('#compare').boundingBox())!;
+    const view = (await page.locator('#viewport').boundingBox())!,
+      box = (await page.locator('#compare').boundingBox())!;
     expect(overlaps(view, box)).toBe(false);
     mkdirSync(resultsDir, { recursive: true });
     await page.screenshot({ path: join(resultsDir, 'compare-after-drag.png') });
@@ -106,13 +136,17 @@ describe('what a student sees', () => {
     await page.locator('#sheet-handle').tap();
     await page.waitForFunction(() => document.getElementById('app')?.dataset.sheet === 'expanded');
     await page.keyboard.press('c');
-    await page.waitForFunction(() => document.getElementById('compare')?.dataset.state === 'done', null, { timeout: 60_000 });
+    await page.waitForFunction(() => document.getElementById('compare')?.dataset.state === 'done', null, {
+      timeout: 60_000,
+    });
     await renderedFrames(page, 2);
     const box = (await page.locator('#compare').boundingBox())!;
     const rows = await page.$$eval('#compare .compare-table tbody tr', (r) => r.length);
     console.log(`[student] phone compare: ${box.height.toFixed(0)} px tall, ${rows} rows`);
     expect(rows).toBe(5);
-    const iterations = await page.$$eval('#compare .compare-table tbody tr', (r) => r.map((row) => Number((row as HTMLTableRowElement).cells[2].textContent)));
+    const iterations = await page.$$eval('#compare .compare-table tbody tr', (r) =>
+      r.map((row) => Number((row as HTMLTableRowElement).cells[2].textContent)),
+    );
     for (const n of iterations) expect(n).toBeGreaterThan(0);
     expect(box.height).toBeGreaterThan(250); // the title, the table and its plot, not a strip
     // Every row of the table is on screen.
@@ -125,7 +159,10 @@ describe('what a student sees', () => {
     const cap = (await panelControl(page, /^compare: iterations$/)).locator('input').first();
     await cap.scrollIntoViewIfNeeded();
     expect(await cap.inputValue()).toBe('100000');
-    const fits = await cap.evaluate((input) => [(input as HTMLInputElement).scrollWidth, (input as HTMLInputElement).clientWidth]);
+    const fits = await cap.evaluate((input) => [
+      (input as HTMLInputElement).scrollWidth,
+      (input as HTMLInputElement).clientWidth,
+    ]);
     console.log(`[student] the iteration box: ${fits[0]} px of text in ${fits[1]} px`);
     expect(fits[0]).toBeLessThanOrEqual(fits[1]);
     expect(errors).toEqual([]);
@@ -153,14 +190,17 @@ describe('what a student sees', () => {
         // A finger drags the target that holds the gizmo from the start (a tap on a hand's target may
         // land on another on this small view).
         const cdp = await phone.context.newCDPSession(page);
-        const from = await targetScreen(page, (await page.evaluate(() => window.ikPage?.selectedTarget() ?? null)) ?? 0);
+        const from = await targetScreen(
+          page,
+          (await page.evaluate(() => window.ikPage?.selectedTarget() ?? null)) ?? 0,
+        );
         await swipe(cdp, from.x, from.y, 8, -20);
       } else {
         await dragTowardsRoot(page, await selectTarget(page, await effectorNamed(page, /hand/i)), 0.2);
       }
       await page.waitForFunction(() => document.getElementById('message')?.dataset.dismissed === 'true');
-    expect(await note.isVisible()).toBe(false);
-    expect((await note.boundingBox())?.height ?? oneLine).toBe(oneLine); // its line stays: the view did not move
+      expect(await note.isVisible()).toBe(false);
+      expect((await note.boundingBox())?.height ?? oneLine).toBe(oneLine); // its line stays: the view did not move
       expect(errors).toEqual([]);
     });
   }
@@ -207,7 +247,11 @@ describe('what a student sees', () => {
     await waitForConvergence(page);
     expect((await targetAt(page, 0))[1]).toBeLessThan(before[1]); // the target went down
     await plot.scrollIntoViewIfNeeded();
-    await page.waitForFunction(() => document.querySelector<HTMLElement>('#side > .plot')?.dataset.empty === 'false', null, { timeout: 10_000 });
+    await page.waitForFunction(
+      () => document.querySelector<HTMLElement>('#side > .plot')?.dataset.empty === 'false',
+      null,
+      { timeout: 10_000 },
+    );
     expect(await plot.locator('.uplot').isVisible()).toBe(true);
     expect(errors).toEqual([]);
   });
@@ -251,15 +295,24 @@ describe('what a student sees', () => {
     const t0 = Date.now();
     const drawn0 = await page.evaluate(() => window.ikPage!.drawnFrames());
     await page.keyboard.press('c');
-    await page.waitForFunction(() => document.getElementById('compare')?.dataset.state === 'done', null, { timeout: 120_000 });
+    await page.waitForFunction(() => document.getElementById('compare')?.dataset.state === 'done', null, {
+      timeout: 120_000,
+    });
     const ms = Date.now() - t0;
     const m = await page.evaluate(() => {
       const w = window as unknown as { longTasks: number[]; gaps: number[]; busy: Worker[] };
       for (const b of w.busy) b.terminate();
-      return { longest: Math.max(0, ...w.longTasks), count: w.longTasks.length, gap: Math.max(0, ...w.gaps), drawn: window.ikPage!.drawnFrames() };
+      return {
+        longest: Math.max(0, ...w.longTasks),
+        count: w.longTasks.length,
+        gap: Math.max(0, ...w.gaps),
+        drawn: window.ikPage!.drawnFrames(),
+      };
     });
     const compareDrawn = m.drawn - drawn0;
-    console.log(`[student] busy machine: a still view drew ${idleDrawn} frames in 2 s; a compare of ${ms} ms drew ${compareDrawn} frames and had ${m.count} long tasks, the longest ${m.longest.toFixed(0)} ms, the largest frame gap ${m.gap.toFixed(0)} ms`);
+    console.log(
+      `[student] busy machine: a still view drew ${idleDrawn} frames in 2 s; a compare of ${ms} ms drew ${compareDrawn} frames and had ${m.count} long tasks, the longest ${m.longest.toFixed(0)} ms, the largest frame gap ${m.gap.toFixed(0)} ms`,
+    );
     expect(idleDrawn).toBeLessThanOrEqual(4); // one a second (IDLE_FRAME_MS), and a margin
     expect(idleDrawn).toBeGreaterThan(0); // it still draws: what changed unannounced shows
     // The compare's key draws one frame (its own shortcut might change the picture), then one a second.

@@ -29,7 +29,8 @@ describe('teaching clarity', () => {
     const viewport = page.viewportSize()!;
     const titles = page.locator('.lil-gui .lil-gui > .lil-title');
     expect(await titles.allTextContents()).toEqual(['Rig', 'Pose', 'Solver (every frame)', 'Teaching']);
-    for (let i = 0; i < 4; i++) expect((await titles.nth(i).boundingBox())!.y + 20).toBeLessThanOrEqual(viewport.height);
+    for (let i = 0; i < 4; i++)
+      expect((await titles.nth(i).boundingBox())!.y + 20).toBeLessThanOrEqual(viewport.height);
     expect(await page.locator('#side').evaluate((el) => el.scrollTop)).toBe(0);
 
     await titles.nth(3).click();
@@ -82,7 +83,9 @@ describe('teaching clarity', () => {
     await dragTowardsRoot(page, 0, 0.2);
     await page.keyboard.press('s');
     await page.waitForFunction(() => /iteration 1/.test(document.getElementById('step-info')?.textContent ?? ''));
-    expect(await page.textContent('#step-info')).toMatch(/^gradient descent \(paper mode\), iteration 1: .*stopped: .*\[[a-z_]+\]|^gradient descent \(paper mode\), iteration 1: .*running/);
+    expect(await page.textContent('#step-info')).toMatch(
+      /^gradient descent \(paper mode\), iteration 1: .*stopped: .*\[[a-z_]+\]|^gradient descent \(paper mode\), iteration 1: .*running/,
+    );
   });
 
   it('the iteration axis is logarithmic, and linear with the box unticked; no timer note when isolated', async (ctx) => {

@@ -47,7 +47,11 @@ describe('track mode', () => {
     const { page, errors } = await openPage(env.browser, ctx);
     await gotoRig(page, env.url, 'character');
     expect(await page.evaluate(() => window.ikTrack?.problem())).toBe(null);
-    const before = await page.evaluate(() => ({ angles: window.ikPage!.angles(), targets: window.ikPage!.targets(), alive: window.ikPage!.alive() }));
+    const before = await page.evaluate(() => ({
+      angles: window.ikPage!.angles(),
+      targets: window.ikPage!.targets(),
+      alive: window.ikPage!.alive(),
+    }));
     await enterTrackMode(page);
     const h = await page.evaluate(() => window.ikTrack!.height());
     const delta = 1e-3 * h;
@@ -66,10 +70,16 @@ describe('track mode', () => {
       await nextFrame(page);
     }
     await page.mouse.up();
-    await page.waitForFunction((d) => {
-      const t = window.ikTrack!, tips = t.tips(), p = t.points();
-      return Math.hypot(tips[3] - p[3], tips[4] - p[4], tips[5] - p[5]) < d;
-    }, delta, { timeout: 10_000 });
+    await page.waitForFunction(
+      (d) => {
+        const t = window.ikTrack!,
+          tips = t.tips(),
+          p = t.points();
+        return Math.hypot(tips[3] - p[3], tips[4] - p[4], tips[5] - p[5]) < d;
+      },
+      delta,
+      { timeout: 10_000 },
+    );
     const points = await page.evaluate(() => window.ikTrack!.points());
     const tips = await page.evaluate(() => window.ikTrack!.tips());
     expect(distance(points, 1, start)).toBeGreaterThan(0.05 * h); // the hand's point moved 5% of the height or more
@@ -85,7 +95,11 @@ describe('track mode', () => {
     await (await panelControl(page, /^track mode/)).locator('input').click();
     await page.waitForFunction(() => window.ikTrack?.active() === false);
     await renderedFrames(page);
-    const after = await page.evaluate(() => ({ angles: window.ikPage!.angles(), targets: window.ikPage!.targets(), alive: window.ikPage!.alive() }));
+    const after = await page.evaluate(() => ({
+      angles: window.ikPage!.angles(),
+      targets: window.ikPage!.targets(),
+      alive: window.ikPage!.alive(),
+    }));
     expect(after.angles).toEqual(before.angles);
     expect(after.targets).toEqual(before.targets);
     expect(after.alive.sessions).toBe(before.alive.sessions);
@@ -107,11 +121,16 @@ describe('track mode', () => {
     expect(Math.hypot(...offset)).toBeCloseTo(h, 6); // one height to the side: the character faces +Z, its left is +X
     expect(offset[0]).toBeCloseTo(h, 6);
 
-    const worst: number[] = [], ghostRightHand: number[][] = [];
+    const worst: number[] = [],
+      ghostRightHand: number[][] = [];
     let feet = 0;
     for (let f = 0; f < 40; f++) {
       await nextFrame(page);
-      const { ghost, tips, planted } = await page.evaluate(() => ({ ghost: window.ikTrack!.ghostTips()!, tips: window.ikTrack!.tips(), planted: window.ikTrack!.plantedFeet() }));
+      const { ghost, tips, planted } = await page.evaluate(() => ({
+        ghost: window.ikTrack!.ghostTips()!,
+        tips: window.ikTrack!.tips(),
+        planted: window.ikTrack!.plantedFeet(),
+      }));
       worst.push(Math.max(...[0, 1, 2].map((k) => distance(tips, k, ghost))) / delta);
       ghostRightHand.push(ghost.slice(6, 9));
       planted.forEach((at, k) => (feet = Math.max(feet, at ? distance(tips, 3 + k, at, 0) / delta : 0)));
@@ -169,7 +188,10 @@ describe('track mode', () => {
 
     // A browser that says it has a headset, whose session then fails to start.
     await page.addInitScript(() => {
-      const xr = { isSessionSupported: async (mode: string) => mode === 'immersive-vr', requestSession: async () => Promise.reject(new Error('no headset is connected')) };
+      const xr = {
+        isSessionSupported: async (mode: string) => mode === 'immersive-vr',
+        requestSession: async () => Promise.reject(new Error('no headset is connected')),
+      };
       Object.defineProperty(navigator, 'xr', { value: xr });
     });
     await gotoRig(page, env.url, 'character');

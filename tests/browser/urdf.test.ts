@@ -17,7 +17,16 @@ import { describe, expect, it } from 'vitest';
 import { a7Required } from '../../scripts/a7_folder.js';
 import { robotsDir, robotsMissingMessage, robotsPresent } from '../helpers/robots_folder.js';
 import { openPage, renderedFrames, resultsDir } from './harness.js';
-import { dragTargetAlongY, gotoRig, panelControl, selectTarget, targetAt, tipAt, usePageServer, waitForConvergence } from './page_helpers.js';
+import {
+  dragTargetAlongY,
+  gotoRig,
+  panelControl,
+  selectTarget,
+  targetAt,
+  tipAt,
+  usePageServer,
+  waitForConvergence,
+} from './page_helpers.js';
 
 const env = usePageServer();
 
@@ -25,23 +34,56 @@ type Point = [number, number, number];
 const distance = (a: Point, b: Point): number => Math.hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]);
 
 /** A revolute joint of the test arm. */
-const revolute = (name: string, parent: string, child: string, xyz: string, axis: string, lower: number, upper: number, rpy = '0 0 0'): string =>
+const revolute = (
+  name: string,
+  parent: string,
+  child: string,
+  xyz: string,
+  axis: string,
+  lower: number,
+  upper: number,
+  rpy = '0 0 0',
+): string =>
   `<joint name="${name}" type="revolute"><parent link="${parent}"/><child link="${child}"/><origin xyz="${xyz}" rpy="${rpy}"/>` +
   `<axis xyz="${axis}"/><limit lower="${lower}" upper="${upper}" effort="10" velocity="1"/></joint>`;
 
 /** The arm's visuals: a box mesh on link1 at the link's origin, one on link3 off its origin (0.1 along its z), both package:// files. */
 const VISUALS: Record<string, string> = {
   link1: '<visual><geometry><mesh filename="package://test_arm/meshes/link1.stl"/></geometry></visual>',
-  link3: '<visual><origin xyz="0 0 0.1"/><geometry><mesh filename="package://test_arm/meshes/link3.stl"/></geometry><material name="orange"><color rgba="1 0.5 0 1"/></material></visual>',
+  link3:
+    '<visual><origin xyz="0 0 0.1"/><geometry><mesh filename="package://test_arm/meshes/link3.stl"/></geometry><material name="orange"><color rgba="1 0.5 0 1"/></material></visual>',
 };
 
 /** An ASCII STL box of half-size `h` (metres) centred on its origin: 12 triangles. */
 function boxStl(h: number): Uint8Array {
-  const c = [[-h, -h, -h], [h, -h, -h], [h, h, -h], [-h, h, -h], [-h, -h, h], [h, -h, h], [h, h, h], [-h, h, h]];
-  const faces = [[0, 2, 1], [0, 3, 2], [4, 5, 6], [4, 6, 7], [0, 1, 5], [0, 5, 4], [2, 3, 7], [2, 7, 6], [1, 2, 6], [1, 6, 5], [0, 4, 7], [0, 7, 3]];
+  const c = [
+    [-h, -h, -h],
+    [h, -h, -h],
+    [h, h, -h],
+    [-h, h, -h],
+    [-h, -h, h],
+    [h, -h, h],
+    [h, h, h],
+    [-h, h, h],
+  ];
+  const faces = [
+    [0, 2, 1],
+    [0, 3, 2],
+    [4, 5, 6],
+    [4, 6, 7],
+    [0, 1, 5],
+    [0, 5, 4],
+    [2, 3, 7],
+    [2, 7, 6],
+    [1, 2, 6],
+    [1, 6, 5],
+    [0, 4, 7],
+    [0, 7, 3],
+  ];
   const facet = (f: number[]): string => {
     const [a, b, d] = f.map((i) => c[i]);
-    const u = [0, 1, 2].map((k) => b[k] - a[k]), v = [0, 1, 2].map((k) => d[k] - a[k]);
+    const u = [0, 1, 2].map((k) => b[k] - a[k]),
+      v = [0, 1, 2].map((k) => d[k] - a[k]);
     const n = [u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]];
     const len = Math.hypot(n[0], n[1], n[2]);
     return `facet normal ${n.map((x) => x / len).join(' ')}\nouter loop\n${f.map((i) => `vertex ${c[i].join(' ')}`).join('\n')}\nendloop\nendfacet`;
@@ -51,7 +93,18 @@ function boxStl(h: number): Uint8Array {
 
 /** The test arm: base_link -> six revolute joints -> flange, a fixed joint to the off-axis tool0; a camera on link2. */
 function armUrdf(cameraLimits: [number, number] = [-1.0, 1.0]): string {
-  const links = ['base_link', 'link1', 'link2', 'link3', 'link4', 'link5', 'flange', 'tool0', 'camera_link', 'camera_optical_frame'];
+  const links = [
+    'base_link',
+    'link1',
+    'link2',
+    'link3',
+    'link4',
+    'link5',
+    'flange',
+    'tool0',
+    'camera_link',
+    'camera_optical_frame',
+  ];
   return `<?xml version="1.0"?>
 <robot name="test_arm">
   ${links.map((l) => (VISUALS[l] ? `<link name="${l}">${VISUALS[l]}</link>` : `<link name="${l}"/>`)).join('\n  ')}
@@ -104,9 +157,12 @@ async function dragTip(page: Page, k: number, dy: number): Promise<void> {
   const from = await targetAt(page, k);
   await dragTargetAlongY(page, k, dy, 20);
   await waitForConvergence(page);
-  const target = await targetAt(page, k), tip = await tipAt(page, k);
+  const target = await targetAt(page, k),
+    tip = await tipAt(page, k);
   const tolerance = await page.evaluate(() => window.ikPage?.tipTolerance() ?? 0);
-  console.log(`[urdf] dragged ${(target[1] - from[1]).toFixed(4)} up: tip ${distance(tip, target).toExponential(2)} from its target (tolerance ${tolerance.toPrecision(3)})`);
+  console.log(
+    `[urdf] dragged ${(target[1] - from[1]).toFixed(4)} up: tip ${distance(tip, target).toExponential(2)} from its target (tolerance ${tolerance.toPrecision(3)})`,
+  );
   expect(Math.abs(target[1] - from[1] - dy)).toBeLessThan(0.02 * Math.abs(dy));
   expect(distance(tip, target)).toBeLessThan(tolerance);
 }
@@ -119,8 +175,12 @@ describe('a URDF robot on the page', () => {
     const message = await openRig(page, 'test_arm.urdf', text(armUrdf()));
     console.log(`[urdf] ${await rigLine(page)} | ${message}`);
     expect(await rigLine(page)).toBe('test_arm — URDF chain base_link:tool0, 7 bones, 1 end effector');
-    expect(message).toMatch(/^test_arm: chain base_link:tool0 \(6 moving joints, the longest; choose another in the panel's chain menu or with \?chain=BASE:TIP\)/);
-    expect(message).toMatch(/2 mesh files are not beside it \(drop the robot's folder to see them\): the chain's links show as bones/);
+    expect(message).toMatch(
+      /^test_arm: chain base_link:tool0 \(6 moving joints, the longest; choose another in the panel's chain menu or with \?chain=BASE:TIP\)/,
+    );
+    expect(message).toMatch(
+      /2 mesh files are not beside it \(drop the robot's folder to see them\): the chain's links show as bones/,
+    );
     expect(message).not.toMatch(/--chain/);
     const names = await page.evaluate(() => window.ikPage?.boneNames() ?? []);
     expect(names).toEqual(['shoulder_pan', 'shoulder_lift', 'elbow', 'wrist_1', 'wrist_2', 'wrist_3', 'tool0']);
@@ -132,7 +192,10 @@ describe('a URDF robot on the page', () => {
     expect(await page.isVisible('.lil-controller:has(.lil-name:text-is("humanoid limits"))')).toBe(false);
     // The panel's chain menu lists the file's two chains, the longest chosen.
     const chainMenu = (await panelControl(page, /^chain$/)).locator('select');
-    expect(await chainMenu.locator('option').allTextContents()).toEqual(['base_link:tool0 (longest)', 'base_link:camera_optical_frame']);
+    expect(await chainMenu.locator('option').allTextContents()).toEqual([
+      'base_link:tool0 (longest)',
+      'base_link:camera_optical_frame',
+    ]);
     expect(await chainMenu.locator('option:checked').textContent()).toBe('base_link:tool0 (longest)');
 
     // 1. The tool tip's target dragged down 0.15 m with the mouse.
@@ -148,7 +211,9 @@ describe('a URDF robot on the page', () => {
     const error = await page.evaluate(() => window.ikPage?.orientationError(0) ?? NaN);
     const tolerance = await page.evaluate(() => window.ikPage?.tipTolerance() ?? 0);
     const tip = await tipAt(page, 0);
-    console.log(`[urdf] turned 30°: orientation error ${error.toExponential(2)}°, tip ${distance(tip, held).toExponential(2)} from where it was held`);
+    console.log(
+      `[urdf] turned 30°: orientation error ${error.toExponential(2)}°, tip ${distance(tip, held).toExponential(2)} from where it was held`,
+    );
     expect(error).toBeLessThan(0.5);
     expect(distance(await targetAt(page, 0), held)).toBeLessThan(1e-9);
     expect(distance(tip, held)).toBeLessThan(tolerance);
@@ -203,14 +268,18 @@ describe('a URDF robot on the page', () => {
       expect(box.max[0] - box.min[0]).toBeGreaterThan(0.079); // the whole box, not an empty group
       return [0, 1, 2].map((i) => (box.min[i] + box.max[i]) / 2) as Point;
     };
-    const joint = async (bone: number): Promise<Point> => (await page.evaluate((b) => window.ikPage?.boneBase(b) ?? null, bone))!;
+    const joint = async (bone: number): Promise<Point> =>
+      (await page.evaluate((b) => window.ikPage?.boneBase(b) ?? null, bone))!;
     const rest = await centre();
-    const restElbow = distance(rest, await joint(2)), restWrist = distance(rest, await joint(3));
+    const restElbow = distance(rest, await joint(2)),
+      restWrist = distance(rest, await joint(3));
     expect(restElbow).toBeGreaterThan(0.09);
     expect(await page.evaluate(() => window.ikPage?.objectBounds('link1') ?? null)).not.toBeNull();
     await dragTip(page, 0, 0.1);
     const moved = await centre();
-    console.log(`[urdf] link3's box moved ${distance(moved, rest).toFixed(4)}; from the elbow ${restElbow.toFixed(5)} -> ${distance(moved, await joint(2)).toFixed(5)}`);
+    console.log(
+      `[urdf] link3's box moved ${distance(moved, rest).toFixed(4)}; from the elbow ${restElbow.toFixed(5)} -> ${distance(moved, await joint(2)).toFixed(5)}`,
+    );
     expect(distance(moved, rest)).toBeGreaterThan(0.01);
     expect(Math.abs(distance(moved, await joint(2)) - restElbow)).toBeLessThan(1e-4);
     expect(Math.abs(distance(moved, await joint(3)) - restWrist)).toBeLessThan(1e-4);
@@ -231,8 +300,15 @@ describe('a URDF robot on the page', () => {
     await chainMenu.selectOption({ label: 'base_link:camera_optical_frame' });
     await page.waitForFunction((n) => (window.ikPage?.loads() ?? 0) > n, before);
     expect(await rigLine(page)).toBe('test_arm — URDF chain base_link:camera_optical_frame, 4 bones, 1 end effector');
-    expect(await page.textContent('#message')).toMatch(/^test_arm: chain base_link:camera_optical_frame \(3 moving joints\)/);
-    expect(await page.evaluate(() => window.ikPage?.boneNames())).toEqual(['shoulder_pan', 'shoulder_lift', 'camera_tilt', 'camera_optical_frame']);
+    expect(await page.textContent('#message')).toMatch(
+      /^test_arm: chain base_link:camera_optical_frame \(3 moving joints\)/,
+    );
+    expect(await page.evaluate(() => window.ikPage?.boneNames())).toEqual([
+      'shoulder_pan',
+      'shoulder_lift',
+      'camera_tilt',
+      'camera_optical_frame',
+    ]);
     const cameraTip = await tipAt(page, 0);
     expect(distance(cameraTip, toolTip)).toBeGreaterThan(0.1);
     expect(new URL(page.url()).searchParams.get('chain')).toBe('base_link:camera_optical_frame');
@@ -260,7 +336,9 @@ describe('a URDF robot on the page', () => {
     await openRig(page, 'test_arm.urdf', text(armUrdf()));
     expect(await rigLine(page)).toBe('test_arm — URDF chain base_link:camera_optical_frame, 4 bones, 1 end effector');
     expect(distance(await tipAt(page, 0), cameraTip)).toBeLessThan(1e-9);
-    expect(await (await panelControl(page, /^chain$/)).locator('select option:checked').textContent()).toBe('base_link:camera_optical_frame');
+    expect(await (await panelControl(page, /^chain$/)).locator('select option:checked').textContent()).toBe(
+      'base_link:camera_optical_frame',
+    );
 
     // A ?chain= through a prismatic joint: refused naming the joint, the arm stays.
     await gotoRig(page, env.url, 'lamp', '&chain=base:tip');
@@ -272,7 +350,9 @@ describe('a URDF robot on the page', () => {
     expect(await page.evaluate(() => window.ikPage?.rigName())).toBe('lamp');
     // A ?chain= whose links the file does not have: the file's longest chain, with a note.
     const other = await openRig(page, 'test_arm.urdf', text(armUrdf()));
-    expect(other).toMatch(/the chain base:tip is not in this file \(no link "base", "tip"\): took the file's longest chain/);
+    expect(other).toMatch(
+      /the chain base:tip is not in this file \(no link "base", "tip"\): took the file's longest chain/,
+    );
     expect(await rigLine(page)).toMatch(/chain base_link:tool0/);
     expect(new URL(page.url()).searchParams.get('chain')).toBeNull();
     expect(errors).toEqual([]);

@@ -12,7 +12,15 @@ import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 
 import type { IkWidget } from '../../web/src/widget/ik_widget.js';
 import type { WidgetProbe } from '../../web/src/widget/probe.js';
-import { launchBrowser, nextFrame, openPage, repoRoot, resultsDir, startStatic, type BrowserSession } from './harness.js';
+import {
+  launchBrowser,
+  nextFrame,
+  openPage,
+  repoRoot,
+  resultsDir,
+  startStatic,
+  type BrowserSession,
+} from './harness.js';
 
 let server: { url: string; close: () => Promise<void> };
 let browser: BrowserSession;
@@ -35,9 +43,13 @@ afterAll(async () => {
 /** Opens the example course page, waits for its widgets, and scrolls widget `id` to the middle of the view. */
 async function gotoExample(page: Page, id: string): Promise<void> {
   await page.goto(`${server.url}embed-example.html`);
-  await page.waitForFunction(() => [...document.querySelectorAll('ik-widget')].every((w) => (w as HTMLElement).dataset.state === 'ready'), null, {
-    timeout: 30_000,
-  });
+  await page.waitForFunction(
+    () => [...document.querySelectorAll('ik-widget')].every((w) => (w as HTMLElement).dataset.state === 'ready'),
+    null,
+    {
+      timeout: 30_000,
+    },
+  );
   await page.$eval(`#${id}`, (w) => w.scrollIntoView({ block: 'center' }));
   await nextFrame(page);
 }
@@ -50,10 +62,18 @@ async function probe(page: Page, id: string): Promise<WidgetProbe> {
 }
 
 /** The status line of widget `id`: its text and attributes. */
-async function status(page: Page, id: string): Promise<{ text: string; kind?: string; reached?: string; title: string }> {
+async function status(
+  page: Page,
+  id: string,
+): Promise<{ text: string; kind?: string; reached?: string; title: string }> {
   return page.$eval(`#${id}`, (w) => {
     const el = w.shadowRoot?.querySelector<HTMLElement>('.stats');
-    return { text: el?.textContent ?? '', kind: el?.dataset.status, reached: el?.dataset.reached, title: el?.title ?? '' };
+    return {
+      text: el?.textContent ?? '',
+      kind: el?.dataset.status,
+      reached: el?.dataset.reached,
+      title: el?.title ?? '',
+    };
   });
 }
 
@@ -74,10 +94,14 @@ describe('<ik-widget>', () => {
     const requests: string[] = [];
     page.on('request', (r) => requests.push(r.url()));
     await page.goto(`${server.url}embed-example.html`);
-    await page.waitForFunction(() => {
-      const w = [...document.querySelectorAll('ik-widget')];
-      return w.length === 2 && w.every((x) => (x as HTMLElement).dataset.state !== 'loading');
-    }, null, { timeout: 30_000 });
+    await page.waitForFunction(
+      () => {
+        const w = [...document.querySelectorAll('ik-widget')];
+        return w.length === 2 && w.every((x) => (x as HTMLElement).dataset.state !== 'loading');
+      },
+      null,
+      { timeout: 30_000 },
+    );
     const widgets = await page.$$eval('ik-widget', (list) =>
       list.map((w) => {
         const canvas = w.shadowRoot?.querySelector('canvas');
@@ -108,13 +132,19 @@ describe('<ik-widget>', () => {
       w.setAttribute('src', 'models/<i>missing</i>.glb');
       document.body.append(w);
     });
-    await page.waitForFunction(() => document.getElementById('broken')?.dataset.state === 'error', null, { timeout: 30_000 });
+    await page.waitForFunction(() => document.getElementById('broken')?.dataset.state === 'error', null, {
+      timeout: 30_000,
+    });
     const text = await page.$eval('#broken', (w) => w.shadowRoot?.querySelector('.message')?.textContent ?? '');
     expect(text).toContain('<i>missing</i>.glb');
     expect(text).toContain('404');
     expect(await page.$eval('#broken', (w) => w.shadowRoot?.querySelectorAll('i').length)).toBe(0);
     // The other widgets are unaffected.
-    await page.waitForFunction(() => [...document.querySelectorAll('ik-widget:not(#broken)')].every((w) => (w as HTMLElement).dataset.state === 'ready'));
+    await page.waitForFunction(() =>
+      [...document.querySelectorAll('ik-widget:not(#broken)')].every(
+        (w) => (w as HTMLElement).dataset.state === 'ready',
+      ),
+    );
     // The browser reports the 404 itself; nothing else went wrong.
     expect(errors.filter((e) => !/404/.test(e))).toEqual([]);
   });
@@ -144,7 +174,8 @@ describe('<ik-widget>', () => {
     await nextFrame(page);
     await page.waitForFunction(
       () => {
-        const kind = document.getElementById('knight')?.shadowRoot?.querySelector<HTMLElement>('.stats')?.dataset.status;
+        const kind = document.getElementById('knight')?.shadowRoot?.querySelector<HTMLElement>('.stats')
+          ?.dataset.status;
         return kind !== 'solving' && kind !== 'budget';
       },
       null,
@@ -177,7 +208,13 @@ describe('<ik-widget>', () => {
     expect(text).not.toMatch(/leaves them alone/); // the report's wobble is not claimed for this widget
     for (const method of ['bfgs', 'gd', 'lm']) {
       await page.$eval('#knight', (w, m) => w.setAttribute('method', m), method);
-      await page.waitForFunction((m) => (document.getElementById('knight')?.shadowRoot?.querySelector('.stats')?.textContent ?? '').startsWith(`${m} ·`), method);
+      await page.waitForFunction(
+        (m) =>
+          (document.getElementById('knight')?.shadowRoot?.querySelector('.stats')?.textContent ?? '').startsWith(
+            `${m} ·`,
+          ),
+        method,
+      );
       const before = await probe(page, 'knight');
       const from = before.targetsOnScreen[1];
       await page.mouse.click(from.x, from.y);
@@ -240,19 +277,27 @@ describe('<ik-widget>', () => {
         const w = document.getElementById('knight') as IkWidget | null;
         const p = w?.probe;
         if (!p || w?.shadowRoot?.querySelector<HTMLElement>('.stats')?.dataset.reached !== 'true') return false;
-        const d = Math.hypot(p.tips[3 * k] - p.targets[3 * k], p.tips[3 * k + 1] - p.targets[3 * k + 1], p.tips[3 * k + 2] - p.targets[3 * k + 2]);
+        const d = Math.hypot(
+          p.tips[3 * k] - p.targets[3 * k],
+          p.tips[3 * k + 1] - p.targets[3 * k + 1],
+          p.tips[3 * k + 2] - p.targets[3 * k + 2],
+        );
         return d < p.tipTolerance;
       },
       hand,
       { timeout: 20_000 },
     );
     const after = await probe(page, 'knight');
-    expect(Math.hypot(...target(after, hand).map((c, i) => c - target(before, hand)[i]))).toBeGreaterThan(20 * after.tipTolerance);
+    expect(Math.hypot(...target(after, hand).map((c, i) => c - target(before, hand)[i]))).toBeGreaterThan(
+      20 * after.tipTolerance,
+    );
     expect(tipError(after, hand)).toBeLessThan(after.tipTolerance);
     expect(after.orientationGoals[hand]).toEqual(goal);
     expect(after.orientationErrors[hand]).toBeLessThan(0.5);
     const line = await status(page, 'knight');
-    expect(line.text).toMatch(/^bfgs · \d+ it · tip error [\d.e-]+ · orientation error [\d.e-]+° · [\d.]+ ms · on target$/);
+    expect(line.text).toMatch(
+      /^bfgs · \d+ it · tip error [\d.e-]+ · orientation error [\d.e-]+° · [\d.]+ ms · on target$/,
+    );
 
     // The turn button switches the gizmo to rotating the target.
     await turn.click();
@@ -262,18 +307,26 @@ describe('<ik-widget>', () => {
     // An unknown bone and an unknown kind: the status line names them; nothing throws.
     await page.$eval('#knight', (w) => w.setAttribute('goals', 'hand.X:pose, hand.L:twist'));
     // The message stays while the widget goes on solving (the goals changed: it solves again).
-    await page.waitForFunction(() => document.getElementById('knight')?.shadowRoot?.querySelector<HTMLElement>('.stats')?.dataset.reached !== undefined);
+    await page.waitForFunction(
+      () =>
+        document.getElementById('knight')?.shadowRoot?.querySelector<HTMLElement>('.stats')?.dataset.reached !==
+        undefined,
+    );
     const bad = await page.$eval('#knight', (w) => {
       const el = w.shadowRoot?.querySelector<HTMLElement>('.stats');
       return { text: el?.textContent ?? '', problem: el?.dataset.problem ?? '' };
     });
-    expect(bad.text).toMatch(/^unknown goal bone "hand.X"; goal kind "twist" of hand.L is not position, orientation, pose — bfgs · /);
+    expect(bad.text).toMatch(
+      /^unknown goal bone "hand.X"; goal kind "twist" of hand.L is not position, orientation, pose — bfgs · /,
+    );
     expect(bad.problem).toContain('unknown goal bone "hand.X"');
     expect(await page.$eval('#knight', (w) => (w as HTMLElement).dataset.state)).toBe('ready');
     expect((await probe(page, 'knight')).orientationGoals.every((g) => g === null)).toBe(true);
     // Good goals again: the message goes.
     await page.$eval('#knight', (w) => w.setAttribute('goals', 'hand.L:orientation'));
-    expect(await page.$eval('#knight', (w) => w.shadowRoot?.querySelector<HTMLElement>('.stats')?.dataset.problem)).toBeUndefined();
+    expect(
+      await page.$eval('#knight', (w) => w.shadowRoot?.querySelector<HTMLElement>('.stats')?.dataset.problem),
+    ).toBeUndefined();
     const p = await probe(page, 'knight');
     expect(p.positionGoals[hand]).toBe(false);
     expect(p.orientationGoals[hand]).not.toBeNull();

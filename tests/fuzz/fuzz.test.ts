@@ -18,10 +18,19 @@ const STACK_THROWS = 200_000;
 
 describe('fuzz', () => {
   it(`${CASES_PER_KIND} cases of each kind (seed ${SEED}): no crash, hang, silent wrong result or read outside the folder`, async () => {
-    const reports = await runFuzz({ seed: SEED, cases: CASES_PER_KIND * FUZZ_KINDS.length, kinds: FUZZ_KINDS, workers: 2, hangSeconds: 5 });
+    const reports = await runFuzz({
+      seed: SEED,
+      cases: CASES_PER_KIND * FUZZ_KINDS.length,
+      kinds: FUZZ_KINDS,
+      workers: 2,
+      hangSeconds: 5,
+    });
     console.log(`${countTable(reports)}\n${budgetSummary(reports)}`);
     const c = countOutcomes(reports);
-    expect({ crash: c.crash, hang: c.hang, silentWrong: c.wrong, readOutside: c.outside }, failureList(reports)).toEqual({
+    expect(
+      { crash: c.crash, hang: c.hang, silentWrong: c.wrong, readOutside: c.outside },
+      failureList(reports),
+    ).toEqual({
       crash: 0,
       hang: 0,
       silentWrong: 0,
@@ -31,7 +40,9 @@ describe('fuzz', () => {
 
   it(`${STACK_THROWS} refused solves leave the module working (no stack leak)`, async () => {
     const result = stackLeakCheck(await loadIkNode(), STACK_THROWS);
-    console.log(`stack leak: ${result.reachesWasm ? 'refused by the core' : 'refused before the core'}: ${result.message}`);
+    console.log(
+      `stack leak: ${result.reachesWasm ? 'refused by the core' : 'refused before the core'}: ${result.message}`,
+    );
     expect(result.problem).toBeUndefined();
     expect(result.throws).toBe(STACK_THROWS);
   });

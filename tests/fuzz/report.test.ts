@@ -8,10 +8,17 @@ import { budgetSummary, exitCode, failureList } from '../../scripts/fuzz/report.
 /** An api case that ended `kind`, with one solve of a 10 ms budget taking `ratio` times it. */
 function report(kind: CaseReport['outcome']['kind'], ratio: number): CaseReport {
   const budget: BudgetSample = { budgetSeconds: 0.01, elapsedSeconds: 0.01 * ratio, wallSeconds: 0.01 * ratio };
-  return { id: { kind: 'api', seed: 1, index: 0 }, description: '', outcome: { kind, message: '' }, budgets: [budget], seconds: 0 };
+  return {
+    id: { kind: 'api', seed: 1, index: 0 },
+    description: '',
+    outcome: { kind, message: '' },
+    budgets: [budget],
+    seconds: 0,
+  };
 }
 
-const deepChainHolds = '10000-bone chain, file bytes to a rig in WebAssembly (median of 5): .glb 80 ms, A7 .json 60 ms; promised under 1 s: holds';
+const deepChainHolds =
+  '10000-bone chain, file bytes to a rig in WebAssembly (median of 5): .glb 80 ms, A7 .json 60 ms; promised under 1 s: holds';
 const deepChainBroken = deepChainHolds.replace('holds', 'BROKEN').replace('80 ms', '1500 ms');
 
 describe('the exit code of npm run fuzz', () => {
@@ -26,7 +33,9 @@ describe('the exit code of npm run fuzz', () => {
     const budget = budgetSummary(reports);
     expect(budget).toMatch(/worst elapsedSeconds\/budget 2\.50x .*promised within 2x: BROKEN$/);
     expect(exitCode(reports, false, [budget, deepChainHolds])).toBe(1);
-    expect(failureList(reports)).toMatch(/^1 cases with a solve over 2x its time budget:\n\[ok\] api case 0 .*\n.*\n    replay: npm run fuzz -- --seed 1 --kind api --case 0$/);
+    expect(failureList(reports)).toMatch(
+      /^1 cases with a solve over 2x its time budget:\n\[ok\] api case 0 .*\n.*\n {4}replay: npm run fuzz -- --seed 1 --kind api --case 0$/,
+    );
   });
 
   it('is 1 when the deep-chain line says BROKEN', () => {

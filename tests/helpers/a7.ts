@@ -52,7 +52,12 @@ export interface TestRig {
 
 /** The project's rigs, then the report's when a7Dir exists. */
 export const testRigs: readonly TestRig[] = [
-  ...projectRigNames.map((name) => ({ name, a7: false, label: `project ${name}`, path: resolve(testRigsDir, `${name}.json`) })),
+  ...projectRigNames.map((name) => ({
+    name,
+    a7: false,
+    label: `project ${name}`,
+    path: resolve(testRigsDir, `${name}.json`),
+  })),
   ...(a7Present ? a7Names.map((name) => ({ name, a7: true, label: `A7 ${name}`, path: a7Path(name) })) : []),
 ];
 
@@ -63,7 +68,8 @@ const projectCounterparts: Record<string, string> = { 'ikea-lamp': 'lamp', 'chim
  * when a7Dir exists: for tests of a general property written for one rig.
  */
 export function rigsLike(a7Name: string): TestRig[] {
-  if (!a7Names.includes(a7Name)) throw new Error(`rigsLike: "${a7Name}" is none of the report's rigs (${a7Names.join(', ')})`);
+  if (!a7Names.includes(a7Name))
+    throw new Error(`rigsLike: "${a7Name}" is none of the report's rigs (${a7Names.join(', ')})`);
   const project = projectCounterparts[a7Name] ?? a7Name;
   return testRigs.filter((r) => r.name === (r.a7 ? a7Name : project));
 }
@@ -76,17 +82,22 @@ type M4 = number[]; // row-major 4x4
 
 function mul(a: M4, b: M4): M4 {
   const out = new Array<number>(16).fill(0);
-  for (let r = 0; r < 4; r++) for (let c = 0; c < 4; c++) for (let k = 0; k < 4; k++) out[4 * r + c] += a[4 * r + k] * b[4 * k + c];
+  for (let r = 0; r < 4; r++)
+    for (let c = 0; c < 4; c++) for (let k = 0; k < 4; k++) out[4 * r + c] += a[4 * r + k] * b[4 * k + c];
   return out;
 }
 
 function rotX(deg: number): M4 {
-  const t = (deg * Math.PI) / 180, c = Math.cos(t), s = Math.sin(t);
+  const t = (deg * Math.PI) / 180,
+    c = Math.cos(t),
+    s = Math.sin(t);
   return [1, 0, 0, 0, 0, c, -s, 0, 0, s, c, 0, 0, 0, 0, 1];
 }
 
 function rotZ(deg: number): M4 {
-  const t = (deg * Math.PI) / 180, c = Math.cos(t), s = Math.sin(t);
+  const t = (deg * Math.PI) / 180,
+    c = Math.cos(t),
+    s = Math.sin(t);
   return [c, -s, 0, 0, s, c, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1];
 }
 

@@ -6,5 +6,6 @@ import { beforeEach } from 'vitest';
 import { sharedFolders } from './shared_folders.js';
 
 beforeEach(({ task }) => {
-  for (const folder of sharedFolders) if (!folder.present && task.tags?.includes(folder.tag)) throw new Error(folder.missingMessage);
+  for (const folder of sharedFolders)
+    if (!folder.present && task.tags?.includes(folder.tag)) throw new Error(folder.missingMessage);
 });

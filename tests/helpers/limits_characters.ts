@@ -58,25 +58,49 @@ const sided = (left: string, right: string, names: Record<string, string>): Part
 
 /** Role -> joint name of the Mixamo character. */
 export const MIXAMO_NAMES: Partial<Record<HumanoidRole, string>> = {
-  hips: 'mixamorig:Hips', spine: 'mixamorig:Spine', chest: 'mixamorig:Spine1', upperChest: 'mixamorig:Spine2',
-  neck: 'mixamorig:Neck', head: 'mixamorig:Head',
+  hips: 'mixamorig:Hips',
+  spine: 'mixamorig:Spine',
+  chest: 'mixamorig:Spine1',
+  upperChest: 'mixamorig:Spine2',
+  neck: 'mixamorig:Neck',
+  head: 'mixamorig:Head',
   ...sided('Left', 'Right', {
-    Shoulder: 'mixamorig:#Shoulder', UpperArm: 'mixamorig:#Arm', LowerArm: 'mixamorig:#ForeArm', Hand: 'mixamorig:#Hand',
-    UpperLeg: 'mixamorig:#UpLeg', LowerLeg: 'mixamorig:#Leg', Foot: 'mixamorig:#Foot', Toes: 'mixamorig:#ToeBase',
+    Shoulder: 'mixamorig:#Shoulder',
+    UpperArm: 'mixamorig:#Arm',
+    LowerArm: 'mixamorig:#ForeArm',
+    Hand: 'mixamorig:#Hand',
+    UpperLeg: 'mixamorig:#UpLeg',
+    LowerLeg: 'mixamorig:#Leg',
+    Foot: 'mixamorig:#Foot',
+    Toes: 'mixamorig:#ToeBase',
   }),
 };
 
 /** Role -> joint name of the Blender-named test character (scripts/rig_files/gltf_character.ts). */
 export const BLENDER_NAMES: Partial<Record<HumanoidRole, string>> = {
-  hips: 'hips', spine: 'spine', chest: 'chest', neck: 'neck', head: 'head',
+  hips: 'hips',
+  spine: 'spine',
+  chest: 'chest',
+  neck: 'neck',
+  head: 'head',
   ...sided('L', 'R', {
-    Shoulder: 'shoulder.#', UpperArm: 'upper_arm.#', LowerArm: 'forearm.#', Hand: 'hand.#',
-    UpperLeg: 'thigh.#', LowerLeg: 'shin.#', Foot: 'foot.#', Toes: 'toe.#',
+    Shoulder: 'shoulder.#',
+    UpperArm: 'upper_arm.#',
+    LowerArm: 'forearm.#',
+    Hand: 'hand.#',
+    UpperLeg: 'thigh.#',
+    LowerLeg: 'shin.#',
+    Foot: 'foot.#',
+    Toes: 'toe.#',
   }),
 };
 
 /** The humanoid map of `spec` from role -> bone name (every name must be a bone). */
-export function mapByNames(spec: RigSpec, source: HumanoidSource, names: Partial<Record<HumanoidRole, string>>): HumanoidMap {
+export function mapByNames(
+  spec: RigSpec,
+  source: HumanoidSource,
+  names: Partial<Record<HumanoidRole, string>>,
+): HumanoidMap {
   const bones: HumanoidMap['bones'] = {};
   for (const [role, name] of Object.entries(names) as [HumanoidRole, string][]) {
     const i = spec.names.indexOf(name);
@@ -99,7 +123,12 @@ export interface TestHumanoid {
 export async function mixamoHumanoid(options: MixamoOptions = {}): Promise<TestHumanoid> {
   const spec = specWithFileLimits(await loadRig(await mixamoCharacterGlb(options), 'mixamo-character.glb'));
   const yaw = ((options.yawDeg ?? 0) * Math.PI) / 180;
-  return { spec, map: mapByNames(spec, 'mixamo', MIXAMO_NAMES), forward: [Math.sin(yaw), 0, Math.cos(yaw)], up: [0, 1, 0] };
+  return {
+    spec,
+    map: mapByNames(spec, 'mixamo', MIXAMO_NAMES),
+    forward: [Math.sin(yaw), 0, Math.cos(yaw)],
+    up: [0, 1, 0],
+  };
 }
 
 /**
@@ -108,7 +137,9 @@ export async function mixamoHumanoid(options: MixamoOptions = {}): Promise<TestH
  */
 export async function blenderHumanoid(): Promise<TestHumanoid> {
   const spec = specWithFileLimits(await loadRig(await testCharacterGlb(), 'blender-character.glb'));
-  const s = Math.sin(Math.PI / 6), c = Math.cos(Math.PI / 6), t = (10 * Math.PI) / 180;
+  const s = Math.sin(Math.PI / 6),
+    c = Math.cos(Math.PI / 6),
+    t = (10 * Math.PI) / 180;
   // Armature: +Z stays +Z under the tilt about Z; up is +Y tilted; both then turned 30 degrees about Y.
   const up: [number, number, number] = [-Math.sin(t), Math.cos(t), 0];
   return {

@@ -55,7 +55,8 @@ export function humanoidJoints(naming: HumanoidNaming): SkeletonJoint[] {
   const nameOf = (ref: string): string => naming.roles[ref as HumanoidRole] ?? ref;
   // The usual parent, or the nearest named bone above it, or the root.
   const usualParent = (role: HumanoidRole): string | undefined => {
-    for (let p = BODY[role].parent; p !== undefined; p = BODY[p].parent) if (naming.roles[p] !== undefined) return naming.roles[p];
+    for (let p = BODY[role].parent; p !== undefined; p = BODY[p].parent)
+      if (naming.roles[p] !== undefined) return naming.roles[p];
     return naming.root;
   };
   const joints: SkeletonJoint[] = naming.root === undefined ? [] : [{ name: naming.root, head: [0, 0, 0] }];

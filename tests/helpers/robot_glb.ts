@@ -13,8 +13,12 @@ import { ball, block } from '../../scripts/models/shapes.js';
 import { type Vec3, mirrorX } from '../../scripts/models/vec.js';
 import { fromColumnMajor, invertAffine, transformPoint } from '../../web/src/rig/mat4.js';
 
-const free: JointDef['limits'] = [[null, null, null], [null, null, null]];
-const X: Vec3 = [1, 0, 0], Z: Vec3 = [0, 0, 1];
+const free: JointDef['limits'] = [
+  [null, null, null],
+  [null, null, null],
+];
+const X: Vec3 = [1, 0, 0],
+  Z: Vec3 = [0, 0, 1];
 
 /** Where the robot's left parts are (the right ones mirror them in x). */
 export const ROBOT = {
@@ -27,7 +31,14 @@ export const ROBOT = {
 };
 
 function joints(): JointDef[] {
-  const j = (name: string, parent: string | undefined, head: Vec3, tail: Vec3, hinge: Vec3 = X): JointDef => ({ name, parent, head, tail, hinge, limits: free });
+  const j = (name: string, parent: string | undefined, head: Vec3, tail: Vec3, hinge: Vec3 = X): JointDef => ({
+    name,
+    parent,
+    head,
+    tail,
+    hinge,
+    limits: free,
+  });
   const out: JointDef[] = [
     j('Bone', undefined, [0, 0, 0], [0, 0.3, 0]),
     j('Body', 'Bone', [0, 1, 0], [0, 1.05, 0]),
@@ -37,7 +48,10 @@ function joints(): JointDef[] {
     j('Neck', 'Torso', [0, 1.55, 0], [0, 1.65, 0]),
     j('Head', 'Neck', [0, 1.65, 0], [0, 1.95, 0]),
   ];
-  for (const [s, m] of [['L', (v: Vec3) => v], ['R', mirrorX]] as const) {
+  for (const [s, m] of [
+    ['L', (v: Vec3) => v],
+    ['R', mirrorX],
+  ] as const) {
     out.push(
       j(`Shoulder${s}`, 'Torso', m([0.1, 1.5, 0]), m([0.25, 1.5, 0]), Z),
       j(`UpperArm${s}`, `Shoulder${s}`, m([0.25, 1.5, 0]), m([0.5, 1.5, -0.02]), [0, 1, 0]),
@@ -49,7 +63,10 @@ function joints(): JointDef[] {
       j(`LowerLeg${s}`, `UpperLeg${s}`, m(ROBOT.knee), m([0.12, 0.1, 0])),
     );
   }
-  for (const [s, m] of [['L', (v: Vec3) => v], ['R', mirrorX]] as const)
+  for (const [s, m] of [
+    ['L', (v: Vec3) => v],
+    ['R', mirrorX],
+  ] as const)
     out.push(
       j(`Foot${s}`, 'Bone', m(ROBOT.footControl), m([0.12, 0.06, 0.2])),
       j(`PoleTarget${s}`, 'Bone', m([0.12, 0.45, 0.6]), m([0.12, 0.55, 0.6])),
@@ -97,7 +114,14 @@ const model: ModelDef = {
 function box(min: Vec3, max: Vec3): { corners: Vec3[]; indices: number[] } {
   const corners: Vec3[] = [];
   for (let k = 0; k < 8; k++) corners.push([k & 1 ? max[0] : min[0], k & 2 ? max[1] : min[1], k & 4 ? max[2] : min[2]]);
-  const quads = [[0, 2, 3, 1], [4, 5, 7, 6], [0, 1, 5, 4], [2, 6, 7, 3], [0, 4, 6, 2], [1, 3, 7, 5]];
+  const quads = [
+    [0, 2, 3, 1],
+    [4, 5, 7, 6],
+    [0, 1, 5, 4],
+    [2, 6, 7, 3],
+    [0, 4, 6, 2],
+    [1, 3, 7, 5],
+  ];
   return { corners, indices: quads.flatMap(([a, b, c, d]) => [a, b, c, a, c, d]) };
 }
 
@@ -105,13 +129,26 @@ function box(min: Vec3, max: Vec3): { corners: Vec3[]; indices: number[] } {
 export async function robotGlb(): Promise<Uint8Array> {
   const doc = buildDocument(model);
   const buffer = doc.getRoot().listBuffers()[0];
-  const material = doc.createMaterial('foot').setBaseColorFactor([0.25, 0.55, 0.85, 1]).setMetallicFactor(0.2).setRoughnessFactor(0.5);
-  const nodes = new Map<string, Node>(doc.getRoot().listNodes().map((n) => [n.getName(), n]));
-  for (const [s, m] of [['L', (v: Vec3) => v], ['R', mirrorX]] as const) {
+  const material = doc
+    .createMaterial('foot')
+    .setBaseColorFactor([0.25, 0.55, 0.85, 1])
+    .setMetallicFactor(0.2)
+    .setRoughnessFactor(0.5);
+  const nodes = new Map<string, Node>(
+    doc
+      .getRoot()
+      .listNodes()
+      .map((n) => [n.getName(), n]),
+  );
+  for (const [s, m] of [
+    ['L', (v: Vec3) => v],
+    ['R', mirrorX],
+  ] as const) {
     const control = nodes.get(`Foot${s}`)!;
     // The block's corners in the control bone's frame: its mesh node sits at the bone, unturned.
     const toLocal = invertAffine(fromColumnMajor(control.getWorldMatrix()))!;
-    const a = m(ROBOT.foot.min), b = m(ROBOT.foot.max);
+    const a = m(ROBOT.foot.min),
+      b = m(ROBOT.foot.max);
     const { corners, indices } = box([Math.min(a[0], b[0]), a[1], a[2]], [Math.max(a[0], b[0]), b[1], b[2]]);
     const positions = new Float32Array(corners.flatMap((c) => transformPoint(toLocal, c)));
     const prim = doc

@@ -19,6 +19,22 @@ export interface SharedFolder {
 }
 
 export const sharedFolders: readonly SharedFolder[] = [
-  { tag: A7_TAG, dir: a7Dir, present: a7Present, missingMessage: a7MissingMessage, what: 'A7 rigs', test: 'A7 test', hint: "point IK_A7_DIR at the report's A7 rigs" },
-  { tag: ROBOTS_TAG, dir: robotsDir, present: robotsPresent, missingMessage: robotsMissingMessage, what: 'Robots (URDF)', test: 'robot test', hint: 'point IK_ROBOTS_DIR at the shared URDF robots' },
+  {
+    tag: A7_TAG,
+    dir: a7Dir,
+    present: a7Present,
+    missingMessage: a7MissingMessage,
+    what: 'A7 rigs',
+    test: 'A7 test',
+    hint: "point IK_A7_DIR at the report's A7 rigs",
+  },
+  {
+    tag: ROBOTS_TAG,
+    dir: robotsDir,
+    present: robotsPresent,
+    missingMessage: robotsMissingMessage,
+    what: 'Robots (URDF)',
+    test: 'robot test',
+    hint: 'point IK_ROBOTS_DIR at the shared URDF robots',
+  },
 ];

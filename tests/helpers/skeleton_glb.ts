@@ -27,7 +27,8 @@ function parentsFirst(joints: readonly SkeletonJoint[]): SkeletonJoint[] {
   let left = [...joints];
   while (left.length) {
     const ready = left.filter((j) => j.parent === undefined || placed.has(j.parent));
-    if (!ready.length) throw new Error(`joints without a placed parent: ${left.map((j) => `${j.name} (${j.parent})`).join(', ')}`);
+    if (!ready.length)
+      throw new Error(`joints without a placed parent: ${left.map((j) => `${j.name} (${j.parent})`).join(', ')}`);
     for (const j of ready) placed.add(j.name);
     out.push(...ready);
     left = left.filter((j) => !placed.has(j.name));
@@ -36,7 +37,10 @@ function parentsFirst(joints: readonly SkeletonJoint[]): SkeletonJoint[] {
 }
 
 /** The skeleton as .glb bytes. */
-export async function skeletonGlb(joints: readonly SkeletonJoint[], options: SkeletonOptions = {}): Promise<Uint8Array> {
+export async function skeletonGlb(
+  joints: readonly SkeletonJoint[],
+  options: SkeletonOptions = {},
+): Promise<Uint8Array> {
   const doc = new Document();
   const buffer = doc.createBuffer();
   const scene = doc.createScene('Scene');
@@ -56,7 +60,9 @@ export async function skeletonGlb(joints: readonly SkeletonJoint[], options: Ske
       ibm.set([1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0], 16 * k);
       ibm.set(options.bindPose === false ? [0, 0, 0, 1] : [-j.head[0], -j.head[1], -j.head[2], 1], 16 * k + 12);
     });
-    const skin = doc.createSkin(`skin ${s}`).setInverseBindMatrices(doc.createAccessor().setType('MAT4').setArray(ibm).setBuffer(buffer));
+    const skin = doc
+      .createSkin(`skin ${s}`)
+      .setInverseBindMatrices(doc.createAccessor().setType('MAT4').setArray(ibm).setBuffer(buffer));
     list.forEach((j) => skin.addJoint(j.node));
   }
   return new WebIO().writeBinary(doc);

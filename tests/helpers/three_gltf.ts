@@ -23,7 +23,8 @@ export function skinnedVertexWorld(mesh: SkinnedMesh, v: number): Vector3 {
 
 /** The (rig bone, weight) pairs of vertex v, mapping the mesh's skeleton bones to rig bones. */
 export function vertexInfluences(mesh: SkinnedMesh, v: number, bones: Bone[]): [number, number][] {
-  const idx = mesh.geometry.getAttribute('skinIndex'), wt = mesh.geometry.getAttribute('skinWeight');
+  const idx = mesh.geometry.getAttribute('skinIndex'),
+    wt = mesh.geometry.getAttribute('skinWeight');
   const out: [number, number][] = [];
   for (let k = 0; k < 4; k++) {
     const w = wt.getComponent(v, k);

@@ -11,7 +11,8 @@ type M = number[]; // row-major 4x4
 
 const mul = (a: M, b: M): M => {
   const out = new Array<number>(16).fill(0);
-  for (let r = 0; r < 4; r++) for (let c = 0; c < 4; c++) for (let k = 0; k < 4; k++) out[4 * r + c] += a[4 * r + k] * b[4 * k + c];
+  for (let r = 0; r < 4; r++)
+    for (let c = 0; c < 4; c++) for (let k = 0; k < 4; k++) out[4 * r + c] += a[4 * r + k] * b[4 * k + c];
   return out;
 };
 const eye = (): M => [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1];
@@ -27,13 +28,16 @@ const axisAngle = (axis: number[], q: number): M => {
   const n = Math.hypot(axis[0], axis[1], axis[2]);
   const [x, y, z] = axis.map((v) => v / n);
   const K = [0, -z, y, z, 0, -x, -y, x, 0];
-  const K2 = [0, 1, 2].flatMap((r) => [0, 1, 2].map((c) => K[3 * r] * K[c] + K[3 * r + 1] * K[3 + c] + K[3 * r + 2] * K[6 + c]));
+  const K2 = [0, 1, 2].flatMap((r) =>
+    [0, 1, 2].map((c) => K[3 * r] * K[c] + K[3 * r + 1] * K[3 + c] + K[3 * r + 2] * K[6 + c]),
+  );
   const [s, v] = [Math.sin(q), 1 - Math.cos(q)];
   const R = [0, 1, 2].flatMap((r) => [0, 1, 2].map((c) => (r === c ? 1 : 0) + s * K[3 * r + c] + v * K2[3 * r + c]));
   return [R[0], R[1], R[2], 0, R[3], R[4], R[5], 0, R[6], R[7], R[8], 0, 0, 0, 0, 1];
 };
 
-const numbers = (text: string | undefined, missing: number[]): number[] => (text === undefined ? missing : text.trim().split(/\s+/).map(Number));
+const numbers = (text: string | undefined, missing: number[]): number[] =>
+  text === undefined ? missing : text.trim().split(/\s+/).map(Number);
 
 interface RefJoint {
   name: string;
@@ -49,12 +53,16 @@ export class ReferenceChain {
   readonly joints: RefJoint[] = [];
 
   constructor(text: string, chain: string) {
-    const doc = new XMLParser({ ignoreAttributes: false, attributeNamePrefix: '', isArray: (tag, _path, _leaf, isAttribute) => !isAttribute && (tag === 'joint' || tag === 'link') }).parse(text);
+    const doc = new XMLParser({
+      ignoreAttributes: false,
+      attributeNamePrefix: '',
+      isArray: (tag, _path, _leaf, isAttribute) => !isAttribute && (tag === 'joint' || tag === 'link'),
+    }).parse(text);
     type Attr = Record<string, string> | undefined;
     const byChild = new Map<string, Record<string, unknown>>();
     for (const j of doc.robot.joint as Record<string, unknown>[]) byChild.set((j.child as { link: string }).link, j);
     const [base, tip] = chain.split(':');
-    for (let link = tip; link !== base; ) {
+    for (let link = tip; link !== base;) {
       const j = byChild.get(link);
       if (!j) throw new Error(`reference: ${tip} is not below ${base}`);
       const origin = j.origin as Attr;
@@ -80,7 +88,8 @@ export class ReferenceChain {
 
   /** The TIP link's frame (row-major 4x4, in BASE's frame) with the moving joints at `q` (radians, in `moving` order). */
   tipFrame(q: readonly number[]): number[] {
-    let T = eye(), k = 0;
+    let T = eye(),
+      k = 0;
     for (const j of this.joints) {
       T = mul(T, j.origin);
       if (j.type === 'revolute' || j.type === 'continuous') T = mul(T, axisAngle(j.axis, q[k++]));
@@ -98,8 +107,14 @@ export class ReferenceChain {
 export function quaternionMatrix(q: ArrayLike<number>): number[] {
   const [x, y, z, w] = [q[0], q[1], q[2], q[3]];
   return [
-    1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w),
-    2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w),
-    2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y),
+    1 - 2 * (y * y + z * z),
+    2 * (x * y - z * w),
+    2 * (x * z + y * w),
+    2 * (x * y + z * w),
+    1 - 2 * (x * x + z * z),
+    2 * (y * z - x * w),
+    2 * (x * z - y * w),
+    2 * (y * z + x * w),
+    1 - 2 * (x * x + y * y),
   ];
 }

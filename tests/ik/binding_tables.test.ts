@@ -51,9 +51,21 @@ function statedDefault(doc: string): number | boolean | undefined {
 
 type ResultNumber = Exclude<keyof SolverResult, 'angles' | 'stopReason' | 'message'>;
 const resultNumbers = {
-  E: true, initialE: true, gradNorm: true, tipDistance: true, reached: true, iterations: true, functionEvaluations: true,
-  jacobianEvaluations: true, restarts: true, escapes: true, chainRestarts: true, elapsedSeconds: true,
-  outOfReach: true, orientationOutOfReach: true, goalsGivenUp: true,
+  E: true,
+  initialE: true,
+  gradNorm: true,
+  tipDistance: true,
+  reached: true,
+  iterations: true,
+  functionEvaluations: true,
+  jacobianEvaluations: true,
+  restarts: true,
+  escapes: true,
+  chainRestarts: true,
+  elapsedSeconds: true,
+  outOfReach: true,
+  orientationOutOfReach: true,
+  goalsGivenUp: true,
 } satisfies Record<ResultNumber, true>;
 
 describe('tables shared with the bindings', () => {

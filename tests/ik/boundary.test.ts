@@ -40,7 +40,11 @@ describe('inputs are plain numbers before they reach C++', () => {
     const hostile = { valueOf: () => ((ran = true), rig.dispose(), 0) };
     const angles: unknown[] = Array.from({ length: rig.numAngles }, () => 0);
     angles[4] = hostile;
-    for (const call of [() => rig.boneTips(angles as number[]), () => rig.poses(angles as number[]), () => rig.project(angles as number[])])
+    for (const call of [
+      () => rig.boneTips(angles as number[]),
+      () => rig.poses(angles as number[]),
+      () => rig.project(angles as number[]),
+    ])
       expect(call).toThrow('angles[4] is an object, not a number');
     expect(ran).toBe(false);
     const withGetter = Array.from({ length: rig.numAngles }, () => 0);
@@ -53,8 +57,12 @@ describe('inputs are plain numbers before they reach C++', () => {
     const rig = keep(new IkRig(ik, chain(3, [2])));
     const solver = keep(new IkSolver(rig, 'lm'));
     expect(() => solver.solve({ length: 1e10 } as unknown as number[], [1, 1, 0])).toThrow(/angles must be an array/);
-    expect(() => solver.solve(new Float64Array(9), null as unknown as number[])).toThrow('target must be an array or a typed array of numbers, not null');
-    expect(() => rig.tips(undefined as unknown as number[])).toThrow('angles must be an array or a typed array of numbers, not undefined');
+    expect(() => solver.solve(new Float64Array(9), null as unknown as number[])).toThrow(
+      'target must be an array or a typed array of numbers, not null',
+    );
+    expect(() => rig.tips(undefined as unknown as number[])).toThrow(
+      'angles must be an array or a typed array of numbers, not undefined',
+    );
     expect(() => new IkRig(ik, { ...chain(3, [2]), rest: null } as unknown as RigSpec)).toThrow(/^rest .* not null$/);
     expect(solver.solve(new Float64Array(9), [1, 1, 0]).reached).toBe(true);
   });
@@ -151,9 +159,9 @@ describe("the core's refusals", () => {
     expect(() => keep(new IkSolver(rig, 'newton')).solve(new Float64Array(900), [100, 100, 0])).toThrow(
       'newton takes rigs of at most 384 angles (128 bones); this one has 900: use lm or gd',
     );
-    expect(() => keep(new IkSolver(rig, 'lm', { historyCapacity: 1e8 })).solve(new Float64Array(900), [100, 100, 0])).toThrow(
-      'solver option historyCapacity must be in 1..1000000',
-    );
+    expect(() =>
+      keep(new IkSolver(rig, 'lm', { historyCapacity: 1e8 })).solve(new Float64Array(900), [100, 100, 0]),
+    ).toThrow('solver option historyCapacity must be in 1..1000000');
   });
 });
 
@@ -188,8 +196,12 @@ describe('results into arrays the caller keeps', () => {
       expect(Array.from(out), what).toEqual(Array.from(fresh));
       // From a plain array too (checked and copied first).
       expect(Array.from(rig[what](Array.from(a), new Float64Array(count))), what).toEqual(Array.from(fresh));
-      expect(() => rig[what](a, new Float64Array(count + 1)), what).toThrow(`${what}: out must be a Float64Array of ${count} numbers`);
-      expect(() => rig[what](a, new Float32Array(count) as unknown as Float64Array), what).toThrow('out must be a Float64Array');
+      expect(() => rig[what](a, new Float64Array(count + 1)), what).toThrow(
+        `${what}: out must be a Float64Array of ${count} numbers`,
+      );
+      expect(() => rig[what](a, new Float32Array(count) as unknown as Float64Array), what).toThrow(
+        'out must be a Float64Array',
+      );
     }
     const bad = a.slice();
     bad[3] = Infinity;

@@ -24,15 +24,22 @@ beforeAll(async () => {
 function quatToMatrix(q: ArrayLike<number>): number[] {
   const [x, y, z, w] = [q[0], q[1], q[2], q[3]];
   return [
-    1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w),
-    2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w),
-    2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y),
+    1 - 2 * (y * y + z * z),
+    2 * (x * y - z * w),
+    2 * (x * z + y * w),
+    2 * (x * y + z * w),
+    1 - 2 * (x * x + z * z),
+    2 * (y * z - x * w),
+    2 * (x * z - y * w),
+    2 * (y * z + x * w),
+    1 - 2 * (x * x + y * y),
   ];
 }
 
 /** Pose goals (position and orientation of every effector) that `angles` reaches exactly. */
 function poseGoalsAt(rig: IkRig, angles: Float64Array): Goals {
-  const tips = rig.tips(angles), q = rig.tipRotations(angles);
+  const tips = rig.tips(angles),
+    q = rig.tipRotations(angles);
   return {
     effectors: Array.from(rig.effectors(), (bone, e) => ({
       bone,
@@ -46,7 +53,8 @@ describe('tipRotations', () => {
   it.each(testRigs.map((r) => [r.label, r] as const))('equals the pose times the rest rotation on %s', (_, testRig) => {
     const rig = keep(new IkRig(ik, loadTestRig(testRig)));
     const angles = randomAngles(rig.spec, seeded(3));
-    const q = rig.tipRotations(angles), poses = rig.poses(angles);
+    const q = rig.tipRotations(angles),
+      poses = rig.poses(angles);
     Array.from(rig.effectors()).forEach((bone, e) => {
       const quat = q.subarray(4 * e, 4 * e + 4);
       expect(Math.hypot(...quat)).toBeCloseTo(1, 12);
@@ -62,29 +70,41 @@ describe('tipRotations', () => {
 });
 
 describe('pose goals', () => {
-  it.each(testRigs.map((r) => [r.label, r] as const))('lm reaches reachable pose goals on %s, checked by forward kinematics', (_, testRig) => {
-    const rig = keep(new IkRig(ik, loadTestRig(testRig)));
-    const size = rigSize(rig.boneTips(new Float64Array(rig.numAngles)));
-    const tipTolerance = 1e-3 * size;
-    const solver = keep(new IkSolver(rig, 'lm', { tipTolerance, orientationToleranceDeg: 0.5, timeBudgetSeconds: 0, maxIterations: 20000 }));
-    const rng = seeded(17);
-    let start = randomAngles(rig.spec, rng);
-    for (let k = 0; k < 6; k++) {
-      // Incremental: each target a small move away from where the last solve ended.
-      const goalAngles = start.map((a, i) => Math.min(rig.upper[i], Math.max(rig.lower[i], a + 20 * (rng() - 0.5))));
-      const goals = poseGoalsAt(rig, goalAngles);
-      const result = solver.solve(start, goals);
-      expect(result.stopReason).toBe('converged_E');
-      const tips = rig.tips(result.angles);
-      goals.effectors.forEach((g, e) => {
-        const p = g.position!;
-        expect(Math.hypot(tips[3 * e] - p[0], tips[3 * e + 1] - p[1], tips[3 * e + 2] - p[2])).toBeLessThan(tipTolerance);
-      });
-      for (const err of orientationErrorsDeg(rig, result.angles, goals)) expect(err).toBeLessThan(0.5);
-      expect(result.angles.every((x, i) => x >= rig.lower[i] && x <= rig.upper[i])).toBe(true);
-      start = result.angles;
-    }
-  });
+  it.each(testRigs.map((r) => [r.label, r] as const))(
+    'lm reaches reachable pose goals on %s, checked by forward kinematics',
+    (_, testRig) => {
+      const rig = keep(new IkRig(ik, loadTestRig(testRig)));
+      const size = rigSize(rig.boneTips(new Float64Array(rig.numAngles)));
+      const tipTolerance = 1e-3 * size;
+      const solver = keep(
+        new IkSolver(rig, 'lm', {
+          tipTolerance,
+          orientationToleranceDeg: 0.5,
+          timeBudgetSeconds: 0,
+          maxIterations: 20000,
+        }),
+      );
+      const rng = seeded(17);
+      let start = randomAngles(rig.spec, rng);
+      for (let k = 0; k < 6; k++) {
+        // Incremental: each target a small move away from where the last solve ended.
+        const goalAngles = start.map((a, i) => Math.min(rig.upper[i], Math.max(rig.lower[i], a + 20 * (rng() - 0.5))));
+        const goals = poseGoalsAt(rig, goalAngles);
+        const result = solver.solve(start, goals);
+        expect(result.stopReason).toBe('converged_E');
+        const tips = rig.tips(result.angles);
+        goals.effectors.forEach((g, e) => {
+          const p = g.position!;
+          expect(Math.hypot(tips[3 * e] - p[0], tips[3 * e + 1] - p[1], tips[3 * e + 2] - p[2])).toBeLessThan(
+            tipTolerance,
+          );
+        });
+        for (const err of orientationErrorsDeg(rig, result.angles, goals)) expect(err).toBeLessThan(0.5);
+        expect(result.angles.every((x, i) => x >= rig.lower[i] && x <= rig.upper[i])).toBe(true);
+        start = result.angles;
+      }
+    },
+  );
 
   it('position goals of weight 1 solve exactly as the plain target array', () => {
     const rig = keep(new IkRig(ik, loadTestRig(testRigs.find((r) => r.name === 'knight')!)));
@@ -92,7 +112,9 @@ describe('pose goals', () => {
     const start = randomAngles(rig.spec, seeded(5));
     const target = rig.tips(randomAngles(rig.spec, seeded(6)));
     const plain = solver.solve(start, target);
-    const goals: Goals = { effectors: Array.from(rig.effectors(), (bone, e) => ({ bone, position: target.subarray(3 * e, 3 * e + 3) })) };
+    const goals: Goals = {
+      effectors: Array.from(rig.effectors(), (bone, e) => ({ bone, position: target.subarray(3 * e, 3 * e + 3) })),
+    };
     const viaGoals = solver.solve(start, goals);
     expect(Array.from(viaGoals.angles)).toEqual(Array.from(plain.angles));
     expect(viaGoals.iterations).toBe(plain.iterations);
@@ -134,24 +156,37 @@ describe('pose goals', () => {
   });
 
   it('yields: a dragged goal gives way to the pinned ones; a value other than true or false is refused by name', () => {
-    const rig = keep(new IkRig(ik, sketchRig([
-      { parent: -1, at: [0, 0, 0], length: 1 },
-      { parent: 0, at: [1, 0, 0], length: 1 },
-      { parent: 0, at: [1, 0, 0], length: 1 },
-    ], [1, 2])));
+    const rig = keep(
+      new IkRig(
+        ik,
+        sketchRig(
+          [
+            { parent: -1, at: [0, 0, 0], length: 1 },
+            { parent: 0, at: [1, 0, 0], length: 1 },
+            { parent: 0, at: [1, 0, 0], length: 1 },
+          ],
+          [1, 2],
+        ),
+      ),
+    );
     const start = new Float64Array(rig.numAngles);
     const tips = rig.tips(start);
     const solver = keep(new IkSolver(rig, 'lm', { timeBudgetSeconds: 0, restarts: 0, tipTolerance: 1e-3 }));
     // Bone 1's target far beyond reach: it yields, bone 2 stays on its target although they share bone 0.
-    const goals: Goals = { effectors: [{ bone: 1, position: [10, 5, 0], yields: true }, { bone: 2, position: tips.subarray(3, 6) }] };
+    const goals: Goals = {
+      effectors: [
+        { bone: 1, position: [10, 5, 0], yields: true },
+        { bone: 2, position: tips.subarray(3, 6) },
+      ],
+    };
     const r = solver.solve(start, goals);
     const end = rig.tips(r.angles);
     expect(Math.hypot(end[3] - tips[3], end[4] - tips[4], end[5] - tips[5])).toBeLessThan(1e-3);
     expect(r.outOfReach).toBe(true);
     expect(r.goalsGivenUp).toBe(1);
-    expect(() => solver.solve(start, { effectors: [{ bone: 1, position: [1, 1, 0], yields: 1 as unknown as boolean }] })).toThrow(
-      'goals.effectors[0].yields must be true or false',
-    );
+    expect(() =>
+      solver.solve(start, { effectors: [{ bone: 1, position: [1, 1, 0], yields: 1 as unknown as boolean }] }),
+    ).toThrow('goals.effectors[0].yields must be true or false');
   });
 
   it('with strict priority (the default) the position holds as far as it can and the orientation gives way, whatever the weights', () => {
@@ -160,7 +195,9 @@ describe('pose goals', () => {
     for (const positionWeight of [0.01, 1, 100]) {
       // Within reach (0.8 along +y) but against the orientation goal (the bone along +x).
       const goals: Goals = {
-        effectors: [{ bone: 0, position: [0, 0.8, 0.6], orientation: [0, 0, 0, 1], positionWeight, orientationWeight: 1 }],
+        effectors: [
+          { bone: 0, position: [0, 0.8, 0.6], orientation: [0, 0, 0, 1], positionWeight, orientationWeight: 1 },
+        ],
       };
       const r = solver.solve(new Float64Array(3), goals);
       const tip = rig.tips(r.angles);
@@ -196,7 +233,12 @@ describe('pose goals', () => {
     const goals: Goals = { effectors: [{ bone: 1, position: [0, 2, 0] }] };
     expect(solver.solve(zero, goals).reached).toBe(true);
     rig.setEffectors([0, 1]);
-    const both: Goals = { effectors: [{ bone: 0, position: [0, 1, 0] }, { bone: 1, position: [1, 1, 0] }] };
+    const both: Goals = {
+      effectors: [
+        { bone: 0, position: [0, 1, 0] },
+        { bone: 1, position: [1, 1, 0] },
+      ],
+    };
     const r = solver.solve(zero, both);
     expect(r.reached).toBe(true);
     const tips = rig.tips(r.angles);
@@ -207,7 +249,9 @@ describe('pose goals', () => {
   it('paper mode refuses orientation goals with a message', () => {
     const rig = keep(new IkRig(ik, straightLimb()));
     const solver = keep(new IkSolver(rig, 'gd', { paperMode: true }));
-    expect(() => solver.solve(new Float64Array(6), { effectors: [{ bone: 1, orientation: [0, 0, 0, 1] }] })).toThrow(/paper mode/);
+    expect(() => solver.solve(new Float64Array(6), { effectors: [{ bone: 1, orientation: [0, 0, 0, 1] }] })).toThrow(
+      /paper mode/,
+    );
   });
 });
 
@@ -223,30 +267,45 @@ describe('bend hints, rest pull and stiffness', () => {
     ...['lm', 'gn', 'newton', 'bfgs'].map((m): [string, string, number] => [m, 'mirrored through the axis', 180]),
     ...['lm', 'gn', 'newton', 'bfgs', 'gd'].map((m): [string, string, number] => [m, 'a quarter turn away', 90]),
   ];
-  it.each(swivels)('%s: a pole %s turns a bent limb to its side without moving the tip (restarts 0)', (method, _, turn) => {
-    const rig = keep(new IkRig(ik, straightLimb()));
-    const { tipTolerance, gradientTolerance } = dragTolerances(rigSize(rig.boneTips(new Float64Array(rig.numAngles))));
-    const solver = keep(new IkSolver(rig, method, { timeBudgetSeconds: 0, tipTolerance, gradientTolerance, restarts: 0 }));
-    // Bent 90 degrees at the elbow, the bend plane turned -30 degrees about the limb's axis (x).
-    const bent = new Float64Array([-30, 45, 0, 0, -90, 0]);
-    const [, y, z] = elbow(rig, bent);
-    const c = Math.cos((turn * Math.PI) / 180), s = Math.sin((turn * Math.PI) / 180);
-    const pole = [0.7, 3 * (c * y - s * z), 3 * (s * y + c * z)]; // the bend direction turned about x
-    const tip = rig.tips(bent);
-    const result = solver.solve(bent, { effectors: [{ bone: 1, position: tip }], poles: [{ bone: 'bone 1', point: pole }] });
-    expect(result.reached).toBe(true);
-    const after = elbow(rig, result.angles);
-    const cos = (after[1] * pole[1] + after[2] * pole[2]) / Math.hypot(after[1], after[2]) / Math.hypot(pole[1], pole[2]);
-    expect(cos).toBeGreaterThan(0.99); // the elbow points at the pole
-    const end = rig.tips(result.angles);
-    expect(Math.hypot(end[0] - tip[0], end[1] - tip[1], end[2] - tip[2])).toBeLessThan(tipTolerance);
-  });
+  it.each(swivels)(
+    '%s: a pole %s turns a bent limb to its side without moving the tip (restarts 0)',
+    (method, _, turn) => {
+      const rig = keep(new IkRig(ik, straightLimb()));
+      const { tipTolerance, gradientTolerance } = dragTolerances(
+        rigSize(rig.boneTips(new Float64Array(rig.numAngles))),
+      );
+      const solver = keep(
+        new IkSolver(rig, method, { timeBudgetSeconds: 0, tipTolerance, gradientTolerance, restarts: 0 }),
+      );
+      // Bent 90 degrees at the elbow, the bend plane turned -30 degrees about the limb's axis (x).
+      const bent = new Float64Array([-30, 45, 0, 0, -90, 0]);
+      const [, y, z] = elbow(rig, bent);
+      const c = Math.cos((turn * Math.PI) / 180),
+        s = Math.sin((turn * Math.PI) / 180);
+      const pole = [0.7, 3 * (c * y - s * z), 3 * (s * y + c * z)]; // the bend direction turned about x
+      const tip = rig.tips(bent);
+      const result = solver.solve(bent, {
+        effectors: [{ bone: 1, position: tip }],
+        poles: [{ bone: 'bone 1', point: pole }],
+      });
+      expect(result.reached).toBe(true);
+      const after = elbow(rig, result.angles);
+      const cos =
+        (after[1] * pole[1] + after[2] * pole[2]) / Math.hypot(after[1], after[2]) / Math.hypot(pole[1], pole[2]);
+      expect(cos).toBeGreaterThan(0.99); // the elbow points at the pole
+      const end = rig.tips(result.angles);
+      expect(Math.hypot(end[0] - tip[0], end[1] - tip[1], end[2] - tip[2])).toBeLessThan(tipTolerance);
+    },
+  );
 
   it('a pole bends a straight limb towards it when the target comes nearer', () => {
     const rig = keep(new IkRig(ik, straightLimb()));
     const solver = keep(new IkSolver(rig, 'lm', { timeBudgetSeconds: 0 }));
     for (const side of [1, -1]) {
-      const result = solver.solve(new Float64Array(6), { effectors: [{ bone: 1, position: [1.5, 0, 0] }], poles: [{ bone: 1, point: [0.7, 0, 3 * side] }] });
+      const result = solver.solve(new Float64Array(6), {
+        effectors: [{ bone: 1, position: [1.5, 0, 0] }],
+        poles: [{ bone: 1, point: [0.7, 0, 3 * side] }],
+      });
       expect(result.reached).toBe(true);
       expect(elbow(rig, result.angles)[2] * side).toBeGreaterThan(0.3);
     }
@@ -261,10 +320,15 @@ describe('bend hints, rest pull and stiffness', () => {
     const rng = seeded(11);
     const distance = (options: { restWeight: number }, stiffness?: Record<string, number>) => {
       const solver = new IkSolver(rig, 'lm', { timeBudgetSeconds: 0, ...options });
-      let reached = 0, sum = 0, first = 0;
+      let reached = 0,
+        sum = 0,
+        first = 0;
       for (let k = 0; k < 20; k++) {
         const goal = randomAngles(rig.spec, seeded(100 + k)).map((a) => a / 4);
-        const r = solver.solve(new Float64Array(rig.numAngles), { effectors: [{ bone: 3, position: rig.tips(goal) }], stiffness });
+        const r = solver.solve(new Float64Array(rig.numAngles), {
+          effectors: [{ bone: 3, position: rig.tips(goal) }],
+          stiffness,
+        });
         if (r.reached) reached++;
         sum += r.angles.reduce((s, a) => s + Math.abs(a), 0) / rig.numAngles;
         first += Math.abs(r.angles[0]) + Math.abs(r.angles[1]) + Math.abs(r.angles[2]);
@@ -286,7 +350,9 @@ describe('bend hints, rest pull and stiffness', () => {
     const rig = keep(new IkRig(ik, straightLimb()));
     const zero = new Float64Array(6);
     const paper = keep(new IkSolver(rig, 'gn', { paperMode: true }));
-    expect(() => paper.solve(zero, { effectors: [{ bone: 1, position: [1, 1, 0] }], poles: [{ bone: 1, point: [0, 1, 0] }] })).toThrow(/paper mode/);
+    expect(() =>
+      paper.solve(zero, { effectors: [{ bone: 1, position: [1, 1, 0] }], poles: [{ bone: 1, point: [0, 1, 0] }] }),
+    ).toThrow(/paper mode/);
     paper.setOptions({ paperMode: true, restWeight: 1 });
     expect(() => paper.solve(zero, [1, 1, 0])).toThrow(/paper mode/);
   });
@@ -296,28 +362,101 @@ describe('malformed goals are refused, naming the field', () => {
   const cases: [string, unknown, RegExp][] = [
     ['not an object', [1, 2, 3, 4], /target has 4 values/],
     ['no effectors array', { effector: [] }, /unknown goals field "effector"/],
-    ['an unknown bone name', { effectors: [{ bone: 'hand', position: [0, 0, 0] }] }, /goals\.effectors\[0\]\.bone "hand" is not a bone/],
-    ['a bone that is no effector', { effectors: [{ bone: 0, position: [0, 0, 0] }] }, /"bone 0" is not an end effector \(the end effectors are bone 1/],
+    [
+      'an unknown bone name',
+      { effectors: [{ bone: 'hand', position: [0, 0, 0] }] },
+      /goals\.effectors\[0\]\.bone "hand" is not a bone/,
+    ],
+    [
+      'a bone that is no effector',
+      { effectors: [{ bone: 0, position: [0, 0, 0] }] },
+      /"bone 0" is not an end effector \(the end effectors are bone 1/,
+    ],
     ['a bone index out of range', { effectors: [{ bone: 7, position: [0, 0, 0] }] }, /bone is 7, not a bone index/],
-    ['a bone named twice', { effectors: [{ bone: 1, position: [0, 0, 0] }, { bone: 'bone 1', position: [0, 0, 0] }] }, /has a goal already/],
-    ['a short position', { effectors: [{ bone: 1, position: [0, 0] }] }, /effectors\[0\]\.position has 2 values, expected 3/],
+    [
+      'a bone named twice',
+      {
+        effectors: [
+          { bone: 1, position: [0, 0, 0] },
+          { bone: 'bone 1', position: [0, 0, 0] },
+        ],
+      },
+      /has a goal already/,
+    ],
+    [
+      'a short position',
+      { effectors: [{ bone: 1, position: [0, 0] }] },
+      /effectors\[0\]\.position has 2 values, expected 3/,
+    ],
     ['a NaN position', { effectors: [{ bone: 1, position: [0, NaN, 0] }] }, /position\[1\] is NaN/],
     ['a zero quaternion', { effectors: [{ bone: 1, orientation: [0, 0, 0, 0] }] }, /zero quaternion/],
-    ['a quaternion of 3 numbers', { effectors: [{ bone: 1, orientation: [0, 0, 1] }] }, /orientation \(a quaternion x, y, z, w\) has 3 values/],
-    ['a negative weight', { effectors: [{ bone: 1, position: [0, 0, 0], weight: -1 }] }, /weight must be a finite number >= 0/],
-    ['an infinite orientation weight', { effectors: [{ bone: 1, orientation: [0, 0, 0, 1], orientationWeight: Infinity }] }, /orientationWeight must be a finite/],
-    ['a misspelt field', { effectors: [{ bone: 1, orientaton: [0, 0, 0, 1] }] }, /unknown field goals\.effectors\[0\]\.orientaton/],
-    ['a weight without its goal', { effectors: [{ bone: 1, positionWeight: 2 }] }, /positionWeight is given without a position/],
+    [
+      'a quaternion of 3 numbers',
+      { effectors: [{ bone: 1, orientation: [0, 0, 1] }] },
+      /orientation \(a quaternion x, y, z, w\) has 3 values/,
+    ],
+    [
+      'a negative weight',
+      { effectors: [{ bone: 1, position: [0, 0, 0], weight: -1 }] },
+      /weight must be a finite number >= 0/,
+    ],
+    [
+      'an infinite orientation weight',
+      { effectors: [{ bone: 1, orientation: [0, 0, 0, 1], orientationWeight: Infinity }] },
+      /orientationWeight must be a finite/,
+    ],
+    [
+      'a misspelt field',
+      { effectors: [{ bone: 1, orientaton: [0, 0, 0, 1] }] },
+      /unknown field goals\.effectors\[0\]\.orientaton/,
+    ],
+    [
+      'a weight without its goal',
+      { effectors: [{ bone: 1, positionWeight: 2 }] },
+      /positionWeight is given without a position/,
+    ],
     ['no goal at all', { effectors: [] }, /no goal/],
     ['only goals of weight 0', { effectors: [{ bone: 1, position: [0, 0, 0], weight: 0 }] }, /no goal/],
-    ['a pole on a root bone', { effectors: [{ bone: 1, position: [0, 0, 0] }], poles: [{ bone: 0, point: [0, 1, 0] }] }, /poles\[0\]\.bone "bone 0" has no parent/],
-    ['a pole without a point', { effectors: [{ bone: 1, position: [0, 0, 0] }], poles: [{ bone: 1 }] }, /poles\[0\]\.point must be an array/],
-    ['a pole with a NaN point', { effectors: [{ bone: 1, position: [0, 0, 0] }], poles: [{ bone: 1, point: [0, NaN, 0] }] }, /poles\[0\]\.point\[1\] is NaN/],
-    ['a pole with a misspelt field', { effectors: [{ bone: 1, position: [0, 0, 0] }], poles: [{ bone: 1, pont: [0, 1, 0] }] }, /unknown field goals\.poles\[0\]\.pont/],
-    ['poles not an array', { effectors: [{ bone: 1, position: [0, 0, 0] }], poles: { bone: 1 } }, /goals\.poles must be an array/],
-    ['stiffness of an unknown bone', { effectors: [{ bone: 1, position: [0, 0, 0] }], stiffness: { elbow: 2 } }, /stiffness key "elbow" is not a bone/],
-    ['a negative stiffness', { effectors: [{ bone: 1, position: [0, 0, 0] }], stiffness: { 'bone 0': -1 } }, /stiffness\["bone 0"\] must be a finite number >= 0/],
-    ['a negative length scale', { effectors: [{ bone: 1, position: [0, 0, 0] }], lengthScale: -2 }, /lengthScale must be a finite number >= 0/],
+    [
+      'a pole on a root bone',
+      { effectors: [{ bone: 1, position: [0, 0, 0] }], poles: [{ bone: 0, point: [0, 1, 0] }] },
+      /poles\[0\]\.bone "bone 0" has no parent/,
+    ],
+    [
+      'a pole without a point',
+      { effectors: [{ bone: 1, position: [0, 0, 0] }], poles: [{ bone: 1 }] },
+      /poles\[0\]\.point must be an array/,
+    ],
+    [
+      'a pole with a NaN point',
+      { effectors: [{ bone: 1, position: [0, 0, 0] }], poles: [{ bone: 1, point: [0, NaN, 0] }] },
+      /poles\[0\]\.point\[1\] is NaN/,
+    ],
+    [
+      'a pole with a misspelt field',
+      { effectors: [{ bone: 1, position: [0, 0, 0] }], poles: [{ bone: 1, pont: [0, 1, 0] }] },
+      /unknown field goals\.poles\[0\]\.pont/,
+    ],
+    [
+      'poles not an array',
+      { effectors: [{ bone: 1, position: [0, 0, 0] }], poles: { bone: 1 } },
+      /goals\.poles must be an array/,
+    ],
+    [
+      'stiffness of an unknown bone',
+      { effectors: [{ bone: 1, position: [0, 0, 0] }], stiffness: { elbow: 2 } },
+      /stiffness key "elbow" is not a bone/,
+    ],
+    [
+      'a negative stiffness',
+      { effectors: [{ bone: 1, position: [0, 0, 0] }], stiffness: { 'bone 0': -1 } },
+      /stiffness\["bone 0"\] must be a finite number >= 0/,
+    ],
+    [
+      'a negative length scale',
+      { effectors: [{ bone: 1, position: [0, 0, 0] }], lengthScale: -2 },
+      /lengthScale must be a finite number >= 0/,
+    ],
   ];
   it.each(cases)('%s', (_, goals, message) => {
     const rig = keep(new IkRig(ik, straightLimb()));

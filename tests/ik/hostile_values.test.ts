@@ -23,7 +23,8 @@ beforeAll(async () => {
 
 /** The rules of SolverResult: no NaN anywhere, converged_E exactly when reached. */
 function expectClean(r: SolverResult, what: string): void {
-  for (const key of ['E', 'initialE', 'gradNorm', 'tipDistance'] as const) expect(Number.isNaN(r[key]), `${what}: ${key}`).toBe(false);
+  for (const key of ['E', 'initialE', 'gradNorm', 'tipDistance'] as const)
+    expect(Number.isNaN(r[key]), `${what}: ${key}`).toBe(false);
   expect(r.angles.every(Number.isFinite), `${what}: angles`).toBe(true);
   expect(r.reached, `${what}: ${r.stopReason} ${r.message}`).toBe(r.stopReason === 'converged_E');
 }
@@ -41,8 +42,16 @@ describe('hostile values are refused naming the field', () => {
     );
     const rest = Float64Array.from(spec.rest);
     rest[16 + 7] = -2e9; // bone 1's y translation
-    expect(() => new IkRig(ik, { ...spec, rest })).toThrow(/bone 1: rest_T translation\[1\] is -2e\+09, past \+-1e9 rig units/);
-    const big = keep(new IkRig(ik, { ...spec, lengths: Float64Array.of(1e9, 1e9), rest: Float64Array.from(spec.rest, (x, i) => (i === 19 ? 1e9 : x)) }));
+    expect(() => new IkRig(ik, { ...spec, rest })).toThrow(
+      /bone 1: rest_T translation\[1\] is -2e\+09, past \+-1e9 rig units/,
+    );
+    const big = keep(
+      new IkRig(ik, {
+        ...spec,
+        lengths: Float64Array.of(1e9, 1e9),
+        rest: Float64Array.from(spec.rest, (x, i) => (i === 19 ? 1e9 : x)),
+      }),
+    );
     const g = big.gradient(new Float64Array(6).fill(10), [0, 1e9, 0]);
     expect(g.every(Number.isFinite)).toBe(true);
   });
@@ -51,7 +60,10 @@ describe('hostile values are refused naming the field', () => {
     const rig = keep(new IkRig(ik, straightLimb()));
     const cases: [object, RegExp][] = [
       [{ errorTolerance: 0 }, /solver option errorTolerance must be a number > 0 \(0 can never be met/],
-      [{ paperMode: true, fdStepDeg: 1e-300 }, /solver option fdStepDeg must be in 1e-09\.\.1 \(degrees: smaller steps are lost to rounding/],
+      [
+        { paperMode: true, fdStepDeg: 1e-300 },
+        /solver option fdStepDeg must be in 1e-09\.\.1 \(degrees: smaller steps are lost to rounding/,
+      ],
       [{ paperMode: true, fdStepDeg: 1e308 }, /solver option fdStepDeg must be in 1e-09\.\.1/],
       [{ restWeight: 1e80 }, /solver option restWeight must be in 0\.\.1000/],
     ];
@@ -81,9 +93,13 @@ describe('hostile values are refused naming the field', () => {
   it('restartStart takes integers in range only, naming the argument', () => {
     const rig = keep(new IkRig(ik, straightLimb()));
     for (const k of [2 ** 31, 2 ** 32 + 1, '3', 1.5, 0, NaN])
-      expect(() => rig.restartStart(k as number), String(k)).toThrow(/restartStart: the restart index k must be an integer in 1\.\.2147483647/);
+      expect(() => rig.restartStart(k as number), String(k)).toThrow(
+        /restartStart: the restart index k must be an integer in 1\.\.2147483647/,
+      );
     for (const seed of [2 ** 32, -1, '1', 0.5])
-      expect(() => rig.restartStart(1, seed as number), String(seed)).toThrow(/restartStart: the seed must be an integer in 0\.\.4294967295/);
+      expect(() => rig.restartStart(1, seed as number), String(seed)).toThrow(
+        /restartStart: the seed must be an integer in 0\.\.4294967295/,
+      );
     expect(rig.restartStart(2 ** 31 - 1, 2 ** 32 - 1).every(Number.isFinite)).toBe(true);
   });
 });
@@ -94,7 +110,11 @@ describe('accepted values at the edges still obey the rules', () => {
     const rig = keep(new IkRig(ik, spec));
     const tips = rig.tips(new Float64Array(rig.numAngles).fill(10));
     const goals = (weight: number): Goals => ({
-      effectors: Array.from(rig.effectors(), (bone, e) => ({ bone, position: tips.subarray(3 * e, 3 * e + 3), weight })),
+      effectors: Array.from(rig.effectors(), (bone, e) => ({
+        bone,
+        position: tips.subarray(3 * e, 3 * e + 3),
+        weight,
+      })),
     });
     for (const method of IkSolver.methods(ik)) {
       const solver = keep(new IkSolver(rig, method, { timeBudgetSeconds: 0, maxIterations: 5000 }));
@@ -115,7 +135,10 @@ describe('accepted values at the edges still obey the rules', () => {
       const solver = keep(new IkSolver(rig, method, { timeBudgetSeconds: 0, restWeight: 1000 }));
       const cases: [string, Goals][] = [
         ['rest weight and stiffness 1000', { ...limbGoals(), stiffness: { 'bone 0': 1000, 'bone 1': 1000 } }],
-        ['a pole of weight 1000 at 1e9', { ...limbGoals(), poles: [{ bone: 1, point: [1e9, 1e9, 1e9], weight: 1000 }] }],
+        [
+          'a pole of weight 1000 at 1e9',
+          { ...limbGoals(), poles: [{ bone: 1, point: [1e9, 1e9, 1e9], weight: 1000 }] },
+        ],
       ];
       for (const [what, goals] of cases) {
         const r = solver.solve(start, goals);
@@ -128,7 +151,10 @@ describe('accepted values at the edges still obey the rules', () => {
   it('a target at the coordinate cap ends near the closest point, not in a numerical failure', () => {
     const rig = keep(new IkRig(ik, straightLimb()));
     for (const method of IkSolver.methods(ik)) {
-      const r = keep(new IkSolver(rig, method, { timeBudgetSeconds: 0 })).solve(new Float64Array(6).fill(10), [0, 1e9, 0]);
+      const r = keep(new IkSolver(rig, method, { timeBudgetSeconds: 0 })).solve(
+        new Float64Array(6).fill(10),
+        [0, 1e9, 0],
+      );
       expectClean(r, method);
       expect(['converged_grad', 'zero_step'], method).toContain(r.stopReason);
       expect(r.tipDistance - (1e9 - 2), method).toBeLessThan(0.1);
@@ -147,7 +173,7 @@ describe('a solver disposed while its input is read', () => {
     });
   }
 
-  it('says it was disposed, not embind\'s BindingError', () => {
+  it("says it was disposed, not embind's BindingError", () => {
     const rig = keep(new IkRig(ik, straightLimb()));
     const zero = new Float64Array(6);
     // Goals handed over before: a plain target then clears them, after reading it.
@@ -159,7 +185,17 @@ describe('a solver disposed while its input is read', () => {
     expect(() => b.start(zero, disposingTarget(b))).toThrow('this solver was disposed');
     // Goals whose reading disposes it: handed over after.
     const c = new IkSolver(rig, 'lm');
-    const goals = { effectors: [{ bone: 1, get position() { c.dispose(); return [1, 1, 0]; } }] };
+    const goals = {
+      effectors: [
+        {
+          bone: 1,
+          get position() {
+            c.dispose();
+            return [1, 1, 0];
+          },
+        },
+      ],
+    };
     expect(() => c.solve(zero, goals)).toThrow('this solver was disposed');
     // Checked first: a disposed solver says so before looking at its arguments.
     expect(() => c.start('not angles' as unknown as number[], [1, 1, 0])).toThrow('this solver was disposed');

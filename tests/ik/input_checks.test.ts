@@ -32,7 +32,9 @@ describe('the rig API refuses careless numbers', () => {
   it('setEffectors: fractions, NaN and out-of-range indices are errors; the old list stays', () => {
     const before = Array.from(rig.effectors());
     for (const bad of [[NaN], [3.7], [-1], [rig.numBones], [0, 1e10], [2 ** 32 + 1]]) {
-      expect(() => rig.setEffectors(bad), JSON.stringify(bad)).toThrow(/not an integer index|is not a bone|listed twice/);
+      expect(() => rig.setEffectors(bad), JSON.stringify(bad)).toThrow(
+        /not an integer index|is not a bone|listed twice/,
+      );
       expect(Array.from(rig.effectors())).toEqual(before);
     }
     rig.setEffectors([0, 1]);

@@ -36,13 +36,16 @@ function rigOf(testRig: TestRig): IkRig {
 
 /** Central differences of rig.tips in JS, step h degrees, no clamping; row-major like jacobian(). */
 function centralDifferences(rig: IkRig, a: Float64Array, h: number): Float64Array {
-  const rows = 3 * rig.numEffectors, cols = rig.numAngles;
+  const rows = 3 * rig.numEffectors,
+    cols = rig.numAngles;
   const jac = new Float64Array(rows * cols);
   for (let j = 0; j < cols; j++) {
-    const p = a.slice(), m = a.slice();
+    const p = a.slice(),
+      m = a.slice();
     p[j] += h;
     m[j] -= h;
-    const tp = rig.tips(p), tm = rig.tips(m);
+    const tp = rig.tips(p),
+      tm = rig.tips(m);
     for (let r = 0; r < rows; r++) jac[r * cols + j] = (tp[r] - tm[r]) / (2 * h);
   }
   return jac;
@@ -99,7 +102,8 @@ describe.each(testRigs)('$label through WebAssembly', (testRig) => {
     const a = randomAngles(rig.spec, rand);
     const r = rig.tips(a).map((x, i) => x - target[i]);
     expect(rig.objective(a, target)).toBeCloseTo(0.5 * r.reduce((s, x) => s + x * x, 0), 12);
-    const jac = rig.jacobian(a), g = rig.gradient(a, target);
+    const jac = rig.jacobian(a),
+      g = rig.gradient(a, target);
     const cols = rig.numAngles;
     for (let j = 0; j < cols; j++) {
       let gj = 0;
@@ -113,10 +117,13 @@ describe.each(rigsLike('knight'))('the WebAssembly rig API on $label', (testRig)
   it('keeps bone poses consistent with tips', () => {
     const rig = rigOf(testRig);
     const a = randomAngles(rig.spec, seeded(16));
-    const poses = rig.poses(a), boneTips = rig.boneTips(a), tips = rig.tips(a);
+    const poses = rig.poses(a),
+      boneTips = rig.boneTips(a),
+      tips = rig.tips(a);
     rig.spec.effectors.forEach((b, k) => {
       // tip = T_b * rest_b * (length, 0, 0)
-      const T = poses.subarray(16 * b, 16 * b + 16), R = rig.spec.rest.subarray(16 * b, 16 * b + 16);
+      const T = poses.subarray(16 * b, 16 * b + 16),
+        R = rig.spec.rest.subarray(16 * b, 16 * b + 16);
       const l = rig.spec.lengths[b];
       for (let r = 0; r < 3; r++) {
         let v = T[4 * r + 3];
@@ -129,7 +136,8 @@ describe.each(rigsLike('knight'))('the WebAssembly rig API on $label', (testRig)
 
   it('turns bad input into errors that name the problem', () => {
     const rig = rigOf(testRig);
-    const m = rig.numAngles, r = 3 * rig.numEffectors;
+    const m = rig.numAngles,
+      r = 3 * rig.numEffectors;
     expect(() => rig.tips(new Float64Array(5))).toThrow(`angles has 5 values, expected ${m}`);
     const a = new Float64Array(m);
     a[4] = NaN;

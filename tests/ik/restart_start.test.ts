@@ -31,7 +31,9 @@ describe('restart starts', () => {
 
   it('lie inside the limits, follow k and the seed, and refuse bad indices', () => {
     const rig = keep(new IkRig(ik, straightLimb()));
-    const a = rig.restartStart(1), b = rig.restartStart(2), c = rig.restartStart(1, 2);
+    const a = rig.restartStart(1),
+      b = rig.restartStart(2),
+      c = rig.restartStart(1, 2);
     for (const p of [a, b, c]) p.forEach((x, i) => expect(x >= rig.lower[i] && x <= rig.upper[i]).toBe(true));
     expect(Array.from(a)).toEqual(Array.from(rig.restartStart(1)));
     expect(Array.from(a)).not.toEqual(Array.from(b));

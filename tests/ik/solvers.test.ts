@@ -21,7 +21,6 @@ beforeAll(async () => {
 /** The core's methods (its registry), for the tables of cases below. */
 const methods = IkSolver.methods(await loadIkNode());
 
-
 /** The report's tolerances of `testRig` (web/src/rig/tolerances.ts); no time budget. */
 function reportOptions(testRig: TestRig, rig: IkRig): SolverOptions & { errorTolerance: number } {
   const size = rigSize(rig.boneTips(new Float64Array(rig.numAngles)));
@@ -37,7 +36,8 @@ interface TargetCase {
 /** The benchmark's incremental targets of `seed` (bench-node/targets.ts), as (start, target) pairs. */
 function incrementalTargets(rig: IkRig, count: number, seed: number): TargetCase[] {
   const set = generateTargets(rig.spec, 'incremental', count, seed, (a) => rig.tips(a));
-  const m = set.numAngles, r = set.numResiduals;
+  const m = set.numAngles,
+    r = set.numResiduals;
   return Array.from({ length: set.count }, (_, k) => ({
     start: set.starts.subarray(k * m, (k + 1) * m),
     target: set.targets.subarray(k * r, (k + 1) * r),
@@ -108,7 +108,13 @@ describe('the Solver binding', () => {
     const rig = keep(new IkRig(ik, loadTestRig(testRig)));
     // Without restarts (of the whole pose or of a chain), saddle escapes or goals given up (each
     // one more iteration within a step): one iteration per step, and the last iterate is the best point.
-    const options = { ...reportOptions(testRig, rig), restarts: 0, chainRestarts: 0, escapeSaddles: false, strictPriority: false };
+    const options = {
+      ...reportOptions(testRig, rig),
+      restarts: 0,
+      chainRestarts: 0,
+      escapeSaddles: false,
+      strictPriority: false,
+    };
     const stepped = keep(new IkSolver(rig, 'gn', options));
     const solved = keep(new IkSolver(rig, 'gn', options));
     const rand = seeded(5);
@@ -122,7 +128,8 @@ describe('the Solver binding', () => {
         expect(stepped.errorHistory().length).toBe(++steps + 1);
         rig.tips(rig.upper.map((u, i) => Math.min(u, Math.max(rig.lower[i], 33)))); // pose the rig elsewhere
       }
-      const a = stepped.result(), b = solved.solve(start, target);
+      const a = stepped.result(),
+        b = solved.solve(start, target);
       expect(a).toEqual({ ...b, elapsedSeconds: a.elapsedSeconds });
       expect(stepped.errorHistory()).toEqual(solved.errorHistory());
       expect(solved.errorHistory().length).toBe(b.iterations + 1);
@@ -133,17 +140,35 @@ describe('the Solver binding', () => {
 
   it.each(rigsLike('ikea-lamp'))('turns bad input into Errors with the message ($label)', (testRig) => {
     const rig = keep(new IkRig(ik, loadTestRig(testRig)));
-    const a = new Float64Array(rig.numAngles), t = rig.tips(a);
-    const m = a.length, r = t.length;
-    expect(() => new IkSolver(rig, 'simplex')).toThrow(/unknown solver method "simplex" \(known: lm, gn, bfgs, newton, gd\)/);
-    expect(() => new IkSolver(rig, 'lm', { maxIteration: 3 } as SolverOptions)).toThrow(/unknown solver option "maxIteration"/);
+    const a = new Float64Array(rig.numAngles),
+      t = rig.tips(a);
+    const m = a.length,
+      r = t.length;
+    expect(() => new IkSolver(rig, 'simplex')).toThrow(
+      /unknown solver method "simplex" \(known: lm, gn, bfgs, newton, gd\)/,
+    );
+    expect(() => new IkSolver(rig, 'lm', { maxIteration: 3 } as SolverOptions)).toThrow(
+      /unknown solver option "maxIteration"/,
+    );
     expect(() => new IkSolver(rig, 'lm', { maxIterations: 2.5 })).toThrow(/maxIterations must be an integer/);
-    expect(() => new IkSolver(rig, 'lm', { paperMode: 1 } as unknown as SolverOptions)).toThrow(/paperMode must be true or false/);
+    expect(() => new IkSolver(rig, 'lm', { paperMode: 1 } as unknown as SolverOptions)).toThrow(
+      /paperMode must be true or false/,
+    );
     const solver = keep(new IkSolver(rig, 'bfgs'));
     expect(() => solver.solve(a, t.slice(1))).toThrow(`target has ${r - 1} values, expected ${r}`);
     expect(() => solver.solve(new Float64Array(m + 3), t)).toThrow(`angles has ${m + 3} values, expected ${m}`);
-    expect(() => solver.solve(a, t.map((x, i) => (i === 1 ? NaN : x)))).toThrow(/target\[1\] is NaN, not a finite number/);
-    expect(() => solver.start(a.map((x, i) => (i === 2 ? Infinity : x)), t)).toThrow(/angles\[2\] is Infinity, not a finite number/);
+    expect(() =>
+      solver.solve(
+        a,
+        t.map((x, i) => (i === 1 ? NaN : x)),
+      ),
+    ).toThrow(/target\[1\] is NaN, not a finite number/);
+    expect(() =>
+      solver.start(
+        a.map((x, i) => (i === 2 ? Infinity : x)),
+        t,
+      ),
+    ).toThrow(/angles\[2\] is Infinity, not a finite number/);
     solver.setOptions({ errorTolerance: -1 });
     expect(() => solver.solve(a, t)).toThrow(/solver option errorTolerance must be a number > 0 \(0 can never be met/);
     solver.setOptions({});
@@ -165,24 +190,27 @@ describe('the Solver binding', () => {
     expect(solver.solve(c.start, c.target).stopReason).toBe('converged_E');
   });
 
-  it.each(rigsLike('knight'))('lm with restarts solves random targets the plain run gets stuck on ($label)', (testRig) => {
-    const rig = keep(new IkRig(ik, loadTestRig(testRig)));
-    const options = reportOptions(testRig, rig);
-    // One run, nothing to leave a stop off target (no restart of any kind, no escape).
-    const plain = keep(new IkSolver(rig, 'lm', { ...options, restarts: 0, chainRestarts: 0, escapeSaddles: false }));
-    const restarting = keep(new IkSolver(rig, 'lm', { ...options, restarts: 200 }));
-    const rand = seeded(9);
-    let plainSolved = 0;
-    for (let s = 0; s < 20; s++) {
-      const start = new Float64Array(rig.numAngles);
-      const target = rig.tips(randomAngles(rig.spec, rand));
-      if (plain.solve(start, target).E < options.errorTolerance) plainSolved++;
-      const r = restarting.solve(start, target);
-      expect(r.E, `target ${s}: ${r.stopReason} after ${r.restarts} restarts`).toBeLessThan(options.errorTolerance);
-      expect(insideLimits(rig, r.angles)).toBe(true);
-    }
-    expect(plainSolved).toBeLessThan(20);
-  });
+  it.each(rigsLike('knight'))(
+    'lm with restarts solves random targets the plain run gets stuck on ($label)',
+    (testRig) => {
+      const rig = keep(new IkRig(ik, loadTestRig(testRig)));
+      const options = reportOptions(testRig, rig);
+      // One run, nothing to leave a stop off target (no restart of any kind, no escape).
+      const plain = keep(new IkSolver(rig, 'lm', { ...options, restarts: 0, chainRestarts: 0, escapeSaddles: false }));
+      const restarting = keep(new IkSolver(rig, 'lm', { ...options, restarts: 200 }));
+      const rand = seeded(9);
+      let plainSolved = 0;
+      for (let s = 0; s < 20; s++) {
+        const start = new Float64Array(rig.numAngles);
+        const target = rig.tips(randomAngles(rig.spec, rand));
+        if (plain.solve(start, target).E < options.errorTolerance) plainSolved++;
+        const r = restarting.solve(start, target);
+        expect(r.E, `target ${s}: ${r.stopReason} after ${r.restarts} restarts`).toBeLessThan(options.errorTolerance);
+        expect(insideLimits(rig, r.angles)).toBe(true);
+      }
+      expect(plainSolved).toBeLessThan(20);
+    },
+  );
 
   it.each(rigsLike('ikea-lamp'))('refuses use after dispose, and after its rig was disposed ($label)', (testRig) => {
     const rig = new IkRig(ik, loadTestRig(testRig));

@@ -20,7 +20,11 @@ const PUSH_PAST_REACH = 7; // gesture path index: the right hand pushed past its
 describe('the speed bound with pinned goals', () => {
   it('moves no joint by a jump while the character pushes a hand past its reach', async () => {
     const ik = await loadIkNode();
-    const opts = parseOptions(['--rig', 'character', '--experiment', 'gestures', '--methods', 'lm', '--no-progress'], false, IkSolver.methods(ik))!;
+    const opts = parseOptions(
+      ['--rig', 'character', '--experiment', 'gestures', '--methods', 'lm', '--no-progress'],
+      false,
+      IkSolver.methods(ik),
+    )!;
     const [rig] = await prepareRigs(opts, ik);
     const set = targetSetsFor(rig, opts, ik).get('gestures')!;
     const settings = runSettings(rig, 'gestures', 'lm', opts);
@@ -29,17 +33,26 @@ describe('the speed bound with pinned goals', () => {
     try {
       const measurer = new StepMeasurer(rig.spec, core, rig.limbs);
       const moves = draggedTargetMoves(set, (a) => core.tips(a));
-      const m = set.numAngles, r = set.numResiduals;
+      const m = set.numAngles,
+        r = set.numResiduals;
       const first = set.group.indexOf(PUSH_PAST_REACH);
       let previous = set.starts.slice(first * m, (first + 1) * m);
-      let steps = 0, partway = 0;
+      let steps = 0,
+        partway = 0;
       for (let k = first; k < set.count && set.group[k] === PUSH_PAST_REACH; k++, steps++) {
         const start = set.chained[k] && k > first ? null : set.starts.slice(k * m, (k + 1) * m);
         const from = start ?? previous;
-        const result = runner.solve({ start, target: set.targets.subarray(k * r, (k + 1) * r), dragged: set.dragged[k] });
+        const result = runner.solve({
+          start,
+          target: set.targets.subarray(k * r, (k + 1) * r),
+          dragged: set.dragged[k],
+        });
         const to = result.angles!;
         const jointMove = measurer.measure(from, to).jointMove;
-        expect(isJump(jointMove, moves[k], rig.size), `step ${k - first}: joints moved ${((100 * jointMove) / rig.size).toFixed(1)}% of the height`).toBe(false);
+        expect(
+          isJump(jointMove, moves[k], rig.size),
+          `step ${k - first}: joints moved ${((100 * jointMove) / rig.size).toFixed(1)}% of the height`,
+        ).toBe(false);
         expect(result.wobbleAfter, `step ${k - first}: the pinned tips`).toBeLessThan(settings.tipTolerance);
         if (result.stopReason === 'joint_speed') partway++;
         previous = to.slice();

@@ -19,7 +19,6 @@ beforeAll(async () => {
 });
 const methods = IkSolver.methods(await loadIkNode());
 
-
 /** Two bones of length 1 along +x from the origin, limits +-180 degrees; effector: the second tip (2, 0, 0). */
 function straightLimb(): RigSpec {
   const identity = [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1];
@@ -82,9 +81,19 @@ describe.each(methods)('%s on a straight limb, restarts off', (method) => {
 describe('the result describes the returned point', () => {
   it('reached, tipDistance, E and the stop reason agree with forward kinematics, restarts on', () => {
     const rig = keep(new IkRig(ik, straightLimb()));
-    for (const options of [{ errorTolerance: 1e-6, tipTolerance: 0 }, { errorTolerance: 1e-6, tipTolerance: 1e-3 }]) {
-      const solver = keep(new IkSolver(rig, 'lm', { ...options, restarts: 3, stallIterations: 3, timeBudgetSeconds: 0 }));
-      for (const target of [[0.5, 1, 0.2], [1000, 0, 0], [0, 0, 2.5], [-1.9, 0.1, 0]]) {
+    for (const options of [
+      { errorTolerance: 1e-6, tipTolerance: 0 },
+      { errorTolerance: 1e-6, tipTolerance: 1e-3 },
+    ]) {
+      const solver = keep(
+        new IkSolver(rig, 'lm', { ...options, restarts: 3, stallIterations: 3, timeBudgetSeconds: 0 }),
+      );
+      for (const target of [
+        [0.5, 1, 0.2],
+        [1000, 0, 0],
+        [0, 0, 2.5],
+        [-1.9, 0.1, 0],
+      ]) {
         const r = solver.solve(new Float64Array(6), target);
         const tip = rig.tips(r.angles);
         const d = distance(tip, target);

@@ -27,14 +27,25 @@ describe('a yielding goal', () => {
     owned.push(rig);
     const size = rigSize(rig.boneTips(new Float64Array(rig.numAngles)));
     const drag = dragTolerances(size);
-    const options = { gradientTolerance: drag.gradientTolerance, tipTolerance: drag.tipTolerance, restarts: 0, timeBudgetSeconds: 0, maxJointMove: drag.maxJointMove };
+    const options = {
+      gradientTolerance: drag.gradientTolerance,
+      tipTolerance: drag.tipTolerance,
+      restarts: 0,
+      timeBudgetSeconds: 0,
+      maxJointMove: drag.maxJointMove,
+    };
     const dragged = new IkSolver(rig, 'lm', options);
     const equals = new IkSolver(rig, 'lm', options);
     owned.push(dragged, equals);
     const set = generateTargets(spec, 'reach', 1e5, 1, (a) => rig.tips(a));
     const goals = new DragGoals(spec, Array.from(rig.effectors()), false);
-    const r = set.numResiduals, m = set.numAngles;
-    let current: Float64Array = new Float64Array(m), both = 0, equalsOnly = 0, partway = 0, resumes = false;
+    const r = set.numResiduals,
+      m = set.numAngles;
+    let current: Float64Array = new Float64Array(m),
+      both = 0,
+      equalsOnly = 0,
+      partway = 0,
+      resumes = false;
     // Paths 0-9: the first effector's, and the second's.
     for (let k = 0; k < 10 * 40; k++) {
       const start = set.chained[k] ? current : set.starts.slice(k * m, (k + 1) * m);
@@ -47,13 +58,18 @@ describe('a yielding goal', () => {
       // after it (which resumes that move from the answer it was heading to, not from the start),
       // are the speed bound at work, not the priority: counted apart.
       if (asEquals.reached && (yielding.stopReason === 'joint_speed' || resumes)) partway++;
-      else if (asEquals.reached) (yielding.reached ? both++ : equalsOnly++);
+      else if (asEquals.reached && yielding.reached) both++;
+      else if (asEquals.reached) equalsOnly++;
       resumes = yielding.stopReason === 'joint_speed';
       // Whatever it reached, the pinned tips stay within the tolerance.
       const tips = rig.tips(yielding.angles);
       for (let e = 0; e < r / 3; e++) {
         if (e === set.dragged[k]) continue;
-        const off = Math.hypot(tips[3 * e] - target[3 * e], tips[3 * e + 1] - target[3 * e + 1], tips[3 * e + 2] - target[3 * e + 2]);
+        const off = Math.hypot(
+          tips[3 * e] - target[3 * e],
+          tips[3 * e + 1] - target[3 * e + 1],
+          tips[3 * e + 2] - target[3 * e + 2],
+        );
         expect(off, `step ${k}, effector ${e}`).toBeLessThanOrEqual(drag.tipTolerance);
       }
       current = yielding.angles;

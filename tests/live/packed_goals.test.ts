@@ -54,7 +54,12 @@ describe('the session packs its own goals', () => {
         change();
         const fast = s.goals.packed(s.targets, yielding);
         const checked = packGoals(s.rig, s.goals.goals(s.effectors(), s.targets, yielding));
-        expect({ what, packed: Array.from(fast.packed), target: Array.from(fast.target), poles: Array.from(fast.poles) }).toEqual({
+        expect({
+          what,
+          packed: Array.from(fast.packed),
+          target: Array.from(fast.target),
+          poles: Array.from(fast.poles),
+        }).toEqual({
           what,
           packed: Array.from(checked.packed),
           target: Array.from(checked.target),
@@ -114,13 +119,17 @@ describe('the session packs its own goals', () => {
       const bad = s.angles.slice();
       bad[4] = NaN;
       expect(() => solver.solvePacked(bad, goals)).toThrow(/angles\[4\] is not a finite number/);
-      expect(() => solver.solvePacked(s.angles.subarray(1), goals)).toThrow(/angles must be a Float64Array of 21 numbers/);
+      expect(() => solver.solvePacked(s.angles.subarray(1), goals)).toThrow(
+        /angles must be a Float64Array of 21 numbers/,
+      );
       s.setOrientationGoal(1, true, [0, 0, 0, 0]);
       expect(() => solver.solvePacked(s.angles, s.goals.packed(s.targets, 0))).toThrow(/orientation.*not a rotation/);
       s.setOrientationGoal(1, false);
       const nanTarget = s.goals.packed(s.targets, 0);
       nanTarget.target[2] = Infinity;
-      expect(() => solver.solvePacked(s.angles, nanTarget)).toThrow(/position target of the goal of end effector 0 is not finite/);
+      expect(() => solver.solvePacked(s.angles, nanTarget)).toThrow(
+        /position target of the goal of end effector 0 is not finite/,
+      );
     } finally {
       s.dispose();
     }

@@ -21,7 +21,13 @@ async function kept(name: string, dragged: RegExp): Promise<Record<string, numbe
 describe('effectors whose chains can keep their frames', () => {
   it('character: the head bowed, the hands keep their frames, the feet their places only', async () => {
     expect(await kept('character', /Head$/)).toEqual({ Head: 0, LeftHand: 1, RightHand: 1, LeftFoot: 0, RightFoot: 0 });
-    expect(await kept('character', /LeftHand$/)).toEqual({ Head: 1, LeftHand: 0, RightHand: 1, LeftFoot: 0, RightFoot: 0 });
+    expect(await kept('character', /LeftHand$/)).toEqual({
+      Head: 1,
+      LeftHand: 0,
+      RightHand: 1,
+      LeftFoot: 0,
+      RightFoot: 0,
+    });
   });
 
   it('hand: a finger dragged turns the wrist, and no other fingertip keeps its frame', async () => {

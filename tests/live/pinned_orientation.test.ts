@@ -22,7 +22,8 @@ afterEach(() => expect(IkSession.alive.sessions).toBe(0));
 /** Lowers the head target by a tenth of the rig size; the most a hand turned (degrees) and the worst pinned tip. */
 function bow(r: PoleRig, pin: boolean): { turn: number; drift: number } {
   const { session } = r;
-  const names = r.spec.names, effectors = Array.from(session.effectors());
+  const names = r.spec.names,
+    effectors = Array.from(session.effectors());
   const head = effectors.findIndex((b) => /head$/i.test(names[b]));
   const hands = effectors.flatMap((b, k) => (/hand(\.[LR])?$/i.test(names[b]) ? [k] : []));
   expect(head).toBeGreaterThanOrEqual(0);
@@ -34,14 +35,25 @@ function bow(r: PoleRig, pin: boolean): { turn: number; drift: number } {
   const before = session.tipRotations();
   const t = session.targets.subarray(3 * head, 3 * head + 3);
   const y0 = t[1];
-  let turn = 0, drift = 0;
+  let turn = 0,
+    drift = 0;
   for (let i = 1; i <= 20; i++) {
     t[1] = y0 - (0.1 * size * i) / 20;
     settle(r);
-    const now = session.tipRotations(), tips = session.tips();
-    for (const k of hands) turn = Math.max(turn, rotationAngleDeg(before.subarray(4 * k, 4 * k + 4), now.subarray(4 * k, 4 * k + 4)));
+    const now = session.tipRotations(),
+      tips = session.tips();
+    for (const k of hands)
+      turn = Math.max(turn, rotationAngleDeg(before.subarray(4 * k, 4 * k + 4), now.subarray(4 * k, 4 * k + 4)));
     effectors.forEach((_, k) => {
-      if (k !== head) drift = Math.max(drift, Math.hypot(tips[3 * k] - session.targets[3 * k], tips[3 * k + 1] - session.targets[3 * k + 1], tips[3 * k + 2] - session.targets[3 * k + 2]));
+      if (k !== head)
+        drift = Math.max(
+          drift,
+          Math.hypot(
+            tips[3 * k] - session.targets[3 * k],
+            tips[3 * k + 1] - session.targets[3 * k + 1],
+            tips[3 * k + 2] - session.targets[3 * k + 2],
+          ),
+        );
     });
   }
   session.pinOrientations(false);
@@ -56,7 +68,9 @@ describe('pinned effectors keep their frames while another target is dragged', (
       try {
         const kept = bow(pinned, true);
         const loose = bow(free, false);
-        console.log(`[pinned] ${name}: hands turned ${kept.turn.toFixed(3)} deg pinned, ${loose.turn.toFixed(2)} deg without pins`);
+        console.log(
+          `[pinned] ${name}: hands turned ${kept.turn.toFixed(3)} deg pinned, ${loose.turn.toFixed(2)} deg without pins`,
+        );
         expect(kept.turn).toBeLessThan(0.5);
         expect(kept.drift).toBeLessThan(pinned.settings.tipTolerance);
         expect(loose.turn).toBeGreaterThan(1);

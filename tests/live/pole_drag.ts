@@ -72,7 +72,8 @@ export function across(r: PoleRig, j: number, p: ArrayLike<number>): Vec3 | null
 
 /** Angle, DEGREES, about limb j's root-tip line from its joint to point `p` (0: the joint points at p). */
 export function swivelTo(r: PoleRig, j: number, p: ArrayLike<number>): number {
-  const bend = across(r, j, limb(r, j).joint), pole = across(r, j, p);
+  const bend = across(r, j, limb(r, j).joint),
+    pole = across(r, j, p);
   if (!bend || !pole) return NaN;
   return (Math.acos(Math.min(1, Math.max(-1, dot(bend, pole)))) * 180) / Math.PI;
 }
@@ -82,26 +83,33 @@ export function turnedAboutLimb(r: PoleRig, j: number, p: ArrayLike<number>, deg
   const { root, tip } = limb(r, j);
   const axis = unit(sub(tip, root)) as Vec3;
   const d = sub([p[0], p[1], p[2]], root);
-  const along = scale(axis, dot(d, axis)), off = sub(d, along);
-  const c = Math.cos((deg * Math.PI) / 180), s = Math.sin((deg * Math.PI) / 180);
+  const along = scale(axis, dot(d, axis)),
+    off = sub(d, along);
+  const c = Math.cos((deg * Math.PI) / 180),
+    s = Math.sin((deg * Math.PI) / 180);
   return add(root, add(along, add(scale(off, c), scale(cross(axis, off), s))));
 }
 
 /** The largest distance from an end effector's tip to its target. */
 export function worstTip(session: IkSession): number {
-  const tips = session.tips(), t = session.targets;
+  const tips = session.tips(),
+    t = session.targets;
   let worst = 0;
-  for (let i = 0; i < tips.length; i += 3) worst = Math.max(worst, norm(sub([tips[i], tips[i + 1], tips[i + 2]], [t[i], t[i + 1], t[i + 2]])));
+  for (let i = 0; i < tips.length; i += 3)
+    worst = Math.max(worst, norm(sub([tips[i], tips[i + 1], tips[i + 2]], [t[i], t[i + 1], t[i + 2]])));
   return worst;
 }
 
 /** The end effector (index) whose chain holds limb j's lower bone, nearest it. */
 export function limbEffector(r: PoleRig, j: number): number {
-  const effectors = r.session.effectors(), parents = r.spec.parents;
-  let best = -1, bestDepth = Infinity;
+  const effectors = r.session.effectors(),
+    parents = r.spec.parents;
+  let best = -1,
+    bestDepth = Infinity;
   effectors.forEach((e, k) => {
     let depth = 0;
-    for (let b = e; b >= 0; b = parents[b], depth++) if (b === r.limbs[j].bone && depth < bestDepth) [best, bestDepth] = [k, depth];
+    for (let b = e; b >= 0; b = parents[b], depth++)
+      if (b === r.limbs[j].bone && depth < bestDepth) [best, bestDepth] = [k, depth];
   });
   return best;
 }

@@ -12,7 +12,17 @@ import type { IkCoreModule } from '../../web/src/ik/module.js';
 import { loadIkNode } from '../../web/src/ik/node.js';
 import { IkSession } from '../../web/src/live/session.js';
 import { sub } from '../../web/src/rig/anatomy/anatomy_vec.js';
-import { limb, limbEffector, type PoleRig, poleRig, polePoint, settle, swivelTo, turnedAboutLimb, worstTip } from './pole_drag.js';
+import {
+  limb,
+  limbEffector,
+  type PoleRig,
+  poleRig,
+  polePoint,
+  settle,
+  swivelTo,
+  turnedAboutLimb,
+  worstTip,
+} from './pole_drag.js';
 
 let ik: IkCoreModule;
 beforeAll(async () => {
@@ -45,7 +55,8 @@ const STEPS = 20;
 function bend(r: PoleRig, j: number, share: number, steps = 10): void {
   const k = limbEffector(r, j);
   const t = r.session.targets.subarray(3 * k, 3 * k + 3);
-  const from = Array.from(t), root = limb(r, j).root;
+  const from = Array.from(t),
+    root = limb(r, j).root;
   for (let i = 1; i <= steps; i++) {
     for (let a = 0; a < 3; a++) t[a] = from[a] + ((root[a] - from[a]) * share * i) / steps;
     settle(r);
@@ -101,7 +112,8 @@ describe('a pole dragged along a straight limb', () => {
     try {
       const j = r.limbs.findIndex((l) => r.spec.names?.[l.bone] === 'forearm.L');
       settle(r);
-      const start = Array.from(polePoint(r, j)), elbow = limb(r, j).joint;
+      const start = Array.from(polePoint(r, j)),
+        elbow = limb(r, j).joint;
       let worst = 0;
       for (let i = 1; i <= STEPS; i++) {
         polePoint(r, j).set([start[0], start[1] + (0.4 * i) / STEPS, start[2]]);
@@ -110,7 +122,9 @@ describe('a pole dragged along a straight limb', () => {
       }
       const pole = Array.from(polePoint(r, j)) as [number, number, number];
       const nearer = Math.hypot(...sub(pole, elbow)) - Math.hypot(...sub(pole, limb(r, j).joint));
-      console.log(`knight forearm.L, pole 0.4 up: the elbow ${nearer.toFixed(4)} nearer, largest tip error ${worst.toExponential(2)}`);
+      console.log(
+        `knight forearm.L, pole 0.4 up: the elbow ${nearer.toFixed(4)} nearer, largest tip error ${worst.toExponential(2)}`,
+      );
       expect(nearer).toBeGreaterThan(0.01);
       expect(worst).toBeLessThan(r.settings.tipTolerance);
     } finally {

@@ -53,7 +53,7 @@ describe('pose states', () => {
     expect(saved.targets[0]).toBe(1.5);
   });
 
-  it('clamps angles into the limits in use, and refuses another rig\'s state', () => {
+  it("clamps angles into the limits in use, and refuses another rig's state", () => {
     const s = keep(new IkSession(ik, threeBones()));
     const state = capturePose(s);
     state.angles[4] = 120; // bone 1's Z angle: limits [-90, 90]

@@ -31,7 +31,13 @@ function slowDrag(r: PoleRig, stepsBeforeBudget: number) {
   expect(j).toBeGreaterThanOrEqual(0);
   const k = limbEffector(r, j);
   const size = rigSize(r.session.rig.boneTips(new Float64Array(r.session.rig.numAngles)));
-  const settings = { ...r.settings, timeBudgetMs: 1e-6, maxJointMove: dragTolerances(size).maxJointMove, strictPriority: true, stepsBeforeBudget };
+  const settings = {
+    ...r.settings,
+    timeBudgetMs: 1e-6,
+    maxJointMove: dragTolerances(size).maxJointMove,
+    strictPriority: true,
+    stepsBeforeBudget,
+  };
   r.session.yielding = k;
   r.session.pinsFrames = true;
   r.session.pinOrientations(true);
@@ -44,7 +50,8 @@ describe('a drag whose frames are cut by their budget', () => {
     try {
       const { j, k, settings } = slowDrag(r, FRAME_STEPS_BEFORE_BUDGET);
       const t = r.session.targets.subarray(3 * k, 3 * k + 3);
-      const from = Array.from(t), root = limb(r, j).root;
+      const from = Array.from(t),
+        root = limb(r, j).root;
       let fewest = Infinity;
       for (let i = 1; i <= DRAG_FRAMES; i++) {
         for (let a = 0; a < 3; a++) t[a] = from[a] + ((root[a] - from[a]) * 0.2 * i) / DRAG_FRAMES;
@@ -52,10 +59,14 @@ describe('a drag whose frames are cut by their budget', () => {
       }
       expect(fewest).toBeGreaterThanOrEqual(1);
       let frames = 0;
-      for (; frames < SETTLE_FRAMES && worstTip(r.session) >= settings.tipTolerance; frames++) r.session.solve('lm', settings);
-      console.log(`[slow frames] hand within δ ${frames} frames after the drag (worst tip ${worstTip(r.session).toExponential(2)}, δ ${settings.tipTolerance.toExponential(2)})`);
+      for (; frames < SETTLE_FRAMES && worstTip(r.session) >= settings.tipTolerance; frames++)
+        r.session.solve('lm', settings);
+      console.log(
+        `[slow frames] hand within δ ${frames} frames after the drag (worst tip ${worstTip(r.session).toExponential(2)}, δ ${settings.tipTolerance.toExponential(2)})`,
+      );
       expect(worstTip(r.session)).toBeLessThan(settings.tipTolerance);
-      const bend = across(r, j, limb(r, j).joint), pole = across(r, j, polePoint(r, j));
+      const bend = across(r, j, limb(r, j).joint),
+        pole = across(r, j, polePoint(r, j));
       if (!bend || !pole) throw new Error('a straight arm');
       expect(bend[0] * pole[0] + bend[1] * pole[1] + bend[2] * pole[2]).toBeGreaterThan(0.9);
     } finally {
@@ -67,7 +78,8 @@ describe('a drag whose frames are cut by their budget', () => {
     const r = await poleRig(ik, 'character');
     try {
       const { j, k, settings } = slowDrag(r, 0);
-      const t = r.session.targets.subarray(3 * k, 3 * k + 3), root = limb(r, j).root;
+      const t = r.session.targets.subarray(3 * k, 3 * k + 3),
+        root = limb(r, j).root;
       for (let a = 0; a < 3; a++) t[a] += (root[a] - t[a]) * 0.02;
       const before = r.session.angles.slice();
       const outcome = r.session.solve('lm', settings);

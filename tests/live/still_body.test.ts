@@ -46,13 +46,25 @@ describe('applyStillBody', () => {
   it('turns the pull on only with the setting on, no humanoid map, no paper mode and a target dragged', () => {
     const session = new IkSession(ik, spec);
     try {
-      const f: SolveSettings = { gradientTolerance: 0, tipTolerance: 1e-3, maxIterations: 50, timeBudgetMs: 3, restarts: 0, paperMode: false };
+      const f: SolveSettings = {
+        gradientTolerance: 0,
+        tipTolerance: 1e-3,
+        maxIterations: 50,
+        timeBudgetMs: 3,
+        restarts: 0,
+        paperMode: false,
+      };
       session.yielding = 1;
       applyStillBody(session, true, false, f);
       expect([f.restWeight, f.restFromStart]).toEqual([STILL_BODY_WEIGHT, true]);
       expect(session.goals.stiffness.length).toBe(spec.parents.length);
       expect(session.goals.packed(session.targets, 1).stiffness).toBe(session.goals.stiffness);
-      for (const [on, humanoid, paper, dragged] of [[false, false, false, 1], [true, true, false, 1], [true, false, true, 1], [true, false, false, -1]] as const) {
+      for (const [on, humanoid, paper, dragged] of [
+        [false, false, false, 1],
+        [true, true, false, 1],
+        [true, false, true, 1],
+        [true, false, false, -1],
+      ] as const) {
         session.yielding = dragged;
         f.paperMode = paper;
         applyStillBody(session, on, humanoid, f);
@@ -69,8 +81,18 @@ function lift(paw: string, still: boolean): { hips: number; tail: number; off: n
   const s = new IkSession(ik, spec);
   try {
     const tips0 = s.rig.boneTips(s.angles);
-    const t = dragTolerances(rigSize(tips0)), height = restHeight(tips0);
-    const f: SolveSettings = { gradientTolerance: t.gradientTolerance, tipTolerance: t.tipTolerance, maxIterations: 50, timeBudgetMs: 3, restarts: 0, paperMode: false, strictPriority: true, maxJointMove: t.maxJointMove };
+    const t = dragTolerances(rigSize(tips0)),
+      height = restHeight(tips0);
+    const f: SolveSettings = {
+      gradientTolerance: t.gradientTolerance,
+      tipTolerance: t.tipTolerance,
+      maxIterations: 50,
+      timeBudgetMs: 3,
+      restarts: 0,
+      paperMode: false,
+      strictPriority: true,
+      maxJointMove: t.maxJointMove,
+    };
     const k = Array.from(s.effectors()).findIndex((b) => spec.names[b] === paw);
     s.yielding = k;
     const timing = { ms: 0, again: false };
@@ -85,12 +107,20 @@ function lift(paw: string, still: boolean): { hips: number; tail: number; off: n
     }
     for (let n = 0; n < 300 && timing.again; n++) solve();
     expect(timing.again).toBe(false);
-    const tips = s.rig.boneTips(s.angles), tip = s.tips();
+    const tips = s.rig.boneTips(s.angles),
+      tip = s.tips();
     const moved = (name: string): number => {
       const b = spec.names.indexOf(name);
-      return Math.hypot(tips[3 * b] - tips0[3 * b], tips[3 * b + 1] - tips0[3 * b + 1], tips[3 * b + 2] - tips0[3 * b + 2]) / height;
+      return (
+        Math.hypot(tips[3 * b] - tips0[3 * b], tips[3 * b + 1] - tips0[3 * b + 1], tips[3 * b + 2] - tips0[3 * b + 2]) /
+        height
+      );
     };
-    const off = Math.hypot(tip[3 * k] - s.targets[3 * k], tip[3 * k + 1] - s.targets[3 * k + 1], tip[3 * k + 2] - s.targets[3 * k + 2]);
+    const off = Math.hypot(
+      tip[3 * k] - s.targets[3 * k],
+      tip[3 * k + 1] - s.targets[3 * k + 1],
+      tip[3 * k + 2] - s.targets[3 * k + 2],
+    );
     return { hips: moved('body'), tail: moved('tail4'), off, tolerance: t.tipTolerance };
   } finally {
     s.dispose();
@@ -98,14 +128,20 @@ function lift(paw: string, still: boolean): { hips: number; tail: number; off: n
 }
 
 describe('a paw lift on the quadruped', () => {
-  it.each(['fore_paw.L', 'hind_paw.L'])('%s: on target with the hips and tail within 2% of the height; without the pull they move more', (paw) => {
-    const on = lift(paw, true), off = lift(paw, false);
-    const pct = (x: number): string => `${(100 * x).toFixed(2)}%`;
-    console.log(`[still body] ${paw} up 15%: on: hips ${pct(on.hips)}, tail tip ${pct(on.tail)}; off: hips ${pct(off.hips)}, tail tip ${pct(off.tail)} of the height`);
-    for (const r of [on, off]) expect(r.off).toBeLessThan(r.tolerance);
-    expect(on.hips).toBeLessThan(0.02);
-    expect(on.tail).toBeLessThan(0.02);
-    expect(off.hips).toBeGreaterThan(0.02);
-    expect(off.tail).toBeGreaterThan(0.02);
-  });
+  it.each(['fore_paw.L', 'hind_paw.L'])(
+    '%s: on target with the hips and tail within 2% of the height; without the pull they move more',
+    (paw) => {
+      const on = lift(paw, true),
+        off = lift(paw, false);
+      const pct = (x: number): string => `${(100 * x).toFixed(2)}%`;
+      console.log(
+        `[still body] ${paw} up 15%: on: hips ${pct(on.hips)}, tail tip ${pct(on.tail)}; off: hips ${pct(off.hips)}, tail tip ${pct(off.tail)} of the height`,
+      );
+      for (const r of [on, off]) expect(r.off).toBeLessThan(r.tolerance);
+      expect(on.hips).toBeLessThan(0.02);
+      expect(on.tail).toBeLessThan(0.02);
+      expect(off.hips).toBeGreaterThan(0.02);
+      expect(off.tail).toBeGreaterThan(0.02);
+    },
+  );
 });

@@ -75,7 +75,9 @@ describe('the rig of a three.js character', () => {
   it('reads the humanoid from a VRM extension when given the GLTFLoader result, whatever the bone names', async () => {
     const { json, bin } = unpackGlb(bytes);
     const humanoid = file.gltf!.humanoid!;
-    const humanBones = Object.fromEntries(Object.entries(humanoid.bones).map(([role, bone]) => [role, { node: file.gltf!.boneNodes[bone!] }]));
+    const humanBones = Object.fromEntries(
+      Object.entries(humanoid.bones).map(([role, bone]) => [role, { node: file.gltf!.boneNodes[bone!] }]),
+    );
     json.extensions = { VRMC_vrm: { specVersion: '1.0', humanoid: { humanBones } } };
     const gltf: GLTF = await parseGlb(packGlb(json, bin));
     renameBones(gltf.scene);
@@ -100,10 +102,16 @@ describe('the rig of a three.js character', () => {
     const [mesh] = skinnedMeshes(gltf.scene);
     const unskinned = new Group();
     unskinned.name = 'props';
-    await expect(skeletonRig(unskinned)).rejects.toThrow('AvatarIK.attach: no SkinnedMesh at or under the Group "props"');
-    await expect(skeletonRig({} as SkinnedMesh)).rejects.toThrow('AvatarIK.attach: expected a GLTFLoader result, or a three.js Object3D');
+    await expect(skeletonRig(unskinned)).rejects.toThrow(
+      'AvatarIK.attach: no SkinnedMesh at or under the Group "props"',
+    );
+    await expect(skeletonRig({} as SkinnedMesh)).rejects.toThrow(
+      'AvatarIK.attach: expected a GLTFLoader result, or a three.js Object3D',
+    );
     // A SkinnedMesh whose bones were taken out of its scene graph.
     mesh.skeleton.bones[0].removeFromParent();
-    await expect(skeletonRig(mesh)).rejects.toThrow(/the bones of the SkinnedMesh "character_1" are not in its scene graph/);
+    await expect(skeletonRig(mesh)).rejects.toThrow(
+      /the bones of the SkinnedMesh "character_1" are not in its scene graph/,
+    );
   });
 });

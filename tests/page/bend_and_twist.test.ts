@@ -7,11 +7,16 @@ import { describe, expect, it } from 'vitest';
 import type { RigSpec } from '../../web/src/ik/rig_arrays.js';
 import { bendAndTwist, describeHinge, isHinge } from '../../web/src/page/selection.js';
 
-const X = new Vector3(1, 0, 0), Z = new Vector3(0, 0, 1), RAD = Math.PI / 180;
+const X = new Vector3(1, 0, 0),
+  Z = new Vector3(0, 0, 1),
+  RAD = Math.PI / 180;
 
 /** Rx(a0) Rz(a1) Rx(a2), degrees. */
 function xzx(a0: number, a1: number, a2: number): Quaternion {
-  return new Quaternion().setFromAxisAngle(X, a0 * RAD).multiply(new Quaternion().setFromAxisAngle(Z, a1 * RAD)).multiply(new Quaternion().setFromAxisAngle(X, a2 * RAD));
+  return new Quaternion()
+    .setFromAxisAngle(X, a0 * RAD)
+    .multiply(new Quaternion().setFromAxisAngle(Z, a1 * RAD))
+    .multiply(new Quaternion().setFromAxisAngle(X, a2 * RAD));
 }
 
 /** The bend (degrees between x and q x) and the twist (q's turn about x once the swing is taken out, in (-180, 180]). */
@@ -32,10 +37,16 @@ describe('a joint read as bend and twist from rest', () => {
 
   it('matches the swing-twist decomposition of the joint rotation for any angles', () => {
     let seed = 7;
-    const rand = (lo: number, hi: number): number => ((seed = (seed * 1103515245 + 12345) % 2147483648), lo + ((hi - lo) * seed) / 2147483648);
+    const rand = (lo: number, hi: number): number => (
+      (seed = (seed * 1103515245 + 12345) % 2147483648),
+      lo + ((hi - lo) * seed) / 2147483648
+    );
     for (let i = 0; i < 200; i++) {
-      const a0 = rand(-180, 180), a1 = rand(-150, 150), a2 = rand(-180, 180);
-      const want = swingTwist(xzx(a0, a1, a2)), got = bendAndTwist(a0, a1, a2);
+      const a0 = rand(-180, 180),
+        a1 = rand(-150, 150),
+        a2 = rand(-180, 180);
+      const want = swingTwist(xzx(a0, a1, a2)),
+        got = bendAndTwist(a0, a1, a2);
       expect(got.bend).toBeCloseTo(want.bend, 6);
       // The same twist up to a whole turn (a twist of +-180 reads either way).
       expect(Math.abs(((got.twist - want.twist + 540) % 360) - 180)).toBeLessThan(1e-6);
@@ -55,6 +66,8 @@ describe('hinges (a URDF joint: a0 moves, a1 and a2 fixed at 0)', () => {
   });
 
   it('reads its one angle and its limits', () => {
-    expect(describeHinge(spec, 0, Float64Array.of(12.345, 0, 0, 0, 0, 0, 0, 0, 0))).toBe('angle about its axis (a0): 12.3° in [-166.0°, 166.0°]');
+    expect(describeHinge(spec, 0, Float64Array.of(12.345, 0, 0, 0, 0, 0, 0, 0, 0))).toBe(
+      'angle about its axis (a0): 12.3° in [-166.0°, 166.0°]',
+    );
   });
 });

@@ -8,7 +8,12 @@ const at = (path: string): PathFile => ({ path, file: new File(['x'], path.split
 
 describe('the rig file among several', () => {
   it('takes a .urdf before a .glb, .gltf or .json, and leaves the others beside it', () => {
-    const files = [at('robot/meshes/base.stl'), at('robot/config.json'), at('robot/urdf/robot.urdf'), at('robot/model.glb')];
+    const files = [
+      at('robot/meshes/base.stl'),
+      at('robot/config.json'),
+      at('robot/urdf/robot.urdf'),
+      at('robot/model.glb'),
+    ];
     const { rig, others } = pickRigFile(files);
     expect(rig?.path).toBe('robot/urdf/robot.urdf');
     expect(others.map((f) => f.path)).toEqual(['robot/meshes/base.stl', 'robot/config.json', 'robot/model.glb']);
@@ -18,7 +23,13 @@ describe('the rig file among several', () => {
 });
 
 describe('a file named by the rig', () => {
-  const others = [at('panda/meshes/visual/link0.dae'), at('panda/meshes/collision/link0.stl'), at('other/link0.dae'), at('link7.stl'), at('my arm/hand part.stl')];
+  const others = [
+    at('panda/meshes/visual/link0.dae'),
+    at('panda/meshes/collision/link0.stl'),
+    at('other/link0.dae'),
+    at('link7.stl'),
+    at('my arm/hand part.stl'),
+  ];
 
   it('matches the longest tail of a package:// or relative path', () => {
     expect(findSibling('package://franka_description/meshes/visual/link0.dae', others)).toBe(others[0].file);

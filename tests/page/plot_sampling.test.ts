@@ -20,7 +20,8 @@ describe('plotIndices', () => {
       for (let k = 1; k < xs.length; k++) expect(xs[k]).toBeGreaterThan(xs[k - 1]);
       for (const must of [0, 777, 54_321, n - 1]) expect(xs).toContain(must);
       const early = xs.filter((i) => i < 100).length;
-      if (log) expect(early).toBeGreaterThanOrEqual(100 * 0.9); // the first 100 iterations nearly all drawn
+      if (log)
+        expect(early).toBeGreaterThanOrEqual(100 * 0.9); // the first 100 iterations nearly all drawn
       else expect(early).toBeLessThan(5);
     });
   }

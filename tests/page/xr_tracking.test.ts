@@ -24,25 +24,54 @@ import { readRig, type RigSource } from '../../web/src/view/rig_source.js';
 import { IkSession } from '../../web/src/live/session.js';
 import { AvatarDriver } from '../../web/src/page/avatar_driver.js';
 import { TrackedPoints } from '../../web/src/page/tracked_points.js';
-import { type XrFrameLike, type XrInputSourceLike, type XrPoseLike, type XrSample, XrTracking, xrSample } from '../../web/src/page/xr_tracking.js';
+import {
+  type XrFrameLike,
+  type XrInputSourceLike,
+  type XrPoseLike,
+  type XrSample,
+  XrTracking,
+  xrSample,
+} from '../../web/src/page/xr_tracking.js';
 
 let ik: IkCoreModule;
 let character: RigSource;
 beforeAll(async () => {
   ik = await loadIkNode();
-  character = await readRig(readFileSync(resolve(import.meta.dirname, '../../web/public/models/character.glb')), 'character.glb');
+  character = await readRig(
+    readFileSync(resolve(import.meta.dirname, '../../web/public/models/character.glb')),
+    'character.glb',
+  );
 });
 afterAll(() => expect(IkSession.alive.sessions).toBe(0));
 
-const UPPER_BODY = ['spine', 'chest', 'upperChest', 'neck', 'head', 'leftShoulder', 'leftUpperArm', 'leftLowerArm', 'leftHand', 'rightShoulder', 'rightUpperArm', 'rightLowerArm', 'rightHand'] as const;
+const UPPER_BODY = [
+  'spine',
+  'chest',
+  'upperChest',
+  'neck',
+  'head',
+  'leftShoulder',
+  'leftUpperArm',
+  'leftLowerArm',
+  'leftHand',
+  'rightShoulder',
+  'rightUpperArm',
+  'rightLowerArm',
+  'rightHand',
+] as const;
 
 /** Frame f (60 per second) of an upper-body motion: the rest pose for 5 frames, then each angle of the moving bones on its own sine within its limits, growing over half a second. */
 function motionFrame(rig: IkRig, bones: number[], f: number): Float64Array {
-  const out = new Float64Array(rig.numAngles), t = f / 60, grow = Math.min(1, Math.max(0, (f - 5) / 30));
+  const out = new Float64Array(rig.numAngles),
+    t = f / 60,
+    grow = Math.min(1, Math.max(0, (f - 5) / 30));
   bones.forEach((b, i) => {
     for (let k = 0; k < 3; k++) {
-      const j = 3 * b + k, lo = rig.lower[j], hi = rig.upper[j];
-      const mid = Math.max(lo, Math.min(hi, 0)), span = Math.min(hi - mid, mid - lo, 60);
+      const j = 3 * b + k,
+        lo = rig.lower[j],
+        hi = rig.upper[j];
+      const mid = Math.max(lo, Math.min(hi, 0)),
+        span = Math.min(hi - mid, mid - lo, 60);
       out[j] = mid + grow * 0.6 * span * Math.sin(2 * Math.PI * (0.15 + 0.05 * ((i + k) % 5)) * t + i + 2 * k);
     }
   });
@@ -71,8 +100,16 @@ function xrPose(p: Vector3, q: Quaternion): XrPoseLike {
 /** The devices' poses (head, left grip, right grip) of a pose whose tracked tips and frames are `tips`, `rotations`. */
 function devicePoses(user: User, tips: Float64Array, rotations: Float64Array): XrPoseLike[] {
   return [0, 1, 2].map((k) => {
-    const p = new Vector3().fromArray(tips, 3 * k).sub(user.A).applyQuaternion(user.Y).multiplyScalar(user.u).add(user.T);
-    const q = new Quaternion().fromArray(rotations, 4 * k).premultiply(user.Y).multiply(user.E[k]);
+    const p = new Vector3()
+      .fromArray(tips, 3 * k)
+      .sub(user.A)
+      .applyQuaternion(user.Y)
+      .multiplyScalar(user.u)
+      .add(user.T);
+    const q = new Quaternion()
+      .fromArray(rotations, 4 * k)
+      .premultiply(user.Y)
+      .multiply(user.E[k]);
     return xrPose(p, q);
   });
 }
@@ -94,7 +131,8 @@ class ScriptedFrame implements XrFrameLike {
 }
 
 const REFERENCE_SPACE = {};
-const leftGrip = {}, rightGrip = {};
+const leftGrip = {},
+  rightGrip = {};
 /** The session's input sources: the right one first, a gaze source (no grip), an unhanded one, a left one without a grip (hand tracking, say). */
 const SOURCES: XrInputSourceLike[] = [
   { handedness: 'right', gripSpace: rightGrip },
@@ -111,7 +149,9 @@ describe('XrTracking: a recorded headset stream drives the avatar', () => {
     try {
       const humanoid = character.humanoid!;
       const bones = UPPER_BODY.map((role) => humanoid.bones[role]).filter((b): b is number => b !== undefined);
-      const s = driver.standing, h = s.height, delta = 1e-3 * h;
+      const s = driver.standing,
+        h = s.height,
+        delta = 1e-3 * h;
       const head = s.points.positions;
       // The user: 1.62 m to the eyes (the character's head is 1.8 units over its floor), standing
       // at (0.7, 0, -0.4) in the XR space, turned 110 degrees from the character's facing.
@@ -122,7 +162,10 @@ describe('XrTracking: a recorded headset stream drives the avatar', () => {
         A: new Vector3(head[0], s.floorY, head[2]),
         E: [
           // The viewer looks along its -Z: at rest, along the way the character faces (+Z).
-          new Quaternion().fromArray(s.points.rotations, 0).invert().multiply(new Quaternion().setFromAxisAngle(new Vector3(0, 1, 0), Math.PI)),
+          new Quaternion()
+            .fromArray(s.points.rotations, 0)
+            .invert()
+            .multiply(new Quaternion().setFromAxisAngle(new Vector3(0, 1, 0), Math.PI)),
           new Quaternion().setFromEuler(new Euler(0.3, -1.1, 0.5)),
           new Quaternion().setFromEuler(new Euler(-0.7, 0.4, 2.0)),
         ],
@@ -132,15 +175,31 @@ describe('XrTracking: a recorded headset stream drives the avatar', () => {
       const recorded: { frame: ScriptedFrame; tips: Float64Array; rotations: Float64Array }[] = [];
       for (let f = 0; f < frames; f++) {
         const a = motionFrame(truth, bones, f);
-        const tips = truth.tips(a), rotations = truth.tipRotations(a);
+        const tips = truth.tips(a),
+          rotations = truth.tipRotations(a);
         const [viewer, left, right] = devicePoses(user, tips, rotations);
         const rightTracked = f >= 2 && (f < 100 || f >= 120);
-        recorded.push({ frame: new ScriptedFrame(viewer, new Map([[leftGrip, left], [rightGrip, rightTracked ? right : null]])), tips, rotations });
+        recorded.push({
+          frame: new ScriptedFrame(
+            viewer,
+            new Map([
+              [leftGrip, left],
+              [rightGrip, rightTracked ? right : null],
+            ]),
+          ),
+          tips,
+          rotations,
+        });
       }
 
       const tracking = new XrTracking(s);
       const points = new TrackedPoints();
-      let solves = 0, worstMap = 0, worstTurn = 0, worstTip = 0, worstFrame = 0, worstFoot = 0;
+      let solves = 0,
+        worstMap = 0,
+        worstTurn = 0,
+        worstTip = 0,
+        worstFrame = 0,
+        worstFoot = 0;
       let held: Float64Array | null = null;
       for (let f = 0; f < frames; f++) {
         const { frame, tips, rotations } = recorded[f];
@@ -155,13 +214,20 @@ describe('XrTracking: a recorded headset stream drives the avatar', () => {
         if (f === 99) held = points.positions.slice(6, 9);
         for (const k of lost ? [0, 1] : [0, 1, 2]) {
           worstMap = Math.max(worstMap, distance(points.positions, tips, k) / h);
-          worstTurn = Math.max(worstTurn, rotationAngleDeg(points.rotations.subarray(4 * k, 4 * k + 4), rotations.subarray(4 * k, 4 * k + 4)));
+          worstTurn = Math.max(
+            worstTurn,
+            rotationAngleDeg(points.rotations.subarray(4 * k, 4 * k + 4), rotations.subarray(4 * k, 4 * k + 4)),
+          );
         }
         if (lost) expect(Array.from(points.positions.subarray(6, 9))).toEqual(Array.from(held!)); // the right hand holds its last point
-        const mine = driver.solver.tips(), turned = driver.solver.tipRotations();
+        const mine = driver.solver.tips(),
+          turned = driver.solver.tipRotations();
         for (const k of [0, 1, 2]) {
           worstTip = Math.max(worstTip, distance(mine, points.positions, k) / delta);
-          worstFrame = Math.max(worstFrame, rotationAngleDeg(turned.subarray(4 * k, 4 * k + 4), points.rotations.subarray(4 * k, 4 * k + 4)));
+          worstFrame = Math.max(
+            worstFrame,
+            rotationAngleDeg(turned.subarray(4 * k, 4 * k + 4), points.rotations.subarray(4 * k, 4 * k + 4)),
+          );
         }
         for (const k of [3, 4]) worstFoot = Math.max(worstFoot, distance(mine, driver.standingTips, k) / delta); // where it stood
       }
@@ -184,9 +250,15 @@ describe('XrTracking: a recorded headset stream drives the avatar', () => {
       const points = new TrackedPoints();
       const ok = { position: [0, 1.6, 0], orientation: [0, 0, 0, 1] };
       const sample = (left: XrSample['left']): XrSample => ({ head: ok, left, right: ok });
-      expect(() => tracking.input(sample({ position: [0, NaN, 0], orientation: [0, 0, 0, 1] }), points)).toThrow('XR sample: left grip position[1] is NaN, not a finite number');
-      expect(() => tracking.input(sample({ position: [0, 1, 0], orientation: [0, 0, 0, 0] }), points)).toThrow('XR sample: left grip orientation is a zero quaternion');
-      expect(() => tracking.input(sample({ position: [0, 1], orientation: [0, 0, 0, 1] }), points)).toThrow('XR sample: left grip position has 2 values, expected 3');
+      expect(() => tracking.input(sample({ position: [0, NaN, 0], orientation: [0, 0, 0, 1] }), points)).toThrow(
+        'XR sample: left grip position[1] is NaN, not a finite number',
+      );
+      expect(() => tracking.input(sample({ position: [0, 1, 0], orientation: [0, 0, 0, 0] }), points)).toThrow(
+        'XR sample: left grip orientation is a zero quaternion',
+      );
+      expect(() => tracking.input(sample({ position: [0, 1], orientation: [0, 0, 0, 1] }), points)).toThrow(
+        'XR sample: left grip position has 2 values, expected 3',
+      );
       expect(tracking.isCalibrated).toBe(false);
       expect(tracking.input(sample(ok), points)).toBe(true); // a good sample calibrates
     } finally {

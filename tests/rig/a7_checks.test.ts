@@ -27,22 +27,65 @@ describe('A7 checks', () => {
 
   it('refuses negative and huge lengths and positions', async () => {
     expect(await loadError(treeA7(three, { length: -2 }), 'a.json')).toBe('a.json: bones[0].length -2 is negative');
-    expect(await loadError(treeA7(three, { length: 1e300 }), 'a.json')).toBe('a.json: bones[0].length = 1e+300 lies beyond +-1000000000 rig units');
-    expect(await loadError(treeA7(three, rest([[1, 0, 0, 2e9], [0, 1, 0, 0], [0, 0, 1, 0]])), 'a.json')).toBe(
-      'a.json: bones[0].rest_T[0][3] = 2000000000 lies beyond +-1000000000 rig units',
+    expect(await loadError(treeA7(three, { length: 1e300 }), 'a.json')).toBe(
+      'a.json: bones[0].length = 1e+300 lies beyond +-1000000000 rig units',
     );
+    expect(
+      await loadError(
+        treeA7(
+          three,
+          rest([
+            [1, 0, 0, 2e9],
+            [0, 1, 0, 0],
+            [0, 0, 1, 0],
+          ]),
+        ),
+        'a.json',
+      ),
+    ).toBe('a.json: bones[0].rest_T[0][3] = 2000000000 lies beyond +-1000000000 rig units');
   });
 
   it('refuses rest matrices that are not rigid', async () => {
-    expect(await loadError(treeA7(three, rest([[2, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0]])), 'a.json')).toBe(
-      'a.json: bones[0].rest_T is not rigid (its rotation part is not orthonormal)',
-    );
-    expect(await loadError(treeA7(three, rest([[-1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0]])), 'a.json')).toBe(
-      'a.json: bones[0].rest_T is not rigid (it mirrors: determinant < 0)',
-    );
-    expect(await loadError(treeA7(three, rest([[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 1, 1]])), 'a.json')).toBe(
-      'a.json: bones[0].rest_T bottom row is not (0, 0, 0, 1)',
-    );
+    expect(
+      await loadError(
+        treeA7(
+          three,
+          rest([
+            [2, 0, 0, 0],
+            [0, 1, 0, 0],
+            [0, 0, 1, 0],
+          ]),
+        ),
+        'a.json',
+      ),
+    ).toBe('a.json: bones[0].rest_T is not rigid (its rotation part is not orthonormal)');
+    expect(
+      await loadError(
+        treeA7(
+          three,
+          rest([
+            [-1, 0, 0, 0],
+            [0, 1, 0, 0],
+            [0, 0, 1, 0],
+          ]),
+        ),
+        'a.json',
+      ),
+    ).toBe('a.json: bones[0].rest_T is not rigid (it mirrors: determinant < 0)');
+    expect(
+      await loadError(
+        treeA7(
+          three,
+          rest([
+            [1, 0, 0, 0],
+            [0, 1, 0, 0],
+            [0, 0, 1, 0],
+            [0, 0, 1, 1],
+          ]),
+        ),
+        'a.json',
+      ),
+    ).toBe('a.json: bones[0].rest_T bottom row is not (0, 0, 0, 1)');
   });
 
   it('refuses end effectors that are fractions, repeated or none', async () => {

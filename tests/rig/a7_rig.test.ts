@@ -19,7 +19,10 @@ describe('A7 JSON import', () => {
   });
 
   it('takes the last bone as end effector when ik_constraints is missing', () => {
-    const spec = parseA7Rig(`{"bones":[{"parent_id":-1,"rest_T":${rest3x4}},{"parent_id":0,"rest_T":${rest3x4}}]}`, 'x.json');
+    const spec = parseA7Rig(
+      `{"bones":[{"parent_id":-1,"rest_T":${rest3x4}},{"parent_id":0,"rest_T":${rest3x4}}]}`,
+      'x.json',
+    );
     expect(Array.from(spec.effectors)).toEqual([1]);
   });
 

@@ -101,7 +101,9 @@ describe('a file saved posed takes its rest from the bind pose', () => {
     // The notes: no "bent the other way", no "not in the bind pose"; the pose is named.
     expect(b.warnings.filter((w) => !w.startsWith("the file's pose"))).toEqual(a.warnings);
     expect(b.warnings.join('\n')).not.toMatch(/bent the other way|not in the bind pose/);
-    expect(b.warnings).toContain("the file's pose differs from the bind pose (2 joints: mixamorig:LeftUpLeg, mixamorig:LeftLeg): opened posed, the rest is the bind pose");
+    expect(b.warnings).toContain(
+      "the file's pose differs from the bind pose (2 joints: mixamorig:LeftUpLeg, mixamorig:LeftLeg): opened posed, the rest is the bind pose",
+    );
 
     // The start angles pose the rig as the file's nodes stand: the knee bent 80 degrees within its limits.
     const start = b.gltf!.startAngles!;
@@ -118,7 +120,8 @@ describe('a file saved posed takes its rest from the bind pose', () => {
     const poses = rig.poses(start);
     const turned = b.spec.names.filter((_, i) => {
       const p = b.spec.parents[i];
-      const mine = poses.subarray(16 * i, 16 * i + 12), theirs = p < 0 ? [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0] : poses.subarray(16 * p, 16 * p + 12);
+      const mine = poses.subarray(16 * i, 16 * i + 12),
+        theirs = p < 0 ? [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0] : poses.subarray(16 * p, 16 * p + 12);
       return [0, 1, 2, 4, 5, 6, 8, 9, 10].some((k) => Math.abs(mine[k] - theirs[k]) > 1e-9);
     });
     expect(turned).toEqual(['mixamorig:LeftUpLeg', 'mixamorig:LeftLeg']);
@@ -127,7 +130,9 @@ describe('a file saved posed takes its rest from the bind pose', () => {
   it('a pose past the limits opens at the nearest angles within them, with a note', async () => {
     const bytes = turnedGlb(await mixamoSkeleton(), { 'mixamorig:LeftLeg': { axis: X, deg: -40 } }); // the knee bent forwards
     const rig = await loadRig(bytes, 'x.glb');
-    expect(rig.warnings).toContain('bone mixamorig:LeftLeg: posed past its limits in the file: opened at the nearest angles within them');
+    expect(rig.warnings).toContain(
+      'bone mixamorig:LeftLeg: posed past its limits in the file: opened at the nearest angles within them',
+    );
     expect(rig.warnings.join('\n')).not.toMatch(/bent the other way/);
     const knee = rig.spec.names.indexOf('mixamorig:LeftLeg');
     expect(rig.gltf!.startAngles![3 * knee + 1]).toBe(0);
@@ -137,11 +142,15 @@ describe('a file saved posed takes its rest from the bind pose', () => {
     for (const name of ['character', 'knight']) {
       const loaded = await loadRig(new Uint8Array(readFileSync(resolve(modelsDir, `${name}.glb`))), `${name}.glb`);
       expect(loaded.gltf!.startAngles, name).toBeNull();
-      expect(rigReport(loaded), name).toEqual(JSON.parse(readFileSync(resolve(expectedDir, `${name}.rig.json`), 'utf8')));
+      expect(rigReport(loaded), name).toEqual(
+        JSON.parse(readFileSync(resolve(expectedDir, `${name}.rig.json`), 'utf8')),
+      );
       // Bit for bit: the rest world matrices are the nodes' own world matrices.
       const { json } = unpackGlb(readFileSync(resolve(modelsDir, `${name}.glb`)));
       const world = worldMatrices(readNodes(json.nodes, name));
-      loaded.gltf!.boneNodes.forEach((node, i) => expect(Array.from(loaded.gltf!.restWorld.subarray(16 * i, 16 * i + 16)), name).toEqual(Array.from(world[node])));
+      loaded.gltf!.boneNodes.forEach((node, i) =>
+        expect(Array.from(loaded.gltf!.restWorld.subarray(16 * i, 16 * i + 16)), name).toEqual(Array.from(world[node])),
+      );
     }
   });
 
@@ -154,35 +163,45 @@ describe('a file saved posed takes its rest from the bind pose', () => {
 });
 
 describe('which pose is the rest when the bind pose cannot give it', () => {
-  it('a skin without inverse bind matrices: the nodes\' pose, said in the notes', async () => {
+  it("a skin without inverse bind matrices: the nodes' pose, said in the notes", async () => {
     const rig = await loadRig(treeGlb([-1, 0, 1]), 'tree.glb');
     expect(rig.warnings).toContain("skin 0: no inverse bind matrices, so the nodes' pose is the rest");
     expect(rig.gltf!.startAngles).toBeNull();
     const { json } = unpackGlb(treeGlb([-1, 0, 1]));
     json.skins.push({ joints: [2] });
-    expect((await loadRig(packGlb(json), 'two.glb')).warnings).toContain("2 skins (0, 1): no inverse bind matrices, so the nodes' pose is the rest");
+    expect((await loadRig(packGlb(json), 'two.glb')).warnings).toContain(
+      "2 skins (0, 1): no inverse bind matrices, so the nodes' pose is the rest",
+    );
   });
 
-  it('bind matrices that are no turn of the nodes\' skeleton (identities): the nodes\' pose, as before', async () => {
+  it("bind matrices that are no turn of the nodes' skeleton (identities): the nodes' pose, as before", async () => {
     const rig = await loadRig(await skeletonGlb(humanoidJoints({ roles: MIXAMO_NAMES }), { bindPose: false }), 'x.glb');
-    expect(rig.warnings).toContain("skin 0: the nodes are not in the bind pose; the rig's rest pose is the nodes' pose");
+    expect(rig.warnings).toContain(
+      "skin 0: the nodes are not in the bind pose; the rig's rest pose is the nodes' pose",
+    );
     expect(rig.gltf!.startAngles).toBeNull();
   });
 
-  it('a bind matrix that is not invertible or not finite is an error naming the skin\'s inverseBindMatrices and the joint', async () => {
+  it("a bind matrix that is not invertible or not finite is an error naming the skin's inverseBindMatrices and the joint", async () => {
     const { json, bin } = unpackGlb(await mixamoSkeleton());
     const k = (json.skins[0].joints as number[]).indexOf(nodeIndex(json, 'mixamorig:LeftLeg'));
-    const accessor = (json.accessors as { bufferView: number; byteOffset?: number }[])[json.skins[0].inverseBindMatrices as number];
+    const accessor = (json.accessors as { bufferView: number; byteOffset?: number }[])[
+      json.skins[0].inverseBindMatrices as number
+    ];
     const view = (json.bufferViews as { byteOffset?: number }[])[accessor.bufferView];
     const at = (view.byteOffset ?? 0) + (accessor.byteOffset ?? 0) + 64 * k;
     const singular = bin.slice();
     new DataView(singular.buffer).setFloat32(at + 4 * 5, 0, true); // scale y = 0
     expect(await loadError(packGlb(json, singular), 'x.glb')).toMatch(
-      new RegExp(`^x\\.glb: skins\\[0\\]\\.inverseBindMatrices \\(accessor \\d+\\): matrix ${k}, of joint node \\d+ "mixamorig:LeftLeg", is not invertible`),
+      new RegExp(
+        `^x\\.glb: skins\\[0\\]\\.inverseBindMatrices \\(accessor \\d+\\): matrix ${k}, of joint node \\d+ "mixamorig:LeftLeg", is not invertible`,
+      ),
     );
     const notFinite = bin.slice();
     new DataView(notFinite.buffer).setFloat32(at + 4 * 12, NaN, true);
-    expect(await loadError(packGlb(json, notFinite), 'x.glb')).toMatch(new RegExp(`skins\\[0\\]\\.inverseBindMatrices \\(accessor \\d+\\): matrix ${k} has a non-finite entry`));
+    expect(await loadError(packGlb(json, notFinite), 'x.glb')).toMatch(
+      new RegExp(`skins\\[0\\]\\.inverseBindMatrices \\(accessor \\d+\\): matrix ${k} has a non-finite entry`),
+    );
   });
 });
 
@@ -199,7 +218,9 @@ describe('round trip: the character posed on the page, saved as .glb and opened 
     const rest = rig.tips(zero);
     /** Drags the left foot's target (the others staying on their rest tips) in 30 steps from where the pose puts it to height `y`. */
     const drag = (r: IkRig, from: Float64Array, y: number): Float64Array => {
-      const solve = keep(new IkSolver(r, 'lm', { restarts: 0, ...dragTolerances(size), maxIterations: 1000, timeBudgetSeconds: 0 }));
+      const solve = keep(
+        new IkSolver(r, 'lm', { restarts: 0, ...dragTolerances(size), maxIterations: 1000, timeBudgetSeconds: 0 }),
+      );
       let angles = from;
       const target = rest.slice();
       const y0 = r.tips(from)[3 * foot + 1];
@@ -228,27 +249,33 @@ describe('round trip: the character posed on the page, saved as .glb and opened 
     expect(start[3 * knee + 1]).toBeCloseTo(lifted[3 * knee + 1], 4);
     // Dragging the foot back down goes as it goes on the rig that was never saved.
     const down = drag(rig2, start, rest[3 * foot + 1]);
-    expect(maxAbsDiff(rig2.boneTips(down), rig.boneTips(drag(rig, lifted, rest[3 * foot + 1])))).toBeLessThan(1e-5 * size);
+    expect(maxAbsDiff(rig2.boneTips(down), rig.boneTips(drag(rig, lifted, rest[3 * foot + 1])))).toBeLessThan(
+      1e-5 * size,
+    );
   });
 });
 
 describe('round trip at random angles', () => {
-  it.each(['knight', 'the Blender-style character (two skins, Armature-space bind matrices under a moved World)'])('%s: reopens at the same rest and pose', async (name) => {
-    const bytes = name === 'knight' ? new Uint8Array(readFileSync(resolve(modelsDir, 'knight.glb'))) : await testCharacterGlb();
-    const loaded = await loadRig(bytes, 'x.glb');
-    const rig = keep(new IkRig(ik, loaded.spec));
-    const size = restSize(rig);
-    const rand = seeded(7);
-    for (let s = 0; s < 3; s++) {
-      const angles = randomAngles(loaded.spec, rand);
-      const saved = await posedGlb(bytes, 'x.glb', loaded.gltf!, loaded.spec, rig.poses(angles));
-      const again = await loadRig(saved, 'posed.glb');
-      expect(maxAbsDiff(again.spec.rest, loaded.spec.rest)).toBeLessThan(1e-6 * size);
-      expect(limitsDiff(again, loaded)).toBeLessThan(1e-5);
-      expect(again.warnings.join('\n')).not.toMatch(/past its limits|not in the bind pose/);
-      const rig2 = keep(new IkRig(ik, again.spec));
-      expect(maxAbsDiff(rig2.boneTips(again.gltf!.startAngles!), rig.boneTips(angles))).toBeLessThan(1e-6 * size);
-      expect(startPoseError(saved, again)).toBeLessThan(1e-6);
-    }
-  });
+  it.each(['knight', 'the Blender-style character (two skins, Armature-space bind matrices under a moved World)'])(
+    '%s: reopens at the same rest and pose',
+    async (name) => {
+      const bytes =
+        name === 'knight' ? new Uint8Array(readFileSync(resolve(modelsDir, 'knight.glb'))) : await testCharacterGlb();
+      const loaded = await loadRig(bytes, 'x.glb');
+      const rig = keep(new IkRig(ik, loaded.spec));
+      const size = restSize(rig);
+      const rand = seeded(7);
+      for (let s = 0; s < 3; s++) {
+        const angles = randomAngles(loaded.spec, rand);
+        const saved = await posedGlb(bytes, 'x.glb', loaded.gltf!, loaded.spec, rig.poses(angles));
+        const again = await loadRig(saved, 'posed.glb');
+        expect(maxAbsDiff(again.spec.rest, loaded.spec.rest)).toBeLessThan(1e-6 * size);
+        expect(limitsDiff(again, loaded)).toBeLessThan(1e-5);
+        expect(again.warnings.join('\n')).not.toMatch(/past its limits|not in the bind pose/);
+        const rig2 = keep(new IkRig(ik, again.spec));
+        expect(maxAbsDiff(rig2.boneTips(again.gltf!.startAngles!), rig.boneTips(angles))).toBeLessThan(1e-6 * size);
+        expect(startPoseError(saved, again)).toBeLessThan(1e-6);
+      }
+    },
+  );
 });

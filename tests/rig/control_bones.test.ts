@@ -39,8 +39,12 @@ describe('a robot whose feet are control bones off the root', () => {
       '4 control bones (FootL, FootR, PoleTargetL, PoleTargetR) off the root (IK targets, poles, or a hand or foot outside the limbs): ' +
         'not taken as default end effectors nor as humanoid bones',
     );
-    expect(rig.warnings).toContain('leftFoot is LowerLegL_end, the end of its limb, in place of the control bone FootL');
-    expect(rig.warnings).toContain('rightFoot is LowerLegR_end, the end of its limb, in place of the control bone FootR');
+    expect(rig.warnings).toContain(
+      'leftFoot is LowerLegL_end, the end of its limb, in place of the control bone FootL',
+    );
+    expect(rig.warnings).toContain(
+      'rightFoot is LowerLegR_end, the end of its limb, in place of the control bone FootR',
+    );
     expect(rig.warnings.some((w) => w.includes('root bone alone'))).toBe(false);
   });
 
@@ -48,7 +52,9 @@ describe('a robot whose feet are control bones off the root', () => {
     const rig = await load(robotRig({ feet: 'controls', legEnds: false }));
     expect(effectorNames(rig)).toEqual(['Head', 'Palm2L', 'Palm2R', 'LowerLegL', 'LowerLegR']);
     expect(rig.gltf!.humanoid!.missing).toEqual(['leftFoot', 'rightFoot']);
-    expect(rig.warnings).toContain('leftLowerLeg LowerLegL ends its limb: its tip is the end effector in place of the control bone FootL');
+    expect(rig.warnings).toContain(
+      'leftLowerLeg LowerLegL ends its limb: its tip is the end effector in place of the control bone FootL',
+    );
     expect(rig.warnings).toContain(
       'no joint is flagged extras.ik.effector: end effectors are the hands, feet and head of the humanoid mapping, ' +
         'the ends of the limbs (LowerLegL, LowerLegR) in place of the control bones off the root (FootL, FootR) (Head, Palm2L, Palm2R, LowerLegL, LowerLegR)',
@@ -56,9 +62,18 @@ describe('a robot whose feet are control bones off the root', () => {
   });
 
   it('takes the ends of the legs the humanoid mapping leaves out (legs off the body beside the hips, as in RobotExpressive)', async () => {
-    const joints = robotRig({ feet: 'controls', legEnds: false }).map((j) => (j.name.startsWith('UpperLeg') ? { ...j, parent: 'Body' } : j));
+    const joints = robotRig({ feet: 'controls', legEnds: false }).map((j) =>
+      j.name.startsWith('UpperLeg') ? { ...j, parent: 'Body' } : j,
+    );
     const rig = await load(joints);
-    expect(rig.gltf!.humanoid!.missing).toEqual(['leftUpperLeg', 'leftLowerLeg', 'leftFoot', 'rightUpperLeg', 'rightLowerLeg', 'rightFoot']);
+    expect(rig.gltf!.humanoid!.missing).toEqual([
+      'leftUpperLeg',
+      'leftLowerLeg',
+      'leftFoot',
+      'rightUpperLeg',
+      'rightLowerLeg',
+      'rightFoot',
+    ]);
     expect(effectorNames(rig)).toEqual(['Head', 'Palm2L', 'Palm2R', 'LowerLegL', 'LowerLegR']);
     expect(rig.warnings).toContain(
       'no joint is flagged extras.ik.effector: end effectors are the hands, feet and head of the humanoid mapping, ' +
@@ -106,15 +121,40 @@ describe('control bones', () => {
   it('are IK targets and poles off the root or the armature, with control words all through their subtree', () => {
     expect(
       controlsOf([
-        ['root'], ['hips', 'root'], ['thigh.L', 'hips'], ['shin.L', 'thigh.L'], ['foot.L', 'shin.L'],
-        ['foot_ik.L', 'root'], ['MCH-foot_ik.L', 'foot_ik.L'], ['knee_pole.L', 'root'], ['IK_Target'], ['CTRL_body', 'root'], ['chest', 'CTRL_body'],
+        ['root'],
+        ['hips', 'root'],
+        ['thigh.L', 'hips'],
+        ['shin.L', 'thigh.L'],
+        ['foot.L', 'shin.L'],
+        ['foot_ik.L', 'root'],
+        ['MCH-foot_ik.L', 'foot_ik.L'],
+        ['knee_pole.L', 'root'],
+        ['IK_Target'],
+        ['CTRL_body', 'root'],
+        ['chest', 'CTRL_body'],
       ]),
     ).toEqual({ 'foot_ik.L': 'named', 'knee_pole.L': 'named', IK_Target: 'named' });
   });
 
   it('are hands and feet off the root beside limbs of their side, never a foot in its leg', () => {
-    const body: [string, string?][] = [['Bone'], ['Body', 'Bone'], ['UpperLegL', 'Body'], ['LowerLegL', 'UpperLegL'], ['UpperArmR', 'Body'], ['LowerArmR', 'UpperArmR']];
-    expect(controlsOf([...body, ['FootL', 'Bone'], ['HandR', 'Bone'], ['FootR', 'Bone'], ['Foot', 'Bone'], ['ToeL', 'Bone']])).toEqual({ FootL: 'limbEnd', HandR: 'limbEnd' });
+    const body: [string, string?][] = [
+      ['Bone'],
+      ['Body', 'Bone'],
+      ['UpperLegL', 'Body'],
+      ['LowerLegL', 'UpperLegL'],
+      ['UpperArmR', 'Body'],
+      ['LowerArmR', 'UpperArmR'],
+    ];
+    expect(
+      controlsOf([
+        ...body,
+        ['FootL', 'Bone'],
+        ['HandR', 'Bone'],
+        ['FootR', 'Bone'],
+        ['Foot', 'Bone'],
+        ['ToeL', 'Bone'],
+      ]),
+    ).toEqual({ FootL: 'limbEnd', HandR: 'limbEnd' });
     expect(controlsOf([...body, ['FootL', 'LowerLegL']])).toEqual({});
     // Off the hips (a root named hips or pelvis) a foot is a body part, not a control.
     expect(controlsOf([['Hips'], ['UpperLegL', 'Hips'], ['LowerLegL', 'UpperLegL'], ['FootL', 'Hips']])).toEqual({});

@@ -10,7 +10,15 @@ function tree(bones: [string, string?][]): { names: string[]; parents: number[] 
   const names = bones.map(([n]) => n);
   return { names, parents: bones.map(([, p]) => (p === undefined ? -1 : names.indexOf(p))) };
 }
-const body: [string, string?][] = [['Bone'], ['Body', 'Bone'], ['Hips', 'Body'], ['UpperLegL', 'Body'], ['LowerLegL', 'UpperLegL'], ['UpperLegR', 'Body'], ['LowerLegR', 'UpperLegR']];
+const body: [string, string?][] = [
+  ['Bone'],
+  ['Body', 'Bone'],
+  ['Hips', 'Body'],
+  ['UpperLegL', 'Body'],
+  ['LowerLegL', 'UpperLegL'],
+  ['UpperLegR', 'Body'],
+  ['LowerLegR', 'UpperLegR'],
+];
 
 /** A rigid pose: a turn of `deg` about the unit `axis`, then a move by `t` (row-major 4x4). */
 function rigid(axis: [number, number, number], deg: number, t: [number, number, number]): Float64Array {
@@ -20,7 +28,13 @@ function rigid(axis: [number, number, number], deg: number, t: [number, number, 
 
 describe('limbEndFollowers', () => {
   it('pairs a foot off the root with the end of its leg, with the bones below it, and leaves poles and body feet alone', () => {
-    const { names, parents } = tree([...body, ['FootL', 'Bone'], ['ToeCtrlL', 'FootL'], ['FootR', 'Bone'], ['PoleTargetL', 'Bone']]);
+    const { names, parents } = tree([
+      ...body,
+      ['FootL', 'Bone'],
+      ['ToeCtrlL', 'FootL'],
+      ['FootR', 'Bone'],
+      ['PoleTargetL', 'Bone'],
+    ]);
     const follow = limbEndFollowers(names, parents).map((f) => [names[f.bone], names[f.end], names[f.control]]);
     expect(follow).toEqual([
       ['FootL', 'LowerLegL', 'FootL'],

@@ -5,7 +5,12 @@
 import { describe, expect, it } from 'vitest';
 
 import { deepestBones } from '../../web/src/rig/gltf/effector_defaults.js';
-import { jsonBudgetProblem, MAX_JSON_CONTAINERS, MAX_JSON_DEPTH, MAX_JSON_VALUES } from '../../web/src/rig/json_budget.js';
+import {
+  jsonBudgetProblem,
+  MAX_JSON_CONTAINERS,
+  MAX_JSON_DEPTH,
+  MAX_JSON_VALUES,
+} from '../../web/src/rig/json_budget.js';
 import { loadRig } from '../../web/src/rig/load_rig.js';
 import { effectorCountProblem, MAX_BONES, MAX_EFFECTORS, maxEffectors } from '../../web/src/rig/rig_limits.js';
 import { packGlb } from '../../scripts/rig_files/glb.js';
@@ -36,7 +41,9 @@ describe('deep and big rigs', () => {
     const json = treeGltf(chainParents(N));
     json.nodes[N - 1].children = [0];
     const message = await loadError(packGlb(json), 'ring.glb');
-    expect(message).toMatch(/^ring\.glb: node hierarchy has a cycle: node 0 "link 0" -> node 1 "link 1" -> .* -> node 7 "link 7" -> \.\.\. \(9992 more\) -> node 0 "link 0"$/);
+    expect(message).toMatch(
+      /^ring\.glb: node hierarchy has a cycle: node 0 "link 0" -> node 1 "link 1" -> .* -> node 7 "link 7" -> \.\.\. \(9992 more\) -> node 0 "link 0"$/,
+    );
   });
 
   it('reports a cycle of A7 parents', async () => {
@@ -53,7 +60,10 @@ describe('deep and big rigs', () => {
     const rig = await loadRig(treeGlb(parents), 'wide.glb');
     const effectorNodes = Array.from(rig.spec.effectors, (b) => rig.gltf!.boneNodes[b]).sort((a, b) => a - b);
     // The 10 grandchildren (deepest), then the first 54 leaf children.
-    expect(effectorNodes).toEqual([...Array.from({ length: 54 }, (_, k) => 1 + k), ...Array.from({ length: 10 }, (_, k) => 101 + k)]);
+    expect(effectorNodes).toEqual([
+      ...Array.from({ length: 54 }, (_, k) => 1 + k),
+      ...Array.from({ length: 10 }, (_, k) => 101 + k),
+    ]);
     expect(rig.warnings[0]).toMatch(
       /end effectors are the 64 leaf joints furthest from the root, of 100 \(the most this rig may have\) \(link 1, link 2, .*, link 12 and 52 more\)$/,
     );
@@ -77,10 +87,18 @@ describe('deep and big rigs', () => {
 
   it('refuses JSON nested too deep or holding too many values before parsing it', async () => {
     const deep = `{"bones": ${'['.repeat(10_000)}${']'.repeat(10_000)}}`;
-    expect(await loadError(deep, 'deep.json')).toBe(`deep.json: the JSON nests deeper than ${MAX_JSON_DEPTH} levels (at character 73)`);
-    expect(await loadError(deep.replace('"bones"', '"asset": {"version": "2.0"}, "nodes"'), 'deep.gltf')).toMatch(/^deep\.gltf: the JSON nests deeper than 64 levels/);
-    expect(jsonBudgetProblem(`[${'0,'.repeat(MAX_JSON_VALUES)}0]`)).toBe(`the JSON holds more than ${MAX_JSON_VALUES} values`);
-    expect(jsonBudgetProblem(`[${'[],'.repeat(MAX_JSON_CONTAINERS)}0]`)).toBe(`the JSON holds more than ${MAX_JSON_CONTAINERS} arrays and objects`);
+    expect(await loadError(deep, 'deep.json')).toBe(
+      `deep.json: the JSON nests deeper than ${MAX_JSON_DEPTH} levels (at character 73)`,
+    );
+    expect(await loadError(deep.replace('"bones"', '"asset": {"version": "2.0"}, "nodes"'), 'deep.gltf')).toMatch(
+      /^deep\.gltf: the JSON nests deeper than 64 levels/,
+    );
+    expect(jsonBudgetProblem(`[${'0,'.repeat(MAX_JSON_VALUES)}0]`)).toBe(
+      `the JSON holds more than ${MAX_JSON_VALUES} values`,
+    );
+    expect(jsonBudgetProblem(`[${'[],'.repeat(MAX_JSON_CONTAINERS)}0]`)).toBe(
+      `the JSON holds more than ${MAX_JSON_CONTAINERS} arrays and objects`,
+    );
     expect(jsonBudgetProblem('{"a": "[[[[,,,,"}')).toBeUndefined(); // brackets and commas in strings do not count
   });
 
@@ -100,6 +118,8 @@ describe('deep and big rigs', () => {
     );
     const json = treeGltf(parents);
     json.nodes.forEach((n) => (n.extras = { ik: { effector: true } }));
-    expect(await loadError(packGlb(json), 'many.glb')).toBe('many.glb: too many end effectors flagged in extras.ik: 101 end effectors; at most 64');
+    expect(await loadError(packGlb(json), 'many.glb')).toBe(
+      'many.glb: too many end effectors flagged in extras.ik: 101 end effectors; at most 64',
+    );
   });
 });

@@ -34,12 +34,16 @@ function rigWith(extra: Record<string, unknown>): Uint8Array {
 describe('glTF work budgets', () => {
   it('refuses 4,000,000 empty nodes (12 MB) and 1,000,000 (3 MB) in the scan before parsing', async () => {
     for (const count of [4_000_000, 1_000_000])
-      expect(await loadError(manyNodesGltf(count), 'nodes.gltf')).toBe(`nodes.gltf: the JSON holds more than ${MAX_JSON_CONTAINERS} arrays and objects`);
+      expect(await loadError(manyNodesGltf(count), 'nodes.gltf')).toBe(
+        `nodes.gltf: the JSON holds more than ${MAX_JSON_CONTAINERS} arrays and objects`,
+      );
   });
 
   it('refuses more nodes than the node limit, naming it', async () => {
     const most = MAX_GLTF_LIST_LENGTHS.nodes;
-    expect(await loadError(manyNodesGltf(most + 1), 'wide.gltf')).toBe(`wide.gltf: ${most + 1} nodes; at most ${most} (the limit on glTF nodes)`);
+    expect(await loadError(manyNodesGltf(most + 1), 'wide.gltf')).toBe(
+      `wide.gltf: ${most + 1} nodes; at most ${most} (the limit on glTF nodes)`,
+    );
   });
 
   it('refuses long lists of meshes, accessors and materials, and nested lists summed over their parents', async () => {
@@ -52,7 +56,9 @@ describe('glTF work budgets', () => {
     const joints = 3 * MAX_BONES;
     const [, , mostJoints] = MAX_GLTF_NESTED_LENGTHS.find(([p, c]) => p === 'skins' && c === 'joints')!;
     const skins = Array.from({ length: 3 }, () => ({ joints: Array.from({ length: MAX_BONES }, () => 0) }));
-    expect(await loadError(rigWith({ skins }), 'skins.glb')).toBe(`skins.glb: ${joints} skins[].joints in all; at most ${mostJoints} (the limit on glTF skins' joints)`);
+    expect(await loadError(rigWith({ skins }), 'skins.glb')).toBe(
+      `skins.glb: ${joints} skins[].joints in all; at most ${mostJoints} (the limit on glTF skins' joints)`,
+    );
   });
 
   it('refuses the 9 KB .glb of forty 512 MiB accessors without a bufferView', async () => {
@@ -68,7 +74,9 @@ describe('glTF work budgets', () => {
     const accessors = Array.from({ length: 3 }, () => ({ componentType: 5126, type: 'VEC3', count }));
     expect((await loadRig(rigWith({ accessors: accessors.slice(0, 2) }), 'two.glb')).spec.names).toHaveLength(2);
     expect(await loadError(rigWith({ accessors }), 'three.glb')).toMatch(
-      new RegExp(`^three\\.glb: ${3 * count * 12} bytes of accessor data in accessors\\[0\\.\\.2\\] \\(accessors\\[2\\]: ${count} elements of 12 bytes without a bufferView, zeros to allocate\\); at most ${MAX_ACCESSOR_BYTES} bytes`),
+      new RegExp(
+        `^three\\.glb: ${3 * count * 12} bytes of accessor data in accessors\\[0\\.\\.2\\] \\(accessors\\[2\\]: ${count} elements of 12 bytes without a bufferView, zeros to allocate\\); at most ${MAX_ACCESSOR_BYTES} bytes`,
+      ),
     );
   });
 
@@ -92,7 +100,10 @@ describe('glTF work budgets', () => {
   // The command on the two bombs, in a child process that reports its own peak memory (Linux).
   const linux = existsSync('/proc/self/status');
   it.skipIf(!linux)('npm run rig refuses both bombs with a peak memory under 300 MB', () => {
-    const files: [string, Uint8Array][] = [['nodes.gltf', manyNodesGltf(4_000_000)], ['zeros.glb', zeroAccessorGlb(40)]];
+    const files: [string, Uint8Array][] = [
+      ['nodes.gltf', manyNodesGltf(4_000_000)],
+      ['zeros.glb', zeroAccessorGlb(40)],
+    ];
     for (const [name, bytes] of files) {
       const path = join(dir, name);
       writeFileSync(path, bytes);
@@ -103,10 +114,19 @@ describe('glTF work budgets', () => {
         const code = await runRigInspect([${JSON.stringify(path)}], { out: () => {}, err: (t) => (err += t) });
         const peak = Number(/VmHWM:\\s+(\\d+) kB/.exec(readFileSync('/proc/self/status', 'utf8'))[1]) * 1024;
         console.log(JSON.stringify({ code, err, peak }));`;
-      const out = execFileSync(process.execPath, ['--import', 'tsx', '--input-type=module', '-e', script], { cwd: root, encoding: 'utf8' });
-      const { code, err, peak } = JSON.parse(out.trim().split('\n').pop()!) as { code: number; err: string; peak: number };
+      const out = execFileSync(process.execPath, ['--import', 'tsx', '--input-type=module', '-e', script], {
+        cwd: root,
+        encoding: 'utf8',
+      });
+      const { code, err, peak } = JSON.parse(out.trim().split('\n').pop()!) as {
+        code: number;
+        err: string;
+        peak: number;
+      };
       expect(code, err).toBe(1);
-      expect(err).toMatch(new RegExp(`^rig: ${path.replace(/[.*+?^${}()|[\]\\/]/g, '\\$&')}: .*(arrays and objects|accessor data)`));
+      expect(err).toMatch(
+        new RegExp(`^rig: ${path.replace(/[.*+?^${}()|[\]\\/]/g, '\\$&')}: .*(arrays and objects|accessor data)`),
+      );
       expect(peak, `${name}: peak memory`).toBeLessThan(300e6);
       rmSync(path);
     }

@@ -17,7 +17,12 @@ beforeAll(async () => {
 });
 
 /** Expects loadRig to reject with a RigFormatError whose message starts with the file name. */
-async function expectError(bytes: Uint8Array, file: string, message: string | RegExp, readSibling?: (uri: string) => Promise<Uint8Array>): Promise<void> {
+async function expectError(
+  bytes: Uint8Array,
+  file: string,
+  message: string | RegExp,
+  readSibling?: (uri: string) => Promise<Uint8Array>,
+): Promise<void> {
   const error = await loadRig(bytes, file, readSibling).then(
     () => undefined,
     (e: unknown) => e,
@@ -39,7 +44,11 @@ const text = (s: string): Uint8Array => new TextEncoder().encode(s);
 
 describe('errors in glTF files', () => {
   it('truncated GLB', async () => {
-    await expectError(glb.subarray(0, glb.length - 100), 'cut.glb', /^cut\.glb: truncated GLB: the header says \d+ bytes, the file has \d+$/);
+    await expectError(
+      glb.subarray(0, glb.length - 100),
+      'cut.glb',
+      /^cut\.glb: truncated GLB: the header says \d+ bytes, the file has \d+$/,
+    );
     await expectError(glb.subarray(0, 10), 'tiny.glb', 'truncated GLB: 10 bytes');
     const noMagic = glb.slice();
     noMagic[0] = 0;
@@ -63,13 +72,22 @@ describe('errors in glTF files', () => {
 
   it('a joint cycle, a node with two parents, a node that is its own child', async () => {
     const cycle = edited((json) => {
-      const hips = nodeIndex(json, 'hips'), armature = nodeIndex(json, 'Armature');
+      const hips = nodeIndex(json, 'hips'),
+        armature = nodeIndex(json, 'Armature');
       json.nodes[armature].children = (json.nodes[armature].children as number[]).filter((c) => c !== hips);
       json.nodes[nodeIndex(json, 'toe.L')].children = [hips];
     });
-    await expectError(cycle, 'cycle.glb', /node hierarchy has a cycle: node \d+ "hips" -> node \d+ "thigh\.L" -> .* -> node \d+ "toe\.L" -> node \d+ "hips"$/);
+    await expectError(
+      cycle,
+      'cycle.glb',
+      /node hierarchy has a cycle: node \d+ "hips" -> node \d+ "thigh\.L" -> .* -> node \d+ "toe\.L" -> node \d+ "hips"$/,
+    );
     const twoParents = edited((json) => (json.nodes[nodeIndex(json, 'toe.L')].children = [nodeIndex(json, 'hips')]));
-    await expectError(twoParents, 'two.glb', /node \d+ "hips" is a child of both node \d+ "Armature" and node \d+ "toe\.L"/);
+    await expectError(
+      twoParents,
+      'two.glb',
+      /node \d+ "hips" is a child of both node \d+ "Armature" and node \d+ "toe\.L"/,
+    );
     const self = edited((json) => (json.nodes[nodeIndex(json, 'neck')].children = [nodeIndex(json, 'neck')]));
     await expectError(self, 'self.glb', /node hierarchy has a cycle: node \d+ "neck" is its own child/);
   });
@@ -78,16 +96,36 @@ describe('errors in glTF files', () => {
     const { json } = unpackGlb(glb);
     (json.buffers as Record<string, unknown>[])[0].uri = 'character.bin';
     const gltf = text(JSON.stringify(json));
-    await expectError(gltf, 'side.gltf', 'buffer 0 is in the side file "character.bin", and no reader for side files was given');
-    await expectError(gltf, 'side.gltf', /buffer 0: cannot read the side file "character.bin" \(missing buffer\): ENOENT/, async () => {
-      throw new Error('ENOENT: no such file');
-    });
-    await expectError(gltf, 'short.gltf', /buffer 0 has 100 bytes, its byteLength says \d+ \(truncated buffer\)/, async () => new Uint8Array(100));
+    await expectError(
+      gltf,
+      'side.gltf',
+      'buffer 0 is in the side file "character.bin", and no reader for side files was given',
+    );
+    await expectError(
+      gltf,
+      'side.gltf',
+      /buffer 0: cannot read the side file "character.bin" \(missing buffer\): ENOENT/,
+      async () => {
+        throw new Error('ENOENT: no such file');
+      },
+    );
+    await expectError(
+      gltf,
+      'short.gltf',
+      /buffer 0 has 100 bytes, its byteLength says \d+ \(truncated buffer\)/,
+      async () => new Uint8Array(100),
+    );
     const dir = mkdtempSync(join(tmpdir(), 'ik-gltf-'));
     writeFileSync(join(dir, 'side.gltf'), gltf);
-    await expect(loadRigFromPath(join(dir, 'side.gltf'))).rejects.toThrow(/side\.gltf: buffer 0: cannot read the side file "character\.bin" \(missing buffer\)/);
+    await expect(loadRigFromPath(join(dir, 'side.gltf'))).rejects.toThrow(
+      /side\.gltf: buffer 0: cannot read the side file "character\.bin" \(missing buffer\)/,
+    );
     const { json: j2 } = unpackGlb(glb);
-    await expectError(packGlb(j2), 'nobin.glb', 'buffer 0 has no uri and there is no GLB binary chunk for it (missing buffer)');
+    await expectError(
+      packGlb(j2),
+      'nobin.glb',
+      'buffer 0 has no uri and there is no GLB binary chunk for it (missing buffer)',
+    );
     await expect(loadRigFromPath(join(dir, 'nothing.glb'))).rejects.toThrow(/nothing\.glb: cannot read the file/);
   });
 
@@ -95,15 +133,31 @@ describe('errors in glTF files', () => {
     const nanIbm = edited((json, bin) => {
       const accessor = (json.accessors as Record<string, number>[])[json.skins[0].inverseBindMatrices as number];
       const view = (json.bufferViews as Record<string, number>[])[accessor.bufferView];
-      new DataView(bin.buffer, bin.byteOffset).setFloat32((view.byteOffset ?? 0) + (accessor.byteOffset ?? 0) + 64 * 3 + 4 * 5, NaN, true);
+      new DataView(bin.buffer, bin.byteOffset).setFloat32(
+        (view.byteOffset ?? 0) + (accessor.byteOffset ?? 0) + 64 * 3 + 4 * 5,
+        NaN,
+        true,
+      );
     });
-    await expectError(nanIbm, 'nan.glb', /skins\[0\]\.inverseBindMatrices \(accessor \d+\): matrix 3 has a non-finite entry \(NaN or infinite\)/);
+    await expectError(
+      nanIbm,
+      'nan.glb',
+      /skins\[0\]\.inverseBindMatrices \(accessor \d+\): matrix 3 has a non-finite entry \(NaN or infinite\)/,
+    );
     const { json, bin } = unpackGlb(glb);
     const i = nodeIndex(json, 'spine');
     json.nodes[i].matrix = [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1];
-    delete json.nodes[i].translation, delete json.nodes[i].rotation;
-    const infText = JSON.stringify(json).replace('"matrix":[1,0,0,0,0,1,0,0,0,0,1,0,0,0,0,1]', '"matrix":[1,0,0,0,0,1,0,0,0,0,1,0,1e999,0,0,1]');
-    await expectError(packGlb(JSON.parse(infText), bin), 'inf.glb', `nodes[${i}].matrix[12] is not a finite number (NaN or infinite)`);
+    delete json.nodes[i].translation;
+    delete json.nodes[i].rotation;
+    const infText = JSON.stringify(json).replace(
+      '"matrix":[1,0,0,0,0,1,0,0,0,0,1,0,0,0,0,1]',
+      '"matrix":[1,0,0,0,0,1,0,0,0,0,1,0,1e999,0,0,1]',
+    );
+    await expectError(
+      packGlb(JSON.parse(infText), bin),
+      'inf.glb',
+      `nodes[${i}].matrix[12] is not a finite number (NaN or infinite)`,
+    );
     const nullT = edited((j) => (j.nodes[nodeIndex(j, 'neck')].translation = [0, null, 0]));
     await expectError(nullT, 'null.glb', /nodes\[\d+\]\.translation\[1\] is not a finite number/);
     const zero = edited((j) => (j.nodes[nodeIndex(j, 'neck')].scale = [0, 0, 0]));
@@ -111,15 +165,25 @@ describe('errors in glTF files', () => {
   });
 
   it('bad skins and accessors', async () => {
-    await expectError(edited((j) => (j.skins[0].joints = [0, 999])), 'range.glb', /skins\[0\]\.joints\[1\] = 999 is not an index in 0\.\.\d+/);
-    await expectError(edited((j) => (j.skins[1].joints = [3, 3])), 'twice.glb', 'skins[1].joints[1] repeats node 3');
+    await expectError(
+      edited((j) => (j.skins[0].joints = [0, 999])),
+      'range.glb',
+      /skins\[0\]\.joints\[1\] = 999 is not an index in 0\.\.\d+/,
+    );
+    await expectError(
+      edited((j) => (j.skins[1].joints = [3, 3])),
+      'twice.glb',
+      'skins[1].joints[1] repeats node 3',
+    );
     await expectError(
       edited((j) => ((j.accessors as Record<string, unknown>[])[j.skins[0].inverseBindMatrices as number].count = 2)),
       'count.glb',
       /skins\[0\]\.inverseBindMatrices \(accessor \d+\) has 2 matrices, the skin has 21 joints/,
     );
     const ibmView = (j: Json): Record<string, unknown> =>
-      (j.bufferViews as Record<string, unknown>[])[(j.accessors as Record<string, number>[])[j.skins[0].inverseBindMatrices as number].bufferView];
+      (j.bufferViews as Record<string, unknown>[])[
+        (j.accessors as Record<string, number>[])[j.skins[0].inverseBindMatrices as number].bufferView
+      ];
     await expectError(
       edited((j) => (ibmView(j).byteLength = 1e9)),
       'view.glb',
@@ -128,9 +192,14 @@ describe('errors in glTF files', () => {
   });
 
   it('bad IK extras', async () => {
-    const ik = (value: unknown): Uint8Array => edited((j) => (j.nodes[nodeIndex(j, 'forearm.L')].extras = { ik: value }));
+    const ik = (value: unknown): Uint8Array =>
+      edited((j) => (j.nodes[nodeIndex(j, 'forearm.L')].extras = { ik: value }));
     await expectError(ik({ limits: [0, 1] }), 'x.glb', /node \d+ "forearm\.L": extras\.ik\.limits is not a known key/);
-    await expectError(ik({ xzx_min: [0, 90, 0], xzx_max: [0, 10, 0] }), 'x.glb', 'extras.ik: xzx_min[1] = 90 is above xzx_max[1] = 10');
+    await expectError(
+      ik({ xzx_min: [0, 90, 0], xzx_max: [0, 10, 0] }),
+      'x.glb',
+      'extras.ik: xzx_min[1] = 90 is above xzx_max[1] = 10',
+    );
     await expectError(ik({ xzx_min: [0, 'a', 0] }), 'x.glb', 'extras.ik.xzx_min[1] is not a number (degrees) or null');
     await expectError(ik({ xzx_min: [0, 200, 0] }), 'x.glb', 'extras.ik gives xzx_min[1] = 200 above xzx_max[1] = 180');
     await expectError(ik({ length: -1 }), 'x.glb', 'extras.ik.length must be a number in 0..1000000000');

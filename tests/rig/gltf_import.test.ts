@@ -42,11 +42,21 @@ function rigOf(spec: RigSpec): IkRig {
 
 /** World matrix of the test character's Armature (World * Armature, as built by the helper). */
 function armatureWorld(): Float64Array {
-  const s15 = Math.sin(Math.PI / 12), c15 = Math.cos(Math.PI / 12), s5 = Math.sin(Math.PI / 36), c5 = Math.cos(Math.PI / 36);
-  return multiply(fromTRS([0.5, 0.2, -1], [0, s15, 0, c15], [1, 1, 1]), fromTRS([0, 0, 0], [0, 0, s5, c5], [0.02, 0.02, 0.02]));
+  const s15 = Math.sin(Math.PI / 12),
+    c15 = Math.cos(Math.PI / 12),
+    s5 = Math.sin(Math.PI / 36),
+    c5 = Math.cos(Math.PI / 36);
+  return multiply(
+    fromTRS([0.5, 0.2, -1], [0, s15, 0, c15], [1, 1, 1]),
+    fromTRS([0, 0, 0], [0, 0, s5, c5], [0.02, 0.02, 0.02]),
+  );
 }
 
-const boneOrigin = (spec: RigSpec, b: number): number[] => [spec.rest[16 * b + 3], spec.rest[16 * b + 7], spec.rest[16 * b + 11]];
+const boneOrigin = (spec: RigSpec, b: number): number[] => [
+  spec.rest[16 * b + 3],
+  spec.rest[16 * b + 7],
+  spec.rest[16 * b + 11],
+];
 const boneTip = (spec: RigSpec, b: number): number[] =>
   [0, 1, 2].map((r) => spec.rest[16 * b + 4 * r + 3] + spec.lengths[b] * spec.rest[16 * b + 4 * r]);
 
@@ -76,13 +86,20 @@ describe('glTF import of a Blender-style character without IK extras', () => {
   it('gives a leaf half its parent length along the joint local +Y', () => {
     const { spec } = character;
     for (const leaf of ['head', 'hand.L', 'toe.R']) {
-      const b = spec.names.indexOf(leaf), p = spec.parents[b];
+      const b = spec.names.indexOf(leaf),
+        p = spec.parents[b];
       expect(spec.lengths[b]).toBeCloseTo(0.5 * spec.lengths[p], 12);
       // +Y of these joints runs from head to tail in the test rig.
-      const j = testJoints[b], A = armatureWorld();
+      const j = testJoints[b],
+        A = armatureWorld();
       const d = transformPoint(A, j.tail).map((v, k) => v - boneOrigin(spec, b)[k]);
       const n = Math.hypot(...d);
-      expect(maxAbsDiff([spec.rest[16 * b], spec.rest[16 * b + 4], spec.rest[16 * b + 8]], d.map((v) => v / n))).toBeLessThan(1e-12);
+      expect(
+        maxAbsDiff(
+          [spec.rest[16 * b], spec.rest[16 * b + 4], spec.rest[16 * b + 8]],
+          d.map((v) => v / n),
+        ),
+      ).toBeLessThan(1e-12);
     }
   });
 
@@ -117,7 +134,9 @@ describe('glTF import of a Blender-style character without IK extras', () => {
       const node = json.nodes[nodeIndex(json, name)] as Record<string, number[] | undefined>;
       const m = fromTRS(node.translation ?? [0, 0, 0], node.rotation ?? [0, 0, 0, 1], node.scale ?? [1, 1, 1]);
       node.matrix = [0, 1, 2, 3].flatMap((c) => [0, 1, 2, 3].map((r) => m[4 * r + c]));
-      delete node.translation, delete node.rotation, delete node.scale;
+      delete node.translation;
+      delete node.rotation;
+      delete node.scale;
     }
     const viaMatrix = await loadRig(packGlb(json, bin), 'm.glb');
     expect(maxAbsDiff(viaMatrix.spec.rest, character.spec.rest)).toBeLessThan(1e-12);
@@ -142,7 +161,8 @@ describe('glTF import of a Blender-style character without IK extras', () => {
     expect((await loadRigFromPath(join(dir, 'c.gltf'))).spec).toEqual(character.spec);
 
     const embedded = structuredClone(json) as Json;
-    (embedded.buffers as Record<string, unknown>[])[0].uri = `data:application/octet-stream;base64,${Buffer.from(bin).toString('base64')}`;
+    (embedded.buffers as Record<string, unknown>[])[0].uri =
+      `data:application/octet-stream;base64,${Buffer.from(bin).toString('base64')}`;
     expect((await loadRig(new TextEncoder().encode(JSON.stringify(embedded)), 'e.gltf')).spec).toEqual(character.spec);
   });
 
@@ -150,7 +170,9 @@ describe('glTF import of a Blender-style character without IK extras', () => {
     const mirrored = await loadRig(await testCharacterGlb({ armatureScale: [-0.02, 0.02, 0.02] }), 'mirror.glb');
     const rig = rigOf(mirrored.spec); // the core refuses non-rigid or mirroring rest frames
     const A = multiply(armatureWorld(), fromTRS([0, 0, 0], [0, 0, 0, 1], [-1, 1, 1]));
-    testJoints.forEach((j, b) => expect(maxAbsDiff(boneOrigin(mirrored.spec, b), transformPoint(A, j.head))).toBeLessThan(1e-12));
+    testJoints.forEach((j, b) =>
+      expect(maxAbsDiff(boneOrigin(mirrored.spec, b), transformPoint(A, j.head))).toBeLessThan(1e-12),
+    );
     expect(rig.numBones).toBe(testJoints.length);
   });
 });
@@ -205,7 +227,9 @@ describe('glTF import with IK extras', () => {
     for (let b = 0; b < bare.spec.names.length; b++) {
       if (leaves.has(b)) continue;
       expect(bare.spec.lengths[b], bare.spec.names[b]).toBeCloseTo(withIk.spec.lengths[b], 12);
-      expect(maxAbsDiff(bare.spec.rest.subarray(16 * b, 16 * b + 16), withIk.spec.rest.subarray(16 * b, 16 * b + 16))).toBeLessThan(1e-12);
+      expect(
+        maxAbsDiff(bare.spec.rest.subarray(16 * b, 16 * b + 16), withIk.spec.rest.subarray(16 * b, 16 * b + 16)),
+      ).toBeLessThan(1e-12);
     }
   });
 });
@@ -220,28 +244,70 @@ describe('naming rules', () => {
   });
 
   /** The effectors effectorsByName picks among `names` chained one below the other. */
-  const pick = (names: string[]): string[] => effectorsByName(names, names.map((_, i) => i - 1)).map((i) => names[i]);
+  const pick = (names: string[]): string[] =>
+    effectorsByName(
+      names,
+      names.map((_, i) => i - 1),
+    ).map((i) => names[i]);
 
   it('finds hands, feet and head by name in Mixamo, Blender, Unreal and Biped rigs', () => {
     expect(
-      pick(['mixamorig:Hips', 'mixamorig:Head', 'mixamorig:HeadTop_End', 'mixamorig:LeftHand', 'mixamorig:LeftHandIndex1',
-        'mixamorig:RightHand', 'mixamorig:LeftFoot', 'mixamorig:LeftToeBase', 'mixamorig:RightFoot']),
-    ).toEqual(['mixamorig:Head', 'mixamorig:LeftHand', 'mixamorig:RightHand', 'mixamorig:LeftFoot', 'mixamorig:RightFoot']);
-    expect(pick(['root', 'hand.L', 'hand_ik.L', 'hand.R', 'foot.L', 'heel.L', 'foot.R', 'head'])).toEqual(['hand.L', 'hand.R', 'foot.L', 'foot.R', 'head']);
-    expect(pick(['pelvis', 'hand_l', 'hand_r', 'foot_l', 'foot_r', 'head', 'thumb_01_l'])).toEqual(['hand_l', 'hand_r', 'foot_l', 'foot_r', 'head']);
-    expect(pick(['Bip01', 'Bip01 Head', 'Bip01 L Hand', 'Bip01 R Hand', 'Bip01 L Foot', 'Bip01 R Foot'])).toEqual(
-      ['Bip01 Head', 'Bip01 L Hand', 'Bip01 R Hand', 'Bip01 L Foot', 'Bip01 R Foot'],
-    );
+      pick([
+        'mixamorig:Hips',
+        'mixamorig:Head',
+        'mixamorig:HeadTop_End',
+        'mixamorig:LeftHand',
+        'mixamorig:LeftHandIndex1',
+        'mixamorig:RightHand',
+        'mixamorig:LeftFoot',
+        'mixamorig:LeftToeBase',
+        'mixamorig:RightFoot',
+      ]),
+    ).toEqual([
+      'mixamorig:Head',
+      'mixamorig:LeftHand',
+      'mixamorig:RightHand',
+      'mixamorig:LeftFoot',
+      'mixamorig:RightFoot',
+    ]);
+    expect(pick(['root', 'hand.L', 'hand_ik.L', 'hand.R', 'foot.L', 'heel.L', 'foot.R', 'head'])).toEqual([
+      'hand.L',
+      'hand.R',
+      'foot.L',
+      'foot.R',
+      'head',
+    ]);
+    expect(pick(['pelvis', 'hand_l', 'hand_r', 'foot_l', 'foot_r', 'head', 'thumb_01_l'])).toEqual([
+      'hand_l',
+      'hand_r',
+      'foot_l',
+      'foot_r',
+      'head',
+    ]);
+    expect(pick(['Bip01', 'Bip01 Head', 'Bip01 L Hand', 'Bip01 R Hand', 'Bip01 L Foot', 'Bip01 R Foot'])).toEqual([
+      'Bip01 Head',
+      'Bip01 L Hand',
+      'Bip01 R Hand',
+      'Bip01 L Foot',
+      'Bip01 R Foot',
+    ]);
     expect(pick(['base', 'arm', 'gripper'])).toEqual(['gripper']); // a gripper is a hand
     expect(pick(['base', 'link', 'tool'])).toEqual([]);
   });
 
   it('continues a chain through the midline, then the biggest subtree, then spine/neck/middle, then the first', () => {
     const c = (name: string, descendants: number, bone = 0) => ({ name, descendants, bone });
-    expect(chooseChainChild([c('mixamorig:LeftUpLeg', 4), c('mixamorig:Spine', 40), c('mixamorig:RightUpLeg', 4)]).name).toBe('mixamorig:Spine');
-    expect(chooseChainChild([c('mixamorig:LeftShoulder', 24), c('mixamorig:Neck', 2), c('mixamorig:RightShoulder', 24)]).name).toBe('mixamorig:Neck');
+    expect(
+      chooseChainChild([c('mixamorig:LeftUpLeg', 4), c('mixamorig:Spine', 40), c('mixamorig:RightUpLeg', 4)]).name,
+    ).toBe('mixamorig:Spine');
+    expect(
+      chooseChainChild([c('mixamorig:LeftShoulder', 24), c('mixamorig:Neck', 2), c('mixamorig:RightShoulder', 24)])
+        .name,
+    ).toBe('mixamorig:Neck');
     expect(chooseChainChild([c('tail', 3), c('spine', 12)]).name).toBe('spine');
-    expect(chooseChainChild([c('LeftHandThumb1', 3), c('LeftHandIndex1', 3), c('LeftHandMiddle1', 3)]).name).toBe('LeftHandMiddle1');
+    expect(chooseChainChild([c('LeftHandThumb1', 3), c('LeftHandIndex1', 3), c('LeftHandMiddle1', 3)]).name).toBe(
+      'LeftHandMiddle1',
+    );
     expect(chooseChainChild([c('a', 1), c('b', 1)]).name).toBe('a');
   });
 });

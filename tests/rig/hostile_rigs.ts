@@ -21,7 +21,11 @@ export const ZERO_VEC3_COUNT = Math.floor((512 * 1024 * 1024) / 12);
  */
 export function zeroAccessorGlb(accessorCount: number): Uint8Array {
   const gltf = treeGltf([-1, 0]) as Record<string, unknown> & ReturnType<typeof treeGltf>;
-  const accessors = Array.from({ length: accessorCount }, () => ({ componentType: 5126, type: 'VEC3', count: ZERO_VEC3_COUNT }));
+  const accessors = Array.from({ length: accessorCount }, () => ({
+    componentType: 5126,
+    type: 'VEC3',
+    count: ZERO_VEC3_COUNT,
+  }));
   const attributes: Record<string, number> = { POSITION: 0 };
   for (let k = 1; k < accessorCount; k++) attributes[`_EXTRA${k}`] = k;
   gltf.nodes.push({ name: 'body', mesh: 0, skin: 0 });

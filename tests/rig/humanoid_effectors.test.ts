@@ -12,7 +12,11 @@ import { chainParents, treeGlb } from '../../scripts/rig_files/tree_rigs.js';
 
 const effectorNames = (rig: LoadedRig): string[] => Array.from(rig.spec.effectors, (b) => rig.spec.names[b]);
 
-async function load(joints: SkeletonJoint[], options?: SkeletonOptions, edit?: (json: Json) => void): Promise<LoadedRig> {
+async function load(
+  joints: SkeletonJoint[],
+  options?: SkeletonOptions,
+  edit?: (json: Json) => void,
+): Promise<LoadedRig> {
   const bytes = await skeletonGlb(joints, options);
   if (!edit) return loadRig(bytes, 'rig.glb');
   const { json, bin } = unpackGlb(bytes);
@@ -23,11 +27,22 @@ async function load(joints: SkeletonJoint[], options?: SkeletonOptions, edit?: (
 // Generic names; the left foot is l_ankle, and a bone named l_foot hangs off the pelvis.
 const generic = humanoidJoints({
   roles: {
-    hips: 'Pelvis', spine: 'Spine', neck: 'Neck', head: 'Head',
-    leftUpperArm: 'l_upperarm', leftLowerArm: 'l_elbow', leftHand: 'l_wrist',
-    rightUpperArm: 'RightUpperArm', rightLowerArm: 'RightLowerArm', rightHand: 'RightHand',
-    leftUpperLeg: 'l_thigh', leftLowerLeg: 'l_knee', leftFoot: 'l_ankle',
-    rightUpperLeg: 'RightUpperLeg', rightLowerLeg: 'RightLowerLeg', rightFoot: 'RightFoot',
+    hips: 'Pelvis',
+    spine: 'Spine',
+    neck: 'Neck',
+    head: 'Head',
+    leftUpperArm: 'l_upperarm',
+    leftLowerArm: 'l_elbow',
+    leftHand: 'l_wrist',
+    rightUpperArm: 'RightUpperArm',
+    rightLowerArm: 'RightLowerArm',
+    rightHand: 'RightHand',
+    leftUpperLeg: 'l_thigh',
+    leftLowerLeg: 'l_knee',
+    leftFoot: 'l_ankle',
+    rightUpperLeg: 'RightUpperLeg',
+    rightLowerLeg: 'RightLowerLeg',
+    rightFoot: 'RightFoot',
   },
   extra: [
     { name: 'l_palm', parent: 'leftHand', offset: [0.05, 0, 0] },
@@ -45,10 +60,18 @@ describe('default end effectors of a humanoid', () => {
   });
 
   it('give way to effectors flagged in extras.ik, and never take one flagged false', async () => {
-    const flagged = await load(generic, {}, (json) => (json.nodes[nodeIndex(json, 'l_palm')].extras = { ik: { effector: true } }));
+    const flagged = await load(
+      generic,
+      {},
+      (json) => (json.nodes[nodeIndex(json, 'l_palm')].extras = { ik: { effector: true } }),
+    );
     expect(effectorNames(flagged)).toEqual(['l_palm']);
     expect(flagged.warnings.some((w) => w.includes('no joint is flagged'))).toBe(false);
-    const unflagged = await load(generic, {}, (json) => (json.nodes[nodeIndex(json, 'Head')].extras = { ik: { effector: false } }));
+    const unflagged = await load(
+      generic,
+      {},
+      (json) => (json.nodes[nodeIndex(json, 'Head')].extras = { ik: { effector: false } }),
+    );
     expect(effectorNames(unflagged)).toEqual(['l_wrist', 'RightHand', 'l_ankle', 'RightFoot']);
   });
 });
@@ -112,6 +135,8 @@ describe('default end effectors of a rig that is no humanoid', () => {
     expect((await loadRig(treeGlb(chainParents(1)), 'one.glb')).warnings).toContain(
       'end effector link 0: moved by the root bone alone, so dragging swings the whole body',
     );
-    expect((await loadRig(treeGlb(chainParents(3)), 'three.glb')).warnings.some((w) => w.includes('root bone alone'))).toBe(false);
+    expect(
+      (await loadRig(treeGlb(chainParents(3)), 'three.glb')).warnings.some((w) => w.includes('root bone alone')),
+    ).toBe(false);
   });
 });

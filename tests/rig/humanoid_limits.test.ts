@@ -15,7 +15,13 @@ import { jointOf, type Joint } from '../../web/src/rig/anatomy/anatomy_ranges.js
 import { humanoidLimits } from '../../web/src/rig/humanoid/humanoid_limits.js';
 import { HUMANOID_ROLES, type HumanoidMap, type HumanoidRole } from '../../web/src/rig/humanoid/humanoid_roles.js';
 import { loadRigFromPath } from '../../web/src/rig/load_rig_node.js';
-import { blenderHumanoid, mapByNames, MIXAMO_NAMES, mixamoHumanoid, type TestHumanoid } from '../helpers/limits_characters.js';
+import {
+  blenderHumanoid,
+  mapByNames,
+  MIXAMO_NAMES,
+  mixamoHumanoid,
+  type TestHumanoid,
+} from '../helpers/limits_characters.js';
 import { disposeAfterAll } from '../helpers/owned.js';
 
 type V = [number, number, number];
@@ -48,7 +54,12 @@ const characters: [string, () => Promise<TestHumanoid>][] = [
 ];
 
 describe('which way the character faces', () => {
-  it.each([[0, '+Z'], [180, '-Z'], [90, '+X'], [-90, '-X']])('turned %i degrees: faces %s, from the toes', async (yawDeg, axis) => {
+  it.each([
+    [0, '+Z'],
+    [180, '-Z'],
+    [90, '+X'],
+    [-90, '-X'],
+  ])('turned %i degrees: faces %s, from the toes', async (yawDeg, axis) => {
     const h = await mixamoHumanoid({ yawDeg });
     const { notes } = humanoidLimits(h.spec, h.map, noExtras(h.spec));
     expect(notes[0]).toBe(`humanoid limits: the character faces ${axis} (from the toes)`);
@@ -86,7 +97,8 @@ describe('what the limits leave alone', () => {
   it('bones without a role and bones with extras.ik limits keep theirs; the hips bone is fixed', async () => {
     const h = await mixamoHumanoid();
     const n = h.spec.parents.length;
-    const knee = h.map.bones.leftLowerLeg!, finger = h.spec.names.indexOf('mixamorig:LeftHandIndex2');
+    const knee = h.map.bones.leftLowerLeg!,
+      finger = h.spec.names.indexOf('mixamorig:LeftHandIndex2');
     const explicit = noExtras(h.spec);
     explicit[knee] = true;
     const { lower, upper, notes } = humanoidLimits(h.spec, h.map, explicit);
@@ -135,10 +147,22 @@ describe.each(characters)('%s', (_, make) => {
    * whether the sign is known (a symmetric range only has a plane). The hips bone is fixed.
    */
   const towards = (joint: Exclude<Joint, 'hips'>): [V, boolean] => {
-    const F = h.forward, U = h.up, back: V = [-F[0], -F[1], -F[2]], down: V = [-U[0], -U[1], -U[2]];
+    const F = h.forward,
+      U = h.up,
+      back: V = [-F[0], -F[1], -F[2]],
+      down: V = [-U[0], -U[1], -U[2]];
     const table: Record<Exclude<Joint, 'hips'>, [V, boolean]> = {
-      spine: [F, true], neck: [F, false], head: [F, true], shoulder: [U, true], upperArm: [F, true], lowerArm: [F, true],
-      hand: [U, false], upperLeg: [F, true], lowerLeg: [back, true], foot: [down, true], toes: [down, false],
+      spine: [F, true],
+      neck: [F, false],
+      head: [F, true],
+      shoulder: [U, true],
+      upperArm: [F, true],
+      lowerArm: [F, true],
+      hand: [U, false],
+      upperLeg: [F, true],
+      lowerLeg: [back, true],
+      foot: [down, true],
+      toes: [down, false],
     };
     return table[joint];
   };
@@ -151,7 +175,9 @@ describe.each(characters)('%s', (_, make) => {
       const joint = jointOf(role);
       if (bone === undefined || joint === 'hips') continue;
       const [expected, signed] = towards(joint);
-      const lo = rig.lower, hi = rig.upper, b = 3 * bone;
+      const lo = rig.lower,
+        hi = rig.upper,
+        b = 3 * bone;
       // The anatomical bend plane is the middle of the a0 and a2 ranges; the main bend, the longer side of a1.
       const a = rest.slice();
       a[b] = (lo[b] + hi[b]) / 2;
@@ -161,7 +187,10 @@ describe.each(characters)('%s', (_, make) => {
       const x: V = [h.spec.rest[16 * bone], h.spec.rest[16 * bone + 4], h.spec.rest[16 * bone + 8]];
       const across = unit(sub(expected, x.map((c) => c * dot(expected, x)) as V));
       const alignment = dot(moved, across);
-      expect(signed ? alignment : Math.abs(alignment), `${role} moves along ${across.map((c) => c.toFixed(2))}`).toBeGreaterThan(0.95);
+      expect(
+        signed ? alignment : Math.abs(alignment),
+        `${role} moves along ${across.map((c) => c.toFixed(2))}`,
+      ).toBeGreaterThan(0.95);
     }
   });
 });
@@ -170,9 +199,12 @@ describe('a knee bent backward at rest (a reverse joint)', () => {
   it('bends further that way, and the notes say so', async () => {
     const h = await mixamoHumanoid({ kneeForward: -4 });
     const { lower, upper, notes } = humanoidLimits(h.spec, h.map, noExtras(h.spec));
-    expect(notes).toContain('bent the other way in the rest pose, so limited that way: mixamorig:LeftLeg, mixamorig:RightLeg');
+    expect(notes).toContain(
+      'bent the other way in the rest pose, so limited that way: mixamorig:LeftLeg, mixamorig:RightLeg',
+    );
     const rig = keep(new IkRig(ik, { ...h.spec, lower, upper }));
-    const knee = h.map.bones.leftLowerLeg!, b = 3 * knee;
+    const knee = h.map.bones.leftLowerLeg!,
+      b = 3 * knee;
     const a = new Float64Array(rig.numAngles);
     a[b] = (lower[b] + upper[b]) / 2;
     a[b + 2] = (lower[b + 2] + upper[b + 2]) / 2;

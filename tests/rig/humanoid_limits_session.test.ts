@@ -20,7 +20,14 @@ beforeAll(async () => {
   ik = await loadIkNode();
   const h = await mixamoHumanoid();
   const { lower, upper } = humanoidLimits(h.spec, h.map, new Array<boolean>(h.spec.parents.length).fill(false));
-  loaded = { name: 'character', format: 'glb', spec: h.spec, warnings: [], makeMesh: null, humanoidLimits: { lower, upper } };
+  loaded = {
+    name: 'character',
+    format: 'glb',
+    spec: h.spec,
+    warnings: [],
+    makeMesh: null,
+    humanoidLimits: { lower, upper },
+  };
 });
 
 const within = (angles: Float64Array, lower: Float64Array, upper: Float64Array): boolean =>
@@ -31,7 +38,7 @@ async function liveRig(rig: RigSource, humanoid = true): Promise<LiveRig> {
 }
 
 describe('the humanoid limits switch', () => {
-  it('starts with the humanoid limits, or the file\'s own when asked', async () => {
+  it("starts with the humanoid limits, or the file's own when asked", async () => {
     const on = await liveRig(loaded);
     expect(on.hasHumanoidLimits).toBe(true);
     expect(on.session.spec.lower).toEqual(loaded.humanoidLimits!.lower);
@@ -46,7 +53,8 @@ describe('the humanoid limits switch', () => {
     s0.targets[0] += 0.05;
     // A pose outside the anatomical limits: every angle at 100 degrees.
     s0.angles.fill(100);
-    const effectors = Array.from(s0.effectors()), targets = s0.targets.slice();
+    const effectors = Array.from(s0.effectors()),
+      targets = s0.targets.slice();
     const alive = IkSession.alive.sessions;
 
     live.useHumanoidLimits(true);
@@ -61,7 +69,13 @@ describe('the humanoid limits switch', () => {
     expect(within(s1.angles, lower, upper)).toBe(true);
 
     // Solving now stays inside the humanoid limits; switching back keeps that pose as it is.
-    const settings: SolveSettings = { ...live.tolerances(), maxIterations: 1000, timeBudgetMs: 0, restarts: 0, paperMode: false };
+    const settings: SolveSettings = {
+      ...live.tolerances(),
+      maxIterations: 1000,
+      timeBudgetMs: 0,
+      restarts: 0,
+      paperMode: false,
+    };
     const out = s1.solve('lm', settings);
     expect(within(out.angles, lower, upper)).toBe(true);
     live.useHumanoidLimits(false);

@@ -36,7 +36,10 @@ beforeAll(async () => {
 
 const characters: [string, () => Promise<TestHumanoid>][] = [
   ['Mixamo, facing +Z', () => mixamoHumanoid()],
-  ['Mixamo, facing -Z, Mixamo joint frames (hinges on local X)', () => mixamoHumanoid({ yawDeg: 180, hingeOnLocalX: true })],
+  [
+    'Mixamo, facing -Z, Mixamo joint frames (hinges on local X)',
+    () => mixamoHumanoid({ yawDeg: 180, hingeOnLocalX: true }),
+  ],
   ['Mixamo, facing +X', () => mixamoHumanoid({ yawDeg: 90 })],
   ['Blender names, bent limbs, turned 30 degrees, tilted 10', () => blenderHumanoid()],
 ];
@@ -48,7 +51,8 @@ describe.each(characters)('%s', (_, make) => {
   let rest: Float64Array;
   let left: V;
   /** Effectors in this order: left hand, right hand, left foot, right foot, head. */
-  const LEFT_HAND = 0, LEFT_FOOT = 2;
+  const LEFT_HAND = 0,
+    LEFT_FOOT = 2;
 
   beforeAll(async () => {
     h = await make();
@@ -93,7 +97,9 @@ describe.each(characters)('%s', (_, make) => {
     const target = rig.tips(rest);
     const from = at(target, k);
     let pose: Solved = { angles: rest, reached: true, stop: 'converged_E', excess: 0 };
-    let reached = true, excess = 0, catching = 0;
+    let reached = true,
+      excess = 0,
+      catching = 0;
     for (let s = 1; s <= DRAG_STEPS; s++) {
       for (let c = 0; c < 3; c++) target[3 * k + c] = from[c] + ((goal[c] - from[c]) * s) / DRAG_STEPS;
       pose = solveStepping(pose.angles, target);
@@ -101,16 +107,23 @@ describe.each(characters)('%s', (_, make) => {
       else reached &&= pose.reached;
       excess = Math.max(excess, pose.excess);
     }
-    return { angles: pose.angles, reached: reached && pose.reached && catching <= MAX_CATCHING_UP, stop: pose.stop, excess };
+    return {
+      angles: pose.angles,
+      reached: reached && pose.reached && catching <= MAX_CATCHING_UP,
+      stop: pose.stop,
+      excess,
+    };
   }
 
   it.each([
     ['knee high', 0.3, 0.5],
     ['thigh level', 0.5, 0.6],
-  ])('lifting a foot %s in front bends the knee forward, in the leg\'s plane (no figure-4)', (_, ahead, up) => {
+  ])("lifting a foot %s in front bends the knee forward, in the leg's plane (no figure-4)", (_, ahead, up) => {
     const m = h.map.bones;
     const tips = rig.boneTips(rest);
-    const hip = at(tips, h.spec.parents[m.leftUpperLeg!]), knee0 = at(tips, m.leftUpperLeg!), ankle0 = at(tips, m.leftLowerLeg!);
+    const hip = at(tips, h.spec.parents[m.leftUpperLeg!]),
+      knee0 = at(tips, m.leftUpperLeg!),
+      ankle0 = at(tips, m.leftLowerLeg!);
     const leg = len(sub(knee0, hip)) + len(sub(ankle0, knee0));
     const foot0 = at(rig.tips(rest), LEFT_FOOT);
     const goal = [0, 1, 2].map((c) => foot0[c] + leg * (ahead * h.forward[c] + up * h.up[c])) as V;
@@ -119,21 +132,25 @@ describe.each(characters)('%s', (_, make) => {
     expect(excess, 'every iterate inside the limits').toBe(0);
 
     const posed = rig.boneTips(angles);
-    const knee = at(posed, m.leftUpperLeg!), ankle = at(posed, m.leftLowerLeg!);
-    const thigh = sub(knee, hip), shin = sub(ankle, knee);
+    const knee = at(posed, m.leftUpperLeg!),
+      ankle = at(posed, m.leftLowerLeg!);
+    const thigh = sub(knee, hip),
+      shin = sub(ankle, knee);
     expect(dot(sub(knee, knee0), h.forward) / leg, 'the knee moves forward').toBeGreaterThan(0.3);
     expect(Math.abs(dot(sub(knee, knee0), left)) / leg, 'the knee stays in line').toBeLessThan(0.12);
     expect(degrees(thigh, shin), 'the knee bends').toBeGreaterThan(30);
     // The shin swings back about the character's left axis, not out to a side (a figure-4 is 60
     // degrees or more off, and the hips' narrow twist keeps it under 30: anatomy_ranges.ts).
-    expect(degrees(cross(thigh, shin), left), 'bend axis vs the character\'s left').toBeLessThan(35);
+    expect(degrees(cross(thigh, shin), left), "bend axis vs the character's left").toBeLessThan(35);
     expect(Math.abs(dot(unit(shin), left)), 'the shin points down/back, not across').toBeLessThan(0.35);
   });
 
   it('reaching a hand across the chest bends the elbow towards the chest', () => {
     const m = h.map.bones;
     const tips = rig.boneTips(rest);
-    const shoulder = at(tips, h.map.bones.leftShoulder!), elbow0 = at(tips, m.leftUpperArm!), wrist0 = at(tips, m.leftLowerArm!);
+    const shoulder = at(tips, h.map.bones.leftShoulder!),
+      elbow0 = at(tips, m.leftUpperArm!),
+      wrist0 = at(tips, m.leftLowerArm!);
     const arm = len(sub(elbow0, shoulder)) + len(sub(wrist0, elbow0));
     // In front of the other shoulder.
     const other = at(tips, h.map.bones.rightShoulder!);
@@ -143,13 +160,16 @@ describe.each(characters)('%s', (_, make) => {
     expect(excess, 'every iterate inside the limits').toBe(0);
 
     const posed = rig.boneTips(angles);
-    const elbow = at(posed, m.leftUpperArm!), wrist = at(posed, m.leftLowerArm!);
-    const upper = sub(elbow, shoulder), fore = sub(wrist, elbow);
+    const elbow = at(posed, m.leftUpperArm!),
+      wrist = at(posed, m.leftLowerArm!);
+    const upper = sub(elbow, shoulder),
+      fore = sub(wrist, elbow);
     expect(degrees(upper, fore), 'the elbow bends').toBeGreaterThan(30);
     expect(dot(unit(fore), left), 'the forearm points across the body').toBeLessThan(-0.3);
     // The elbow flexes about the axis it had at rest (forearm x forward), carried along by the upper arm.
     const flexAtRest = cross(unit(sub(wrist0, elbow0)), h.forward);
-    const T = rig.poses(angles), u = 16 * m.leftUpperArm!;
+    const T = rig.poses(angles),
+      u = 16 * m.leftUpperArm!;
     const carried = [0, 1, 2].map((r) => dot([T[u + 4 * r], T[u + 4 * r + 1], T[u + 4 * r + 2]], flexAtRest)) as V;
     expect(degrees(cross(upper, fore), carried), 'flexion axis vs the anatomical one').toBeLessThan(30);
   });

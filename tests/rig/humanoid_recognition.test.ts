@@ -32,82 +32,201 @@ function limbNames(name: (limb: Limb, s: SideNames) => string): Partial<Record<H
 type Vec3 = [number, number, number];
 
 /** An extra bone on each side: its name, its parent (a role or bone name), its offset on the left (mirrored on the right). */
-function onBothSides(name: (s: SideNames) => string, parent: (s: SideNames) => string, offset: Vec3): { name: string; parent: string; offset: Vec3 }[] {
-  return SIDES.map((s) => ({ name: name(s), parent: parent(s), offset: s.side === 'left' ? offset : [-offset[0], offset[1], offset[2]] }));
+function onBothSides(
+  name: (s: SideNames) => string,
+  parent: (s: SideNames) => string,
+  offset: Vec3,
+): { name: string; parent: string; offset: Vec3 }[] {
+  return SIDES.map((s) => ({
+    name: name(s),
+    parent: parent(s),
+    offset: s.side === 'left' ? offset : [-offset[0], offset[1], offset[2]],
+  }));
 }
 
 const M = 'mixamorig9:';
-const mixamoWords: Record<Limb, string> = { Shoulder: 'Shoulder', UpperArm: 'Arm', LowerArm: 'ForeArm', Hand: 'Hand', UpperLeg: 'UpLeg', LowerLeg: 'Leg', Foot: 'Foot', Toes: 'ToeBase' };
+const mixamoWords: Record<Limb, string> = {
+  Shoulder: 'Shoulder',
+  UpperArm: 'Arm',
+  LowerArm: 'ForeArm',
+  Hand: 'Hand',
+  UpperLeg: 'UpLeg',
+  LowerLeg: 'Leg',
+  Foot: 'Foot',
+  Toes: 'ToeBase',
+};
 const mixamo: HumanoidNaming = {
   roles: {
-    hips: `${M}Hips`, spine: `${M}Spine`, chest: `${M}Spine1`, upperChest: `${M}Spine2`, neck: `${M}Neck`, head: `${M}Head`,
+    hips: `${M}Hips`,
+    spine: `${M}Spine`,
+    chest: `${M}Spine1`,
+    upperChest: `${M}Spine2`,
+    neck: `${M}Neck`,
+    head: `${M}Head`,
     ...limbNames((limb, s) => `${M}${s.Side}${mixamoWords[limb]}`),
   },
   extra: [
     { name: `${M}HeadTop_End`, parent: 'head', offset: [0, 0.2, 0] },
-    ...onBothSides((s) => `${M}${s.Side}HandIndex1`, (s) => `${s.side}Hand`, [0.1, 0, 0.02]),
-    ...onBothSides((s) => `${M}${s.Side}Toe_End`, (s) => `${s.side}Toes`, [0, 0, 0.06]),
+    ...onBothSides(
+      (s) => `${M}${s.Side}HandIndex1`,
+      (s) => `${s.side}Hand`,
+      [0.1, 0, 0.02],
+    ),
+    ...onBothSides(
+      (s) => `${M}${s.Side}Toe_End`,
+      (s) => `${s.side}Toes`,
+      [0, 0, 0.06],
+    ),
   ],
 };
 
-const unrealWords: Record<Limb, string> = { Shoulder: 'clavicle', UpperArm: 'upperarm', LowerArm: 'lowerarm', Hand: 'hand', UpperLeg: 'thigh', LowerLeg: 'calf', Foot: 'foot', Toes: 'ball' };
+const unrealWords: Record<Limb, string> = {
+  Shoulder: 'clavicle',
+  UpperArm: 'upperarm',
+  LowerArm: 'lowerarm',
+  Hand: 'hand',
+  UpperLeg: 'thigh',
+  LowerLeg: 'calf',
+  Foot: 'foot',
+  Toes: 'ball',
+};
 const unreal: HumanoidNaming = {
   root: 'root',
   roles: {
-    hips: 'pelvis', spine: 'spine_01', chest: 'spine_02', upperChest: 'spine_03', neck: 'neck_01', head: 'head',
+    hips: 'pelvis',
+    spine: 'spine_01',
+    chest: 'spine_02',
+    upperChest: 'spine_03',
+    neck: 'neck_01',
+    head: 'head',
     ...limbNames((limb, s) => `${unrealWords[limb]}_${s.l}`),
   },
   extra: [
     { name: 'ik_foot_root', parent: 'root', offset: [0, 0, 0] },
-    ...onBothSides((s) => `ik_foot_${s.l}`, () => 'ik_foot_root', [0.1, 0.08, 0]),
-    ...onBothSides((s) => `upperarm_twist_01_${s.l}`, (s) => `${s.side}UpperArm`, [0.1, 0, 0]),
-    ...onBothSides((s) => `index_01_${s.l}`, (s) => `${s.side}Hand`, [0.1, 0, 0.02]),
+    ...onBothSides(
+      (s) => `ik_foot_${s.l}`,
+      () => 'ik_foot_root',
+      [0.1, 0.08, 0],
+    ),
+    ...onBothSides(
+      (s) => `upperarm_twist_01_${s.l}`,
+      (s) => `${s.side}UpperArm`,
+      [0.1, 0, 0],
+    ),
+    ...onBothSides(
+      (s) => `index_01_${s.l}`,
+      (s) => `${s.side}Hand`,
+      [0.1, 0, 0.02],
+    ),
   ],
 };
 
 // Rigify's deforming bones: the metarig's spine chain (spine = the hips, spine.004 the neck,
 // spine.006 the head), limbs cut in two segments (upper_arm.L, upper_arm.L.001).
-const rigifyWords: Record<Limb, string> = { Shoulder: 'shoulder', UpperArm: 'upper_arm', LowerArm: 'forearm', Hand: 'hand', UpperLeg: 'thigh', LowerLeg: 'shin', Foot: 'foot', Toes: 'toe' };
+const rigifyWords: Record<Limb, string> = {
+  Shoulder: 'shoulder',
+  UpperArm: 'upper_arm',
+  LowerArm: 'forearm',
+  Hand: 'hand',
+  UpperLeg: 'thigh',
+  LowerLeg: 'shin',
+  Foot: 'foot',
+  Toes: 'toe',
+};
 const rigify: HumanoidNaming = {
   roles: {
-    hips: 'DEF-spine', spine: 'DEF-spine.001', chest: 'DEF-spine.002', upperChest: 'DEF-spine.003', neck: 'DEF-spine.004', head: 'DEF-spine.006',
+    hips: 'DEF-spine',
+    spine: 'DEF-spine.001',
+    chest: 'DEF-spine.002',
+    upperChest: 'DEF-spine.003',
+    neck: 'DEF-spine.004',
+    head: 'DEF-spine.006',
     ...limbNames((limb, s) => `DEF-${rigifyWords[limb]}.${s.L}`),
   },
   parents: {
     head: 'DEF-spine.005',
-    leftLowerArm: 'DEF-upper_arm.L.001', rightLowerArm: 'DEF-upper_arm.R.001',
-    leftLowerLeg: 'DEF-thigh.L.001', rightLowerLeg: 'DEF-thigh.R.001',
+    leftLowerArm: 'DEF-upper_arm.L.001',
+    rightLowerArm: 'DEF-upper_arm.R.001',
+    leftLowerLeg: 'DEF-thigh.L.001',
+    rightLowerLeg: 'DEF-thigh.R.001',
   },
   extra: [
     { name: 'DEF-spine.005', parent: 'neck', offset: [0, 0.05, 0] },
-    ...onBothSides((s) => `DEF-upper_arm.${s.L}.001`, (s) => `${s.side}UpperArm`, [0.14, 0, 0]),
-    ...onBothSides((s) => `DEF-thigh.${s.L}.001`, (s) => `${s.side}UpperLeg`, [0, -0.2, 0]),
-    ...onBothSides((s) => `DEF-pelvis.${s.L}`, () => 'hips', [0.08, 0, 0.05]),
+    ...onBothSides(
+      (s) => `DEF-upper_arm.${s.L}.001`,
+      (s) => `${s.side}UpperArm`,
+      [0.14, 0, 0],
+    ),
+    ...onBothSides(
+      (s) => `DEF-thigh.${s.L}.001`,
+      (s) => `${s.side}UpperLeg`,
+      [0, -0.2, 0],
+    ),
+    ...onBothSides(
+      (s) => `DEF-pelvis.${s.L}`,
+      () => 'hips',
+      [0.08, 0, 0.05],
+    ),
   ],
 };
 
 // 3ds Max Biped: the thighs hang off Bip01 Spine, the clavicles off Bip01 Neck.
-const bipedWords: Record<Limb, string> = { Shoulder: 'Clavicle', UpperArm: 'UpperArm', LowerArm: 'Forearm', Hand: 'Hand', UpperLeg: 'Thigh', LowerLeg: 'Calf', Foot: 'Foot', Toes: 'Toe0' };
+const bipedWords: Record<Limb, string> = {
+  Shoulder: 'Clavicle',
+  UpperArm: 'UpperArm',
+  LowerArm: 'Forearm',
+  Hand: 'Hand',
+  UpperLeg: 'Thigh',
+  LowerLeg: 'Calf',
+  Foot: 'Foot',
+  Toes: 'Toe0',
+};
 const biped: HumanoidNaming = {
   root: 'Bip01',
   roles: {
-    hips: 'Bip01 Pelvis', spine: 'Bip01 Spine', chest: 'Bip01 Spine1', upperChest: 'Bip01 Spine2', neck: 'Bip01 Neck', head: 'Bip01 Head',
+    hips: 'Bip01 Pelvis',
+    spine: 'Bip01 Spine',
+    chest: 'Bip01 Spine1',
+    upperChest: 'Bip01 Spine2',
+    neck: 'Bip01 Neck',
+    head: 'Bip01 Head',
     ...limbNames((limb, s) => `Bip01 ${s.L} ${bipedWords[limb]}`),
   },
   parents: { leftUpperLeg: 'spine', rightUpperLeg: 'spine', leftShoulder: 'neck', rightShoulder: 'neck' },
   extra: [
     { name: 'Bip01 HeadNub', parent: 'head', offset: [0, 0.2, 0] },
-    ...onBothSides((s) => `Bip01 ${s.L} Finger0`, (s) => `${s.side}Hand`, [0.03, 0, 0.03]),
-    ...onBothSides((s) => `Bip01 ${s.L} Toe0Nub`, (s) => `${s.side}Toes`, [0, 0, 0.06]),
+    ...onBothSides(
+      (s) => `Bip01 ${s.L} Finger0`,
+      (s) => `${s.side}Hand`,
+      [0.03, 0, 0.03],
+    ),
+    ...onBothSides(
+      (s) => `Bip01 ${s.L} Toe0Nub`,
+      (s) => `${s.side}Toes`,
+      [0, 0, 0.06],
+    ),
   ],
 };
 
 // Generic names, a different style per side; no upper chest. The left hand is the wrist (a palm
 // below it), and a bone named like a foot hangs off the pelvis, outside the leg.
-const genericLeft: Record<Limb, string> = { Shoulder: 'l_clavicle', UpperArm: 'l_upperarm', LowerArm: 'l_elbow', Hand: 'l_wrist', UpperLeg: 'l_thigh', LowerLeg: 'l_knee', Foot: 'l_ankle', Toes: 'l_toe' };
+const genericLeft: Record<Limb, string> = {
+  Shoulder: 'l_clavicle',
+  UpperArm: 'l_upperarm',
+  LowerArm: 'l_elbow',
+  Hand: 'l_wrist',
+  UpperLeg: 'l_thigh',
+  LowerLeg: 'l_knee',
+  Foot: 'l_ankle',
+  Toes: 'l_toe',
+};
 const generic: HumanoidNaming = {
   roles: {
-    hips: 'Pelvis', spine: 'Spine', chest: 'Chest', neck: 'Neck', head: 'Head',
+    hips: 'Pelvis',
+    spine: 'Spine',
+    chest: 'Chest',
+    neck: 'Neck',
+    head: 'Head',
     ...limbNames((limb, s) => (s.side === 'left' ? genericLeft[limb] : `Right${limb}`)),
   },
   extra: [
@@ -116,7 +235,10 @@ const generic: HumanoidNaming = {
   ],
 };
 
-async function load(naming: HumanoidNaming, edit?: (json: ReturnType<typeof unpackGlb>['json']) => void): Promise<LoadedRig> {
+async function load(
+  naming: HumanoidNaming,
+  edit?: (json: ReturnType<typeof unpackGlb>['json']) => void,
+): Promise<LoadedRig> {
   const bytes = await skeletonGlb(humanoidJoints(naming));
   if (!edit) return loadRig(bytes, 'humanoid.glb');
   const { json, bin } = unpackGlb(bytes);
@@ -127,7 +249,9 @@ async function load(naming: HumanoidNaming, edit?: (json: ReturnType<typeof unpa
 /** The role -> bone name mapping the importer found (roles in HUMANOID_ROLES order). */
 function mappedNames(rig: LoadedRig): Partial<Record<HumanoidRole, string>> {
   const bones = rig.gltf!.humanoid!.bones;
-  return Object.fromEntries(HUMANOID_ROLES.flatMap((r) => (bones[r] === undefined ? [] : [[r, rig.spec.names[bones[r]]]])));
+  return Object.fromEntries(
+    HUMANOID_ROLES.flatMap((r) => (bones[r] === undefined ? [] : [[r, rig.spec.names[bones[r]]]])),
+  );
 }
 
 /** `naming`'s roles in HUMANOID_ROLES order. */
@@ -159,9 +283,19 @@ describe('humanoid recognition by name', () => {
   });
 
   it('names the missing core roles of a humanoid with legs but no arms or head', async () => {
-    const legsOnly = Object.fromEntries(Object.entries(mixamo.roles).filter(([r]) => /^(hips|spine|left.*Leg|right.*Leg|.*Foot)$/.test(r)));
+    const legsOnly = Object.fromEntries(
+      Object.entries(mixamo.roles).filter(([r]) => /^(hips|spine|left.*Leg|right.*Leg|.*Foot)$/.test(r)),
+    );
     const rig = await load({ roles: legsOnly });
-    expect(rig.gltf!.humanoid!.missing).toEqual(['head', 'leftUpperArm', 'leftLowerArm', 'leftHand', 'rightUpperArm', 'rightLowerArm', 'rightHand']);
+    expect(rig.gltf!.humanoid!.missing).toEqual([
+      'head',
+      'leftUpperArm',
+      'leftLowerArm',
+      'leftHand',
+      'rightUpperArm',
+      'rightLowerArm',
+      'rightHand',
+    ]);
     expect(rig.warnings[0]).toBe(
       'humanoid (mixamo): 7 of 14 core roles; missing head, leftUpperArm, leftLowerArm, leftHand, rightUpperArm, rightLowerArm, rightHand',
     );
@@ -183,7 +317,10 @@ const anonymous: HumanoidNaming = {
 };
 
 /** The node index of each role's bone in `json`, by the names of `roles`. */
-const roleNodes = (json: ReturnType<typeof unpackGlb>['json'], roles: Partial<Record<HumanoidRole, string>>): [HumanoidRole, number][] =>
+const roleNodes = (
+  json: ReturnType<typeof unpackGlb>['json'],
+  roles: Partial<Record<HumanoidRole, string>>,
+): [HumanoidRole, number][] =>
   (Object.entries(roles) as [HumanoidRole, string][]).map(([r, n]) => [r, nodeIndex(json, n)]);
 
 describe('humanoid recognition from a VRM extension', () => {
@@ -191,7 +328,9 @@ describe('humanoid recognition from a VRM extension', () => {
     const rig = await load(anonymous, (json) => {
       json.extensionsUsed = ['VRMC_vrm'];
       const humanBones = Object.fromEntries(roleNodes(json, anonymous.roles).map(([r, node]) => [r, { node }]));
-      json.extensions = { VRMC_vrm: { specVersion: '1.0', humanoid: { humanBones: { ...humanBones, leftEye: { node: 0 } } } } };
+      json.extensions = {
+        VRMC_vrm: { specVersion: '1.0', humanoid: { humanBones: { ...humanBones, leftEye: { node: 0 } } } },
+      };
     });
     expect(rig.gltf!.humanoid!.source).toBe('vrm1');
     expect(mappedNames(rig)).toEqual(expectedNames(anonymous.roles));
@@ -227,7 +366,9 @@ describe('humanoid recognition from a VRM extension', () => {
       json.extensions = { VRMC_vrm: { humanoid: { humanBones: [] } } };
     });
     expect(rig.gltf!.humanoid!.source).toBe('mixamo');
-    expect(rig.warnings).toContain("the VRMC_vrm extension's humanoid.humanBones is not an object: bones recognised by name instead");
+    expect(rig.warnings).toContain(
+      "the VRMC_vrm extension's humanoid.humanBones is not an object: bones recognised by name instead",
+    );
   });
 });
 
@@ -235,10 +376,17 @@ describe('humanoid recognition: the tree decides between look-alikes', () => {
   /** The role -> name map humanoidByName makes of `bones` (name, parent name), listed parents first. */
   function byName(bones: [string, string?][]): Partial<Record<HumanoidRole, string>> {
     const names = bones.map(([n]) => n);
-    const { bones: roles } = humanoidByName(names, bones.map(([, p]) => (p === undefined ? -1 : names.indexOf(p))));
+    const { bones: roles } = humanoidByName(
+      names,
+      bones.map(([, p]) => (p === undefined ? -1 : names.indexOf(p))),
+    );
     return Object.fromEntries(Object.entries(roles).map(([r, b]) => [r, names[b]]));
   }
-  const leg = (s: string, top: string): [string, string?][] => [[`${s}_thigh`, top], [`${s}_knee`, `${s}_thigh`], [`${s}_ankle`, `${s}_knee`]];
+  const leg = (s: string, top: string): [string, string?][] => [
+    [`${s}_thigh`, top],
+    [`${s}_knee`, `${s}_thigh`],
+    [`${s}_ankle`, `${s}_knee`],
+  ];
 
   it('takes as the hips a bone with the legs below it', () => {
     const roles = byName([['Root'], ['Hip', 'Root'], ['Pelvis', 'Root'], ...leg('l', 'Pelvis'), ...leg('r', 'Pelvis')]);
@@ -247,12 +395,30 @@ describe('humanoid recognition: the tree decides between look-alikes', () => {
   });
 
   it('sets aside words that only say "joint"', () => {
-    const roles = byName([['Hips_jnt'], ['L_UpLeg_jnt', 'Hips_jnt'], ['L_Knee_bind', 'L_UpLeg_jnt'], ['L_Ankle_joint', 'L_Knee_bind']]);
-    expect(roles).toEqual({ hips: 'Hips_jnt', leftUpperLeg: 'L_UpLeg_jnt', leftLowerLeg: 'L_Knee_bind', leftFoot: 'L_Ankle_joint' });
+    const roles = byName([
+      ['Hips_jnt'],
+      ['L_UpLeg_jnt', 'Hips_jnt'],
+      ['L_Knee_bind', 'L_UpLeg_jnt'],
+      ['L_Ankle_joint', 'L_Knee_bind'],
+    ]);
+    expect(roles).toEqual({
+      hips: 'Hips_jnt',
+      leftUpperLeg: 'L_UpLeg_jnt',
+      leftLowerLeg: 'L_Knee_bind',
+      leftFoot: 'L_Ankle_joint',
+    });
   });
 
   it('finds the spine between the hips and the neck in a rig rooted at the chest', () => {
-    const roles = byName([['chest'], ['neck', 'chest'], ['head', 'neck'], ['spine', 'chest'], ['hips', 'spine'], ...leg('l', 'hips'), ...leg('r', 'hips')]);
+    const roles = byName([
+      ['chest'],
+      ['neck', 'chest'],
+      ['head', 'neck'],
+      ['spine', 'chest'],
+      ['hips', 'spine'],
+      ...leg('l', 'hips'),
+      ...leg('r', 'hips'),
+    ]);
     expect(roles).toMatchObject({ hips: 'hips', spine: 'spine', chest: 'chest', neck: 'neck', head: 'head' });
     expect(roles.upperChest).toBeUndefined();
   });

@@ -61,7 +61,10 @@ describe('joint limits in A7 files', () => {
   const rig = (bone: Record<string, unknown>): string => treeA7(chainParents(2), bone);
 
   it('keeps 1e10 as written (unbounded) and refuses it as a lower limit', async () => {
-    const loaded = await loadRig(new TextEncoder().encode(rig({ xzx_min: [-1e10, -90, 0], xzx_max: [1e10, 90, 0] })), 'a.json');
+    const loaded = await loadRig(
+      new TextEncoder().encode(rig({ xzx_min: [-1e10, -90, 0], xzx_max: [1e10, 90, 0] })),
+      'a.json',
+    );
     expect(Array.from(loaded.spec.lower.subarray(0, 3))).toEqual([-1e10, -90, 0]);
     expect(Array.from(loaded.spec.upper.subarray(0, 3))).toEqual([1e10, 90, 0]);
     expect(await loadError(rig({ xzx_min: [1e10, 0, 0], xzx_max: [1e10, 0, 0] }), 'a.json')).toBe(
@@ -70,7 +73,11 @@ describe('joint limits in A7 files', () => {
   });
 
   it('refuses a lower limit above the upper one, and a limit that is no number', async () => {
-    expect(await loadError(rig({ xzx_min: [0, 90, 0], xzx_max: [0, 10, 0] }), 'a.json')).toBe('a.json: bones[0].xzx_min[1] = 90 is above xzx_max[1] = 10');
-    expect(await loadError(rig({ xzx_max: [0, '10', 0] }), 'a.json')).toBe('a.json: bones[0].xzx_max[1] is not a number (degrees)');
+    expect(await loadError(rig({ xzx_min: [0, 90, 0], xzx_max: [0, 10, 0] }), 'a.json')).toBe(
+      'a.json: bones[0].xzx_min[1] = 90 is above xzx_max[1] = 10',
+    );
+    expect(await loadError(rig({ xzx_max: [0, '10', 0] }), 'a.json')).toBe(
+      'a.json: bones[0].xzx_max[1] is not a number (degrees)',
+    );
   });
 });

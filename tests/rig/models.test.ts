@@ -25,9 +25,19 @@ const read = (name: string): Uint8Array => new Uint8Array(readFileSync(resolve(m
 
 describe('project rigs', () => {
   it('the committed files are exactly what scripts/generate-models.ts makes (npm run models)', () => {
-    expect([...generated.keys()]).toEqual(['lamp.glb', 'robot-arm.glb', 'knight.glb', 'hand.glb', 'beast.glb', 'character.glb']);
+    expect([...generated.keys()]).toEqual([
+      'lamp.glb',
+      'robot-arm.glb',
+      'knight.glb',
+      'hand.glb',
+      'beast.glb',
+      'character.glb',
+    ]);
     for (const [name, bytes] of generated) {
-      expect(Buffer.from(read(name)).equals(Buffer.from(bytes)), `${name} differs from the generator's output: run npm run models`).toBe(true);
+      expect(
+        Buffer.from(read(name)).equals(Buffer.from(bytes)),
+        `${name} differs from the generator's output: run npm run models`,
+      ).toBe(true);
       // The character carries its animation clips (scripts/models/character_clips.ts): four of 6 s
       // with every frame at 30 fps (100 KB), then turn_in_place (7 s) and stress (21 s) with only the
       // frames interpolation cannot rebuild within 0.01 degrees (78 KB; their steps and big, fast
@@ -39,7 +49,9 @@ describe('project rigs', () => {
   it('pass the Khronos glTF validator without errors or warnings', async () => {
     for (const name of generated.keys()) {
       const report = await validateBytes(read(name));
-      const issues = report.issues.messages.map((m: { code: string; pointer?: string }) => `${m.code} ${m.pointer ?? ''}`);
+      const issues = report.issues.messages.map(
+        (m: { code: string; pointer?: string }) => `${m.code} ${m.pointer ?? ''}`,
+      );
       expect(report.issues.numErrors, `${name}: ${issues.join(', ')}`).toBe(0);
       expect(report.issues.numWarnings, `${name}: ${issues.join(', ')}`).toBe(0);
     }
@@ -51,14 +63,18 @@ describe('project rigs', () => {
     ['knight', 19, 5, undefined],
     ['hand', 21, 5, undefined],
     ['beast', 22, 5, undefined],
-  ] as const)('%s.glb has %i bones and %i end effectors like the report rig', async (name, bones, effectors, freeAngles) => {
-    const { spec, warnings } = await loadRigFromPath(resolve(modelsDir, `${name}.glb`));
-    expect(spec.parents.length).toBe(bones);
-    expect(spec.effectors.length).toBe(effectors);
-    if (freeAngles !== undefined) expect(Array.from(spec.lower).filter((v, i) => v !== spec.upper[i]).length).toBe(freeAngles);
-    // Every joint carries IK extras; the knight's Blender names are recognised as a humanoid.
-    expect(warnings).toEqual(name === 'knight' ? ['humanoid (rigify): 14 of 14 core roles'] : []);
-  });
+  ] as const)(
+    '%s.glb has %i bones and %i end effectors like the report rig',
+    async (name, bones, effectors, freeAngles) => {
+      const { spec, warnings } = await loadRigFromPath(resolve(modelsDir, `${name}.glb`));
+      expect(spec.parents.length).toBe(bones);
+      expect(spec.effectors.length).toBe(effectors);
+      if (freeAngles !== undefined)
+        expect(Array.from(spec.lower).filter((v, i) => v !== spec.upper[i]).length).toBe(freeAngles);
+      // Every joint carries IK extras; the knight's Blender names are recognised as a humanoid.
+      expect(warnings).toEqual(name === 'knight' ? ['humanoid (rigify): 14 of 14 core roles'] : []);
+    },
+  );
 
   it('character.glb has 60+ joints with Mixamo names, and its hands, feet and head as end effectors', async () => {
     const { spec } = await loadRigFromPath(resolve(modelsDir, 'character.glb'));

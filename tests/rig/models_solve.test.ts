@@ -17,7 +17,9 @@ import { defaultTolerances, rigSize } from '../../web/src/rig/tolerances.js';
 import { randomAngles, seeded } from '../helpers/a7.js';
 
 const modelsDir = resolve(import.meta.dirname, '../../web/public/models');
-const models = readdirSync(modelsDir).filter((f) => f.endsWith('.glb')).sort();
+const models = readdirSync(modelsDir)
+  .filter((f) => f.endsWith('.glb'))
+  .sort();
 /** Iterations of one solve, restarts included. The most any of these solves took: 3030 (hand.glb, 438 restarts). */
 const MAX_ITERATIONS = 20000;
 let ik: IkCoreModule;
@@ -38,7 +40,12 @@ describe('the default method on the project models', () => {
     const rig = new IkRig(ik, loaded.spec);
     owned.push(rig);
     const tol = defaultTolerances(loaded.name, false, rigSize(rig.boneTips(new Float64Array(rig.numAngles))));
-    const solver = new IkSolver(rig, 'lm', { gradientTolerance: tol.gradientTolerance, errorTolerance: tol.errorTolerance, timeBudgetSeconds: 0, maxIterations: MAX_ITERATIONS });
+    const solver = new IkSolver(rig, 'lm', {
+      gradientTolerance: tol.gradientTolerance,
+      errorTolerance: tol.errorTolerance,
+      timeBudgetSeconds: 0,
+      maxIterations: MAX_ITERATIONS,
+    });
     owned.push(solver);
     const rand = seeded(404);
     const rest = new Float64Array(rig.numAngles);

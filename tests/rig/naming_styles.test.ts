@@ -18,13 +18,18 @@ async function load(joints: SkeletonJoint[]): Promise<LoadedRig> {
 /** The role -> bone name map the importer found, in HUMANOID_ROLES order. */
 function mappedNames(rig: LoadedRig): Partial<Record<HumanoidRole, string>> {
   const bones = rig.gltf!.humanoid!.bones;
-  return Object.fromEntries(HUMANOID_ROLES.flatMap((r) => (bones[r] === undefined ? [] : [[r, rig.spec.names[bones[r]]]])));
+  return Object.fromEntries(
+    HUMANOID_ROLES.flatMap((r) => (bones[r] === undefined ? [] : [[r, rig.spec.names[bones[r]]]])),
+  );
 }
 
 /** The role -> name map humanoidByName makes of `bones` (name, parent name), listed parents first. */
 function byName(bones: [string, string?][]): Partial<Record<HumanoidRole, string>> {
   const names = bones.map(([n]) => n);
-  const { bones: roles } = humanoidByName(names, bones.map(([, p]) => (p === undefined ? -1 : names.indexOf(p))));
+  const { bones: roles } = humanoidByName(
+    names,
+    bones.map(([, p]) => (p === undefined ? -1 : names.indexOf(p))),
+  );
   return Object.fromEntries(Object.entries(roles).map(([r, b]) => [r, names[b]]));
 }
 
@@ -34,15 +39,33 @@ describe('naming styles', () => {
     const roles = styledRoles(style);
     expect(rig.gltf!.humanoid!.source).toBe(style === 'mixamo' ? 'mixamo' : 'generic');
     expect(rig.gltf!.humanoid!.missing).toEqual([]);
-    expect(mappedNames(rig)).toEqual(Object.fromEntries(HUMANOID_ROLES.flatMap((r) => (roles[r] === undefined ? [] : [[r, roles[r]]]))));
+    expect(mappedNames(rig)).toEqual(
+      Object.fromEntries(HUMANOID_ROLES.flatMap((r) => (roles[r] === undefined ? [] : [[r, roles[r]]]))),
+    );
     const effectors = Array.from(rig.spec.effectors, (b) => rig.spec.names[b]);
-    expect(effectors).toEqual(['head', 'leftHand', 'rightHand', 'leftFoot', 'rightFoot'].map((r) => roles[r as HumanoidRole]));
+    expect(effectors).toEqual(
+      ['head', 'leftHand', 'rightHand', 'leftFoot', 'rightFoot'].map((r) => roles[r as HumanoidRole]),
+    );
     expect(rig.warnings[0]).toBe(`humanoid (${style === 'mixamo' ? 'mixamo' : 'generic'}): 14 of 14 core roles`);
   });
 
   it('reads the side and the part of each style', () => {
-    for (const name of ['UpperLegL', 'UpperLeg.L', 'upperleg_l', 'UpperLeg_L', 'L_UpperLeg', 'LUpperLeg', 'upper_leg.l', 'LeftUpperLeg', 'Leg_Upper_L'])
-      expect(byName([['Hips'], [name, 'Hips'], ['LowerLegL', name], ['FootL', 'LowerLegL']]), name).toMatchObject({ leftUpperLeg: name, leftLowerLeg: 'LowerLegL', leftFoot: 'FootL' });
+    for (const name of [
+      'UpperLegL',
+      'UpperLeg.L',
+      'upperleg_l',
+      'UpperLeg_L',
+      'L_UpperLeg',
+      'LUpperLeg',
+      'upper_leg.l',
+      'LeftUpperLeg',
+      'Leg_Upper_L',
+    ])
+      expect(byName([['Hips'], [name, 'Hips'], ['LowerLegL', name], ['FootL', 'LowerLegL']]), name).toMatchObject({
+        leftUpperLeg: name,
+        leftLowerLeg: 'LowerLegL',
+        leftFoot: 'FootL',
+      });
     expect(readBoneName('LowerArmR')).toMatchObject({ side: 'right', endings: ['lowerarm', 'arm'] });
     expect(readBoneName('ShoulderL')).toMatchObject({ side: 'left', endings: ['shoulder'] });
   });
@@ -54,30 +77,68 @@ describe('naming styles', () => {
     expect(readBoneName('hand_01_l')?.unnumbered).toBeUndefined();
     const arm = (hand: [string, string?][]): Partial<Record<HumanoidRole, string>> =>
       byName([['Hips'], ['ShoulderL', 'Hips'], ['UpperArmL', 'ShoulderL'], ['LowerArmL', 'UpperArmL'], ...hand]);
-    expect(arm([['Palm2L', 'LowerArmL'], ['Palm1L', 'LowerArmL']]).leftHand).toBe('Palm2L');
-    expect(arm([['Palm2L', 'LowerArmL'], ['PalmL', 'Palm2L']]).leftHand).toBe('PalmL');
+    expect(
+      arm([
+        ['Palm2L', 'LowerArmL'],
+        ['Palm1L', 'LowerArmL'],
+      ]).leftHand,
+    ).toBe('Palm2L');
+    expect(
+      arm([
+        ['Palm2L', 'LowerArmL'],
+        ['PalmL', 'Palm2L'],
+      ]).leftHand,
+    ).toBe('PalmL');
   });
 
   it('recognises the RobotExpressive-style robot: Palm2L hands, Shoulder, UpperArm, LowerArm, UpperLeg, LowerLeg', async () => {
     const rig = await load(robotRig({ feet: 'legs' }));
     expect(mappedNames(rig)).toEqual({
-      hips: 'Hips', spine: 'Abdomen', chest: 'Torso', neck: 'Neck', head: 'Head',
-      leftShoulder: 'ShoulderL', leftUpperArm: 'UpperArmL', leftLowerArm: 'LowerArmL', leftHand: 'Palm2L',
-      rightShoulder: 'ShoulderR', rightUpperArm: 'UpperArmR', rightLowerArm: 'LowerArmR', rightHand: 'Palm2R',
-      leftUpperLeg: 'UpperLegL', leftLowerLeg: 'LowerLegL', leftFoot: 'FootL',
-      rightUpperLeg: 'UpperLegR', rightLowerLeg: 'LowerLegR', rightFoot: 'FootR',
+      hips: 'Hips',
+      spine: 'Abdomen',
+      chest: 'Torso',
+      neck: 'Neck',
+      head: 'Head',
+      leftShoulder: 'ShoulderL',
+      leftUpperArm: 'UpperArmL',
+      leftLowerArm: 'LowerArmL',
+      leftHand: 'Palm2L',
+      rightShoulder: 'ShoulderR',
+      rightUpperArm: 'UpperArmR',
+      rightLowerArm: 'LowerArmR',
+      rightHand: 'Palm2R',
+      leftUpperLeg: 'UpperLegL',
+      leftLowerLeg: 'LowerLegL',
+      leftFoot: 'FootL',
+      rightUpperLeg: 'UpperLegR',
+      rightLowerLeg: 'LowerLegR',
+      rightFoot: 'FootR',
     });
   });
 
   it('gives no role by name alone: a part outside its chain, or on the wrong side, is passed over', () => {
     const roles = byName([
-      ['Hips'], ['UpperLegL', 'Hips'], ['LowerLegL', 'UpperLegL'], ['FootL', 'LowerLegL'],
-      ['UpperLegR', 'Hips'], ['LowerLegR', 'UpperLegR'], ['FootR', 'Hips'], ['L_Palm', 'LowerLegL'], ['HeadL', 'Hips'],
-      ['UpperArmL', 'Hips'], ['LowerArmL', 'UpperArmL'],
+      ['Hips'],
+      ['UpperLegL', 'Hips'],
+      ['LowerLegL', 'UpperLegL'],
+      ['FootL', 'LowerLegL'],
+      ['UpperLegR', 'Hips'],
+      ['LowerLegR', 'UpperLegR'],
+      ['FootR', 'Hips'],
+      ['L_Palm', 'LowerLegL'],
+      ['HeadL', 'Hips'],
+      ['UpperArmL', 'Hips'],
+      ['LowerArmL', 'UpperArmL'],
     ]);
     expect(roles).toEqual({
-      hips: 'Hips', leftUpperLeg: 'UpperLegL', leftLowerLeg: 'LowerLegL', leftFoot: 'FootL', rightUpperLeg: 'UpperLegR', rightLowerLeg: 'LowerLegR',
-      leftUpperArm: 'UpperArmL', leftLowerArm: 'LowerArmL',
+      hips: 'Hips',
+      leftUpperLeg: 'UpperLegL',
+      leftLowerLeg: 'LowerLegL',
+      leftFoot: 'FootL',
+      rightUpperLeg: 'UpperLegR',
+      rightLowerLeg: 'LowerLegR',
+      leftUpperArm: 'UpperArmL',
+      leftLowerArm: 'LowerArmL',
     });
     expect(CORE_HUMANOID_ROLES.filter((r) => roles[r] === undefined)).toContain('rightFoot');
   });

@@ -9,7 +9,13 @@ import { beforeAll, describe, expect, it } from 'vitest';
 
 import type { RigSpec } from '../../web/src/ik/rig_arrays.js';
 import { loadRig } from '../../web/src/rig/load_rig.js';
-import { MAX_POSE_CHARS, PoseFormatError, poseFromJson, poseToJson, type PoseInput } from '../../web/src/rig/pose_json.js';
+import {
+  MAX_POSE_CHARS,
+  PoseFormatError,
+  poseFromJson,
+  poseToJson,
+  type PoseInput,
+} from '../../web/src/rig/pose_json.js';
 import { loadA7, needsA7, randomAngles, seeded } from '../helpers/a7.js';
 
 const modelsDir = resolve(import.meta.dirname, '../../web/public/models');
@@ -38,7 +44,8 @@ function knightPose(seed: number): PoseInput {
   };
 }
 
-const sameBits = (a: ArrayLike<number>, b: ArrayLike<number>): boolean => a.length === b.length && Array.from(a).every((v, k) => Object.is(v, b[k]));
+const sameBits = (a: ArrayLike<number>, b: ArrayLike<number>): boolean =>
+  a.length === b.length && Array.from(a).every((v, k) => Object.is(v, b[k]));
 
 /** A small rig by name only: what poseFromJson reads. */
 const small = {
@@ -54,7 +61,10 @@ function smallFile(): Record<string, unknown> {
     version: 1,
     rig: 'small',
     bones: { root: [1, 2, 3], arm: [4, 5, 6], hand: [0, 0, 0], ['__proto__']: [7, 8, 9] },
-    effectors: [{ bone: 'hand', target: [0, 1, 2], orientation: [0, 0, 0, 1] }, { bone: 'arm', target: [1, 1, 1] }],
+    effectors: [
+      { bone: 'hand', target: [0, 1, 2], orientation: [0, 0, 0, 1] },
+      { bone: 'arm', target: [1, 1, 1] },
+    ],
   };
 }
 const text = (o: unknown): string => JSON.stringify(o);
@@ -82,7 +92,7 @@ describe('poseToJson / poseFromJson', () => {
     }
   });
 
-  it('a floating root\'s move round-trips bit for bit; a pose without one reads none; a bad one is refused by name', () => {
+  it("a floating root's move round-trips bit for bit; a pose without one reads none; a bad one is refused by name", () => {
     const pose = { ...knightPose(4), root: [0.125, -0.3000000000000001, 1e-9] };
     const json = poseToJson(pose);
     expect(JSON.parse(json).root).toEqual(pose.root);
@@ -105,11 +115,14 @@ describe('poseToJson / poseFromJson', () => {
     const n = knight.names.length;
     const perm = Array.from({ length: n }, (_, i) => (i * 7 + 3) % n);
     expect(new Set(perm).size).toBe(n);
-    const pick = (a: Float64Array): Float64Array => Float64Array.from({ length: 3 * n }, (_, k) => a[3 * perm[Math.floor(k / 3)] + (k % 3)]);
+    const pick = (a: Float64Array): Float64Array =>
+      Float64Array.from({ length: 3 * n }, (_, k) => a[3 * perm[Math.floor(k / 3)] + (k % 3)]);
     const permuted = { names: perm.map((i) => knight.names[i]), lower: pick(knight.lower), upper: pick(knight.upper) };
     const read = poseFromJson(poseToJson(pose), permuted);
     perm.forEach((old, i) => {
-      expect(Array.from(read.angles.subarray(3 * i, 3 * i + 3)), permuted.names[i]).toEqual(Array.from(pose.angles).slice(3 * old, 3 * old + 3));
+      expect(Array.from(read.angles.subarray(3 * i, 3 * i + 3)), permuted.names[i]).toEqual(
+        Array.from(pose.angles).slice(3 * old, 3 * old + 3),
+      );
     });
     expect(read.effectors.map((b) => permuted.names[b])).toEqual(Array.from(pose.effectors, (b) => knight.names[b]));
   });
@@ -117,7 +130,13 @@ describe('poseToJson / poseFromJson', () => {
   it('a bone called "__proto__" is an ordinary bone', () => {
     const read = poseFromJson(text(smallFile()), small);
     expect(Array.from(read.angles.subarray(9, 12))).toEqual([7, 8, 9]);
-    const json = poseToJson({ rigName: 's', boneNames: small.names, angles: read.angles, effectors: [3], targets: [1, 2, 3] });
+    const json = poseToJson({
+      rigName: 's',
+      boneNames: small.names,
+      angles: read.angles,
+      effectors: [3],
+      targets: [1, 2, 3],
+    });
     expect(Array.from(poseFromJson(json, small).angles)).toEqual(Array.from(read.angles));
     expect(poseFromJson(json, small).effectors).toEqual([3]);
   });
@@ -146,7 +165,9 @@ describe('poseToJson / poseFromJson', () => {
     const read = poseFromJson(text(file), small);
     expect(Array.from(read.angles.subarray(3, 6))).toEqual([0, 0, 0]);
     expect(Array.from(read.angles.subarray(0, 3))).toEqual([1, 2, 3]);
-    expect(read.warnings).toEqual([expect.stringMatching(/no angles for 1 bone\(s\), set to 0 or the nearest limit: "arm"$/)]);
+    expect(read.warnings).toEqual([
+      expect.stringMatching(/no angles for 1 bone\(s\), set to 0 or the nearest limit: "arm"$/),
+    ]);
   });
 
   const broken: [string, (f: Record<string, unknown>) => unknown, RegExp][] = [
@@ -159,23 +180,77 @@ describe('poseToJson / poseFromJson', () => {
     ['rig not a string', (f) => ({ ...f, rig: 3 }), /"rig" is 3/],
     ['no bones', (f) => (delete f.bones, f), /"bones" is undefined/],
     ['bones an array', (f) => ({ ...f, bones: [[1, 2, 3]] }), /"bones" is an array/],
-    ['unknown bones', (f) => ({ ...f, bones: { ...(f.bones as object), tail: [0, 0, 0], wing: [0, 0, 0] } }), /"bones" names 2 bone\(s\) the rig lacks: "tail", "wing"/],
+    [
+      'unknown bones',
+      (f) => ({ ...f, bones: { ...(f.bones as object), tail: [0, 0, 0], wing: [0, 0, 0] } }),
+      /"bones" names 2 bone\(s\) the rig lacks: "tail", "wing"/,
+    ],
     ['two angles', (f) => ({ ...f, bones: { arm: [1, 2] } }), /"bones"\["arm"\] has 2 values, expected 3/],
     ['angles not an array', (f) => ({ ...f, bones: { arm: 5 } }), /"bones"\["arm"\] is 5, not an array/],
-    ['a string angle', (f) => ({ ...f, bones: { arm: [1, '2', 3] } }), /"bones"\["arm"\]\[1\] is "2", not a finite number/],
+    [
+      'a string angle',
+      (f) => ({ ...f, bones: { arm: [1, '2', 3] } }),
+      /"bones"\["arm"\]\[1\] is "2", not a finite number/,
+    ],
     ['a null angle', (f) => ({ ...f, bones: { hand: [1, 2, null] } }), /"bones"\["hand"\]\[2\] is null/],
-    ['an infinite angle', (f) => JSON.stringify(f).replace('"root":[1,2,3]', '"root":[1,1e999,3]'), /"bones"\["root"\]\[1\] is Infinity/],
+    [
+      'an infinite angle',
+      (f) => JSON.stringify(f).replace('"root":[1,2,3]', '"root":[1,1e999,3]'),
+      /"bones"\["root"\]\[1\] is Infinity/,
+    ],
     ['no effectors', (f) => (delete f.effectors, f), /"effectors" is undefined/],
     ['effector not an object', (f) => ({ ...f, effectors: ['hand'] }), /"effectors"\[0\] is "hand", not an object/],
-    ['effector without bone', (f) => ({ ...f, effectors: [{ target: [0, 0, 0] }] }), /"effectors"\[0\]\.bone is undefined/],
-    ['effector of an unknown bone', (f) => ({ ...f, effectors: [{ bone: 'tail', target: [0, 0, 0] }] }), /"effectors"\[0\]\.bone "tail" is no bone/],
-    ['effector twice', (f) => ({ ...f, effectors: [{ bone: 'arm', target: [0, 0, 0] }, { bone: 'arm', target: [0, 0, 0] }] }), /"effectors"\[1\]\.bone "arm" is listed twice/],
-    ['short target', (f) => ({ ...f, effectors: [{ bone: 'arm', target: [0, 0] }] }), /"effectors"\[0\]\.target has 2 values, expected 3/],
-    ['target far away', (f) => ({ ...f, effectors: [{ bone: 'arm', target: [0, 2e9, 0] }] }), /"effectors"\[0\]\.target\[1\] = 2000000000 lies beyond/],
-    ['bad target number', (f) => ({ ...f, effectors: [{ bone: 'arm', target: [0, true, 0] }] }), /"effectors"\[0\]\.target\[1\] is true/],
-    ['orientation of 3', (f) => ({ ...f, effectors: [{ bone: 'arm', target: [0, 0, 0], orientation: [0, 0, 1] }] }), /"effectors"\[0\]\.orientation has 3 values, expected 4/],
-    ['orientation not unit', (f) => ({ ...f, effectors: [{ bone: 'arm', target: [0, 0, 0], orientation: [0, 0, 0, 2] }] }), /"effectors"\[0\]\.orientation has length 2, not a unit quaternion/],
-    ['too many effectors', (f) => ({ ...f, effectors: Array.from({ length: 65 }, () => ({ bone: 'arm', target: [0, 0, 0] })) }), /"effectors": 65 end effectors; at most 64/],
+    [
+      'effector without bone',
+      (f) => ({ ...f, effectors: [{ target: [0, 0, 0] }] }),
+      /"effectors"\[0\]\.bone is undefined/,
+    ],
+    [
+      'effector of an unknown bone',
+      (f) => ({ ...f, effectors: [{ bone: 'tail', target: [0, 0, 0] }] }),
+      /"effectors"\[0\]\.bone "tail" is no bone/,
+    ],
+    [
+      'effector twice',
+      (f) => ({
+        ...f,
+        effectors: [
+          { bone: 'arm', target: [0, 0, 0] },
+          { bone: 'arm', target: [0, 0, 0] },
+        ],
+      }),
+      /"effectors"\[1\]\.bone "arm" is listed twice/,
+    ],
+    [
+      'short target',
+      (f) => ({ ...f, effectors: [{ bone: 'arm', target: [0, 0] }] }),
+      /"effectors"\[0\]\.target has 2 values, expected 3/,
+    ],
+    [
+      'target far away',
+      (f) => ({ ...f, effectors: [{ bone: 'arm', target: [0, 2e9, 0] }] }),
+      /"effectors"\[0\]\.target\[1\] = 2000000000 lies beyond/,
+    ],
+    [
+      'bad target number',
+      (f) => ({ ...f, effectors: [{ bone: 'arm', target: [0, true, 0] }] }),
+      /"effectors"\[0\]\.target\[1\] is true/,
+    ],
+    [
+      'orientation of 3',
+      (f) => ({ ...f, effectors: [{ bone: 'arm', target: [0, 0, 0], orientation: [0, 0, 1] }] }),
+      /"effectors"\[0\]\.orientation has 3 values, expected 4/,
+    ],
+    [
+      'orientation not unit',
+      (f) => ({ ...f, effectors: [{ bone: 'arm', target: [0, 0, 0], orientation: [0, 0, 0, 2] }] }),
+      /"effectors"\[0\]\.orientation has length 2, not a unit quaternion/,
+    ],
+    [
+      'too many effectors',
+      (f) => ({ ...f, effectors: Array.from({ length: 65 }, () => ({ bone: 'arm', target: [0, 0, 0] })) }),
+      /"effectors": 65 end effectors; at most 64/,
+    ],
     ['too deep', () => `${'['.repeat(100)}${']'.repeat(100)}`, /nests deeper/],
   ];
   it.each(broken)('refuses %s, naming the field', (_, make, message) => {
@@ -192,11 +267,26 @@ describe('poseToJson / poseFromJson', () => {
   });
 
   it('refuses a bone name the rig gives two bones, which the file keys by index', () => {
-    const twin = { names: ['a', 'a', 'b'], lower: new Float64Array(9).fill(-180), upper: new Float64Array(9).fill(180) };
+    const twin = {
+      names: ['a', 'a', 'b'],
+      lower: new Float64Array(9).fill(-180),
+      upper: new Float64Array(9).fill(180),
+    };
     const file = { format: 'ik-pose', version: 1, bones: { a: [0, 0, 0], b: [0, 0, 0] }, effectors: [] };
-    expect(() => poseFromJson(text(file), twin)).toThrow(/"bones" names "a", which is not the key of one bone: .* is keyed "#index"$/);
-    expect(() => poseFromJson(text({ ...file, bones: { b: [1, 1, 1] }, effectors: [{ bone: 'a', target: [0, 0, 0] }] }), twin)).toThrow(/"effectors"\[0\]\.bone "a", which is not the key of one bone/);
-    const read = poseFromJson(text({ ...file, bones: { '#0': [1, 2, 3], '#1': [4, 5, 6], b: [7, 8, 9] }, effectors: [{ bone: '#1', target: [0, 0, 0] }] }), twin);
+    expect(() => poseFromJson(text(file), twin)).toThrow(
+      /"bones" names "a", which is not the key of one bone: .* is keyed "#index"$/,
+    );
+    expect(() =>
+      poseFromJson(text({ ...file, bones: { b: [1, 1, 1] }, effectors: [{ bone: 'a', target: [0, 0, 0] }] }), twin),
+    ).toThrow(/"effectors"\[0\]\.bone "a", which is not the key of one bone/);
+    const read = poseFromJson(
+      text({
+        ...file,
+        bones: { '#0': [1, 2, 3], '#1': [4, 5, 6], b: [7, 8, 9] },
+        effectors: [{ bone: '#1', target: [0, 0, 0] }],
+      }),
+      twin,
+    );
     expect(Array.from(read.angles)).toEqual([1, 2, 3, 4, 5, 6, 7, 8, 9]);
     expect(read.effectors).toEqual([1]);
   });
@@ -206,7 +296,13 @@ describe('poseToJson / poseFromJson', () => {
     const names = ['', 'arm', '', 'arm', '#7', 'hand'];
     const limits = { lower: new Float64Array(18).fill(-90), upper: new Float64Array(18).fill(90) };
     // -0 too: JSON.stringify would write it as 0.
-    const pose: PoseInput = { rigName: 'r', boneNames: names, angles: Array.from({ length: 18 }, (_, k) => (k ? k : -0)), effectors: [2, 5], targets: [1, -0, 3, 4, 5, 6] };
+    const pose: PoseInput = {
+      rigName: 'r',
+      boneNames: names,
+      angles: Array.from({ length: 18 }, (_, k) => (k ? k : -0)),
+      effectors: [2, 5],
+      targets: [1, -0, 3, 4, 5, 6],
+    };
     const json = poseToJson(pose);
     const doc = JSON.parse(json);
     expect(Object.keys(doc.bones)).toEqual(['#0', '#1', '#2', '#3', '#4', 'hand']);
@@ -223,7 +319,13 @@ describe('poseToJson / poseFromJson', () => {
     expect(spec.names.every((n) => n === '')).toBe(true);
     const angles = randomAngles(spec, seeded(5));
     const effectors = Array.from(spec.effectors);
-    const json = poseToJson({ rigName: 'knight', boneNames: spec.names, angles, effectors, targets: new Float64Array(3 * effectors.length).fill(0.5) });
+    const json = poseToJson({
+      rigName: 'knight',
+      boneNames: spec.names,
+      angles,
+      effectors,
+      targets: new Float64Array(3 * effectors.length).fill(0.5),
+    });
     const read = poseFromJson(json, spec);
     expect(read.warnings).toEqual([]);
     expect(sameBits(read.angles, angles)).toBe(true);
@@ -231,22 +333,38 @@ describe('poseToJson / poseFromJson', () => {
   });
 
   it('clamps every angle into the limits, also those of bones the file lacks', async () => {
-    const character = (await loadRig(new Uint8Array(readFileSync(resolve(modelsDir, 'character.glb'))), 'character.glb')).spec;
+    const character = (
+      await loadRig(new Uint8Array(readFileSync(resolve(modelsDir, 'character.glb'))), 'character.glb')
+    ).spec;
     const { lower, upper } = character;
     const outside = Array.from(lower, (lo, k) => lo > 0 || upper[k] < 0).filter(Boolean).length;
     expect(outside, 'angles whose range leaves out 0').toBeGreaterThan(0);
     const read = poseFromJson(text({ format: 'ik-pose', version: 1, bones: {}, effectors: [] }), character);
-    read.angles.forEach((v, k) => expect(v >= lower[k] && v <= upper[k], `angle ${k} = ${v} in [${lower[k]}, ${upper[k]}]`).toBe(true));
+    read.angles.forEach((v, k) =>
+      expect(v >= lower[k] && v <= upper[k], `angle ${k} = ${v} in [${lower[k]}, ${upper[k]}]`).toBe(true),
+    );
     expect(Array.from(read.angles).filter((v) => v !== 0)).toHaveLength(outside);
   });
 
   it('poseToJson refuses inconsistent input, naming the field', () => {
-    const ok: PoseInput = { rigName: 'r', boneNames: ['a', 'b'], angles: [1, 2, 3, 4, 5, 6], effectors: [1], targets: [1, 2, 3] };
+    const ok: PoseInput = {
+      rigName: 'r',
+      boneNames: ['a', 'b'],
+      angles: [1, 2, 3, 4, 5, 6],
+      effectors: [1],
+      targets: [1, 2, 3],
+    };
     expect(() => poseToJson(ok)).not.toThrow();
     expect(() => poseToJson({ ...ok, angles: [1, 2, 3] })).toThrow(/angles has 3 values for 2 bones/);
-    expect(() => poseToJson({ ...ok, angles: [1, 2, 3, 4, NaN, 6] })).toThrow(/^poseToJson: "bones"\["b"\]\[1\] is NaN, not a finite number$/);
-    expect(() => poseToJson({ ...ok, effectors: [2] })).toThrow(/^poseToJson: "effectors"\[0\] is bone 2, not a bone index in 0\.\.1$/);
-    expect(() => poseToJson({ ...ok, effectors: [1, 1], targets: [1, 2, 3, 1, 2, 3] })).toThrow(/^poseToJson: "effectors"\[1\]\.bone "b" is listed twice$/);
+    expect(() => poseToJson({ ...ok, angles: [1, 2, 3, 4, NaN, 6] })).toThrow(
+      /^poseToJson: "bones"\["b"\]\[1\] is NaN, not a finite number$/,
+    );
+    expect(() => poseToJson({ ...ok, effectors: [2] })).toThrow(
+      /^poseToJson: "effectors"\[0\] is bone 2, not a bone index in 0\.\.1$/,
+    );
+    expect(() => poseToJson({ ...ok, effectors: [1, 1], targets: [1, 2, 3, 1, 2, 3] })).toThrow(
+      /^poseToJson: "effectors"\[1\]\.bone "b" is listed twice$/,
+    );
     expect(() => poseToJson({ ...ok, targets: [1, 2] })).toThrow(/targets has 2 values for 1 effectors/);
     expect(() => poseToJson({ ...ok, orientations: [] })).toThrow(/orientations has 0 entries for 1 effectors/);
   });
@@ -262,7 +380,14 @@ describe('poseToJson / poseFromJson', () => {
   it.each(unreadable)('poseToJson refuses %s as poseFromJson does', (_, change) => {
     const names = Array.from({ length: 70 }, (_, k) => `bone ${k}`);
     const rig = { names, lower: new Float64Array(210).fill(-180), upper: new Float64Array(210).fill(180) };
-    const pose: PoseInput = { rigName: 'r', boneNames: names, angles: new Float64Array(210), effectors: [3], targets: [1, 2, 3], ...change };
+    const pose: PoseInput = {
+      rigName: 'r',
+      boneNames: names,
+      angles: new Float64Array(210),
+      effectors: [3],
+      targets: [1, 2, 3],
+      ...change,
+    };
     const written = (() => {
       try {
         poseToJson(pose);
@@ -293,7 +418,9 @@ describe('poseToJson / poseFromJson', () => {
     const { readPoseFile } = await import('../../web/src/page/pose_files.js');
     let read = false;
     const big = { name: 'big.json', size: 200 * 1024 * 1024, text: async () => ((read = true), '') } as unknown as File;
-    await expect(readPoseFile(big, {} as never)).rejects.toThrow(/^pose file big\.json: 200\.0 MB, more than a pose file holds \(at most 8 MB\)$/);
+    await expect(readPoseFile(big, {} as never)).rejects.toThrow(
+      /^pose file big\.json: 200\.0 MB, more than a pose file holds \(at most 8 MB\)$/,
+    );
     expect(read).toBe(false);
   });
 });

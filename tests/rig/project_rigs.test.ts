@@ -30,12 +30,15 @@ describe('project rig names', () => {
     const { rig } = readUrlState({ search: '?rig=constructor' } as Location);
     expect(rig).toBe('constructor');
     expect(PROJECT_RIGS[rig!]).toBeUndefined(); // the page then loads its default rig
-    await expect(loadProjectRig('constructor', 'http://example.test/')).rejects.toThrow('unknown project rig "constructor"');
+    await expect(loadProjectRig('constructor', 'http://example.test/')).rejects.toThrow(
+      'unknown project rig "constructor"',
+    );
     expect(fetch).not.toHaveBeenCalled();
   });
 
   it('gives an A7 rig named like a prototype key the usual tolerances', () => {
-    for (const key of PROTOTYPE_KEYS) expect(defaultTolerances(key, true, 1), key).toEqual({ gradientTolerance: 1e-4, errorTolerance: 2e-4 });
+    for (const key of PROTOTYPE_KEYS)
+      expect(defaultTolerances(key, true, 1), key).toEqual({ gradientTolerance: 1e-4, errorTolerance: 2e-4 });
   });
 });
 

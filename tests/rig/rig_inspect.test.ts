@@ -46,7 +46,9 @@ function expectOneLineError(r: Outcome, code: number, pattern: RegExp): void {
   expect(r.code).toBe(code);
 }
 
-const models = readdirSync(modelsDir).filter((f) => f.endsWith('.glb')).map((f) => f.slice(0, -'.glb'.length));
+const models = readdirSync(modelsDir)
+  .filter((f) => f.endsWith('.glb'))
+  .map((f) => f.slice(0, -'.glb'.length));
 
 describe('rig inspector on the project models', () => {
   it('has an expectation for every model and none for a model that is gone', () => {
@@ -105,7 +107,7 @@ describe('rig inspector output', () => {
     const file = join(dir, 'odd.glb');
     writeFileSync(file, packGlb(json));
     const r = await inspect(file);
-    expect(r.stdout).not.toMatch(/[\u001b]/);
+    expect(r.stdout).not.toContain('\u001b');
     expect(r.stdout).toContain('end effectors (1): evil\\u001b[2Jname\\nnext');
   });
 });
@@ -123,7 +125,14 @@ describe('rig inspector errors: one line on stderr, non-zero exit', () => {
   it('a bad file, as the real command: exit code 1, one line naming the file', () => {
     const bad = join(dir, 'bad.glb');
     writeFileSync(bad, new Uint8Array([0x67, 0x6c, 0x54, 0x46, 2, 0, 0, 0]));
-    const r = spawnSync(process.execPath, ['--import', 'tsx', 'scripts/rig.ts', bad, '--json'], { cwd: root, encoding: 'utf8' });
-    expectOneLineError({ code: r.status ?? -1, stdout: r.stdout, stderr: r.stderr }, 1, /bad\.glb: truncated GLB: 8 bytes/);
+    const r = spawnSync(process.execPath, ['--import', 'tsx', 'scripts/rig.ts', bad, '--json'], {
+      cwd: root,
+      encoding: 'utf8',
+    });
+    expectOneLineError(
+      { code: r.status ?? -1, stdout: r.stdout, stderr: r.stderr },
+      1,
+      /bad\.glb: truncated GLB: 8 bytes/,
+    );
   });
 });

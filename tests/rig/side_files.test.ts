@@ -66,7 +66,9 @@ describe('side buffers stay inside the model folder', () => {
   it('refuses a device file without reading it (no hang, no memory)', async () => {
     const link = join(model, 'zero.bin');
     symlinkSync('/dev/zero', link);
-    await expect(loadRigFromPath(gltfWithUri('zero', '../../../../../../dev/zero'))).rejects.toThrow(/outside the model's folder/);
+    await expect(loadRigFromPath(gltfWithUri('zero', '../../../../../../dev/zero'))).rejects.toThrow(
+      /outside the model's folder/,
+    );
     // Through a link inside the folder, the real path is outside too.
     await expect(loadRigFromPath(gltfWithUri('zero-link', 'zero.bin'))).rejects.toThrow(/outside the model's folder/);
   });
@@ -80,6 +82,8 @@ describe('side buffers stay inside the model folder', () => {
     const fifo = join(model, 'pipe.json');
     execFileSync('mkfifo', [fifo]);
     await expect(loadRigFromPath(fifo)).rejects.toThrow(/pipe\.json: cannot read the file: not a regular file/);
-    await expect(loadRigFromPath(gltfWithUri('fifo', 'pipe.json'))).rejects.toThrow(/buffer 0: cannot read the side file "pipe\.json" \(missing buffer\): not a regular file/);
+    await expect(loadRigFromPath(gltfWithUri('fifo', 'pipe.json'))).rejects.toThrow(
+      /buffer 0: cannot read the side file "pipe\.json" \(missing buffer\): not a regular file/,
+    );
   });
 });

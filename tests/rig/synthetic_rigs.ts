@@ -11,7 +11,8 @@ export async function loadError(bytes: Uint8Array | string, file: string): Promi
     (e: unknown) => e as Error,
   );
   if (!(error instanceof RigFormatError)) throw error;
-  if (!error.message.startsWith(`${file}: `)) throw new Error(`the message does not start with the file name: ${error.message}`);
+  if (!error.message.startsWith(`${file}: `))
+    throw new Error(`the message does not start with the file name: ${error.message}`);
   return error.message;
 }
 
@@ -60,11 +61,18 @@ function styledName(style: NamingStyle, word: string, side: 'L' | 'R' | ''): str
 /** The role -> bone name map of a humanoid named in `style` (hips, spine, chest, neck, head and both sides' limbs). */
 export function styledRoles(style: NamingStyle): Partial<Record<HumanoidRole, string>> {
   const roles: Partial<Record<HumanoidRole, string>> = {
-    hips: styledName(style, 'Hips', ''), spine: styledName(style, 'Spine', ''), chest: styledName(style, style === 'mixamo' ? 'Spine1' : 'Chest', ''),
-    neck: styledName(style, 'Neck', ''), head: styledName(style, 'Head', ''),
+    hips: styledName(style, 'Hips', ''),
+    spine: styledName(style, 'Spine', ''),
+    chest: styledName(style, style === 'mixamo' ? 'Spine1' : 'Chest', ''),
+    neck: styledName(style, 'Neck', ''),
+    head: styledName(style, 'Head', ''),
   };
-  for (const [side, L] of [['left', 'L'], ['right', 'R']] as const)
-    for (const limb of STYLED_LIMBS) roles[`${side}${limb}` as HumanoidRole] = styledName(style, STYLE_WORDS[style][limb] ?? limb, L);
+  for (const [side, L] of [
+    ['left', 'L'],
+    ['right', 'R'],
+  ] as const)
+    for (const limb of STYLED_LIMBS)
+      roles[`${side}${limb}` as HumanoidRole] = styledName(style, STYLE_WORDS[style][limb] ?? limb, L);
   return roles;
 }
 
@@ -108,7 +116,10 @@ export function robotRig(options: RobotOptions): SkeletonJoint[] {
     { name: 'Neck', parent: 'Torso', head: [0, 1.55, 0] },
     { name: 'Head', parent: 'Neck', head: [0, 1.65, 0] },
   ];
-  for (const [L, x] of [['L', 1], ['R', -1]] as const) {
+  for (const [L, x] of [
+    ['L', 1],
+    ['R', -1],
+  ] as const) {
     const at = (px: number, y: number, z = 0): [number, number, number] => [x * px, y, z];
     joints.push(
       { name: `Shoulder${L}`, parent: 'Torso', head: at(0.1, 1.5) },
@@ -126,8 +137,16 @@ export function robotRig(options: RobotOptions): SkeletonJoint[] {
     if (feet === 'legs') joints.push({ name: `Foot${L}`, parent: `LowerLeg${L}`, head: at(0.12, 0.1) });
     else if (legEnds) joints.push({ name: `LowerLeg${L}_end`, parent: `LowerLeg${L}`, head: at(0.12, 0.1) });
   }
-  if (feet === 'controls') joints.push({ name: 'FootL', parent: 'Bone', head: [0.12, 0.05, 0] }, { name: 'FootR', parent: 'Bone', head: [-0.12, 0.05, 0] });
-  if (poles) joints.push({ name: 'PoleTargetL', parent: 'Bone', head: [0.12, 0.55, 0.5] }, { name: 'PoleTargetR', parent: 'Bone', head: [-0.12, 0.55, 0.5] });
+  if (feet === 'controls')
+    joints.push(
+      { name: 'FootL', parent: 'Bone', head: [0.12, 0.05, 0] },
+      { name: 'FootR', parent: 'Bone', head: [-0.12, 0.05, 0] },
+    );
+  if (poles)
+    joints.push(
+      { name: 'PoleTargetL', parent: 'Bone', head: [0.12, 0.55, 0.5] },
+      { name: 'PoleTargetR', parent: 'Bone', head: [-0.12, 0.55, 0.5] },
+    );
   return joints;
 }
 
@@ -146,7 +165,8 @@ export function turnedGlb(bytes: Uint8Array, turns: Record<string, NodeTurn>): U
   for (const [name, { axis, deg }] of Object.entries(turns)) {
     const node = json.nodes[nodeIndex(json, name)];
     if (node.matrix !== undefined) throw new Error(`node ${name} is given as a matrix`);
-    const n = Math.hypot(...axis), h = (deg * Math.PI) / 360;
+    const n = Math.hypot(...axis),
+      h = (deg * Math.PI) / 360;
     const t = [...axis.map((v) => (v / n) * Math.sin(h)), Math.cos(h)];
     const q = (node.rotation as number[] | undefined) ?? [0, 0, 0, 1];
     // q * t (x, y, z, w)

@@ -27,7 +27,11 @@ const keep = disposeAfterAll();
 const CONFIGURATIONS = 1000;
 
 /** The largest position and rotation-entry differences between the rig and the reference over CONFIGURATIONS random configurations. */
-async function fkAgreement(text: string, file: string, chain: string): Promise<{ position: number; rotation: number; size: number; dof: number }> {
+async function fkAgreement(
+  text: string,
+  file: string,
+  chain: string,
+): Promise<{ position: number; rotation: number; size: number; dof: number }> {
   const loaded = await loadRig(new TextEncoder().encode(text), file, undefined, { chain });
   const ref = new ReferenceChain(text, chain);
   const moving = ref.moving;
@@ -36,7 +40,8 @@ async function fkAgreement(text: string, file: string, chain: string): Promise<{
   const rig = keep(new IkRig(ik, loaded.spec));
   const rand = seeded(31);
   const angles = new Float64Array(rig.numAngles);
-  let position = 0, rotation = 0;
+  let position = 0,
+    rotation = 0;
   for (let s = 0; s < CONFIGURATIONS; s++) {
     const q = moving.map((j) => j.lower + (j.upper - j.lower) * rand());
     q.forEach((v, k) => (angles[3 * k] = (v * 180) / Math.PI));

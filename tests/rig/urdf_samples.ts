@@ -17,14 +17,20 @@ export interface SampleJoint {
 }
 
 /** The URDF text of a robot with these joints; its links are the joints' ends (and `links`), each with a package:// mesh when `meshes`. */
-export function urdfText(joints: readonly SampleJoint[], options: { links?: string[]; meshes?: boolean; name?: string } = {}): string {
+export function urdfText(
+  joints: readonly SampleJoint[],
+  options: { links?: string[]; meshes?: boolean; name?: string } = {},
+): string {
   const links = [...new Set([...(options.links ?? []), ...joints.flatMap((j) => [j.parent, j.child])])];
   const mesh = (l: string): string =>
     options.meshes ? `<visual><geometry><mesh filename="package://sample/meshes/${l}.dae"/></geometry></visual>` : '';
   const joint = (j: SampleJoint): string => {
     const origin = j.xyz || j.rpy ? `<origin xyz="${j.xyz ?? '0 0 0'}" rpy="${j.rpy ?? '0 0 0'}"/>` : '';
     const axis = j.axis ? `<axis xyz="${j.axis}"/>` : '';
-    const limit = j.type === 'revolute' || j.lower !== undefined ? `<limit lower="${j.lower ?? -1}" upper="${j.upper ?? 1}" effort="1" velocity="1"/>` : '';
+    const limit =
+      j.type === 'revolute' || j.lower !== undefined
+        ? `<limit lower="${j.lower ?? -1}" upper="${j.upper ?? 1}" effort="1" velocity="1"/>`
+        : '';
     return `  <joint name="${j.name}" type="${j.type}">${origin}<parent link="${j.parent}"/><child link="${j.child}"/>${axis}${limit}${j.extra ?? ''}</joint>`;
   };
   return [
@@ -50,7 +56,17 @@ export const arm2: SampleRobot = {
   dof: 2,
   joints: [
     { name: 'j1', type: 'revolute', parent: 'base', child: 'l1', axis: '0 0 1', xyz: '0 0 0.1', lower: -2, upper: 2.5 },
-    { name: 'j2', type: 'revolute', parent: 'l1', child: 'l2', axis: '0 1 0', xyz: '0 0 0.4', rpy: '0.1 0 0', lower: -1.5, upper: 1 },
+    {
+      name: 'j2',
+      type: 'revolute',
+      parent: 'l1',
+      child: 'l2',
+      axis: '0 1 0',
+      xyz: '0 0 0.4',
+      rpy: '0.1 0 0',
+      lower: -1.5,
+      upper: 1,
+    },
     { name: 'tool_joint', type: 'fixed', parent: 'l2', child: 'tool', xyz: '0.3 0.05 -0.02', rpy: '0.3 -0.2 0.1' },
   ],
 };
@@ -64,8 +80,27 @@ export const arm4: SampleRobot = {
     { name: 'j1', type: 'revolute', parent: 'base', child: 'l1', axis: '0 0 1', xyz: '0 0 0.1', lower: -3, upper: 3 },
     { name: 'j2', type: 'continuous', parent: 'l1', child: 'l2', axis: '0 1 1', xyz: '0.05 0 0.3' },
     { name: 'mid', type: 'fixed', parent: 'l2', child: 'l2b', xyz: '0.2 0 0', rpy: '0 1.5707963 0' },
-    { name: 'j3', type: 'revolute', parent: 'l2b', child: 'l3', axis: '-1 0 0', xyz: '0 0.1 0.25', lower: -2, upper: 0.5 },
-    { name: 'j4', type: 'revolute', parent: 'l3', child: 'l4', axis: '0.3 -0.4 0.5', xyz: '0.1 -0.2 0.15', rpy: '2.5 -1.2 0.7', lower: -0.7, upper: 2.9 },
+    {
+      name: 'j3',
+      type: 'revolute',
+      parent: 'l2b',
+      child: 'l3',
+      axis: '-1 0 0',
+      xyz: '0 0.1 0.25',
+      lower: -2,
+      upper: 0.5,
+    },
+    {
+      name: 'j4',
+      type: 'revolute',
+      parent: 'l3',
+      child: 'l4',
+      axis: '0.3 -0.4 0.5',
+      xyz: '0.1 -0.2 0.15',
+      rpy: '2.5 -1.2 0.7',
+      lower: -0.7,
+      upper: 2.9,
+    },
   ],
 };
 

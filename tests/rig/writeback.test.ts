@@ -69,13 +69,17 @@ function checkPose(c: Case, angles: Float64Array, what: string): void {
   gltf.scene.updateMatrixWorld(true);
 
   // Bone world matrices: T_i * restWorld_i.
-  const expected = new Matrix4(), T = new Matrix4(), W = new Matrix4();
+  const expected = new Matrix4(),
+    T = new Matrix4(),
+    W = new Matrix4();
   bones.forEach((bone, i) => {
     T.set(...(Array.from(poses.subarray(16 * i, 16 * i + 16)) as Parameters<Matrix4['set']>));
     W.set(...(Array.from(info.restWorld.subarray(16 * i, 16 * i + 16)) as Parameters<Matrix4['set']>));
     expected.multiplyMatrices(T, W);
     const scale = Math.max(1, ...W.elements.map(Math.abs));
-    expect(maxAbsDiff(bone.matrixWorld.elements, expected.elements), `${what}: bone ${i} world`).toBeLessThan(1e-9 * scale * Math.max(1, size));
+    expect(maxAbsDiff(bone.matrixWorld.elements, expected.elements), `${what}: bone ${i} world`).toBeLessThan(
+      1e-9 * scale * Math.max(1, size),
+    );
   });
 
   // Tips: forward kinematics through WebAssembly == three.js bone tips.

@@ -19,9 +19,14 @@ const restPoses = (spec: RigSpec): Float64Array => {
 
 describe('bone glyphs', () => {
   it.each([arm2, arm4])('join each URDF joint to the next one ($label)', async (robot) => {
-    const rig = await loadRig(new TextEncoder().encode(urdfText(robot.joints)), 'arm.urdf', undefined, { chain: robot.chain });
-    const spec = rig.spec, view = new RigView(spec, restPoses(spec));
-    const end = new Vector3(), head = new Vector3(), tip = new Vector3();
+    const rig = await loadRig(new TextEncoder().encode(urdfText(robot.joints)), 'arm.urdf', undefined, {
+      chain: robot.chain,
+    });
+    const spec = rig.spec,
+      view = new RigView(spec, restPoses(spec));
+    const end = new Vector3(),
+      head = new Vector3(),
+      tip = new Vector3();
     let offAxis = 0;
     for (let i = 0; i + 1 < spec.parents.length; i++) {
       expect(spec.parents[i + 1]).toBe(i); // a serial chain
@@ -37,9 +42,45 @@ describe('bone glyphs', () => {
   it('keep a bone whose child sits at its tip along its x axis', () => {
     const spec = {
       parents: Int32Array.of(-1, 0),
-      rest: Float64Array.of(1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 1, 0, 0, 2, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1),
+      rest: Float64Array.of(
+        1,
+        0,
+        0,
+        0,
+        0,
+        1,
+        0,
+        0,
+        0,
+        0,
+        1,
+        0,
+        0,
+        0,
+        0,
+        1,
+        1,
+        0,
+        0,
+        2,
+        0,
+        1,
+        0,
+        0,
+        0,
+        0,
+        1,
+        0,
+        0,
+        0,
+        0,
+        1,
+      ),
       lengths: Float64Array.of(2, 1),
-      lower: new Float64Array(6), upper: new Float64Array(6), names: ['a', 'b'], effectors: Int32Array.of(1),
+      lower: new Float64Array(6),
+      upper: new Float64Array(6),
+      names: ['a', 'b'],
+      effectors: Int32Array.of(1),
     } as unknown as RigSpec;
     const view = new RigView(spec, restPoses(spec));
     expect(view.glyphEnd(0, new Vector3()).toArray()).toEqual([2, 0, 0]);

@@ -26,7 +26,10 @@ try {
   // The test probes (window.ikPage, window.ikTrack) are a chunk of their own, fetched only under
   // automation (navigator.webdriver: the browser tests) or with ?probe in the URL.
   if (navigator.webdriver || new URLSearchParams(location.search).has('probe')) {
-    const [{ makeProbe }, { makeTrackProbe }] = await Promise.all([import('./page/probe.js'), import('./page/track_probe.js')]);
+    const [{ makeProbe }, { makeTrackProbe }] = await Promise.all([
+      import('./page/probe.js'),
+      import('./page/track_probe.js'),
+    ]);
     window.ikPage = makeProbe(app);
     window.ikTrack = makeTrackProbe(app);
   }

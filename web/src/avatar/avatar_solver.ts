@@ -54,8 +54,6 @@ const HIPS = 5;
  */
 const CROUCH_SHARE = 0.03;
 
-
-
 /**
  * Per-frame solve: at most this many iterations (the page's cap), so that a stream of inputs gives
  * the same poses on any machine; the time budget only guards against a runaway (a solve that hits
@@ -91,7 +89,6 @@ const FRAME_REJECTIONS = 10;
  * avatar whose hands only swayed.
  */
 const MISSED_FRAMES = 5;
-
 
 export class AvatarSolver {
   /** The whole rig, floating (its hips move), its end effectors `bones`. */
@@ -149,7 +146,19 @@ export class AvatarSolver {
       throw e;
     }
     const drag = dragTolerances(h);
-    this.settings = { ...drag, maxIterations: FRAME_ITERATIONS, timeBudgetMs: FRAME_BUDGET_MS, restarts: 0, paperMode: false, strictPriority: true, lmInitialMu: FRAME_MU, minIterations: FRAME_MIN_ITERATIONS, stepsBeforeBudget: FRAME_STEPS_BEFORE_BUDGET, lmMaxRejections: FRAME_REJECTIONS, rootUnit: floatingRootUnit(h) };
+    this.settings = {
+      ...drag,
+      maxIterations: FRAME_ITERATIONS,
+      timeBudgetMs: FRAME_BUDGET_MS,
+      restarts: 0,
+      paperMode: false,
+      strictPriority: true,
+      lmInitialMu: FRAME_MU,
+      minIterations: FRAME_MIN_ITERATIONS,
+      stepsBeforeBudget: FRAME_STEPS_BEFORE_BUDGET,
+      lmMaxRejections: FRAME_REJECTIONS,
+      rootUnit: floatingRootUnit(h),
+    };
     const s = this.session;
     // Every effector holds its frame: the tracked ones the tracker's, the feet where they stand;
     // the hips have no goal until they are tracked.
@@ -166,7 +175,10 @@ export class AvatarSolver {
     this.poleBones = this.limbs.map((l) => l.bone);
     const tips = s.tips();
     this.standingHeadY = tips[1];
-    const pose = (k: number) => ({ position: Array.from(tips.subarray(3 * k, 3 * k + 3)), orientation: Array.from(rotations.subarray(4 * k, 4 * k + 4)) });
+    const pose = (k: number) => ({
+      position: Array.from(tips.subarray(3 * k, 3 * k + 3)),
+      orientation: Array.from(rotations.subarray(4 * k, 4 * k + 4)),
+    });
     this.restHips = tips.slice(3 * HIPS, 3 * HIPS + 3);
     this.steps = new FootSteps([pose(3), pose(4)], this.restHips, pose(0), h);
   }
@@ -247,7 +259,9 @@ export class AvatarSolver {
   private liftHeels(lifted: boolean): void {
     const goals = this.session.goals;
     this.heelsLifted = lifted;
-    for (const k of [3, 4]) if ((goals.orientation[k] === 1) === lifted) this.session.setOrientationGoal(k, !lifted, goals.rotations.subarray(4 * k, 4 * k + 4));
+    for (const k of [3, 4])
+      if ((goals.orientation[k] === 1) === lifted)
+        this.session.setOrientationGoal(k, !lifted, goals.rotations.subarray(4 * k, 4 * k + 4));
   }
 
   /** Whether a knee bends less than KNEES_STRAIGHT_DEG (its a1, degrees). */
@@ -258,8 +272,10 @@ export class AvatarSolver {
 
   /** The knees' poles where they bend now (one leg length out the way each knee bends): they follow the body. */
   private placePoles(): void {
-    const goals = this.session.goals, poses = this.session.poses();
-    if (goals.poleBones.length !== this.poleBones.length) goals.setPoles(this.poleBones, new Float64Array(3 * this.poleBones.length));
+    const goals = this.session.goals,
+      poses = this.session.poses();
+    if (goals.poleBones.length !== this.poleBones.length)
+      goals.setPoles(this.poleBones, new Float64Array(3 * this.poleBones.length));
     this.limbs.forEach((limb, j) => goals.polePoints.set(initialPole(this.session.spec, poses, limb), 3 * j));
   }
 

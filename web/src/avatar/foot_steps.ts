@@ -54,7 +54,12 @@ export class FootSteps {
    * Feet standing at `feet` (left, right: the rest pose's tips and frames) under hips whose tip is
    * at `hips`, with the head's tip and frame `head` at rest; `height`: the avatar's height (rig units).
    */
-  constructor(feet: FootPose[], hips: ArrayLike<number>, head: FootPose, private readonly height: number) {
+  constructor(
+    feet: FootPose[],
+    hips: ArrayLike<number>,
+    head: FootPose,
+    private readonly height: number,
+  ) {
     this.restFeet = feet.map(copyPose);
     this.feet = feet.map((f, k) => this.standing(f, k));
     this.restOffsets = feet.map((f) => [f.position[0] - hips[0], f.position[2] - hips[2]]);
@@ -91,18 +96,27 @@ export class FootSteps {
    * the stance follows the tracked head, not the hips' drift. A planted foot's target is the pose
    * planted() gives (no new object while the feet stand).
    */
-  update(head: { position: ArrayLike<number>; orientation: ArrayLike<number> }, hips: ArrayLike<number>, missed = false): FootPose[] {
+  update(
+    head: { position: ArrayLike<number>; orientation: ArrayLike<number> },
+    hips: ArrayLike<number>,
+    missed = false,
+  ): FootPose[] {
     const yaw = yawFrom(head.orientation, this.restHead);
     if (this.stepping() < 0) {
       // The foot farther from its place steps, if either is far enough.
-      let worst = -1, worstMiss = missed ? MISSED_SHARE : 1;
+      let worst = -1,
+        worstMiss = missed ? MISSED_SHARE : 1;
       for (let k = 0; k < this.feet.length; k++) {
-        const [x, z] = turnedOnFloor(this.restOffsets[k], yaw), at = this.feet[k].planted.position;
+        const [x, z] = turnedOnFloor(this.restOffsets[k], yaw),
+          at = this.feet[k].planted.position;
         const miss = Math.max(
           Math.hypot(hips[0] + x - at[0], hips[2] + z - at[2]) / (STEP_DISTANCE * this.height),
           Math.abs(angleBetween(yaw, this.feet[k].plantedYaw)) / ((STEP_TURN * Math.PI) / 180),
         );
-        if (miss > worstMiss) (worst = k), (worstMiss = miss);
+        if (miss > worstMiss) {
+          worst = k;
+          worstMiss = miss;
+        }
       }
       if (worst >= 0) {
         const [x, z] = turnedOnFloor(this.restHipsFromHead, yaw);
@@ -121,9 +135,14 @@ export class FootSteps {
     const foot = this.feet[k];
     if (!foot.step) return foot.planted;
     foot.step.frame++;
-    const u = foot.step.frame / STEP_FRAMES, from = foot.planted, to = foot.step.to;
+    const u = foot.step.frame / STEP_FRAMES,
+      from = foot.planted,
+      to = foot.step.to;
     const pose: FootPose = {
-      position: from.position.map((p, i) => p + (to.position[i] - p) * smooth(u) + (i === 1 ? STEP_LIFT * this.height * Math.sin(Math.PI * u) : 0)),
+      position: from.position.map(
+        (p, i) =>
+          p + (to.position[i] - p) * smooth(u) + (i === 1 ? STEP_LIFT * this.height * Math.sin(Math.PI * u) : 0),
+      ),
       orientation: nlerp(from.orientation, to.orientation, smooth(u)),
     };
     if (foot.step.frame >= STEP_FRAMES) this.feet[k] = this.standing(to, k);
@@ -137,7 +156,8 @@ export class FootSteps {
 
   /** Where the stance puts foot k for the head's yaw `yaw` (radians) over the hips' tip `hips`: its rest offset turned with the head. */
   private home(k: number, yaw: number, hips: ArrayLike<number>): FootPose {
-    const [x, z] = turnedOnFloor(this.restOffsets[k], yaw), rest = this.restFeet[k];
+    const [x, z] = turnedOnFloor(this.restOffsets[k], yaw),
+      rest = this.restFeet[k];
     return {
       position: [hips[0] + x, rest.position[1], hips[2] + z],
       orientation: mul(yawQuaternion(yaw), rest.orientation),
@@ -156,16 +176,26 @@ function copyPose(p: FootPose): FootPose {
  */
 function yawFrom(q: ArrayLike<number>, rest: ArrayLike<number>): number {
   // r = q rest^-1 (rest a unit quaternion: its inverse is its conjugate).
-  const x1 = q[0], y1 = q[1], z1 = q[2], w1 = q[3], x2 = -rest[0], y2 = -rest[1], z2 = -rest[2], w2 = rest[3];
-  const x = w1 * x2 + x1 * w2 + y1 * z2 - z1 * y2, y = w1 * y2 - x1 * z2 + y1 * w2 + z1 * x2;
-  const z = w1 * z2 + x1 * y2 - y1 * x2 + z1 * w2, w = w1 * w2 - x1 * x2 - y1 * y2 - z1 * z2;
+  const x1 = q[0],
+    y1 = q[1],
+    z1 = q[2],
+    w1 = q[3],
+    x2 = -rest[0],
+    y2 = -rest[1],
+    z2 = -rest[2],
+    w2 = rest[3];
+  const x = w1 * x2 + x1 * w2 + y1 * z2 - z1 * y2,
+    y = w1 * y2 - x1 * z2 + y1 * w2 + z1 * x2;
+  const z = w1 * z2 + x1 * y2 - y1 * x2 + z1 * w2,
+    w = w1 * w2 - x1 * x2 - y1 * y2 - z1 * z2;
   // r's turn of (0, 0, 1): its x and z.
   return Math.atan2(2 * (x * z + w * y), 1 - 2 * (x * x + y * y));
 }
 
 /** A floor offset [x, z] turned by `yaw` (radians, counter-clockwise seen from above) about the vertical. */
 function turnedOnFloor([x, z]: readonly number[], yaw: number): [number, number] {
-  const c = Math.cos(yaw), s = Math.sin(yaw);
+  const c = Math.cos(yaw),
+    s = Math.sin(yaw);
   return [c * x + s * z, -s * x + c * z];
 }
 

@@ -63,7 +63,8 @@ export function subHumanoid(sub: SubRig, humanoid: HumanoidMap): HumanoidMap {
 export function scatterAngles(sub: SubRig, subAngles: Float64Array, angles: Float64Array): void {
   const bones = sub.bones;
   for (let i = 0; i < bones.length; i++) {
-    const from = 3 * i, to = 3 * bones[i];
+    const from = 3 * i,
+      to = 3 * bones[i];
     angles[to] = subAngles[from];
     angles[to + 1] = subAngles[from + 1];
     angles[to + 2] = subAngles[from + 2];

@@ -81,7 +81,15 @@ export interface PackedGoals {
 export const GOAL_STRIDE = 7;
 export const POLE_STRIDE = 5;
 
-const GOAL_FIELDS = new Set(['bone', 'position', 'orientation', 'weight', 'positionWeight', 'orientationWeight', 'yields']);
+const GOAL_FIELDS = new Set([
+  'bone',
+  'position',
+  'orientation',
+  'weight',
+  'positionWeight',
+  'orientationWeight',
+  'yields',
+]);
 const GOALS_FIELDS = new Set(['effectors', 'lengthScale', 'poles', 'stiffness']);
 const POLE_FIELDS = new Set(['bone', 'point', 'weight']);
 
@@ -127,7 +135,8 @@ function weightOf(value: unknown, fallback: number, what: string): number {
 export function packGoals(rig: IkRig, goals: Goals): PackedGoals {
   if (!isGoals(goals)) throw new Error('goals must be an object like { effectors: [{ bone, position, orientation }] }');
   for (const key of Object.keys(goals))
-    if (!GOALS_FIELDS.has(key)) throw new Error(`unknown goals field "${key.slice(0, 60)}" (known: ${[...GOALS_FIELDS].join(', ')})`);
+    if (!GOALS_FIELDS.has(key))
+      throw new Error(`unknown goals field "${key.slice(0, 60)}" (known: ${[...GOALS_FIELDS].join(', ')})`);
   const list: unknown = goals.effectors;
   if (!Array.isArray(list)) throw new Error('goals.effectors must be an array of { bone, position?, orientation? }');
   const lengthScale = weightOf(goals.lengthScale, 0, 'goals.lengthScale');
@@ -141,13 +150,16 @@ export function packGoals(rig: IkRig, goals: Goals): PackedGoals {
     if (typeof goal !== 'object' || goal === null || Array.isArray(goal))
       throw new Error(`${what} must be an object like { bone, position, orientation }`);
     for (const key of Object.keys(goal))
-      if (!GOAL_FIELDS.has(key)) throw new Error(`unknown field ${what}.${key.slice(0, 60)} (known: ${[...GOAL_FIELDS].join(', ')})`);
+      if (!GOAL_FIELDS.has(key))
+        throw new Error(`unknown field ${what}.${key.slice(0, 60)} (known: ${[...GOAL_FIELDS].join(', ')})`);
     const g = goal as EffectorGoal;
     const bone = boneIndex(rig, g.bone, `${what}.bone`);
     const e = effectors.indexOf(bone);
     if (e < 0)
-      throw new Error(`${what}.bone "${boneName(rig, bone)}" is not an end effector ` +
-        `(the end effectors are ${effectors.map((b) => boneName(rig, b)).join(', ') || 'none'}; add it with setEffectors)`);
+      throw new Error(
+        `${what}.bone "${boneName(rig, bone)}" is not an end effector ` +
+          `(the end effectors are ${effectors.map((b) => boneName(rig, b)).join(', ') || 'none'}; add it with setEffectors)`,
+      );
     if (seen.has(bone)) throw new Error(`${what}.bone "${boneName(rig, bone)}" has a goal already`);
     seen.add(bone);
     const weight = weightOf(g.weight, 1, `${what}.weight`);
@@ -159,16 +171,24 @@ export function packGoals(rig: IkRig, goals: Goals): PackedGoals {
     }
     if (g.orientation !== undefined) {
       const q = toFloat64(g.orientation, `${what}.orientation (a quaternion x, y, z, w)`, 4);
-      if (Math.hypot(q[0], q[1], q[2], q[3]) < 1e-9) throw new Error(`${what}.orientation is a zero quaternion, not a rotation`);
+      if (Math.hypot(q[0], q[1], q[2], q[3]) < 1e-9)
+        throw new Error(`${what}.orientation is a zero quaternion, not a rotation`);
       packed[GOAL_STRIDE * e + 1] = weightOf(g.orientationWeight, weight, `${what}.orientationWeight`);
       packed.set(q, GOAL_STRIDE * e + 2);
     } else if (g.orientationWeight !== undefined) {
       throw new Error(`${what}.orientationWeight is given without an orientation`);
     }
-    if (g.yields !== undefined && typeof g.yields !== 'boolean') throw new Error(`${what}.yields must be true or false`);
+    if (g.yields !== undefined && typeof g.yields !== 'boolean')
+      throw new Error(`${what}.yields must be true or false`);
     packed[GOAL_STRIDE * e + 6] = g.yields ? 1 : 0;
   });
-  return { packed, target, lengthScale, poles: packPoles(rig, goals.poles), stiffness: packStiffness(rig, goals.stiffness) };
+  return {
+    packed,
+    target,
+    lengthScale,
+    poles: packPoles(rig, goals.poles),
+    stiffness: packStiffness(rig, goals.stiffness),
+  };
 }
 
 function packPoles(rig: IkRig, poles: unknown): Float64Array {
@@ -177,12 +197,15 @@ function packPoles(rig: IkRig, poles: unknown): Float64Array {
   const out = new Float64Array(POLE_STRIDE * poles.length);
   poles.forEach((pole: unknown, k) => {
     const what = `goals.poles[${k}]`;
-    if (typeof pole !== 'object' || pole === null || Array.isArray(pole)) throw new Error(`${what} must be an object like { bone, point }`);
+    if (typeof pole !== 'object' || pole === null || Array.isArray(pole))
+      throw new Error(`${what} must be an object like { bone, point }`);
     for (const key of Object.keys(pole))
-      if (!POLE_FIELDS.has(key)) throw new Error(`unknown field ${what}.${key.slice(0, 60)} (known: ${[...POLE_FIELDS].join(', ')})`);
+      if (!POLE_FIELDS.has(key))
+        throw new Error(`unknown field ${what}.${key.slice(0, 60)} (known: ${[...POLE_FIELDS].join(', ')})`);
     const p = pole as PoleGoal;
     const bone = boneIndex(rig, p.bone, `${what}.bone`);
-    if (rig.spec.parents[bone] < 0) throw new Error(`${what}.bone "${boneName(rig, bone)}" has no parent: a pole bends a two-bone limb at its head`);
+    if (rig.spec.parents[bone] < 0)
+      throw new Error(`${what}.bone "${boneName(rig, bone)}" has no parent: a pole bends a two-bone limb at its head`);
     out[POLE_STRIDE * k] = bone;
     out.set(toFloat64(p.point, `${what}.point`, 3), POLE_STRIDE * k + 1);
     out[POLE_STRIDE * k + 4] = weightOf(p.weight, 1, `${what}.weight`);
@@ -197,7 +220,10 @@ function packStiffness(rig: IkRig, stiffness: unknown): Float64Array {
   const out = new Float64Array(rig.numBones).fill(1);
   for (const [name, value] of Object.entries(stiffness)) {
     const names = rig.spec.names ?? [];
-    const bone = names.includes(name) || !/^\d+$/.test(name) ? boneIndex(rig, name, 'a goals.stiffness key') : boneIndex(rig, Number(name), 'a goals.stiffness key');
+    const bone =
+      names.includes(name) || !/^\d+$/.test(name)
+        ? boneIndex(rig, name, 'a goals.stiffness key')
+        : boneIndex(rig, Number(name), 'a goals.stiffness key');
     out[bone] = weightOf(value, 1, `goals.stiffness["${name.slice(0, 60)}"]`);
   }
   return out;

@@ -23,7 +23,8 @@ function describe(value: unknown): string {
 /** `value`'s length if it is an array or a typed array; throws naming `what` otherwise. */
 function arrayLength(value: unknown, what: string): number {
   if (ArrayBuffer.isView(value) && !(value instanceof DataView)) return (value as unknown as ArrayLike<number>).length;
-  if (!Array.isArray(value)) throw new Error(`${what} must be an array or a typed array of numbers, not ${describe(value)}`);
+  if (!Array.isArray(value))
+    throw new Error(`${what} must be an array or a typed array of numbers, not ${describe(value)}`);
   if (value.length > MAX_LENGTH) throw new Error(`${what} has ${value.length} values, more than any rig takes`);
   return value.length;
 }
@@ -94,7 +95,11 @@ export function checkedInteger(value: unknown, what: string, low: number, high: 
  * each a number or a boolean, read once. Throws an Error for a non-object (arrays and Maps
  * included), an unknown name (listing the known ones) or a value of another type.
  */
-export function plainOptions(options: unknown, known: readonly string[], what: string): Record<string, number | boolean> {
+export function plainOptions(
+  options: unknown,
+  known: readonly string[],
+  what: string,
+): Record<string, number | boolean> {
   if (options === undefined || options === null) return {};
   const proto = typeof options === 'object' ? Object.getPrototypeOf(options) : undefined;
   if (typeof options !== 'object' || (proto !== Object.prototype && proto !== null))

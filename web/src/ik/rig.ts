@@ -19,12 +19,14 @@ const outputsCache = new WeakMap<IkCoreModule, Record<ForwardOutput, number>>();
 function forwardOutputs(module: IkCoreModule): Record<ForwardOutput, number> {
   let index = outputsCache.get(module);
   if (!index) {
-    index = Object.fromEntries(module.Rig.forwardOutputs().map((name, k) => [name, k])) as Record<ForwardOutput, number>;
+    index = Object.fromEntries(module.Rig.forwardOutputs().map((name, k) => [name, k])) as Record<
+      ForwardOutput,
+      number
+    >;
     outputsCache.set(module, index);
   }
   return index;
 }
-
 
 /** The spec as the core takes it: typed arrays of the lengths its parents imply, string names. */
 function specArrays(spec: RigSpec): RigSpecArrays {
@@ -142,13 +144,17 @@ export class IkRig {
     const a = this.angles(angles);
     if (typeof hDeg !== 'number' || !(hDeg > 0) || !Number.isFinite(hDeg))
       throw new Error(`finite difference step is ${String(hDeg)}, not a number of degrees > 0`);
-    return this.checked(this.live().finiteDifferenceJacobian(a, hDeg, clampToLimits === true), 'finiteDifferenceJacobian');
+    return this.checked(
+      this.live().finiteDifferenceJacobian(a, hDeg, clampToLimits === true),
+      'finiteDifferenceJacobian',
+    );
   }
 
   /** E = 1/2 |tips(angles) - target|^2. */
   objective(angles: Numbers, target: Numbers): number {
     this.live();
-    const a = this.angles(angles), t = this.target(target);
+    const a = this.angles(angles),
+      t = this.target(target);
     const E = this.live().objective(a, t);
     if (Number.isNaN(E)) throw coreError(this.module, 'objective');
     return E;
@@ -157,7 +163,8 @@ export class IkRig {
   /** grad E = J^T (tips - target), 3 per bone, per degree. */
   gradient(angles: Numbers, target: Numbers): Float64Array {
     this.live();
-    const a = this.angles(angles), t = this.target(target);
+    const a = this.angles(angles),
+      t = this.target(target);
     return this.checked(this.live().gradient(a, t), 'gradient');
   }
 

@@ -255,7 +255,13 @@ export class IkSolver {
   /** errorHistory()'s buffer in WebAssembly memory (at least the history's length after readHistory()). */
   private history: Float64Array<ArrayBufferLike> = new Float64Array(0);
   /** Copies of the goals last handed to the core (undefined: plain targets), to skip handing them again. */
-  private goals?: { packed: Float64Array; poles: Float64Array; stiffness: Float64Array; lengthScale: number; effectors: number };
+  private goals?: {
+    packed: Float64Array;
+    poles: Float64Array;
+    stiffness: Float64Array;
+    lengthScale: number;
+    effectors: number;
+  };
 
   /** The methods this build registers, in display order (lm, the default, first). */
   static methods(module: IkCoreModule): SolverMethod[] {
@@ -340,7 +346,8 @@ export class IkSolver {
    */
   solve(angles: Numbers, target: Numbers | Goals, out?: Float64Array): SolverResult {
     this.live();
-    const n = this.rig.numAngles, m = 3 * this.rig.numEffectors;
+    const n = this.rig.numAngles,
+      m = 3 * this.rig.numEffectors;
     if (out !== undefined && !(out instanceof Float64Array && out.length === n))
       throw new Error(`out must be a Float64Array of ${n} numbers (the angles)`);
     const a = checkedNumbers(angles, 'angles', n);
@@ -357,11 +364,14 @@ export class IkSolver {
    * when they change, with the same errors). `angles`: degrees, 3 per bone.
    */
   solvePacked(angles: Float64Array, goals: PackedGoals, out?: Float64Array): SolverResult {
-    const n = this.rig.numAngles, m = 3 * this.rig.numEffectors;
-    if (!(angles instanceof Float64Array) || angles.length !== n) throw new Error(`angles must be a Float64Array of ${n} numbers`);
+    const n = this.rig.numAngles,
+      m = 3 * this.rig.numEffectors;
+    if (!(angles instanceof Float64Array) || angles.length !== n)
+      throw new Error(`angles must be a Float64Array of ${n} numbers`);
     if (out !== undefined && !(out instanceof Float64Array && out.length === n))
       throw new Error(`out must be a Float64Array of ${n} numbers (the angles)`);
-    if (goals.target.length !== m) throw new Error(`the goals' target has ${goals.target.length} values, expected ${m}`);
+    if (goals.target.length !== m)
+      throw new Error(`the goals' target has ${goals.target.length} values, expected ${m}`);
     this.sendGoals(goals);
     return this.run(angles, goals.target, out);
   }
@@ -369,7 +379,8 @@ export class IkSolver {
   /** Solves from angles `a` towards target `t` (checked) through the shared buffer; see solve(). */
   private run(a: ArrayLike<number>, t: ArrayLike<number>, out?: Float64Array): SolverResult {
     const handle = this.live();
-    const n = this.rig.numAngles, m = t.length;
+    const n = this.rig.numAngles,
+      m = t.length;
     const facts = moduleFacts(this.rig.module);
     let io = this.buffer(n, m, facts.ioCount);
     io.set(a, 0);
@@ -377,7 +388,8 @@ export class IkSolver {
     const code = handle.solveIo();
     if (code < 0) throw coreError(this.rig.module, 'solve');
     if (io.length === 0) io = this.buffer(n, m, facts.ioCount); // the memory grew during the solve
-    const at = facts.io, s = n + m;
+    const at = facts.io,
+      s = n + m;
     const stopReason = facts.stopReasons[code] as StopReason;
     return {
       angles: out ? copyInto(out, io, n) : io.slice(0, n),
@@ -458,13 +470,30 @@ export class IkSolver {
 
   /** Hands `goals` to the core unless they are those it has (for the rig's current effectors). */
   private sendGoals(goals: PackedGoals): void {
-    const last = this.goals, effectors = this.rig.effectorsVersion;
-    if (last !== undefined && last.effectors === effectors && last.lengthScale === goals.lengthScale &&
-      equal(last.packed, goals.packed) && equal(last.poles, goals.poles) && equal(last.stiffness, goals.stiffness))
+    const last = this.goals,
+      effectors = this.rig.effectorsVersion;
+    if (
+      last !== undefined &&
+      last.effectors === effectors &&
+      last.lengthScale === goals.lengthScale &&
+      equal(last.packed, goals.packed) &&
+      equal(last.poles, goals.poles) &&
+      equal(last.stiffness, goals.stiffness)
+    )
       return;
     this.goals = undefined;
     const live = this.live();
-    if (!live.setGoals(goals.packed, goals.packed.length, goals.poles, goals.poles.length, goals.stiffness, goals.stiffness.length, goals.lengthScale))
+    if (
+      !live.setGoals(
+        goals.packed,
+        goals.packed.length,
+        goals.poles,
+        goals.poles.length,
+        goals.stiffness,
+        goals.stiffness.length,
+        goals.lengthScale,
+      )
+    )
       throw coreError(this.rig.module, 'setGoals');
     const none = new Float64Array(0);
     this.goals = {

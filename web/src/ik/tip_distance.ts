@@ -10,7 +10,9 @@ export function largestTipDistance(tips: ArrayLike<number>, targets: ArrayLike<n
   let worst = 0;
   for (let e = 0; e < targets.length / 3; e++) {
     if (e === skip) continue;
-    const dx = tips[3 * e] - targets[3 * e], dy = tips[3 * e + 1] - targets[3 * e + 1], dz = tips[3 * e + 2] - targets[3 * e + 2];
+    const dx = tips[3 * e] - targets[3 * e],
+      dy = tips[3 * e + 1] - targets[3 * e + 1],
+      dz = tips[3 * e + 2] - targets[3 * e + 2];
     worst = Math.max(worst, Math.hypot(dx, dy, dz));
   }
   return worst;

@@ -65,7 +65,14 @@ export class AvatarIK {
     this.solver = solver;
     this.space = rig.space;
     const bone = (role: HumanoidRole): Object3D => rig.objects[rig.humanoid.bones[role]!];
-    this.bones = { hips: bone('hips'), head: bone('head'), leftHand: bone('leftHand'), rightHand: bone('rightHand'), leftFoot: bone('leftFoot'), rightFoot: bone('rightFoot') };
+    this.bones = {
+      hips: bone('hips'),
+      head: bone('head'),
+      leftHand: bone('leftHand'),
+      rightHand: bone('rightHand'),
+      leftFoot: bone('leftFoot'),
+      rightFoot: bone('rightFoot'),
+    };
     this.tracked = TRACKED.map((role) => new TrackedBone(rig.spec, rig.info, rig.humanoid.bones[role]!));
     this.writer = new PoseWriter(rig.objects, rig.spec, rig.info, solver.movingBones);
     this.height = solver.height * this.space.matrixWorld.getMaxScaleOnAxis();
@@ -93,7 +100,7 @@ export class AvatarIK {
     try {
       solver = new AvatarSolver(core, rig.spec, rig.humanoid);
     } catch (e) {
-      throw new Error(`AvatarIK.attach: ${(e as Error).message}`);
+      throw new Error(`AvatarIK.attach: ${(e as Error).message}`, { cause: e });
     }
     return new AvatarIK(solver, rig);
   }

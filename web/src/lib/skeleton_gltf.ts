@@ -43,7 +43,9 @@ function isAtOrBelow(o: Object3D, ancestor: Object3D): boolean {
 export function skeletonDocument(root: Object3D): SkeletonDocument {
   const skeletons = skeletonsUnder(root);
   if (skeletons.length === 0)
-    throw new Error(`AvatarIK.attach: no SkinnedMesh at or under ${objectLabel(root)}: pass a skinned character (gltf.scene from GLTFLoader, or its SkinnedMesh)`);
+    throw new Error(
+      `AvatarIK.attach: no SkinnedMesh at or under ${objectLabel(root)}: pass a skinned character (gltf.scene from GLTFLoader, or its SkinnedMesh)`,
+    );
   const joints = [...new Set(skeletons.flatMap((s) => s.bones))];
   let space: Object3D | null = root;
   while (space && !joints.every((j) => isAtOrBelow(j, space!))) space = space.parent;

@@ -34,15 +34,26 @@ function isObject3D(v: unknown): v is Object3D {
  */
 export async function skeletonRig(source: AvatarSource): Promise<SkeletonRig> {
   const root = isObject3D(source) ? source : isObject3D(source?.scene) ? source.scene : undefined;
-  if (!root) throw new Error('AvatarIK.attach: expected a GLTFLoader result, or a three.js Object3D holding a skinned character (gltf.scene, a SkinnedMesh)');
+  if (!root)
+    throw new Error(
+      'AvatarIK.attach: expected a GLTFLoader result, or a three.js Object3D holding a skinned character (gltf.scene, a SkinnedMesh)',
+    );
   const doc = skeletonDocument(root);
   const parser = isObject3D(source) ? undefined : source.parser;
   const vrm = parser && vrmExtension(parser, new Map(doc.nodes.map((o, i) => [o, i])));
   if (vrm) doc.json.extensions = vrm;
   const where = `the skeleton under ${objectLabel(doc.space)}`;
-  const { spec, gltf: info } = await importGltfRig(new TextEncoder().encode(JSON.stringify(doc.json)), where).catch((e: Error) => {
-    throw new Error(`AvatarIK.attach: ${e.message}`);
-  });
+  const { spec, gltf: info } = await importGltfRig(new TextEncoder().encode(JSON.stringify(doc.json)), where).catch(
+    (e: Error) => {
+      throw new Error(`AvatarIK.attach: ${e.message}`);
+    },
+  );
   if (!info.humanoid) throw notHumanoidError(spec, where);
-  return { spec, info, humanoid: info.humanoid, objects: Array.from(info.boneNodes, (n) => doc.nodes[n]), space: doc.space };
+  return {
+    spec,
+    info,
+    humanoid: info.humanoid,
+    objects: Array.from(info.boneNodes, (n) => doc.nodes[n]),
+    space: doc.space,
+  };
 }

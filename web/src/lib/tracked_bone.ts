@@ -35,7 +35,12 @@ export class TrackedBone {
     fromRowMajor(_m, info.restWorld, 16 * bone).decompose(_t, unturn, _s);
     unturn.invert();
     const rest = fromRowMajor(_m, spec.rest, 16 * bone); // the bone frame: origin t_w, x along the bone
-    this.tipOffset.setFromMatrixColumn(rest, 0).multiplyScalar(spec.lengths[bone]).add(_v.setFromMatrixPosition(rest)).sub(_t).applyQuaternion(unturn);
+    this.tipOffset
+      .setFromMatrixColumn(rest, 0)
+      .multiplyScalar(spec.lengths[bone])
+      .add(_v.setFromMatrixPosition(rest))
+      .sub(_t)
+      .applyQuaternion(unturn);
     this.frameOffset.setFromRotationMatrix(rest).premultiply(unturn);
   }
 

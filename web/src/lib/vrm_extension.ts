@@ -16,7 +16,10 @@ import type { GltfParserLike } from './avatar_source.js';
 export function vrmExtension(parser: GltfParserLike, nodeIndex: ReadonlyMap<Object3D, number>): JsonObject | undefined {
   const json = parser.json as JsonObject;
   const fileNodes = Array.isArray(json.nodes) ? json.nodes.length : 0;
-  const vrm = readVrmHumanoid(json, Int32Array.from({ length: fileNodes }, (_, i) => i));
+  const vrm = readVrmHumanoid(
+    json,
+    Int32Array.from({ length: fileNodes }, (_, i) => i),
+  );
   if (!vrm?.bones) return undefined;
   const objectOfNode = new Map<number, Object3D>();
   for (const [object, ref] of parser.associations)

@@ -7,7 +7,14 @@
 // change; its positions, orientations and pole points are views into the session's arrays, so
 // moving or turning a target or moving a pole rewrites numbers in place and the per-frame solve
 // allocates nothing here.
-import { GOAL_STRIDE, POLE_STRIDE, type EffectorGoal, type Goals, type PackedGoals, type PoleGoal } from '../ik/goals.js';
+import {
+  GOAL_STRIDE,
+  POLE_STRIDE,
+  type EffectorGoal,
+  type Goals,
+  type PackedGoals,
+  type PoleGoal,
+} from '../ik/goals.js';
 
 export class EffectorGoals {
   /** 1 where effector k has a position goal (its target), per effector. */
@@ -76,7 +83,8 @@ export class EffectorGoals {
    * (3 per bone, rig units); empty arrays: no poles. Both are copied.
    */
   setPoles(bones: ArrayLike<number>, points: ArrayLike<number>): void {
-    if (points.length !== 3 * bones.length) throw new Error(`${bones.length} poles need ${3 * bones.length} numbers, not ${points.length}`);
+    if (points.length !== 3 * bones.length)
+      throw new Error(`${bones.length} poles need ${3 * bones.length} numbers, not ${points.length}`);
     this.poleBones = Int32Array.from(bones);
     this.polePoints = Float64Array.from(points);
     this.changed();
@@ -87,7 +95,8 @@ export class EffectorGoals {
    * [x, y, z, w], rig coordinates: the frames at the drag's start; both copied).
    */
   pin(rotations: ArrayLike<number>, keep: ArrayLike<number>): void {
-    if (rotations.length !== 4 * this.count) throw new Error(`${this.count} effectors need ${4 * this.count} numbers, not ${rotations.length}`);
+    if (rotations.length !== 4 * this.count)
+      throw new Error(`${this.count} effectors need ${4 * this.count} numbers, not ${rotations.length}`);
     this.pinned = Float64Array.from(rotations);
     this.keepsFrame = Uint8Array.from(keep);
     this.changed();
@@ -158,11 +167,13 @@ export class EffectorGoals {
       if (k === yielding) g.yields = true;
       if (this.position[k]) g.position = targets.subarray(3 * k, 3 * k + 3);
       if (this.orientation[k]) g.orientation = this.rotations.subarray(4 * k, 4 * k + 4);
-      else if (this.pinned && this.keepsFrame[k] && k !== yielding) g.orientation = this.pinned.subarray(4 * k, 4 * k + 4);
+      else if (this.pinned && this.keepsFrame[k] && k !== yielding)
+        g.orientation = this.pinned.subarray(4 * k, 4 * k + 4);
       effectors.push(g);
     }
     const poles: PoleGoal[] = [];
-    for (let j = 0; j < this.poleBones.length; j++) poles.push({ bone: this.poleBones[j], point: this.polePoints.subarray(3 * j, 3 * j + 3) });
+    for (let j = 0; j < this.poleBones.length; j++)
+      poles.push({ bone: this.poleBones[j], point: this.polePoints.subarray(3 * j, 3 * j + 3) });
     this.cached = poles.length ? { effectors, poles } : { effectors };
     this.cachedFor = targets;
     this.cachedYielding = yielding;
@@ -176,15 +187,26 @@ export class EffectorGoals {
    * skips checking a Goals object (the session's goals are well formed by construction).
    */
   packed(targets: Float64Array, yielding = -1): PackedGoals {
-    const m = this.count, poles = this.poleBones.length;
+    const m = this.count,
+      poles = this.poleBones.length;
     let p = this.pack;
     if (!p || p.target.length !== 3 * m || p.poles.length !== POLE_STRIDE * poles) {
       const none = new Float64Array(0);
-      p = this.pack = { packed: new Float64Array(GOAL_STRIDE * m), target: new Float64Array(3 * m), lengthScale: 0, poles: new Float64Array(POLE_STRIDE * poles), stiffness: none };
+      p = this.pack = {
+        packed: new Float64Array(GOAL_STRIDE * m),
+        target: new Float64Array(3 * m),
+        lengthScale: 0,
+        poles: new Float64Array(POLE_STRIDE * poles),
+        stiffness: none,
+      };
     }
     for (let k = 0; k < m; k++) {
       const o = GOAL_STRIDE * k;
-      const turn = this.orientation[k] ? this.rotations : this.pinned && this.keepsFrame[k] && k !== yielding ? this.pinned : null;
+      const turn = this.orientation[k]
+        ? this.rotations
+        : this.pinned && this.keepsFrame[k] && k !== yielding
+          ? this.pinned
+          : null;
       p.packed[o] = this.position[k];
       p.packed[o + 1] = turn ? 1 : 0;
       for (let i = 0; i < 4; i++) p.packed[o + 2 + i] = turn ? turn[4 * k + i] : 0;

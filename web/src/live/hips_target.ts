@@ -73,7 +73,8 @@ export class HipsTarget {
    * header (the head and the hips carry the body only while they are dragged).
    */
   beforeSolve(session: IkSession, selected: number | null, dragging: boolean): void {
-    const effectors = session.effectors(), goals = session.goals;
+    const effectors = session.effectors(),
+      goals = session.goals;
     const k = effectors.indexOf(this.hips);
     if (k < 0) return;
     const dragged = selected === null || !dragging ? -1 : effectors[selected];
@@ -157,11 +158,16 @@ export class HipsTarget {
       this.kneePoles = null;
       return;
     }
-    const limbs: PoleLimb[] = poleLimbs(session.spec, session.effectors(), this.humanoid).filter((l) => this.knees.includes(l.bone));
+    const limbs: PoleLimb[] = poleLimbs(session.spec, session.effectors(), this.humanoid).filter((l) =>
+      this.knees.includes(l.bone),
+    );
     const poses = session.poses();
     const points = new Float64Array(3 * limbs.length);
     limbs.forEach((limb, j) => points.set(initialPole(session.spec, poses, limb), 3 * j));
-    goals.setPoles(limbs.map((l) => l.bone), points);
+    goals.setPoles(
+      limbs.map((l) => l.bone),
+      points,
+    );
     this.kneePoles = limbs.length > 0 ? goals.poleBones : null;
   }
 
@@ -177,7 +183,8 @@ export class HipsTarget {
 
 /** The target of effector bone `bone`, when its position goal is off, moved onto its tip in `tips`. */
 function follow(session: IkSession, tips: Float64Array, bone: number): void {
-  const k = session.effectors().indexOf(bone), t = session.targets;
+  const k = session.effectors().indexOf(bone),
+    t = session.targets;
   if (k < 0 || session.goals.position[k] !== 0) return;
   for (let i = 3 * k; i < 3 * k + 3; i++) t[i] = tips[i];
 }

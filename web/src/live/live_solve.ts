@@ -33,7 +33,12 @@ export interface FrameTiming {
  * the session's pose array); `settings.restarts` should be 0 (a restart would jump the pose while
  * the user drags). Writes the time and whether to go on into `timing`.
  */
-export function solveFrame(session: IkSession, method: string, settings: SolveSettings, timing: FrameTiming): SolveOutcome {
+export function solveFrame(
+  session: IkSession,
+  method: string,
+  settings: SolveSettings,
+  timing: FrameTiming,
+): SolveOutcome {
   const t0 = performance.now();
   const outcome = session.solve(method, settings);
   timing.ms = performance.now() - t0;

@@ -59,12 +59,22 @@ function sameSettings(a: SolveSettings, b: SolveSettings): boolean {
 
 export class MethodSolver {
   private readonly solver: IkSolver;
-  private readonly sent: SolveSettings = { gradientTolerance: NaN, tipTolerance: NaN, maxIterations: NaN, timeBudgetMs: NaN, restarts: NaN, paperMode: false };
+  private readonly sent: SolveSettings = {
+    gradientTolerance: NaN,
+    tipTolerance: NaN,
+    maxIterations: NaN,
+    timeBudgetMs: NaN,
+    restarts: NaN,
+    paperMode: false,
+  };
   /** Iterations of the last solve or step-mode solve (0: its history holds only the start). */
   lastIterations = 0;
 
   /** `method`: a name from the core's registry (IkSolver.methods). Owns WebAssembly memory: dispose() frees it. */
-  constructor(rig: IkRig, readonly method: string) {
+  constructor(
+    rig: IkRig,
+    readonly method: string,
+  ) {
     this.solver = new IkSolver(rig, method);
   }
 
@@ -74,9 +84,16 @@ export class MethodSolver {
    * (EffectorGoals.packed: the per-frame path, checked by the core only). The angles found are written into `out` when given (it may be `start` itself) and returned as
    * `outcome.angles`; otherwise `outcome.angles` is a new array.
    */
-  solve(start: Float64Array, target: Float64Array | Goals | PackedGoals, settings: SolveSettings, out?: Float64Array): SolveOutcome {
+  solve(
+    start: Float64Array,
+    target: Float64Array | Goals | PackedGoals,
+    settings: SolveSettings,
+    out?: Float64Array,
+  ): SolveOutcome {
     this.configure(settings);
-    return this.keep(isPackedGoals(target) ? this.solver.solvePacked(start, target, out) : this.solver.solve(start, target, out));
+    return this.keep(
+      isPackedGoals(target) ? this.solver.solvePacked(start, target, out) : this.solver.solve(start, target, out),
+    );
   }
 
   /** Begins an iteration-by-iteration solve; returns the state before any step. */

@@ -39,7 +39,8 @@ const FACING: Vec3 = [0, 0, 1];
  * hinge) or the bone cannot bend.
  */
 function limitsBend(spec: RigSpec, bone: number): Vec3 | null {
-  const lo = spec.lower[3 * bone + 1], hi = spec.upper[3 * bone + 1];
+  const lo = spec.lower[3 * bone + 1],
+    hi = spec.upper[3 * bone + 1];
   const lean = hi + lo; // > 0: more room for a positive bend than a negative one
   if (!(Math.abs(lean) > 1e-6 * Math.max(1, hi - lo)) || !(hi > lo)) return null;
   const bent = unit(cross(restAxis(spec, bone, 0), restAxis(spec, bone, 2)));

@@ -25,7 +25,8 @@ export interface LimbPoints {
 /** Row-major 4x4 transform `i` of `poses` applied to point `p` (w = 1) or, `w` = 0, to direction `p`. */
 function transform(poses: ArrayLike<number>, i: number, p: Vec3, w: 0 | 1): Vec3 {
   const o = 16 * i;
-  const row = (r: number): number => poses[o + 4 * r] * p[0] + poses[o + 4 * r + 1] * p[1] + poses[o + 4 * r + 2] * p[2] + w * poses[o + 4 * r + 3];
+  const row = (r: number): number =>
+    poses[o + 4 * r] * p[0] + poses[o + 4 * r + 1] * p[1] + poses[o + 4 * r + 2] * p[2] + w * poses[o + 4 * r + 3];
   return [row(0), row(1), row(2)];
 }
 
@@ -49,7 +50,8 @@ export function limbPoints(spec: RigSpec, poses: ArrayLike<number>, bone: number
  */
 export function initialPole(spec: RigSpec, poses: ArrayLike<number>, limb: PoleLimb): Vec3 {
   const { root, joint, tip } = limbPoints(spec, poses, limb.bone);
-  const upper = norm(sub(joint, root)), lower = norm(sub(tip, joint));
+  const upper = norm(sub(joint, root)),
+    lower = norm(sub(tip, joint));
   const length = upper + lower;
   const line = unit(sub(tip, root)) ?? unit(sub(joint, root)) ?? ([1, 0, 0] as Vec3);
   const off = reject(sub(joint, root), line);
@@ -61,4 +63,3 @@ export function initialPole(spec: RigSpec, poses: ArrayLike<number>, limb: PoleL
   }
   return add(joint, scale(dir!, length)); // one of the three axes always lies well across the line
 }
-

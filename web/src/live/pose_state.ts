@@ -33,7 +33,8 @@ const sameNumbers = (a: ArrayLike<number>, b: ArrayLike<number>): boolean => {
 
 /** Whether two states are the same edit (every number equal). */
 export function samePose(a: PoseState, b: PoseState): boolean {
-  const g = a.goals, h = b.goals;
+  const g = a.goals,
+    h = b.goals;
   return (
     sameNumbers(a.angles, b.angles) &&
     sameNumbers(a.effectors, b.effectors) &&

@@ -100,7 +100,9 @@ export class IkSession {
    */
   problem(paperMode = false): Float64Array | Goals {
     const yielding = this.yieldingIn(paperMode);
-    return this.goals.beyondPositions || yielding >= 0 ? this.goals.goals(this.effectorList, this.targets, yielding) : this.targets;
+    return this.goals.beyondPositions || yielding >= 0
+      ? this.goals.goals(this.effectorList, this.targets, yielding)
+      : this.targets;
   }
 
   /** problem(), its goals packed as the core takes them (the per-frame solve's fast path). */
@@ -120,7 +122,8 @@ export class IkSession {
    * and its solves are over).
    */
   pinOrientations(on: boolean): void {
-    if (on && this.pinsFrames) this.goals.pin(this.tipRotations(), framesKept(this.spec, this.effectorList, this.yielding));
+    if (on && this.pinsFrames)
+      this.goals.pin(this.tipRotations(), framesKept(this.spec, this.effectorList, this.yielding));
     else if (this.goals.pinned) this.goals.unpin();
   }
 

@@ -29,27 +29,60 @@ export interface StatusFacts {
 type Reach = 'none' | 'position' | 'orientation';
 
 function wordsFor(reached: boolean, code: string, paperMode: boolean, reach: Reach): StatusWords {
-  const words = (text: string, kind: StatusWords['kind'], why: string): StatusWords => ({ text, kind, title: `${why} (stop reason: ${code})` });
-  if (reached) return words('on target', 'on-target', 'every end effector is within the tolerance of its target (and of its orientation goal, if any)');
+  const words = (text: string, kind: StatusWords['kind'], why: string): StatusWords => ({
+    text,
+    kind,
+    title: `${why} (stop reason: ${code})`,
+  });
+  if (reached)
+    return words(
+      'on target',
+      'on-target',
+      'every end effector is within the tolerance of its target (and of its orientation goal, if any)',
+    );
   const closest = code === 'converged_grad' || code === 'zero_step';
   if (reach === 'position' && closest)
-    return words('out of reach (closest point)', 'out-of-reach', 'a target is out of reach: its effector is as close as it gets, every target that can be reached is on target');
+    return words(
+      'out of reach (closest point)',
+      'out-of-reach',
+      'a target is out of reach: its effector is as close as it gets, every target that can be reached is on target',
+    );
   if (reach === 'orientation' && closest)
-    return words('orientation out of reach', 'orientation-out-of-reach', 'every position is on target; an orientation goal cannot be met with them and is as close as it gets');
+    return words(
+      'orientation out of reach',
+      'orientation-out-of-reach',
+      'every position is on target; an orientation goal cannot be met with them and is as close as it gets',
+    );
   switch (code) {
     case 'running':
       return words('solving', 'solving', 'the solve has not stopped yet');
     case 'not_started':
-      return words('not solved yet: press S', 'solving', 'step mode: the targets moved and no iteration has run towards them; each S takes one');
+      return words(
+        'not solved yet: press S',
+        'solving',
+        'step mode: the targets moved and no iteration has run towards them; each S takes one',
+      );
     case 'joint_speed':
-      return words('catching up', 'solving', 'the nearest pose on target is farther than the joints may move in one frame: the body moves there over a few frames');
+      return words(
+        'catching up',
+        'solving',
+        'the nearest pose on target is farther than the joints may move in one frame: the body moves there over a few frames',
+      );
     case 'max_iterations':
     case 'timeout':
       return words('time budget', 'budget', 'the per-solve iteration or time budget ran out; the next frame goes on');
     case 'converged_grad':
       return paperMode
-        ? words('stuck (stationary point)', 'stuck', 'the gradient vanished off target; paper mode does not look for a way out')
-        : words('out of reach (closest point)', 'out-of-reach', 'no move of the joints brings the effectors closer from here');
+        ? words(
+            'stuck (stationary point)',
+            'stuck',
+            'the gradient vanished off target; paper mode does not look for a way out',
+          )
+        : words(
+            'out of reach (closest point)',
+            'out-of-reach',
+            'no move of the joints brings the effectors closer from here',
+          );
     case 'zero_step':
       return words('stuck', 'stuck', 'no step lowered the error although the gradient is not zero');
     default:

@@ -41,7 +41,12 @@ export function stillBodyStiffness(spec: RigSpec, effectors: ArrayLike<number>, 
 }
 
 /** The last stiffness made, kept while the rig, its effectors and the dragged one stay the same. */
-const cache: { spec: RigSpec | null; effectors: Int32Array | null; dragged: number; stiffness: Float64Array } = { spec: null, effectors: null, dragged: -2, stiffness: new Float64Array(0) };
+const cache: { spec: RigSpec | null; effectors: Int32Array | null; dragged: number; stiffness: Float64Array } = {
+  spec: null,
+  effectors: null,
+  dragged: -2,
+  stiffness: new Float64Array(0),
+};
 
 /**
  * Sets up the next per-frame solve of `session` (its `yielding` effector is the one dragged, or
@@ -52,7 +57,8 @@ const cache: { spec: RigSpec | null; effectors: Int32Array | null; dragged: numb
  * body. Allocates only when the rig, its effectors or the dragged effector change.
  */
 export function applyStillBody(session: IkSession, on: boolean, humanoid: boolean, settings: SolveSettings): void {
-  const effectors = session.effectors(), dragged = session.yielding;
+  const effectors = session.effectors(),
+    dragged = session.yielding;
   const active = on && !humanoid && !settings.paperMode && dragged >= 0 && dragged < effectors.length;
   settings.restWeight = active ? STILL_BODY_WEIGHT : 0;
   settings.restFromStart = active;

@@ -10,7 +10,10 @@ export class Throttle {
     this.run();
   };
 
-  constructor(private readonly run: () => void, private readonly intervalMs = 100) {}
+  constructor(
+    private readonly run: () => void,
+    private readonly intervalMs = 100,
+  ) {}
 
   /** Asks for a run: now, or at the end of the interval (several requests meanwhile make one run). */
   request(): void {

@@ -20,7 +20,15 @@ import { Keyboard } from './keyboard.js';
 import { initialSettings, type PageSettings } from './page_settings.js';
 import { Panel } from './panel.js';
 import { DEFAULT_RIG, FILE_CHOICE, loadProjectRig, loadUserFile, projectRig, rigMenu } from './project_rigs.js';
-import { download, fileStem, glbExportProblem, looksLikePoseFile, poseJsonText, posedGlbBytes, readPoseFile } from './pose_files.js';
+import {
+  download,
+  fileStem,
+  glbExportProblem,
+  looksLikePoseFile,
+  poseJsonText,
+  posedGlbBytes,
+  readPoseFile,
+} from './pose_files.js';
 import { deselectTarget, showSelection, stepTarget, toggleEffector } from './selection.js';
 import { SolveReport } from './solve_report.js';
 import type { StatsPanel } from './stats.js';
@@ -66,11 +74,17 @@ export class PageApp {
   /** Completed loads, successful or not (for tests and tools). */
   loads = 0;
 
-  constructor(private readonly module: IkCoreModule, private readonly el: PageElements) {
+  constructor(
+    private readonly module: IkCoreModule,
+    private readonly el: PageElements,
+  ) {
     this.methods = new MethodList(module);
     const url = readUrlState();
     this.chain = url.chain;
-    this.settings = initialSettings(url.rig && projectRig(url.rig) ? url.rig : DEFAULT_RIG, this.methods.pick(url.method));
+    this.settings = initialSettings(
+      url.rig && projectRig(url.rig) ? url.rig : DEFAULT_RIG,
+      this.methods.pick(url.method),
+    );
 
     this.controller = new LiveController(el.viewport, this.settings, {
       solved: (outcome, ms, tips) => this.report.solved(outcome, ms, tips),
@@ -102,7 +116,8 @@ export class PageApp {
     });
     this.files = new FileInput(el.root, (f, others) => void this.loadFile(f, others));
     el.message.addEventListener('click', () => {
-      if (el.message.dataset.kind === 'info') el.message.dataset.expanded = String(el.message.dataset.expanded !== 'true');
+      if (el.message.dataset.kind === 'info')
+        el.message.dataset.expanded = String(el.message.dataset.expanded !== 'true');
     });
     this.poseFiles = new FileInput(el.root, (f) => void this.loadPoseFile(f), '.json', 'pose-file', false);
     this.history = new EditHistory(
@@ -137,25 +152,67 @@ export class PageApp {
     this.track = new TrackMode(module, this.controller, (message) => this.showMessage(message, 'error'));
     this.trackPanel = new TrackPanel(el.side, this.track);
     // The compare's results sit under the stats, in the side column (the bottom sheet on a phone), not over the view.
-    el.side.replaceChildren(this.report.stats.element, el.stepInfo, this.compare.view.element, this.panel.gui.domElement, this.trackPanel.gui.domElement, el.selection, this.report.plot.element);
+    el.side.replaceChildren(
+      this.report.stats.element,
+      el.stepInfo,
+      this.compare.view.element,
+      this.panel.gui.domElement,
+      this.trackPanel.gui.domElement,
+      el.selection,
+      this.report.plot.element,
+    );
     this.removeSheet = bottomSheet(el.root, el.side);
 
     this.keyboard = new Keyboard(el.root, [
-      { keys: ['Tab'], label: 'select the next target (in track mode: the next tracked point)', run: () => this.stepTarget(1), focusKey: true },
+      {
+        keys: ['Tab'],
+        label: 'select the next target (in track mode: the next tracked point)',
+        run: () => this.stepTarget(1),
+        focusKey: true,
+      },
       { keys: ['Shift+Tab'], label: 'select the previous target', run: () => this.stepTarget(-1), focusKey: true },
       { keys: ['R'], label: 'reset the pose', run: () => this.resetPose() },
-      { keys: ['Ctrl+Z'], label: 'undo (target moves, effector changes, reset, rig loads, pose files)', run: () => void this.undo(false) },
+      {
+        keys: ['Ctrl+Z'],
+        label: 'undo (target moves, effector changes, reset, rig loads, pose files)',
+        run: () => void this.undo(false),
+      },
       { keys: ['Ctrl+Shift+Z', 'Ctrl+Y'], label: 'redo', run: () => void this.undo(true) },
       { keys: ['W'], label: 'gizmo: translate the target', run: () => this.setGizmo('translate') },
-      { keys: ['E'], label: 'gizmo: rotate the target (the hand turns to its orientation)', run: () => this.setGizmo('rotate') },
+      {
+        keys: ['E'],
+        label: 'gizmo: rotate the target (the hand turns to its orientation)',
+        run: () => this.setGizmo('rotate'),
+      },
       { keys: ['Q'], label: 'gizmo: swing the target about the root joint', run: () => this.setGizmo('swing') },
       { keys: ['O'], label: 'orientation goal of the selected target on or off', run: () => this.setOrientationGoal() },
-      { keys: ['P'], label: 'pole handles on or off (drag one to turn an elbow or knee towards it)', run: () => this.togglePoleHandles() },
-      { keys: ['T'], label: 'track mode on or off: gizmos on the head and hands move the whole body (a recognised humanoid)', run: () => this.track.toggle() },
-      { keys: ['S'], label: () => `step mode: one iteration of ${this.settings.method}${this.settings.paperMode ? ' (paper mode)' : ''}`, run: () => this.stepMode.step() },
-      { keys: ['C'], label: () => this.compareHelp(), run: () => void this.compare.run(this.controller, this.settings) },
+      {
+        keys: ['P'],
+        label: 'pole handles on or off (drag one to turn an elbow or knee towards it)',
+        run: () => this.togglePoleHandles(),
+      },
+      {
+        keys: ['T'],
+        label: 'track mode on or off: gizmos on the head and hands move the whole body (a recognised humanoid)',
+        run: () => this.track.toggle(),
+      },
+      {
+        keys: ['S'],
+        label: () =>
+          `step mode: one iteration of ${this.settings.method}${this.settings.paperMode ? ' (paper mode)' : ''}`,
+        run: () => this.stepMode.step(),
+      },
+      {
+        keys: ['C'],
+        label: () => this.compareHelp(),
+        run: () => void this.compare.run(this.controller, this.settings),
+      },
       { keys: ['?', 'H'], label: 'show or hide this help', run: () => this.keyboard.toggle() },
-      { keys: ['Escape'], label: 'deselect: the gizmo lets go of its target (with this help open: close the help)', run: () => this.deselect() },
+      {
+        keys: ['Escape'],
+        label: 'deselect: the gizmo lets go of its target (with this help open: close the help)',
+        run: () => this.deselect(),
+      },
     ]);
   }
 
@@ -185,7 +242,8 @@ export class PageApp {
    * (ik-pose JSON) is applied to the rig shown instead.
    */
   async loadFile(file: File, others: PathFile[] = []): Promise<void> {
-    if (/\.json$/i.test(file.name) && looksLikePoseFile(await file.slice(0, 200).text())) return this.loadPoseFile(file);
+    if (/\.json$/i.test(file.name) && looksLikePoseFile(await file.slice(0, 200).text()))
+      return this.loadPoseFile(file);
     await this.load(() => loadUserFile(file, { chain: this.chain ?? undefined }, others), file.name, null);
   }
 
@@ -193,7 +251,11 @@ export class PageApp {
   async loadChain(chain: string): Promise<void> {
     const urdf = this.controller.live?.source.urdf;
     if (!urdf || chain === urdf.chain) return;
-    await this.load(() => readRig(urdf.bytes, urdf.fileName, urdf.readSibling, '', { chain }), `${urdf.fileName} (chain ${chain})`, null);
+    await this.load(
+      () => readRig(urdf.bytes, urdf.fileName, urdf.readSibling, '', { chain }),
+      `${urdf.fileName} (chain ${chain})`,
+      null,
+    );
   }
 
   /** Applies a pose file (ik-pose JSON) to the rig shown, as one undoable step; a bad file changes nothing and says why. */
@@ -255,7 +317,10 @@ export class PageApp {
     } catch (e) {
       if (token !== this.loadToken) return;
       const shown = this.controller.live;
-      this.showMessage(`Could not load ${what}: ${errorText(e)}${shown ? ` — still showing ${shown.name}` : ''}`, 'error');
+      this.showMessage(
+        `Could not load ${what}: ${errorText(e)}${shown ? ` — still showing ${shown.name}` : ''}`,
+        'error',
+      );
       this.panel.showRig(this.rigKey ?? FILE_CHOICE);
       this.showChains(shown);
       this.el.root.dataset.state = shown ? 'ready' : 'error';

@@ -64,7 +64,8 @@ export class AvatarDriver {
     if (problem) throw new Error(problem);
     const humanoid = source.humanoid as HumanoidMap;
     this.solver = new AvatarSolver(module, anatomicalSpec(source), humanoid);
-    const tips = this.solver.tips(), rotations = this.solver.tipRotations();
+    const tips = this.solver.tips(),
+      rotations = this.solver.tipRotations();
     const points = new TrackedPoints();
     points.copy(tips, rotations);
     this.standingTips = tips;
@@ -74,7 +75,12 @@ export class AvatarDriver {
     for (let i = 1; i < boneTips.length; i += 3) floorY = Math.min(floorY, boneTips[i]);
     const forward = bodyFrame(source.spec, humanoid).forward;
     const across = Math.hypot(forward[0], forward[2]) || 1;
-    this.standing = { points, floorY, forward: [forward[0] / across, 0, forward[2] / across], height: this.solver.height };
+    this.standing = {
+      points,
+      floorY,
+      forward: [forward[0] / across, 0, forward[2] / across],
+      height: this.solver.height,
+    };
   }
 
   /** Solves one frame towards `input` from the last pose (AvatarSolver.update), timed in `ms`. */
@@ -96,12 +102,23 @@ export class AvatarDriver {
   carryFrame(k: number, points: TrackedPoints): void {
     const b = this.pivots[k];
     if (b < 0) return;
-    const poses = this.poses(), rest = this.solver.rig.spec.rest, tips = this.solver.tips();
+    const poses = this.poses(),
+      rest = this.solver.rig.spec.rest,
+      tips = this.solver.tips();
     pivot.set(rest[16 * b + 3], rest[16 * b + 7], rest[16 * b + 11]); // the bone's base at rest
     const p = poses.subarray(16 * b, 16 * b + 16); // moved by its pose T_b (row-major)
-    pivot.set(p[0] * pivot.x + p[1] * pivot.y + p[2] * pivot.z + p[3], p[4] * pivot.x + p[5] * pivot.y + p[6] * pivot.z + p[7], p[8] * pivot.x + p[9] * pivot.y + p[10] * pivot.z + p[11]);
-    tip.fromArray(tips, 3 * k).sub(pivot).normalize();
-    to.fromArray(points.positions, 3 * k).sub(pivot).normalize();
+    pivot.set(
+      p[0] * pivot.x + p[1] * pivot.y + p[2] * pivot.z + p[3],
+      p[4] * pivot.x + p[5] * pivot.y + p[6] * pivot.z + p[7],
+      p[8] * pivot.x + p[9] * pivot.y + p[10] * pivot.z + p[11],
+    );
+    tip
+      .fromArray(tips, 3 * k)
+      .sub(pivot)
+      .normalize();
+    to.fromArray(points.positions, 3 * k)
+      .sub(pivot)
+      .normalize();
     swing.setFromUnitVectors(tip, to);
     frame.fromArray(this.solver.tipRotations(), 4 * k).premultiply(swing);
     points.setRotation(k, frame.x, frame.y, frame.z, frame.w);
@@ -118,7 +135,8 @@ export class AvatarDriver {
    */
   feet(): { drift: number; stepping: boolean } {
     const tips = this.solver.tips();
-    let drift = 0, stepping = false;
+    let drift = 0,
+      stepping = false;
     this.solver.plantedFeet().forEach((at, f) => {
       const i = 9 + 3 * f; // the feet follow the head and hands in AvatarSolver.bones
       if (at) drift = Math.max(drift, Math.hypot(tips[i] - at[0], tips[i + 1] - at[1], tips[i + 2] - at[2]));

@@ -64,7 +64,12 @@ export class ClipPlayer {
    * `bones` (the whole rig's indices of the head and hands) whose points at rest are `standing`.
    * Rejects with an Error naming the file when three.js cannot load it (a .gltf with side files).
    */
-  static async load(source: RigSource, bones: ArrayLike<number>, standing: TrackedPoints, offset: Vector3): Promise<ClipPlayer> {
+  static async load(
+    source: RigSource,
+    bones: ArrayLike<number>,
+    standing: TrackedPoints,
+    offset: Vector3,
+  ): Promise<ClipPlayer> {
     const gltf = source.gltf;
     if (!gltf) throw new Error(`${source.name} is no glTF file: it has no clips`);
     const bytes = gltf.bytes;
@@ -147,7 +152,13 @@ export class ClipPlayer {
   ghostTips(): Float64Array {
     inverseRoot.copy(this.root.matrixWorld).invert();
     const out = new Float64Array(3 * this.bones.length);
-    this.bones.forEach((bone, k) => v.copy(this.tails[k]).applyMatrix4(bone.matrixWorld).applyMatrix4(inverseRoot).toArray(out, 3 * k));
+    this.bones.forEach((bone, k) =>
+      v
+        .copy(this.tails[k])
+        .applyMatrix4(bone.matrixWorld)
+        .applyMatrix4(inverseRoot)
+        .toArray(out, 3 * k),
+    );
     return out;
   }
 

@@ -50,14 +50,26 @@ export type CompareReply =
   | { type: 'failed'; id: number; message: string };
 
 /** A compare of `session`'s problem from `start` with `methods`, as data for the worker. */
-export function compareRequest(id: number, session: IkSession, start: Float64Array, methods: readonly string[], settings: SolveSettings): CompareRequest {
+export function compareRequest(
+  id: number,
+  session: IkSession,
+  start: Float64Array,
+  methods: readonly string[],
+  settings: SolveSettings,
+): CompareRequest {
   const g = session.goals;
   return {
     id,
     spec: session.spec,
     effectors: session.effectors().slice(),
     targets: session.targets.slice(),
-    goals: { position: g.position.slice(), orientation: g.orientation.slice(), rotations: g.rotations.slice(), poleBones: g.poleBones.slice(), polePoints: g.polePoints.slice() },
+    goals: {
+      position: g.position.slice(),
+      orientation: g.orientation.slice(),
+      rotations: g.rotations.slice(),
+      poleBones: g.poleBones.slice(),
+      polePoints: g.polePoints.slice(),
+    },
     start: start.slice(),
     methods: [...methods],
     settings: { ...settings },

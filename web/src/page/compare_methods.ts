@@ -49,7 +49,11 @@ export class Compare {
   private running: { id: number; finish: (end: CompareEnd, message?: string) => void } | null = null;
 
   /** The table goes into `parent`; every history also goes to `plot` (the side column's). */
-  constructor(parent: HTMLElement, private readonly methods: MethodList, private readonly plot: ConvergencePlot) {
+  constructor(
+    parent: HTMLElement,
+    private readonly methods: MethodList,
+    private readonly plot: ConvergencePlot,
+  ) {
     this.view = new CompareView(parent, methods, () => this.cancel());
   }
 
@@ -79,7 +83,10 @@ export class Compare {
       strictPriority: s.strictPriority,
     };
     const paper = s.paperMode ? ' in paper mode (the report’s algorithms)' : '';
-    this.view.begin(`${live.name}, from the ${s.compareFrom}${paper} (budget ${s.compareTimeBudgetMs} ms, restarts ${s.restarts})`, this.methods.names.length);
+    this.view.begin(
+      `${live.name}, from the ${s.compareFrom}${paper} (budget ${s.compareTimeBudgetMs} ms, restarts ${s.restarts})`,
+      this.methods.names.length,
+    );
     const onRow = (row: CompareRow): void => {
       this.view.addRow(row, s.paperMode);
       if (row.history) this.plot.record(row.method, row.history);
@@ -116,7 +123,12 @@ export class Compare {
   }
 
   /** Runs the compare in the worker (made on first use), showing progress; resolves how it ended. */
-  private inWorker(session: IkSession, start: Float64Array, settings: SolveSettings, onRow: (row: CompareRow) => void): Promise<CompareEnd> {
+  private inWorker(
+    session: IkSession,
+    start: Float64Array,
+    settings: SolveSettings,
+    onRow: (row: CompareRow) => void,
+  ): Promise<CompareEnd> {
     const id = ++this.nextId;
     const worker = (this.worker ??= new Worker(new URL('./compare_worker.ts', import.meta.url), { type: 'module' }));
     return new Promise<CompareEnd>((resolve) => {

@@ -23,7 +23,11 @@ export class CompareView {
   private ticker = 0;
 
   /** `cancel` ends the running compare (the cancel button and closing the box while it runs). */
-  constructor(parent: HTMLElement, private readonly methods: MethodList, cancel: () => void) {
+  constructor(
+    parent: HTMLElement,
+    private readonly methods: MethodList,
+    cancel: () => void,
+  ) {
     this.element = document.createElement('section');
     this.element.className = 'compare';
     this.element.id = 'compare';
@@ -62,7 +66,13 @@ export class CompareView {
     this.body = table.createTBody();
     this.element.append(head, progress, table);
     parent.append(this.element);
-    this.plot = new ConvergencePlot(this.element, methods, 'log E vs iteration, every method from the same pose', 160, 'Each method’s E per iteration shows here as it finishes.');
+    this.plot = new ConvergencePlot(
+      this.element,
+      methods,
+      'log E vs iteration, every method from the same pose',
+      160,
+      'Each method’s E per iteration shows here as it finishes.',
+    );
   }
 
   /** Clears the table for a new comparison of `total` methods; `what` names the rig and settings. */
@@ -103,7 +113,13 @@ export class CompareView {
     name.title = `${this.methods.label(row.method)}: ${this.methods.describe(row.method)}`;
     const o = row.outcome;
     const cells = o
-      ? [formatNumber(o.elapsedSeconds), String(o.iterations), formatNumber(o.E), formatNumber(o.gradNorm), formatNumber(o.tipDistance)]
+      ? [
+          formatNumber(o.elapsedSeconds),
+          String(o.iterations),
+          formatNumber(o.E),
+          formatNumber(o.gradNorm),
+          formatNumber(o.tipDistance),
+        ]
       : ['–', '–', '–', '–', '–'];
     for (const c of cells) tr.insertCell().textContent = c;
     const outcome = tr.insertCell();
@@ -126,7 +142,11 @@ export class CompareView {
     const seconds = ((performance.now() - this.startedAt) / 1000).toFixed(1);
     const rows = `${this.body.rows.length} of ${this.total} methods`;
     this.status.textContent =
-      how === 'done' ? `done in ${seconds} s` : how === 'cancelled' ? `cancelled after ${seconds} s (${rows} done)` : `failed: ${message}`;
+      how === 'done'
+        ? `done in ${seconds} s`
+        : how === 'cancelled'
+          ? `cancelled after ${seconds} s (${rows} done)`
+          : `failed: ${message}`;
   }
 
   /** Which method is solving, how many are done, and the time so far. */

@@ -10,7 +10,10 @@ import { applyRequest, type CompareReply, type CompareRequest, type CompareRow }
 let core: Promise<IkCoreModule> | null = null;
 
 /** The worker's scope, typed as a worker's (the project's lib is the DOM's). */
-const scope = globalThis as unknown as { postMessage(message: CompareReply): void; addEventListener(type: 'message', f: (e: MessageEvent<CompareRequest>) => void): void };
+const scope = globalThis as unknown as {
+  postMessage(message: CompareReply): void;
+  addEventListener(type: 'message', f: (e: MessageEvent<CompareRequest>) => void): void;
+};
 
 const reply = (message: CompareReply): void => scope.postMessage(message);
 

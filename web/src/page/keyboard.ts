@@ -27,7 +27,12 @@ export function typingInto(target: EventTarget | null): boolean {
 
 /** Whether keys pressed in `target` go to a control (anything focused but the page itself and the view). */
 export function controlFocused(target: EventTarget | null): boolean {
-  return target instanceof Element && target !== document.body && target !== document.documentElement && !(target instanceof HTMLCanvasElement);
+  return (
+    target instanceof Element &&
+    target !== document.body &&
+    target !== document.documentElement &&
+    !(target instanceof HTMLCanvasElement)
+  );
 }
 
 /**
@@ -46,7 +51,10 @@ export class Keyboard {
   private readonly table: HTMLTableElement;
   private readonly onKey: (e: KeyboardEvent) => void;
 
-  constructor(parent: HTMLElement, private readonly shortcuts: Shortcut[]) {
+  constructor(
+    parent: HTMLElement,
+    private readonly shortcuts: Shortcut[],
+  ) {
     this.overlay = document.createElement('div');
     this.overlay.className = 'help-overlay';
     this.overlay.id = 'help';

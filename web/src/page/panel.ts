@@ -62,27 +62,47 @@ export class Panel {
     const s = settings;
 
     const rig = this.gui.addFolder('Rig');
-    this.rigController = rig.add(s, 'rig', rigs).name('project rig').onChange((v: string) => actions.rigChanged(v));
+    this.rigController = rig
+      .add(s, 'rig', rigs)
+      .name('project rig')
+      .onChange((v: string) => actions.rigChanged(v));
     rig.add({ open: () => actions.openFile() }, 'open').name('open .glb / .gltf / .json / .urdf…');
-    this.chainController = rig.add(this.urdf, 'chain', []).name('chain').onChange((v: string) => actions.chainChanged(v));
-    this.chainController.domElement.title = 'the URDF robot’s serial chain shown, BASE:TIP (its tip is the end effector); ?chain=BASE:TIP in the URL picks it too';
+    this.chainController = rig
+      .add(this.urdf, 'chain', [])
+      .name('chain')
+      .onChange((v: string) => actions.chainChanged(v));
+    this.chainController.domElement.title =
+      'the URDF robot’s serial chain shown, BASE:TIP (its tip is the end effector); ?chain=BASE:TIP in the URL picks it too';
     this.chainController.hide();
-    this.humanoidController = rig.add(s, 'humanoidLimits').name('humanoid limits').onChange(() => actions.limitsChanged());
+    this.humanoidController = rig
+      .add(s, 'humanoidLimits')
+      .name('humanoid limits')
+      .onChange(() => actions.limitsChanged());
     this.humanoidController.hide();
-    rig.add(s, 'showMesh').name('show mesh').onChange(() => actions.displayChanged());
-    rig.add(s, 'showBones').name('show bones').onChange(() => actions.displayChanged());
+    rig
+      .add(s, 'showMesh')
+      .name('show mesh')
+      .onChange(() => actions.displayChanged());
+    rig
+      .add(s, 'showBones')
+      .name('show bones')
+      .onChange(() => actions.displayChanged());
     rig.add(s, 'clickBone', ['toggle effector', 'select only']).name('click on a bone');
-    rig.add(s, 'gizmo', ['translate', 'rotate', 'swing']).name('gizmo (W / E / Q)').onChange(() => actions.gizmoChanged());
+    rig
+      .add(s, 'gizmo', ['translate', 'rotate', 'swing'])
+      .name('gizmo (W / E / Q)')
+      .onChange(() => actions.gizmoChanged());
     this.orientationController = rig
       .add(this.target, 'orientationGoal')
       .name('orientation goal (O)')
       .onChange((on: boolean) => actions.orientationGoalChanged(on));
-    this.orientationController.domElement.title = 'the selected target also sets its effector bone’s orientation (turn it with the rotate gizmo, E)';
+    this.orientationController.domElement.title =
+      'the selected target also sets its effector bone’s orientation (turn it with the rotate gizmo, E)';
     rig
       .add(s, 'poleHandles')
       .name('pole handles (P)')
-      .onChange(() => actions.poleHandlesChanged())
-      .domElement.title = 'a yellow handle per arm and leg: drag it to turn the elbow or knee towards it (the tips stay on their targets)';
+      .onChange(() => actions.poleHandlesChanged()).domElement.title =
+      'a yellow handle per arm and leg: drag it to turn the elbow or knee towards it (the tips stay on their targets)';
     rig.add({ reset: () => actions.resetPose() }, 'reset').name('reset pose (R)');
 
     const pose = this.gui.addFolder('Pose');
@@ -94,31 +114,61 @@ export class Panel {
     this.showUndo(false, false);
 
     const solver = this.gui.addFolder('Solver (every frame)');
-    solver.add(s, 'method', [...methods.names]).name('method').onChange(() => actions.methodChanged());
-    solver.add(s, 'tipTolerance').name('on target within (distance)').onChange(() => actions.settingsChanged());
-    solver.add(s, 'gradientTolerance').name('‖∇E‖ tolerance').onChange(() => actions.settingsChanged());
-    solver.add(s, 'maxIterations', 1, 1000, 1).name('iterations / frame').onChange(() => actions.settingsChanged());
-    solver.add(s, 'timeBudgetMs', 0.25, 16, 0.25).name('ms budget / frame').onChange(() => actions.settingsChanged());
-    solver.add(s, 'paperMode').name('paper mode (the report’s algorithms)').onChange(() => actions.settingsChanged());
+    solver
+      .add(s, 'method', [...methods.names])
+      .name('method')
+      .onChange(() => actions.methodChanged());
+    solver
+      .add(s, 'tipTolerance')
+      .name('on target within (distance)')
+      .onChange(() => actions.settingsChanged());
+    solver
+      .add(s, 'gradientTolerance')
+      .name('‖∇E‖ tolerance')
+      .onChange(() => actions.settingsChanged());
+    solver
+      .add(s, 'maxIterations', 1, 1000, 1)
+      .name('iterations / frame')
+      .onChange(() => actions.settingsChanged());
+    solver
+      .add(s, 'timeBudgetMs', 0.25, 16, 0.25)
+      .name('ms budget / frame')
+      .onChange(() => actions.settingsChanged());
+    solver
+      .add(s, 'paperMode')
+      .name('paper mode (the report’s algorithms)')
+      .onChange(() => actions.settingsChanged());
     solver
       .add(s, 'strictPriority')
       .name('strict priority')
       .onChange(() => actions.settingsChanged())
-      .domElement.setAttribute('title', 'on: targets that can be met stay met, the dragged one gives way; off: the least-squares point of all targets, which pulls the pinned ones off theirs (the report’s wobble)');
+      .domElement.setAttribute(
+        'title',
+        'on: targets that can be met stay met, the dragged one gives way; off: the least-squares point of all targets, which pulls the pinned ones off theirs (the report’s wobble)',
+      );
     solver
       .add(s, 'pinOrientations')
       .name('pin orientations')
       .onChange(() => actions.settingsChanged())
-      .domElement.setAttribute('title', 'on: while a target is dragged, the other end effectors keep their turn as well as their place (given up before the place when their chain cannot keep both); off: only their places are pinned');
+      .domElement.setAttribute(
+        'title',
+        'on: while a target is dragged, the other end effectors keep their turn as well as their place (given up before the place when their chain cannot keep both); off: only their places are pinned',
+      );
     solver
       .add(s, 'stillBody')
       .name('still body (no humanoid map)')
       .onChange(() => actions.settingsChanged())
-      .domElement.setAttribute('title', 'on a rig not recognised as a humanoid: the bones the dragged target’s limb does not need alone keep their pose, so lifting a paw moves only its leg (the body still follows a target the limb cannot reach); off: the least change over the whole body');
+      .domElement.setAttribute(
+        'title',
+        'on a rig not recognised as a humanoid: the bones the dragged target’s limb does not need alone keep their pose, so lifting a paw moves only its leg (the body still follows a target the limb cannot reach); off: the least change over the whole body',
+      );
 
     const teach = this.gui.addFolder('Teaching');
     this.folders = [rig, pose, solver, teach];
-    teach.add(s, 'stepMode').name('step mode').onChange(() => actions.stepModeChanged());
+    teach
+      .add(s, 'stepMode')
+      .name('step mode')
+      .onChange(() => actions.stepModeChanged());
     teach.add({ step: () => actions.step() }, 'step').name('one iteration (S)');
     teach.add(s, 'autoStep').name('slow tick');
     teach.add(s, 'stepIntervalMs', 100, 3000, 50).name('tick (ms)');
@@ -157,7 +207,8 @@ export class Panel {
   /** Enables "save posed model" when `problem` is null; else disables it with `problem` as its tooltip. */
   showGlbExport(problem: string | null): void {
     this.glbController.enable(problem === null);
-    this.glbController.domElement.title = problem ?? 'the rig’s file with the solved joint rotations written into its nodes';
+    this.glbController.domElement.title =
+      problem ?? 'the rig’s file with the solved joint rotations written into its nodes';
   }
 
   /** Shows the rig choice without calling back (e.g. a dropped file: no project rig selected). */

@@ -13,7 +13,18 @@ import type { MethodList } from '../live/methods.js';
 import { plotIndices } from './plot_sampling.js';
 
 /** Series colours, by a method's position in the registry's list (lm, gn, bfgs, newton, gd, then any added). */
-const PALETTE = ['#f2b134', '#59c26b', '#4e9bf5', '#b07aa1', '#e15759', '#76b7b2', '#ff9da7', '#9c755f', '#edc948', '#bab0ac'];
+const PALETTE = [
+  '#f2b134',
+  '#59c26b',
+  '#4e9bf5',
+  '#b07aa1',
+  '#e15759',
+  '#76b7b2',
+  '#ff9da7',
+  '#9c755f',
+  '#edc948',
+  '#bab0ac',
+];
 
 /** The colour of `method` in the plots and the compare table. */
 export function methodColor(methods: MethodList, method: string): string {
@@ -105,14 +116,16 @@ export class ConvergencePlot {
           label: this.logIterations ? 'iteration (log scale)' : 'iteration',
           filter: (_u: uPlot, splits: number[]) => splits.map((v) => (v >= 0 ? v : null)), // asinh ticks reach below 0
           // On the log axis only 0 and powers of 10 are labelled (every tick keeps its grid line).
-          values: (_u: uPlot, splits: number[]) => splits.map((v) => (!this.logIterations || v === 0 || Number.isInteger(Math.log10(v)) ? String(v) : '')),
+          values: (_u: uPlot, splits: number[]) =>
+            splits.map((v) => (!this.logIterations || v === 0 || Number.isInteger(Math.log10(v)) ? String(v) : '')),
         },
         {
           stroke: '#aab',
           grid: { stroke: '#ffffff14' },
           label: 'E',
           size: 60,
-          values: (_u: uPlot, splits: (number | null)[]) => splits.map((v) => (v === null || v === undefined ? '' : v === 0 ? '0' : v.toExponential(0))),
+          values: (_u: uPlot, splits: (number | null)[]) =>
+            splits.map((v) => (v === null || v === undefined ? '' : v === 0 ? '0' : v.toExponential(0))),
         },
       ],
       legend: { show: true, live: false },

@@ -44,7 +44,9 @@ export function poseJsonText(live: LiveRig): string {
     root: session.angles.length > n ? session.angles.subarray(n) : undefined,
     effectors,
     targets: session.targets,
-    orientations: Array.from(effectors, (_, k) => (goals.orientation[k] ? goals.rotations.subarray(4 * k, 4 * k + 4) : null)),
+    orientations: Array.from(effectors, (_, k) =>
+      goals.orientation[k] ? goals.rotations.subarray(4 * k, 4 * k + 4) : null,
+    ),
   });
 }
 
@@ -61,14 +63,20 @@ export function readPoseText(text: string, live: LiveRig): { state: PoseState; w
   const angles = new Float64Array(session.angles.length);
   angles.set(read.angles);
   if (read.root && angles.length > read.angles.length) angles.set(read.root, read.angles.length);
-  else if (read.root) read.warnings.push(`the pose moves the root by [${Array.from(read.root).join(', ')}], which this rig cannot (its hips do not float): ignored`);
+  else if (read.root)
+    read.warnings.push(
+      `the pose moves the root by [${Array.from(read.root).join(', ')}], which this rig cannot (its hips do not float): ignored`,
+    );
   const pose = session.rig.project(angles);
   if (read.effectors.length === 0) {
     const effectors = session.effectors();
     const targets = session.rig.tips(pose);
     return { state: poseWithOrientations(pose, effectors, targets, []), warnings: read.warnings };
   }
-  return { state: poseWithOrientations(pose, read.effectors, read.targets, read.orientations), warnings: read.warnings };
+  return {
+    state: poseWithOrientations(pose, read.effectors, read.targets, read.orientations),
+    warnings: read.warnings,
+  };
 }
 
 /**
@@ -77,7 +85,9 @@ export function readPoseText(text: string, live: LiveRig): { state: PoseState; w
  */
 export async function readPoseFile(file: File, live: LiveRig): Promise<{ state: PoseState; warnings: string[] }> {
   if (file.size > MAX_POSE_CHARS)
-    throw new PoseFormatError(`pose file ${file.name}: ${(file.size / 1048576).toFixed(1)} MB, more than a pose file holds (at most ${MAX_POSE_CHARS / 1048576} MB)`);
+    throw new PoseFormatError(
+      `pose file ${file.name}: ${(file.size / 1048576).toFixed(1)} MB, more than a pose file holds (at most ${MAX_POSE_CHARS / 1048576} MB)`,
+    );
   return readPoseText(await file.text(), live);
 }
 

@@ -122,8 +122,15 @@ declare global {
 }
 
 export function makeProbe(app: PageApp): PageProbe {
-  const a = new Vector3(), b = new Vector3(), turn = new Quaternion();
-  const quad = (q: ArrayLike<number>, k: number): [number, number, number, number] => [q[4 * k], q[4 * k + 1], q[4 * k + 2], q[4 * k + 3]];
+  const a = new Vector3(),
+    b = new Vector3(),
+    turn = new Quaternion();
+  const quad = (q: ArrayLike<number>, k: number): [number, number, number, number] => [
+    q[4 * k],
+    q[4 * k + 1],
+    q[4 * k + 2],
+    q[4 * k + 3],
+  ];
   const { controller } = app;
   const { stage } = controller;
   const session = () => controller.live?.session;
@@ -181,7 +188,10 @@ export function makeProbe(app: PageApp): PageProbe {
     solvePoles() {
       const problem = session()?.problem();
       if (!problem || !isGoals(problem)) return [];
-      return (problem.poles ?? []).map((p) => ({ bone: Number(p.bone), point: Array.from(p.point) as [number, number, number] }));
+      return (problem.poles ?? []).map((p) => ({
+        bone: Number(p.bone),
+        point: Array.from(p.point) as [number, number, number],
+      }));
     },
     angles: () => Array.from(session()?.angles ?? []),
     targets: () => Array.from(session()?.targets ?? []),
@@ -220,7 +230,8 @@ export function makeProbe(app: PageApp): PageProbe {
       return box.isEmpty() ? null : { min: box.min.toArray(), max: box.max.toArray() };
     },
     gizmoMode: () => controller.handles.gizmoMode,
-    rootJoint: () => (controller.live ? (controller.live.view.boneBase(0, a).toArray() as [number, number, number]) : null),
+    rootJoint: () =>
+      controller.live ? (controller.live.view.boneBase(0, a).toArray() as [number, number, number]) : null,
     orientationGoal(k) {
       const s = session();
       return s && s.goals.orientation[k] === 1 ? quad(s.goals.rotations, k) : null;
@@ -231,7 +242,9 @@ export function makeProbe(app: PageApp): PageProbe {
     },
     orientationError(k) {
       const s = session();
-      return s && s.goals.orientation[k] === 1 ? orientationErrorsDeg(s.rig, s.angles, s.goals.goals(s.effectors(), s.targets))[k] : NaN;
+      return s && s.goals.orientation[k] === 1
+        ? orientationErrorsDeg(s.rig, s.angles, s.goals.goals(s.effectors(), s.targets))[k]
+        : NaN;
     },
     axesShown: (k) => controller.handles.axesShown(k),
     gizmoQuaternion() {

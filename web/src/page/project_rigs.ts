@@ -59,16 +59,31 @@ export async function loadProjectRig(key: string, base: string | URL = document.
  * refuse the rest before three.js's GLTFLoader sees the file. `options.chain` picks a URDF's chain.
  * Throws an Error naming the file.
  */
-export async function loadUserFile(file: File, options: LoadRigOptions = {}, others: readonly PathFile[] = []): Promise<RigSource> {
+export async function loadUserFile(
+  file: File,
+  options: LoadRigOptions = {},
+  others: readonly PathFile[] = [],
+): Promise<RigSource> {
   if (file.size > MAX_RIG_FILE_BYTES)
-    throw new RigFormatError(`${file.name}: ${file.size} bytes, more than the ${MAX_RIG_FILE_BYTES} (512 MiB) a rig file may have`);
+    throw new RigFormatError(
+      `${file.name}: ${file.size} bytes, more than the ${MAX_RIG_FILE_BYTES} (512 MiB) a rig file may have`,
+    );
   const bytes = new Uint8Array(await file.arrayBuffer());
-  return readRig(bytes, file.name, async (uri) => {
-    // A URDF's meshes come from the files given with it; a .gltf must embed what it refers to
-    // (three.js's loader, which draws it, would fetch its files from the page's address).
-    const sibling = /\.urdf$/i.test(file.name) ? findSibling(uri, others) : undefined;
-    if (!sibling) throw new Error(`${file.name} refers to "${uri}": choose a .glb, or a .gltf with embedded buffers`);
-    if (sibling.size > MAX_RIG_FILE_BYTES) throw new Error(`${sibling.name}: ${sibling.size} bytes, more than the ${MAX_RIG_FILE_BYTES} (512 MiB) a file beside a rig may have`);
-    return new Uint8Array(await sibling.arrayBuffer());
-  }, '', options);
+  return readRig(
+    bytes,
+    file.name,
+    async (uri) => {
+      // A URDF's meshes come from the files given with it; a .gltf must embed what it refers to
+      // (three.js's loader, which draws it, would fetch its files from the page's address).
+      const sibling = /\.urdf$/i.test(file.name) ? findSibling(uri, others) : undefined;
+      if (!sibling) throw new Error(`${file.name} refers to "${uri}": choose a .glb, or a .gltf with embedded buffers`);
+      if (sibling.size > MAX_RIG_FILE_BYTES)
+        throw new Error(
+          `${sibling.name}: ${sibling.size} bytes, more than the ${MAX_RIG_FILE_BYTES} (512 MiB) a file beside a rig may have`,
+        );
+      return new Uint8Array(await sibling.arrayBuffer());
+    },
+    '',
+    options,
+  );
 }

@@ -15,8 +15,14 @@ const AXES = ['X (twist)', 'Z (swing)', 'X (twist)'];
 export function describeLimits(spec: RigSpec, i: number, angles: Float64Array): string[] {
   const lines: string[] = [];
   for (let k = 0; k < 3; k++) {
-    const lo = spec.lower[3 * i + k], hi = spec.upper[3 * i + k], a = angles[3 * i + k];
-    const range = unbounded(lo, hi) ? 'free' : lo === hi ? `fixed at ${lo.toFixed(1)}°` : `[${lo.toFixed(1)}°, ${hi.toFixed(1)}°]`;
+    const lo = spec.lower[3 * i + k],
+      hi = spec.upper[3 * i + k],
+      a = angles[3 * i + k];
+    const range = unbounded(lo, hi)
+      ? 'free'
+      : lo === hi
+        ? `fixed at ${lo.toFixed(1)}°`
+        : `[${lo.toFixed(1)}°, ${hi.toFixed(1)}°]`;
     lines.push(`a${k} ${AXES[k]}: ${a.toFixed(1)}° in ${range}`);
   }
   return lines;
@@ -33,7 +39,8 @@ export function isHinge(spec: RigSpec, i: number): boolean {
 
 /** The readout line of hinge bone i (isHinge): its one angle (degrees) and its limits. */
 export function describeHinge(spec: RigSpec, i: number, angles: Float64Array): string {
-  const lo = spec.lower[3 * i], hi = spec.upper[3 * i];
+  const lo = spec.lower[3 * i],
+    hi = spec.upper[3 * i];
   const range = unbounded(lo, hi) ? 'free' : `[${lo.toFixed(1)}°, ${hi.toFixed(1)}°]`;
   return `angle about its axis (a0): ${angles[3 * i].toFixed(1)}° in ${range}`;
 }
@@ -59,7 +66,8 @@ export function showSelection(box: HTMLElement, live: LiveRig | null, humanoidLi
   const bone = live?.selectedBone ?? null;
   box.replaceChildren();
   if (!live || bone === null) {
-    box.textContent = 'Click a bone to make its tip an end effector or remove it (shift-click: show its joint limits only).';
+    box.textContent =
+      'Click a bone to make its tip an end effector or remove it (shift-click: show its joint limits only).';
     return;
   }
   const { spec, angles } = live.session;
@@ -81,7 +89,8 @@ export function showSelection(box: HTMLElement, live: LiveRig | null, humanoidLi
   } else {
     const { bend, twist } = bendAndTwist(angles[3 * bone], angles[3 * bone + 1], angles[3 * bone + 2]);
     turn.textContent = `from rest: bent ${bend.toFixed(1)}°, twisted ${twist.toFixed(1)}°`;
-    turn.title = 'a0 picks the plane the bone bends in, a1 bends it in that plane, a0 + a2 twists it about itself: at rest a0 and a2 cancel';
+    turn.title =
+      'a0 picks the plane the bone bends in, a1 bends it in that plane, a0 + a2 twists it about itself: at rest a0 and a2 cancel';
   }
   box.append(title, list, turn, document.createElement('br'));
   if (live.hasHumanoidLimits) {
@@ -112,7 +121,8 @@ export function toggleEffector(controller: LiveController, bone: number): boolea
  * order, wrapping; holding none (or a pole handle), the first or the last. No targets: nothing.
  */
 export function stepTarget(handles: Handles, step: 1 | -1): void {
-  const n = handles.count, k = handles.selected;
+  const n = handles.count,
+    k = handles.selected;
   if (n === 0) return;
   handles.select(k === null ? (step > 0 ? 0 : n - 1) : (k + step + n) % n);
 }

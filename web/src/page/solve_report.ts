@@ -33,11 +33,29 @@ export class SolveReport {
   private readonly histories = new Map<string, Float64Array>();
   /** The stats of the last solve (one record, rewritten by each). */
   private readonly values: StatsValues = {
-    method: '', iterations: 0, E: 0, gradNorm: 0, reached: false, tipDistance: 0, orientationErrorDeg: NaN, pixelsPerUnit: NaN, stopReason: '', outOfReach: false, orientationOutOfReach: false, paperMode: false, ms: 0, pinnedDrift: 0,
+    method: '',
+    iterations: 0,
+    E: 0,
+    gradNorm: 0,
+    reached: false,
+    tipDistance: 0,
+    orientationErrorDeg: NaN,
+    pixelsPerUnit: NaN,
+    stopReason: '',
+    outOfReach: false,
+    orientationOutOfReach: false,
+    paperMode: false,
+    ms: 0,
+    pinnedDrift: 0,
   };
 
   /** The stats and the plot go into `side`; `controller` shows the rig, `settings` name the method. */
-  constructor(side: HTMLElement, methods: MethodList, private readonly controller: LiveController, private readonly settings: PageSettings) {
+  constructor(
+    side: HTMLElement,
+    methods: MethodList,
+    private readonly controller: LiveController,
+    private readonly settings: PageSettings,
+  ) {
     this.stats = new StatsPanel(side);
     this.plot = new ConvergencePlot(side, methods);
   }
@@ -47,7 +65,8 @@ export class SolveReport {
    * by then a later solve that started on target (0 iterations) may have replaced it.
    */
   private plotLastSolve(): void {
-    const method = this.settings.method, session = this.controller.live?.session;
+    const method = this.settings.method,
+      session = this.controller.live?.session;
     if (!session || session.lastIterations(method) === 0) return;
     // Copied into a buffer kept per method (grown when short): no new array per frame.
     let buffer = this.histories.get(method) ?? new Float64Array(64);
@@ -63,7 +82,12 @@ export class SolveReport {
   /** A per-frame solve: its outcome, main-thread ms and the tips at the new pose (3 per effector). */
   solved(outcome: SolveOutcome, ms: number, tips: Float64Array): void {
     if (ms > (this.slowest?.ms ?? -1))
-      this.slowest = { ms, solverMs: outcome.elapsedSeconds * 1000, iterations: outcome.iterations, stopReason: outcome.stopReason };
+      this.slowest = {
+        ms,
+        solverMs: outcome.elapsedSeconds * 1000,
+        iterations: outcome.iterations,
+        stopReason: outcome.stopReason,
+      };
     this.plotLastSolve();
     this.stats.show(this.valuesOf(outcome, ms, tips));
   }
@@ -84,7 +108,8 @@ export class SolveReport {
   pending(): void {
     const session = this.controller.live?.session;
     if (!session) return;
-    const tips = session.tips(), targets = session.targets;
+    const tips = session.tips(),
+      targets = session.targets;
     const k = Math.min(this.controller.handles.selected ?? 0, targets.length / 3 - 1);
     const s = this.values;
     s.method = this.settings.method;

@@ -39,22 +39,33 @@ const OPTIONAL = new Set<string>(['orientationErrorDeg']);
 const FIELDS: { key: keyof StatsValues | 'median' | 'status'; label: string; title: string }[] = [
   { key: 'method', label: 'method', title: 'the method solving every frame' },
   { key: 'status', label: 'status', title: 'what the last solve reached' },
-  { key: 'tipDistance', label: 'tip error', title: 'largest distance of an end effector from its target (rig units, and screen pixels)' },
+  {
+    key: 'tipDistance',
+    label: 'tip error',
+    title: 'largest distance of an end effector from its target (rig units, and screen pixels)',
+  },
   {
     key: 'orientationErrorDeg',
     label: 'orientation error',
-    title: 'largest angle between an effector’s bone frame and its orientation goal, degrees (shown while a target has an orientation goal)',
+    title:
+      'largest angle between an effector’s bone frame and its orientation goal, degrees (shown while a target has an orientation goal)',
   },
   { key: 'iterations', label: 'iterations', title: 'iterations of the last solve' },
   { key: 'E', label: 'E', title: 'E = ½ Σ |tip − target|² after the last solve' },
   { key: 'gradNorm', label: '‖∇E‖', title: 'gradient norm after the last solve' },
   { key: 'ms', label: 'ms / solve', title: 'main-thread milliseconds of the last solve (JS + WebAssembly)' },
   { key: 'median', label: 'median ms', title: 'running median of ms / solve over the last solves' },
-  { key: 'pinnedDrift', label: 'pinned drift', title: 'largest distance from its target of an end effector other than the selected one (the one you drag): the report’s “wobble”' },
+  {
+    key: 'pinnedDrift',
+    label: 'pinned drift',
+    title:
+      'largest distance from its target of an end effector other than the selected one (the one you drag): the report’s “wobble”',
+  },
 ];
 
 /** What the method cell says: the method, and that it runs as the report's algorithm in paper mode. */
-const methodText = (v: Pick<StatsValues, 'method' | 'paperMode'>): string => (v.paperMode && v.method ? `${v.method} (paper mode)` : v.method);
+const methodText = (v: Pick<StatsValues, 'method' | 'paperMode'>): string =>
+  v.paperMode && v.method ? `${v.method} (paper mode)` : v.method;
 
 /** A number to 3 significant digits: plain in [1e-3, 1e4) (trailing zeros dropped), exponential outside. */
 export function formatNumber(x: number): string {
@@ -80,7 +91,20 @@ export class StatsPanel {
   private readonly cells = new Map<string, HTMLElement>();
   /** The last solve's values, written out by writeNumbers(). */
   private readonly latest: StatsValues = {
-    method: '', iterations: 0, E: 0, gradNorm: 0, reached: false, tipDistance: 0, orientationErrorDeg: NaN, pixelsPerUnit: NaN, stopReason: '', outOfReach: false, orientationOutOfReach: false, paperMode: false, ms: 0, pinnedDrift: 0,
+    method: '',
+    iterations: 0,
+    E: 0,
+    gradNorm: 0,
+    reached: false,
+    tipDistance: 0,
+    orientationErrorDeg: NaN,
+    pixelsPerUnit: NaN,
+    stopReason: '',
+    outOfReach: false,
+    orientationOutOfReach: false,
+    paperMode: false,
+    ms: 0,
+    pinnedDrift: 0,
   };
   /** The words the status cell shows, or null. */
   private words: StatusWords | null = null;
@@ -182,7 +206,11 @@ export class StatsPanel {
     this.set('E', formatNumber(v.E), v.E);
     this.set('gradNorm', Number.isNaN(v.gradNorm) ? '–' : formatNumber(v.gradNorm), v.gradNorm); // –: not solved
     const px = v.tipDistance * v.pixelsPerUnit;
-    this.set('tipDistance', `${formatNumber(v.tipDistance)}${Number.isFinite(px) ? ` (${px.toFixed(1)} px)` : ''}`, v.tipDistance);
+    this.set(
+      'tipDistance',
+      `${formatNumber(v.tipDistance)}${Number.isFinite(px) ? ` (${px.toFixed(1)} px)` : ''}`,
+      v.tipDistance,
+    );
     this.setOptional('orientationErrorDeg', `${v.orientationErrorDeg.toPrecision(3)}°`, v.orientationErrorDeg);
     this.set('ms', Number.isNaN(v.ms) ? '–' : formatNumber(v.ms), v.ms);
     const m = this.median.median();

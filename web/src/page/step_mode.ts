@@ -42,10 +42,24 @@ function isRunning(reason: string): boolean {
  * One iteration of `method` from the session's pose (which becomes the iterate). `restart` begins
  * a new solve first (after the targets, the method or the pose changed); `label` names the method.
  */
-function takeStep(session: IkSession, method: string, label: string, settings: PageSettings, restart: boolean): StepReport {
+function takeStep(
+  session: IkSession,
+  method: string,
+  label: string,
+  settings: PageSettings,
+  restart: boolean,
+): StepReport {
   if (restart || session.steppingMethod !== method) {
     const { gradientTolerance, tipTolerance, paperMode, strictPriority } = settings;
-    session.beginSteps(method, { gradientTolerance, tipTolerance, paperMode, strictPriority, maxIterations: settings.compareMaxIterations, timeBudgetMs: Infinity, restarts: 0 });
+    session.beginSteps(method, {
+      gradientTolerance,
+      tipTolerance,
+      paperMode,
+      strictPriority,
+      maxIterations: settings.compareMaxIterations,
+      timeBudgetMs: Infinity,
+      restarts: 0,
+    });
   }
   const before = session.angles.slice();
   const E0 = session.objective();
@@ -97,7 +111,9 @@ export class StepMode {
     this.dirty = true;
     this.controller.solving = !on;
     if (on) {
-      this.showInfo('step mode: press S (or “one iteration”) to take one iteration; drag a target to pose a new problem');
+      this.showInfo(
+        'step mode: press S (or “one iteration”) to take one iteration; drag a target to pose a new problem',
+      );
       return;
     }
     this.controller.live?.session.endSteps();

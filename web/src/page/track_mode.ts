@@ -191,12 +191,18 @@ export class TrackMode {
    */
   async playClip(index: number): Promise<void> {
     if (!this.enter()) return;
-    const live = this.live!, driver = this.driver!;
+    const live = this.live!,
+      driver = this.driver!;
     if (!this.clips) {
       const load = ++this.clipLoads;
       let player: ClipPlayer;
       try {
-        player = await ClipPlayer.load(live.source, driver.solver.bones, driver.standing.points, this.ghostOffset(driver));
+        player = await ClipPlayer.load(
+          live.source,
+          driver.solver.bones,
+          driver.standing.points,
+          this.ghostOffset(driver),
+        );
       } catch (e) {
         if (load === this.clipLoads) this.failed(`play clip: ${errorText(e)}`);
         return;
@@ -238,9 +244,13 @@ export class TrackMode {
    */
   async enterVr(): Promise<void> {
     if (this.vr || this.vrStarting || !this.enter()) return;
-    const s = this.driver!.standing, h = s.height;
+    const s = this.driver!.standing,
+      h = s.height;
     const forward = new Vector3(...s.forward);
-    const at = new Vector3(s.points.positions[0], s.floorY, s.points.positions[2]).addScaledVector(forward, VR_DISTANCE * h);
+    const at = new Vector3(s.points.positions[0], s.floorY, s.points.positions[2]).addScaledVector(
+      forward,
+      VR_DISTANCE * h,
+    );
     this.vrStarting = true;
     let vr: VrSession;
     try {
@@ -305,7 +315,12 @@ export class TrackMode {
   /** The drag mode's targets, gizmo, step ghost and limit sectors are hidden, its solving paused. */
   private putAwayDragMode(live: LiveRig): void {
     const handles = this.controller.handles;
-    this.dragMode = { target: handles.selected, pole: handles.selectedPole, stepGhost: live.ghost.root.visible, limits: live.limits.root.visible };
+    this.dragMode = {
+      target: handles.selected,
+      pole: handles.selectedPole,
+      stepGhost: live.ghost.root.visible,
+      limits: live.limits.root.visible,
+    };
     handles.select(null);
     handles.root.traverse((o) => o.layers.set(AWAY_LAYER));
     live.ghost.root.visible = false;
@@ -315,7 +330,8 @@ export class TrackMode {
 
   /** The drag mode as putAwayDragMode() found it; the rig is redrawn from its session next frame. */
   private bringBackDragMode(live: LiveRig): void {
-    const handles = this.controller.handles, was = this.dragMode;
+    const handles = this.controller.handles,
+      was = this.dragMode;
     handles.root.traverse((o) => o.layers.set(0)); // the handles' objects all live on the default layer
     if (was.pole !== null) handles.selectPole(was.pole);
     else handles.select(was.target);
@@ -327,7 +343,8 @@ export class TrackMode {
 
   /** Every frame in track mode: the clip or the headset moves the points (the gizmos move them as they are dragged), and the avatar solves. */
   private frame(seconds: number): void {
-    const driver = this.driver, live = this.live;
+    const driver = this.driver,
+      live = this.live;
     if (!driver || !live) return;
     try {
       if (this.clips?.playing != null) {

@@ -30,7 +30,10 @@ export class TrackPanel {
    * The controls of `track`, in a panel of their own added to `container`; closed (its title
    * only) until opened or track mode goes on, so that what follows it in the side column stays in view.
    */
-  constructor(container: HTMLElement, private readonly track: TrackMode) {
+  constructor(
+    container: HTMLElement,
+    private readonly track: TrackMode,
+  ) {
     const folder = (this.gui = new GUI({ container, title: 'Track (avatar)' }).close());
     this.onController = folder
       .add(this.state, 'on')
@@ -47,9 +50,14 @@ export class TrackPanel {
         if (track.source === 'clip') void track.playClip(this.state.clip); // another clip while one plays: play that one
       });
     this.playController = folder.add({ play: () => this.playOrStop() }, 'play').name('play clip');
-    this.playController.domElement.title = 'the clip moves the head and hands (its own pose: the faint ghost beside); the avatar follows them';
-    this.vrController = folder.add({ vr: () => void (track.inVr ? track.exitVr() : track.enterVr()) }, 'vr').name('enter VR').hide();
-    this.vrController.domElement.title = 'the headset moves the head, the controllers’ grips the hands; stand as the avatar stands to start (a squeeze calibrates again)';
+    this.playController.domElement.title =
+      'the clip moves the head and hands (its own pose: the faint ghost beside); the avatar follows them';
+    this.vrController = folder
+      .add({ vr: () => void (track.inVr ? track.exitVr() : track.enterVr()) }, 'vr')
+      .name('enter VR')
+      .hide();
+    this.vrController.domElement.title =
+      'the headset moves the head, the controllers’ grips the hands; stand as the avatar stands to start (a squeeze calibrates again)';
     this.status = document.createElement('p');
     this.status.className = 'track-status';
     folder.$children.append(this.status);
@@ -71,11 +79,13 @@ export class TrackPanel {
 
   /** Re-reads track mode's state into the controls and the status line. */
   refresh(): void {
-    const track = this.track, problem = track.problem();
+    const track = this.track,
+      problem = track.problem();
     this.state.on = track.active;
     if (track.active) this.gui.open();
     this.onController.enable(problem === null).updateDisplay();
-    this.onController.domElement.title = problem ?? 'gizmos on the head and hands move the whole body (the feet stand, or step when the body leaves them)';
+    this.onController.domElement.title =
+      problem ?? 'gizmos on the head and hands move the whole body (the feet stand, or step when the body leaves them)';
     const clips = problem === null && this.state.clip !== NO_CLIP;
     this.clipController.enable(clips).updateDisplay();
     this.playController.enable(clips).name(track.source === 'clip' ? 'stop clip' : 'play clip');
@@ -94,7 +104,10 @@ export class TrackPanel {
   }
 
   private showStatus(): void {
-    const track = this.track, s = this.status, avatar = track.avatar, outcome = track.outcome;
+    const track = this.track,
+      s = this.status,
+      avatar = track.avatar,
+      outcome = track.outcome;
     s.dataset.active = String(track.active);
     s.dataset.source = track.source;
     if (!avatar || !outcome) {
@@ -103,12 +116,22 @@ export class TrackPanel {
       return;
     }
     const words = statusWords(outcome, false);
-    const feet = avatar.feet(), delta = DRAG_TIP_SHARE * avatar.standing.height;
+    const feet = avatar.feet(),
+      delta = DRAG_TIP_SHARE * avatar.standing.height;
     s.dataset.reached = String(outcome.reached);
     s.dataset.ms = String(avatar.ms);
     s.title = words.title;
-    const driven = track.source === 'clip' ? 'the clip moves the head and hands' : track.source === 'vr' ? 'the headset moves the head and hands' : 'drag the head and hands';
-    const feetText = feet.stepping ? 'a foot steps' : feet.drift <= delta ? 'feet planted' : `feet off by ${formatNumber(feet.drift)}`;
+    const driven =
+      track.source === 'clip'
+        ? 'the clip moves the head and hands'
+        : track.source === 'vr'
+          ? 'the headset moves the head and hands'
+          : 'drag the head and hands';
+    const feetText = feet.stepping
+      ? 'a foot steps'
+      : feet.drift <= delta
+        ? 'feet planted'
+        : `feet off by ${formatNumber(feet.drift)}`;
     s.textContent = `${driven} · ${words.text} · ${feetText} · ${formatNumber(avatar.ms)} ms/solve`;
   }
 }

@@ -54,17 +54,22 @@ export function makeTrackProbe(app: PageApp): TrackProbe {
     problem: () => track.problem(),
     source: () => track.source,
     points: () => Array.from(track.points.positions),
-    pointScreen: (k) => (track.active && k >= 0 && k < 3 ? stage.toScreen(p.fromArray(track.points.positions, 3 * k)) : null),
+    pointScreen: (k) =>
+      track.active && k >= 0 && k < 3 ? stage.toScreen(p.fromArray(track.points.positions, 3 * k)) : null,
     selected: () => track.gizmos.handles.selected,
     tips: () => Array.from(track.avatar?.solver.tips() ?? []),
     standingTips: () => Array.from(track.avatar?.standingTips ?? []),
     plantedFeet: () => track.avatar?.solver.plantedFeet() ?? [],
     height: () => track.avatar?.standing.height ?? NaN,
     solves: () => track.solves,
-    lastSolve: () => (track.outcome ? { reached: track.outcome.reached, stopReason: track.outcome.stopReason, ms: track.avatar?.ms ?? NaN } : null),
+    lastSolve: () =>
+      track.outcome
+        ? { reached: track.outcome.reached, stopReason: track.outcome.stopReason, ms: track.avatar?.ms ?? NaN }
+        : null,
     clipNames: () => track.clipNames(),
     playingClip: () => track.clipPlayer?.playing ?? null,
     ghostTips: () => (track.clipPlayer ? Array.from(track.clipPlayer.ghostTips()) : null),
-    ghostOffset: () => (track.clipPlayer ? (track.clipPlayer.root.position.toArray() as [number, number, number]) : null),
+    ghostOffset: () =>
+      track.clipPlayer ? (track.clipPlayer.root.position.toArray() as [number, number, number]) : null,
   };
 }

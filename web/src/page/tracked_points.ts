@@ -16,7 +16,10 @@ export class TrackedPoints {
   readonly input: AvatarInput;
 
   constructor() {
-    const at = (k: number) => ({ position: this.positions.subarray(3 * k, 3 * k + 3), orientation: this.rotations.subarray(4 * k, 4 * k + 4) });
+    const at = (k: number) => ({
+      position: this.positions.subarray(3 * k, 3 * k + 3),
+      orientation: this.rotations.subarray(4 * k, 4 * k + 4),
+    });
     this.input = { head: at(0), leftHand: at(1), rightHand: at(2) };
   }
 

@@ -31,7 +31,10 @@ export interface XrSample {
 
 /** What xrSample() reads: the parts of WebXR's XRFrame, XRInputSource and XRPose it uses (real ones fit). */
 export interface XrPoseLike {
-  transform: { position: { x: number; y: number; z: number }; orientation: { x: number; y: number; z: number; w: number } };
+  transform: {
+    position: { x: number; y: number; z: number };
+    orientation: { x: number; y: number; z: number; w: number };
+  };
 }
 export interface XrInputSourceLike {
   handedness: string;
@@ -120,7 +123,8 @@ export class XrTracking {
     if (!head || !left || !right) return false;
     v.set(0, 0, -1).applyQuaternion(unitQuaternion(head.orientation, q));
     if (Math.hypot(v.x, v.z) < MIN_LEVEL_GAZE) return false;
-    const s = this.standing, points = s.points;
+    const s = this.standing,
+      points = s.points;
     const headY = head.position[1];
     this.scale = (points.positions[1] - s.floorY) / (headY > MIN_FLOOR_HEAD_HEIGHT ? headY : ASSUMED_HEAD_HEIGHT);
     this.turn.setFromAxisAngle(UP, Math.atan2(s.forward[0], s.forward[2]) - Math.atan2(v.x, v.z));
@@ -151,11 +155,16 @@ function unitQuaternion(values: ArrayLike<number>, out: Quaternion): Quaternion 
 
 /** Throws an Error naming `name`'s field when `pose` has a position that is not 3 finite numbers or an orientation that is not 4 finite numbers, not all 0. */
 function checkPose(pose: XrPose, name: string): void {
-  const fields = [['position', pose.position, 3], ['orientation', pose.orientation, 4]] as const;
+  const fields = [
+    ['position', pose.position, 3],
+    ['orientation', pose.orientation, 4],
+  ] as const;
   for (const [field, values, n] of fields) {
-    if (!values || values.length !== n) throw new Error(`XR sample: ${name} ${field} has ${values?.length ?? 'no'} values, expected ${n}`);
+    if (!values || values.length !== n)
+      throw new Error(`XR sample: ${name} ${field} has ${values?.length ?? 'no'} values, expected ${n}`);
     for (let i = 0; i < n; i++)
-      if (typeof values[i] !== 'number' || !Number.isFinite(values[i])) throw new Error(`XR sample: ${name} ${field}[${i}] is ${String(values[i])}, not a finite number`);
+      if (typeof values[i] !== 'number' || !Number.isFinite(values[i]))
+        throw new Error(`XR sample: ${name} ${field}[${i}] is ${String(values[i])}, not a finite number`);
   }
   const o = pose.orientation;
   if (Math.hypot(o[0], o[1], o[2], o[3]) < 1e-9) throw new Error(`XR sample: ${name} orientation is a zero quaternion`);

@@ -11,7 +11,9 @@ export function shortestArcFromX(d: Vec3): Float64Array {
   const c = d[0];
   if (1 + c < 1e-12) return Float64Array.of(-1, 0, 0, 0, -1, 0, 0, 0, 1);
   // Rodrigues with k = x cross d = (0, -dz, dy): R = I + [k]x + [k]x^2 / (1 + c)
-  const kx = 0, ky = -d[2], kz = d[1];
+  const kx = 0,
+    ky = -d[2],
+    kz = d[1];
   const f = 1 / (1 + c);
   const K = [0, -kz, ky, kz, 0, -kx, -ky, kx, 0];
   const K2 = new Array<number>(9);
@@ -40,7 +42,8 @@ export function boneRestFrame(world: Mat4, dir: Vec3): Float64Array {
   const M = new Float64Array(9);
   for (let r = 0; r < 3; r++)
     for (let c = 0; c < 3; c++) M[3 * r + c] = R[3 * r] * Q[c] + R[3 * r + 1] * Q[3 + c] + R[3 * r + 2] * Q[6 + c];
-  const mirrored = R[0] * (R[4] * R[8] - R[5] * R[7]) - R[1] * (R[3] * R[8] - R[5] * R[6]) + R[2] * (R[3] * R[7] - R[4] * R[6]) < 0;
+  const mirrored =
+    R[0] * (R[4] * R[8] - R[5] * R[7]) - R[1] * (R[3] * R[8] - R[5] * R[6]) + R[2] * (R[3] * R[7] - R[4] * R[6]) < 0;
   // Columns: x exactly the bone direction, z orthogonalised, y = z cross x (proper, orthonormal).
   const dn = Math.hypot(...dir);
   const x: Vec3 = [dir[0] / dn, dir[1] / dn, dir[2] / dn];
@@ -51,5 +54,22 @@ export function boneRestFrame(world: Mat4, dir: Vec3): Float64Array {
   const zn = Math.hypot(...z);
   z = [z[0] / zn, z[1] / zn, z[2] / zn];
   const y: Vec3 = [z[1] * x[2] - z[2] * x[1], z[2] * x[0] - z[0] * x[2], z[0] * x[1] - z[1] * x[0]];
-  return Float64Array.of(x[0], y[0], z[0], world[3], x[1], y[1], z[1], world[7], x[2], y[2], z[2], world[11], 0, 0, 0, 1);
+  return Float64Array.of(
+    x[0],
+    y[0],
+    z[0],
+    world[3],
+    x[1],
+    y[1],
+    z[1],
+    world[7],
+    x[2],
+    y[2],
+    z[2],
+    world[11],
+    0,
+    0,
+    0,
+    1,
+  );
 }

@@ -18,8 +18,13 @@ export const MAX_JSON_VALUES = 4_000_000;
  */
 export const MAX_JSON_CONTAINERS = 1_000_000;
 
-const QUOTE = 0x22, BACKSLASH = 0x5c, COMMA = 0x2c;
-const OPEN_ARRAY = 0x5b, OPEN_OBJECT = 0x7b, CLOSE_ARRAY = 0x5d, CLOSE_OBJECT = 0x7d;
+const QUOTE = 0x22,
+  BACKSLASH = 0x5c,
+  COMMA = 0x2c;
+const OPEN_ARRAY = 0x5b,
+  OPEN_OBJECT = 0x7b,
+  CLOSE_ARRAY = 0x5d,
+  CLOSE_OBJECT = 0x7d;
 
 /**
  * Why the JSON `text` is past MAX_JSON_DEPTH, MAX_JSON_VALUES or MAX_JSON_CONTAINERS (a phrase),
@@ -39,7 +44,8 @@ export function jsonBudgetProblem(text: string): string | undefined {
     else if (c === OPEN_ARRAY || c === OPEN_OBJECT) {
       if (++depth > MAX_JSON_DEPTH) return `the JSON nests deeper than ${MAX_JSON_DEPTH} levels (at character ${i})`;
       values++;
-      if (++containers > MAX_JSON_CONTAINERS) return `the JSON holds more than ${MAX_JSON_CONTAINERS} arrays and objects`;
+      if (++containers > MAX_JSON_CONTAINERS)
+        return `the JSON holds more than ${MAX_JSON_CONTAINERS} arrays and objects`;
     } else if (c === CLOSE_ARRAY || c === CLOSE_OBJECT) depth--;
     else if (c === COMMA) values++;
     if (values > MAX_JSON_VALUES) return `the JSON holds more than ${MAX_JSON_VALUES} values`;

@@ -19,6 +19,7 @@ export function isUnbounded(deg: number, side: LimitSide): boolean {
 /** Why `deg` is no valid `side` limit (a phrase following the field's name), or undefined when it is one. */
 export function limitProblem(deg: number, side: LimitSide): string | undefined {
   if (side === 'min' ? deg <= MAX_LIMIT_DEG : deg >= -MAX_LIMIT_DEG) return undefined;
-  const [bound, unbounded] = side === 'min' ? ['a lower', `below -${MAX_LIMIT_DEG}`] : ['an upper', `above ${MAX_LIMIT_DEG}`];
+  const [bound, unbounded] =
+    side === 'min' ? ['a lower', `below -${MAX_LIMIT_DEG}`] : ['an upper', `above ${MAX_LIMIT_DEG}`];
   return `= ${deg} degrees leaves no angle within +-${MAX_LIMIT_DEG} degrees: ${bound} limit ${unbounded} means unbounded`;
 }

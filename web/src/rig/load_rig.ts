@@ -58,14 +58,21 @@ const FORMAT_NAMES = { json: 'A7 rig', glb: 'glTF', gltf: 'glTF', urdf: 'URDF' }
  * relative URI (a URDF needs none). `options.chain` picks a URDF's chain. Throws RigFormatError
  * naming the file and the problem; never returns a partial rig.
  */
-export async function loadRig(bytes: Uint8Array, fileName: string, readSibling?: SiblingReader, options: LoadRigOptions = {}): Promise<LoadedRig> {
+export async function loadRig(
+  bytes: Uint8Array,
+  fileName: string,
+  readSibling?: SiblingReader,
+  options: LoadRigOptions = {},
+): Promise<LoadedRig> {
   const name = rigBaseName(fileName);
   const ext = fileName.toLowerCase().match(/\.([a-z0-9]+)$/)?.[1];
   if (ext !== 'json' && ext !== 'glb' && ext !== 'gltf' && ext !== 'urdf')
     throw new RigFormatError(`${fileName}: unknown rig format (expected .json for A7, .glb, .gltf or .urdf)`);
-  if (options.chain !== undefined && ext !== 'urdf') throw new RigFormatError(`${fileName}: a chain can only be chosen in a URDF file`);
+  if (options.chain !== undefined && ext !== 'urdf')
+    throw new RigFormatError(`${fileName}: a chain can only be chosen in a URDF file`);
   try {
-    if (ext === 'json') return { spec: parseA7Rig(new TextDecoder().decode(bytes), fileName), name, format: 'a7', warnings: [] };
+    if (ext === 'json')
+      return { spec: parseA7Rig(new TextDecoder().decode(bytes), fileName), name, format: 'a7', warnings: [] };
     if (ext === 'urdf') {
       const { spec, urdf } = urdfRigSpec(parseUrdfModel(bytes, fileName), fileName, options.chain);
       return { spec, name, format: 'urdf', urdf, warnings: urdf.warnings };

@@ -34,31 +34,57 @@ export function fromColumnMajor(m: ArrayLike<number>): Mat4 {
  */
 export function fromTRS(t: ArrayLike<number>, q: ArrayLike<number>, s: ArrayLike<number>): Mat4 {
   const [x, y, z, w] = [q[0], q[1], q[2], q[3]];
-  const x2 = x + x, y2 = y + y, z2 = z + z;
-  const xx = x * x2, xy = x * y2, xz = x * z2, yy = y * y2, yz = y * z2, zz = z * z2;
-  const wx = w * x2, wy = w * y2, wz = w * z2;
+  const x2 = x + x,
+    y2 = y + y,
+    z2 = z + z;
+  const xx = x * x2,
+    xy = x * y2,
+    xz = x * z2,
+    yy = y * y2,
+    yz = y * z2,
+    zz = z * z2;
+  const wx = w * x2,
+    wy = w * y2,
+    wz = w * z2;
   return Float64Array.of(
-    (1 - (yy + zz)) * s[0], (xy - wz) * s[1], (xz + wy) * s[2], t[0],
-    (xy + wz) * s[0], (1 - (xx + zz)) * s[1], (yz - wx) * s[2], t[1],
-    (xz - wy) * s[0], (yz + wx) * s[1], (1 - (xx + yy)) * s[2], t[2],
-    0, 0, 0, 1,
+    (1 - (yy + zz)) * s[0],
+    (xy - wz) * s[1],
+    (xz + wy) * s[2],
+    t[0],
+    (xy + wz) * s[0],
+    (1 - (xx + zz)) * s[1],
+    (yz - wx) * s[2],
+    t[1],
+    (xz - wy) * s[0],
+    (yz + wx) * s[1],
+    (1 - (xx + yy)) * s[2],
+    t[2],
+    0,
+    0,
+    0,
+    1,
   );
 }
 
 /** Determinant of the upper-left 3x3 block. */
 export function det3(m: ArrayLike<number>): number {
-  return (
-    m[0] * (m[5] * m[10] - m[6] * m[9]) -
-    m[1] * (m[4] * m[10] - m[6] * m[8]) +
-    m[2] * (m[4] * m[9] - m[5] * m[8])
-  );
+  return m[0] * (m[5] * m[10] - m[6] * m[9]) - m[1] * (m[4] * m[10] - m[6] * m[8]) + m[2] * (m[4] * m[9] - m[5] * m[8]);
 }
 
 /** Inverse of an affine matrix (bottom row 0 0 0 1). Returns null when the 3x3 block is singular. */
 export function invertAffine(m: ArrayLike<number>): Mat4 | null {
   const d = det3(m);
-  const scale = Math.max(Math.abs(m[0]), Math.abs(m[1]), Math.abs(m[2]), Math.abs(m[4]), Math.abs(m[5]),
-    Math.abs(m[6]), Math.abs(m[8]), Math.abs(m[9]), Math.abs(m[10]));
+  const scale = Math.max(
+    Math.abs(m[0]),
+    Math.abs(m[1]),
+    Math.abs(m[2]),
+    Math.abs(m[4]),
+    Math.abs(m[5]),
+    Math.abs(m[6]),
+    Math.abs(m[8]),
+    Math.abs(m[9]),
+    Math.abs(m[10]),
+  );
   if (!Number.isFinite(d) || scale === 0 || Math.abs(d) <= 1e-12 * scale * scale * scale) return null;
   const inv = new Float64Array(16);
   inv[0] = (m[5] * m[10] - m[6] * m[9]) / d;
@@ -70,8 +96,7 @@ export function invertAffine(m: ArrayLike<number>): Mat4 | null {
   inv[8] = (m[4] * m[9] - m[5] * m[8]) / d;
   inv[9] = (m[1] * m[8] - m[0] * m[9]) / d;
   inv[10] = (m[0] * m[5] - m[1] * m[4]) / d;
-  for (let r = 0; r < 3; r++)
-    inv[4 * r + 3] = -(inv[4 * r] * m[3] + inv[4 * r + 1] * m[7] + inv[4 * r + 2] * m[11]);
+  for (let r = 0; r < 3; r++) inv[4 * r + 3] = -(inv[4 * r] * m[3] + inv[4 * r + 1] * m[7] + inv[4 * r + 2] * m[11]);
   inv[15] = 1;
   return inv;
 }
@@ -104,9 +129,15 @@ export function polarRotation(m: ArrayLike<number>): Float64Array {
     const det = a * (e * i - f * h) - b * (d * i - f * g) + c * (d * h - e * g);
     // Q^-T = cofactor(Q) / det
     const invT = Float64Array.of(
-      (e * i - f * h) / det, -(d * i - f * g) / det, (d * h - e * g) / det,
-      -(b * i - c * h) / det, (a * i - c * g) / det, -(a * h - b * g) / det,
-      (b * f - c * e) / det, -(a * f - c * d) / det, (a * e - b * d) / det,
+      (e * i - f * h) / det,
+      -(d * i - f * g) / det,
+      (d * h - e * g) / det,
+      -(b * i - c * h) / det,
+      (a * i - c * g) / det,
+      -(a * h - b * g) / det,
+      (b * f - c * e) / det,
+      -(a * f - c * d) / det,
+      (a * e - b * d) / det,
     );
     const next = q.map((v, k) => 0.5 * (v + invT[k]));
     let change = 0;

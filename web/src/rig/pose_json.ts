@@ -87,7 +87,10 @@ const fail = (what: string): never => {
 };
 
 const listed = (names: readonly string[]): string => {
-  const shownNames = names.slice(0, NAMES_SHOWN).map((n) => JSON.stringify(n)).join(', ');
+  const shownNames = names
+    .slice(0, NAMES_SHOWN)
+    .map((n) => JSON.stringify(n))
+    .join(', ');
   return names.length > NAMES_SHOWN ? `${shownNames} and ${names.length - NAMES_SHOWN} more` : shownNames;
 };
 
@@ -99,10 +102,12 @@ function finiteArray(v: unknown, n: number, field: string, what: string): number
 }
 
 /** Finite numbers as a JSON array in their shortest round-trip form, -0 kept (JSON.stringify writes 0). */
-const numberList = (a: readonly number[]): string => `[${a.map((v) => (Object.is(v, -0) ? '-0' : String(v))).join(',')}]`;
+const numberList = (a: readonly number[]): string =>
+  `[${a.map((v) => (Object.is(v, -0) ? '-0' : String(v))).join(',')}]`;
 
 /** Why a bone name the rig has is no key: the message's end. */
-const KEYED_BY_INDEX = 'which is not the key of one bone: a bone without a name of its own (none, or one another bone has) is keyed "#index"';
+const KEYED_BY_INDEX =
+  'which is not the key of one bone: a bone without a name of its own (none, or one another bone has) is keyed "#index"';
 
 /**
  * Writes a pose as pose-file JSON text (format above): angles in degrees keyed by bone (pose_keys.ts),
@@ -120,11 +125,13 @@ export function poseToJson(pose: PoseInput): string {
   if (typeof rigName !== 'string') check('rigName is not a string');
   if (angles.length !== 3 * n) check(`angles has ${angles.length} values for ${n} bones (3 per bone)`);
   check(effectorsProblem(effectors.length, n));
-  if (targets.length !== 3 * effectors.length) check(`targets has ${targets.length} values for ${effectors.length} effectors (3 per effector)`);
+  if (targets.length !== 3 * effectors.length)
+    check(`targets has ${targets.length} values for ${effectors.length} effectors (3 per effector)`);
   if (orientations !== undefined && orientations.length !== effectors.length)
     check(`orientations has ${orientations.length} entries for ${effectors.length} effectors`);
   const keys = poseBoneKeys(boneNames);
-  const row = (a: ArrayLike<number>, at: number, length: number): number[] => Array.from({ length }, (_, k) => a[at + k]);
+  const row = (a: ArrayLike<number>, at: number, length: number): number[] =>
+    Array.from({ length }, (_, k) => a[at + k]);
   const bones = keys.map((key, i) => {
     const a = row(angles, 3 * i, 3);
     check(numbersProblem(a, 3, `"bones"[${JSON.stringify(key)}]`, 'XZX angles in degrees'));
@@ -148,11 +155,12 @@ export function poseToJson(pose: PoseInput): string {
   const rootLine: string[] = [];
   if (root !== undefined) {
     const r = row(root, 0, root.length);
-    check(numbersProblem(r, 3, '"root"', 'a floating root\'s move in rig units'));
+    check(numbersProblem(r, 3, '"root"', "a floating root's move in rig units"));
     check(targetProblem(r, '"root"'));
     rootLine.push(`  "root": ${numberList(r)},`);
   }
-  const block = (open: string, lines: string[], close: string): string => (lines.length ? `${open}\n${lines.join(',\n')}\n  ${close}` : `${open}${close}`);
+  const block = (open: string, lines: string[], close: string): string =>
+    lines.length ? `${open}\n${lines.join(',\n')}\n  ${close}` : `${open}${close}`;
   const text = [
     '{',
     `  "format": ${JSON.stringify(POSE_FORMAT)},`,
@@ -164,7 +172,8 @@ export function poseToJson(pose: PoseInput): string {
     '}',
     '',
   ].join('\n');
-  if (text.length > MAX_POSE_CHARS) check(`${text.length} characters, more than a pose file holds (at most ${MAX_POSE_CHARS})`);
+  if (text.length > MAX_POSE_CHARS)
+    check(`${text.length} characters, more than a pose file holds (at most ${MAX_POSE_CHARS})`);
   return text;
 }
 
@@ -177,10 +186,16 @@ export function poseToJson(pose: PoseInput): string {
  * non-finite numbers, an effector listed twice, a non-unit orientation, a target beyond
  * MAX_COORDINATE.
  */
-export function poseFromJson(text: string, spec: Pick<RigSpec, 'names' | 'lower' | 'upper'>, limits?: PoseLimits): PoseRead {
+export function poseFromJson(
+  text: string,
+  spec: Pick<RigSpec, 'names' | 'lower' | 'upper'>,
+  limits?: PoseLimits,
+): PoseRead {
   if (typeof text !== 'string') fail(`expected text, got ${shown(text)}`);
   if (text.length > MAX_POSE_CHARS)
-    fail(`${(text.length / 1048576).toFixed(1)} MB of text, more than a pose file holds (at most ${MAX_POSE_CHARS / 1048576} MB)`);
+    fail(
+      `${(text.length / 1048576).toFixed(1)} MB of text, more than a pose file holds (at most ${MAX_POSE_CHARS / 1048576} MB)`,
+    );
   const tooBig = jsonBudgetProblem(text);
   if (tooBig) fail(tooBig);
   let doc: unknown;
@@ -189,33 +204,38 @@ export function poseFromJson(text: string, spec: Pick<RigSpec, 'names' | 'lower'
   } catch (e) {
     return fail(`not JSON: ${(e as Error).message}`);
   }
-  if (typeof doc !== 'object' || doc === null || Array.isArray(doc)) return fail(`the JSON is ${shown(doc)}, not an object`);
+  if (typeof doc !== 'object' || doc === null || Array.isArray(doc))
+    return fail(`the JSON is ${shown(doc)}, not an object`);
   const root = doc as Record<string, unknown>;
   const field = (key: string): unknown => (Object.hasOwn(root, key) ? root[key] : undefined);
   if (field('format') !== POSE_FORMAT) fail(`"format" is ${shown(field('format'))}, expected "${POSE_FORMAT}"`);
-  if (field('version') !== POSE_VERSION) fail(`"version" is ${shown(field('version'))}; this reader takes version ${POSE_VERSION}`);
+  if (field('version') !== POSE_VERSION)
+    fail(`"version" is ${shown(field('version'))}; this reader takes version ${POSE_VERSION}`);
   const rig = field('rig');
   if (rig !== undefined && typeof rig !== 'string') fail(`"rig" is ${shown(rig)}, not a string`);
 
   const names = spec.names;
   const n = names.length;
-  const lower = limits?.lower ?? spec.lower, upper = limits?.upper ?? spec.upper;
-  if (lower.length !== 3 * n || upper.length !== 3 * n) throw new Error(`poseFromJson: limits have ${lower.length} and ${upper.length} values for ${n} bones (3 per bone)`);
+  const lower = limits?.lower ?? spec.lower,
+    upper = limits?.upper ?? spec.upper;
+  if (lower.length !== 3 * n || upper.length !== 3 * n)
+    throw new Error(`poseFromJson: limits have ${lower.length} and ${upper.length} values for ${n} bones (3 per bone)`);
   const keys = poseBoneKeys(names);
   const index = new Map(keys.map((key, i) => [key, i]));
   const unusable = new Set(names.filter((name, i) => keys[i] !== name)); // names the file cannot key by
   const warnings: string[] = [];
 
   const bones = field('bones');
-  if (typeof bones !== 'object' || bones === null || Array.isArray(bones)) return fail(`"bones" is ${shown(bones)}, not an object of bone name -> [3 angles in degrees]`);
+  if (typeof bones !== 'object' || bones === null || Array.isArray(bones))
+    return fail(`"bones" is ${shown(bones)}, not an object of bone name -> [3 angles in degrees]`);
   const entries = Object.entries(bones as Record<string, unknown>);
   const ambiguous = entries.filter(([key]) => !index.has(key) && unusable.has(key)).map(([key]) => key);
-  if (ambiguous.length)
-    fail(`"bones" names ${listed(ambiguous)}, ${KEYED_BY_INDEX}`);
+  if (ambiguous.length) fail(`"bones" names ${listed(ambiguous)}, ${KEYED_BY_INDEX}`);
   const unknown = entries.filter(([key]) => !index.has(key)).map(([key]) => key);
   if (unknown.length) fail(`"bones" names ${unknown.length} bone(s) the rig lacks: ${listed(unknown)}`);
   const given = new Array<number[] | undefined>(n);
-  for (const [key, value] of entries) given[index.get(key)!] = finiteArray(value, 3, `"bones"[${JSON.stringify(key)}]`, 'XZX angles in degrees');
+  for (const [key, value] of entries)
+    given[index.get(key)!] = finiteArray(value, 3, `"bones"[${JSON.stringify(key)}]`, 'XZX angles in degrees');
   // Every angle, also those of bones the file lacks (0), is clamped into the limits.
   const angles = new Float64Array(3 * n);
   const clamped: string[] = [];
@@ -223,12 +243,18 @@ export function poseFromJson(text: string, spec: Pick<RigSpec, 'names' | 'lower'
     const a = given[i] ?? [0, 0, 0];
     for (let k = 0; k < 3; k++) angles[3 * i + k] = Math.min(Math.max(a[k], lower[3 * i + k]), upper[3 * i + k]);
     const now = Array.from(angles.subarray(3 * i, 3 * i + 3));
-    if (given[i] && now.some((v, k) => v !== a[k])) clamped.push(`${JSON.stringify(keys[i])} [${a.join(', ')}] -> [${now.join(', ')}]`);
+    if (given[i] && now.some((v, k) => v !== a[k]))
+      clamped.push(`${JSON.stringify(keys[i])} [${a.join(', ')}] -> [${now.join(', ')}]`);
   }
   if (clamped.length)
-    warnings.push(`angles outside the rig's limits were clamped for ${clamped.length} bone(s): ${clamped.slice(0, NAMES_SHOWN).join('; ')}${clamped.length > NAMES_SHOWN ? `; and ${clamped.length - NAMES_SHOWN} more` : ''}`);
+    warnings.push(
+      `angles outside the rig's limits were clamped for ${clamped.length} bone(s): ${clamped.slice(0, NAMES_SHOWN).join('; ')}${clamped.length > NAMES_SHOWN ? `; and ${clamped.length - NAMES_SHOWN} more` : ''}`,
+    );
   const missing = keys.filter((_, i) => !given[i]);
-  if (missing.length) warnings.push(`the pose gives no angles for ${missing.length} bone(s), set to 0 or the nearest limit: ${listed(missing)}`);
+  if (missing.length)
+    warnings.push(
+      `the pose gives no angles for ${missing.length} bone(s), set to 0 or the nearest limit: ${listed(missing)}`,
+    );
 
   const rootField = field('root');
   let rootMove: Float64Array | null = null;
@@ -240,7 +266,8 @@ export function poseFromJson(text: string, spec: Pick<RigSpec, 'names' | 'lower'
   }
 
   const list = field('effectors');
-  if (!Array.isArray(list)) return fail(`"effectors" is ${shown(list)}, not an array of { "bone", "target", "orientation"? }`);
+  if (!Array.isArray(list))
+    return fail(`"effectors" is ${shown(list)}, not an array of { "bone", "target", "orientation"? }`);
   const countProblem = effectorsProblem(list.length, n);
   if (countProblem) fail(countProblem);
   const effectors: number[] = [];
@@ -248,14 +275,14 @@ export function poseFromJson(text: string, spec: Pick<RigSpec, 'names' | 'lower'
   const orientations: (Float64Array | null)[] = [];
   list.forEach((item: unknown, e) => {
     const at = `"effectors"[${e}]`;
-    if (typeof item !== 'object' || item === null || Array.isArray(item)) fail(`${at} is ${shown(item)}, not an object`);
+    if (typeof item !== 'object' || item === null || Array.isArray(item))
+      fail(`${at} is ${shown(item)}, not an object`);
     const entry = item as Record<string, unknown>;
     const get = (key: string): unknown => (Object.hasOwn(entry, key) ? entry[key] : undefined);
     const bone = get('bone');
     if (typeof bone !== 'string') return fail(`${at}.bone is ${shown(bone)}, not a bone name`);
     const b = index.get(bone);
-    if (b === undefined && unusable.has(bone))
-      fail(`${at}.bone ${JSON.stringify(bone)}, ${KEYED_BY_INDEX}`);
+    if (b === undefined && unusable.has(bone)) fail(`${at}.bone ${JSON.stringify(bone)}, ${KEYED_BY_INDEX}`);
     if (b === undefined) return fail(`${at}.bone ${JSON.stringify(bone)} is no bone of the rig`);
     if (effectors.includes(b)) fail(`${at}.bone ${JSON.stringify(bone)} is listed twice`);
     const t = get('target');
@@ -271,5 +298,13 @@ export function poseFromJson(text: string, spec: Pick<RigSpec, 'names' | 'lower'
     effectors.push(b);
     targets.set(t as number[], 3 * e);
   });
-  return { rigName: typeof rig === 'string' ? rig : '', angles, effectors, targets, orientations, root: rootMove, warnings };
+  return {
+    rigName: typeof rig === 'string' ? rig : '',
+    angles,
+    effectors,
+    targets,
+    orientations,
+    root: rootMove,
+    warnings,
+  };
 }

@@ -8,8 +8,20 @@ export type Quat = [number, number, number, number];
 
 /** The product a b (b applied first). */
 export function mul(a: ArrayLike<number>, b: ArrayLike<number>): Quat {
-  const x1 = a[0], y1 = a[1], z1 = a[2], w1 = a[3], x2 = b[0], y2 = b[1], z2 = b[2], w2 = b[3];
-  return [w1 * x2 + x1 * w2 + y1 * z2 - z1 * y2, w1 * y2 - x1 * z2 + y1 * w2 + z1 * x2, w1 * z2 + x1 * y2 - y1 * x2 + z1 * w2, w1 * w2 - x1 * x2 - y1 * y2 - z1 * z2];
+  const x1 = a[0],
+    y1 = a[1],
+    z1 = a[2],
+    w1 = a[3],
+    x2 = b[0],
+    y2 = b[1],
+    z2 = b[2],
+    w2 = b[3];
+  return [
+    w1 * x2 + x1 * w2 + y1 * z2 - z1 * y2,
+    w1 * y2 - x1 * z2 + y1 * w2 + z1 * x2,
+    w1 * z2 + x1 * y2 - y1 * x2 + z1 * w2,
+    w1 * w2 - x1 * x2 - y1 * y2 - z1 * z2,
+  ];
 }
 
 /** The inverse of a unit quaternion (its conjugate). */

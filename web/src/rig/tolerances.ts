@@ -60,7 +60,11 @@ export interface DragTolerances {
 /** The drag tolerances of a rig of size `size` (rig units, see rigSize). */
 export function dragTolerances(size: number): DragTolerances {
   const tipTolerance = DRAG_TIP_SHARE * size;
-  return { tipTolerance, gradientTolerance: DRAG_GRADIENT_SHARE * tipTolerance * size * (Math.PI / 180), maxJointMove: DRAG_JOINT_MOVE_SHARE * size };
+  return {
+    tipTolerance,
+    gradientTolerance: DRAG_GRADIENT_SHARE * tipTolerance * size * (Math.PI / 180),
+    maxJointMove: DRAG_JOINT_MOVE_SHARE * size,
+  };
 }
 
 /** Rig size: the diagonal of the bounding box of the bone tips (3 numbers per bone), rig units. */
@@ -78,7 +82,8 @@ export function rigSize(boneTipsAtRest: ArrayLike<number>): number {
 
 /** Height of a rig at rest: the vertical extent of its bone tips `boneTips` (3 per bone, rig units); rigSize when they are flat. */
 export function restHeight(boneTips: ArrayLike<number>): number {
-  let lo = Infinity, hi = -Infinity;
+  let lo = Infinity,
+    hi = -Infinity;
   for (let i = 1; i < boneTips.length; i += 3) {
     lo = Math.min(lo, boneTips[i]);
     hi = Math.max(hi, boneTips[i]);
@@ -91,5 +96,8 @@ export function defaultTolerances(name: string, a7: boolean, size: number): Tole
   const report = a7 && Object.hasOwn(reportTolerances, name) ? reportTolerances[name] : undefined;
   if (report) return { ...report };
   const scale = (size / REFERENCE_SIZE) ** 2;
-  return { gradientTolerance: REFERENCE_TOL.gradientTolerance * scale, errorTolerance: REFERENCE_TOL.errorTolerance * scale };
+  return {
+    gradientTolerance: REFERENCE_TOL.gradientTolerance * scale,
+    errorTolerance: REFERENCE_TOL.errorTolerance * scale,
+  };
 }

@@ -8,7 +8,9 @@
  * `parents` must be -1 or an index.
  */
 export function findCycle(parents: ArrayLike<number>): number[] | null {
-  const UNSEEN = 0, ON_WALK = 1, ENDS_AT_ROOT = 2;
+  const UNSEEN = 0,
+    ON_WALK = 1,
+    ENDS_AT_ROOT = 2;
   const state = new Uint8Array(parents.length);
   const walk: number[] = [];
   for (let start = 0; start < parents.length; start++) {

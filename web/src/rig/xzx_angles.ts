@@ -33,7 +33,13 @@ function nearestTurn(x: number, lo: number, hi: number): number {
  * (a + 180, -b, c + 180). At b = 0 or 180 only a +- c is
  * defined; it is split so that both angles are inside their limits when possible.
  */
-export function xzxWithinLimits(q: QuaternionLike, lo: ArrayLike<number>, hi: ArrayLike<number>, out: Float64Array, at = 0): void {
+export function xzxWithinLimits(
+  q: QuaternionLike,
+  lo: ArrayLike<number>,
+  hi: ArrayLike<number>,
+  out: Float64Array,
+  at = 0,
+): void {
   const { x, y, z, w } = q;
   const r00 = 1 - 2 * (y * y + z * z);
   const r10 = 2 * (x * y + z * w);
@@ -53,7 +59,8 @@ export function xzxWithinLimits(q: QuaternionLike, lo: ArrayLike<number>, hi: Ar
     const turn = nearestTurn(t, b === 0 ? lo[0] + lo[2] : lo[0] - hi[2], b === 0 ? hi[0] + hi[2] : hi[0] - lo[2]);
     const cLo = b === 0 ? turn - hi[2] : turn + lo[2];
     const cHi = b === 0 ? turn - lo[2] : turn + hi[2];
-    const aLo = Math.max(lo[0], cLo), aHi = Math.min(hi[0], cHi);
+    const aLo = Math.max(lo[0], cLo),
+      aHi = Math.min(hi[0], cHi);
     const a = aLo <= aHi ? Math.min(aHi, Math.max(aLo, 0)) : Math.min(hi[0], Math.max(lo[0], turn));
     candidates.push([a, b, sign * (turn - a)]);
   } else {

@@ -22,7 +22,8 @@ export function disposeObject3D(root: Object3D): void {
       seen.add(mesh.geometry);
       mesh.geometry.dispose();
     }
-    if (mesh.material) for (const m of Array.isArray(mesh.material) ? mesh.material : [mesh.material]) disposeMaterial(m, seen);
+    if (mesh.material)
+      for (const m of Array.isArray(mesh.material) ? mesh.material : [mesh.material]) disposeMaterial(m, seen);
     if (o instanceof SkinnedMesh && !seen.has(o.skeleton)) {
       seen.add(o.skeleton);
       o.skeleton.dispose();

@@ -23,7 +23,8 @@ export function bonesFromGltf(gltf: Pick<GLTF, 'parser'>, info: GltfRigInfo): Bo
   }
   return Array.from(info.boneNodes, (node, b) => {
     const bone = byNode.get(node);
-    if (!bone) throw new Error(`bone ${b}: glTF node ${node} "${info.nodeNames[b]}" has no three.js Bone in the loaded scene`);
+    if (!bone)
+      throw new Error(`bone ${b}: glTF node ${node} "${info.nodeNames[b]}" has no three.js Bone in the loaded scene`);
     return bone;
   });
 }

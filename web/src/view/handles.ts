@@ -74,10 +74,27 @@ export class Handles {
   private readonly targetGeo = new SphereGeometry(1, 20, 14);
   private readonly tipGeo = new SphereGeometry(1, 12, 8);
   // Targets draw over the model (a lamp's target sits inside its shade) and under the gizmo.
-  private readonly targetMat = new MeshStandardMaterial({ color: 0xff4d6d, roughness: 0.35, emissive: 0x400010, depthTest: false, transparent: true });
-  private readonly targetSelMat = new MeshStandardMaterial({ color: 0xffd166, roughness: 0.35, emissive: 0x403000, depthTest: false, transparent: true });
+  private readonly targetMat = new MeshStandardMaterial({
+    color: 0xff4d6d,
+    roughness: 0.35,
+    emissive: 0x400010,
+    depthTest: false,
+    transparent: true,
+  });
+  private readonly targetSelMat = new MeshStandardMaterial({
+    color: 0xffd166,
+    roughness: 0.35,
+    emissive: 0x403000,
+    depthTest: false,
+    transparent: true,
+  });
   private readonly tipMat = new MeshBasicMaterial({ color: 0xff9a3c, depthTest: false, transparent: true });
-  private readonly lineMat = new LineBasicMaterial({ color: 0xff4d6d, depthTest: false, transparent: true, opacity: 0.8 });
+  private readonly lineMat = new LineBasicMaterial({
+    color: 0xff4d6d,
+    depthTest: false,
+    transparent: true,
+    opacity: 0.8,
+  });
   private readonly lines: LineSegments;
   private targets: Mesh[] = [];
   private tips: Mesh[] = [];
@@ -109,7 +126,8 @@ export class Handles {
     // still view draws seldom (Stage), so a pointer that reaches the canvas places them first (a
     // capture listener on the canvas runs before the gizmo's own).
     const placeGizmo = (): void => helper.updateMatrixWorld();
-    for (const type of ['pointermove', 'pointerdown'] as const) stage.canvas.addEventListener(type, placeGizmo, { capture: true });
+    for (const type of ['pointermove', 'pointerdown'] as const)
+      stage.canvas.addEventListener(type, placeGizmo, { capture: true });
     const lineGeo = new BufferGeometry();
     lineGeo.setAttribute('position', new Float32BufferAttribute(new Float32Array(0), 3));
     this.lines = new LineSegments(lineGeo, this.lineMat);
@@ -159,7 +177,8 @@ export class Handles {
       this.gizmo.removeEventListener('dragging-changed', onDragging);
       this.gizmo.removeEventListener('objectChange', onChange);
       helper.removeFromParent();
-      for (const type of ['pointermove', 'pointerdown'] as const) stage.canvas.removeEventListener(type, placeGizmo, { capture: true });
+      for (const type of ['pointermove', 'pointerdown'] as const)
+        stage.canvas.removeEventListener(type, placeGizmo, { capture: true });
     };
   }
 
@@ -333,9 +352,11 @@ export class Handles {
     if (this.dragging || !this.gizmo.enabled || (this.selected === null && this.selectedPole === null)) return null;
     const k = this.pick(raycaster);
     if (k !== null) {
-      return k === this.selected ? null : () => {
-        if (this.targets[k]) this.select(k);
-      };
+      return k === this.selected
+        ? null
+        : () => {
+            if (this.targets[k]) this.select(k);
+          };
     }
     const j = this.pickPole(raycaster);
     if (j === null || j === this.selectedPole) return null;

@@ -39,7 +39,10 @@ export class LimitsView {
   private readonly needles: Line[] = [];
   private bone: number | null = null;
 
-  constructor(private spec: RigSpec, private readonly rigSize: number) {
+  constructor(
+    private spec: RigSpec,
+    private readonly rigSize: number,
+  ) {
     this.root.renderOrder = 20;
     for (const f of this.frames) {
       f.matrixAutoUpdate = false;
@@ -57,15 +60,19 @@ export class LimitsView {
     if (i === null) return;
     const len = Math.max(this.spec.lengths[i], this.rigSize * 0.1);
     for (let k = 0; k < 3; k++) {
-      const lo = this.spec.lower[3 * i + k], hi = this.spec.upper[3 * i + k];
+      const lo = this.spec.lower[3 * i + k],
+        hi = this.spec.upper[3 * i + k];
       const free = unbounded(lo, hi);
-      const t0 = free ? -Math.PI : lo * deg, t1 = free ? Math.PI : hi * deg;
+      const t0 = free ? -Math.PI : lo * deg,
+        t1 = free ? Math.PI : hi * deg;
       const r = k === 1 ? 0.6 * len : 0.3 * len;
       const x = k === 0 ? 0.12 * len : 0.3 * len;
       const segments = Math.max(2, Math.ceil(Math.abs(t1 - t0) / (4 * deg)));
-      const fan: number[] = [], rim: number[] = [];
+      const fan: number[] = [],
+        rim: number[] = [];
       for (let s = 0; s < segments; s++) {
-        const a = t0 + ((t1 - t0) * s) / segments, b = t0 + ((t1 - t0) * (s + 1)) / segments;
+        const a = t0 + ((t1 - t0) * s) / segments,
+          b = t0 + ((t1 - t0) * (s + 1)) / segments;
         fan.push(...(k === 1 ? [0, 0, 0] : [x, 0, 0]));
         arcPoint(k, r, x, a, fan);
         arcPoint(k, r, x, b, fan);
@@ -74,9 +81,17 @@ export class LimitsView {
       const color = COLORS[k];
       const fanGeo = new BufferGeometry();
       fanGeo.setAttribute('position', new Float32BufferAttribute(fan, 3));
-      const fanMesh = new Mesh(fanGeo, new MeshBasicMaterial({
-        color, transparent: true, opacity: free ? 0.08 : 0.25, side: DoubleSide, depthTest: false, depthWrite: false,
-      }));
+      const fanMesh = new Mesh(
+        fanGeo,
+        new MeshBasicMaterial({
+          color,
+          transparent: true,
+          opacity: free ? 0.08 : 0.25,
+          side: DoubleSide,
+          depthTest: false,
+          depthWrite: false,
+        }),
+      );
       const rimGeo = new BufferGeometry();
       rimGeo.setAttribute('position', new Float32BufferAttribute(rim, 3));
       const rimLine = new Line(rimGeo, new LineBasicMaterial({ color, depthTest: false, transparent: true }));
@@ -84,7 +99,10 @@ export class LimitsView {
       const tip: number[] = [];
       arcPoint(k, r * 1.15, x, 0, tip);
       needleGeo.setAttribute('position', new Float32BufferAttribute([k === 1 ? 0 : x, 0, 0, ...tip], 3));
-      const needle = new Line(needleGeo, new LineBasicMaterial({ color: 0xffffff, depthTest: false, transparent: true }));
+      const needle = new Line(
+        needleGeo,
+        new LineBasicMaterial({ color: 0xffffff, depthTest: false, transparent: true }),
+      );
       needle.matrixAutoUpdate = false;
       for (const o of [fanMesh, rimLine, needle]) o.renderOrder = 20;
       this.frames[k].add(fanMesh, rimLine, needle);
@@ -104,7 +122,9 @@ export class LimitsView {
   update(view: RigView, angles: Float64Array): void {
     const i = this.bone;
     if (i === null) return;
-    const a0 = angles[3 * i] * deg, a1 = angles[3 * i + 1] * deg, a2 = angles[3 * i + 2] * deg;
+    const a0 = angles[3 * i] * deg,
+      a1 = angles[3 * i + 1] * deg,
+      a2 = angles[3 * i + 2] * deg;
     // F0 = (T_i rest_i) * (Rx(a0) Rz(a1) Rx(a2))^-1
     view.boneFrame(i, mFrame);
     mFrame.multiply(mRot.makeRotationX(-a2)).multiply(mRot.makeRotationZ(-a1)).multiply(mRot.makeRotationX(-a0));

@@ -101,7 +101,15 @@ export class LiveController {
    * lamp's first solve read 6.7 ms for 0 iterations in Chromium; warmed, 0.07 ms).
    */
   private warmUp = false;
-  private readonly solveSettings: SolveSettings = { gradientTolerance: 0, tipTolerance: 0, maxIterations: 0, timeBudgetMs: 0, restarts: 0, paperMode: false, stepsBeforeBudget: FRAME_STEPS_BEFORE_BUDGET };
+  private readonly solveSettings: SolveSettings = {
+    gradientTolerance: 0,
+    tipTolerance: 0,
+    maxIterations: 0,
+    timeBudgetMs: 0,
+    restarts: 0,
+    paperMode: false,
+    stepsBeforeBudget: FRAME_STEPS_BEFORE_BUDGET,
+  };
   private readonly stopClicks: () => void;
   private polesOn = false;
   /** The limbs' joints (elbow, knee) at the last redraw, 3 per pole, rig units: where the pole lines start. */
@@ -110,7 +118,11 @@ export class LiveController {
   private tips = new Float64Array(0);
 
   /** Makes a stage in `container`; `settings` are read every frame (and may be edited in place). */
-  constructor(container: HTMLElement, readonly settings: FrameSettings, private readonly events: LiveEvents) {
+  constructor(
+    container: HTMLElement,
+    readonly settings: FrameSettings,
+    private readonly events: LiveEvents,
+  ) {
     this.stage = new Stage(container);
     const handles = new Handles(this.stage); // before the orbit connects: a drag on the gizmo must not orbit
     this.handles = handles;
@@ -121,7 +133,12 @@ export class LiveController {
     handles.currentRotation = (k, out) => this.currentRotation(k, out);
     handles.onSelected = () => this.events.targetChanged?.();
     handles.onDragging = (on) => this.events.dragging?.(on);
-    this.stopClicks = listenForClicks(this.stage.canvas, this.stage.camera, () => handles.dragging || handles.hovering, (c) => this.click(c));
+    this.stopClicks = listenForClicks(
+      this.stage.canvas,
+      this.stage.camera,
+      () => handles.dragging || handles.hovering,
+      (c) => this.click(c),
+    );
     this.stage.onFrame(() => this.frame());
   }
 
@@ -295,9 +312,15 @@ export class LiveController {
     const had = Array.from(goals.poleBones);
     limbs.forEach((limb, j) => {
       const old = keep ? had.indexOf(limb.bone) : -1;
-      points.set(old >= 0 ? goals.polePoints.subarray(3 * old, 3 * old + 3) : initialPole(session.spec, poses!, limb), 3 * j);
+      points.set(
+        old >= 0 ? goals.polePoints.subarray(3 * old, 3 * old + 3) : initialPole(session.spec, poses!, limb),
+        3 * j,
+      );
     });
-    goals.setPoles(limbs.map((l) => l.bone), points);
+    goals.setPoles(
+      limbs.map((l) => l.bone),
+      points,
+    );
     this.poleJoints = new Float64Array(points.length);
     this.handles.setPoles(limbs.length);
     this.needsRedraw = true;
@@ -349,7 +372,8 @@ export class LiveController {
   /** Moves the pole handles to the poles and their lines' ends to the limbs' joints as drawn now (no allocation). */
   private syncPoles(live: LiveRig): void {
     const goals = live.session.goals;
-    const bones = goals.poleBones, joints = this.poleJoints;
+    const bones = goals.poleBones,
+      joints = this.poleJoints;
     if (joints.length !== 3 * bones.length) return;
     for (let j = 0; j < bones.length; j++) {
       live.view.boneBase(bones[j], v);
@@ -413,7 +437,8 @@ export class LiveController {
     session.yielding = this.handles.selected ?? -1;
     const hips = this.current?.hipsTarget;
     hips?.beforeSolve(session, this.handles.selected, this.handles.dragging);
-    const s = this.settings, f = this.solveSettings;
+    const s = this.settings,
+      f = this.solveSettings;
     f.rootUnit = this.current?.rootUnit ?? 1;
     f.gradientTolerance = s.gradientTolerance;
     f.tipTolerance = s.tipTolerance;

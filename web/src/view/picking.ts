@@ -25,7 +25,8 @@ export function listenForClicks(
     const d = down;
     down = null;
     if (!d || d.id !== e.pointerId || isBusy()) return;
-    if (Math.hypot(e.clientX - d.x, e.clientY - d.y) > clickSlop(e.pointerType) || performance.now() - d.t > 600) return;
+    if (Math.hypot(e.clientX - d.x, e.clientY - d.y) > clickSlop(e.pointerType) || performance.now() - d.t > 600)
+      return;
     const rect = canvas.getBoundingClientRect();
     ndc.set(((e.clientX - rect.left) / rect.width) * 2 - 1, -((e.clientY - rect.top) / rect.height) * 2 + 1);
     raycaster.setFromCamera(ndc, camera);

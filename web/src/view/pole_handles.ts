@@ -22,7 +22,12 @@ export class PoleHandles {
   private readonly geo = new OctahedronGeometry(1, 0);
   private readonly mat = new MeshBasicMaterial({ color: 0xffc400, depthTest: false, transparent: true, opacity: 0.9 });
   private readonly selMat = new MeshBasicMaterial({ color: 0xfff3a0, depthTest: false, transparent: true });
-  private readonly lineMat = new LineBasicMaterial({ color: 0xffc400, depthTest: false, transparent: true, opacity: 0.7 });
+  private readonly lineMat = new LineBasicMaterial({
+    color: 0xffc400,
+    depthTest: false,
+    transparent: true,
+    opacity: 0.7,
+  });
   private readonly lines: LineSegments;
   private handles: Mesh[] = [];
   private highlighted: number | null = null;

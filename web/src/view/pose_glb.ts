@@ -67,8 +67,14 @@ export function decomposeLocal(m: ArrayLike<number>, file: NodeTRS): (NodeTRS & 
   const fn = Math.hypot(...f);
   const fileUnit = fn > 0 ? (f.map((v) => v / fn) as Quat) : f;
   if (close(q, fileUnit)) q = [...f];
-  else if (close(q.map((v) => -v), fileUnit)) q = [...f];
-  const translation = close(t, file.translation) ? [...file.translation] as Vec3 : t;
+  else if (
+    close(
+      q.map((v) => -v),
+      fileUnit,
+    )
+  )
+    q = [...f];
+  const translation = close(t, file.translation) ? ([...file.translation] as Vec3) : t;
   const back = fromTRS(translation, q, s);
   const linear = (a: ArrayLike<number>): number[] => [a[0], a[1], a[2], a[4], a[5], a[6], a[8], a[9], a[10]];
   const linearError = maxAbsDiff(linear(back), linear(m)) / maxAbs(linear(m));
@@ -84,12 +90,15 @@ export function decomposeLocal(m: ArrayLike<number>, file: NodeTRS): (NodeTRS & 
  */
 export function posedLocalMatrices(info: GltfRigInfo, spec: RigSpec, poses: ArrayLike<number>): Float64Array {
   const n = spec.parents.length;
-  if (info.boneNodes.length !== n) throw new Error(`posed locals: ${info.boneNodes.length} glTF joints for a rig of ${n} bones`);
+  if (info.boneNodes.length !== n)
+    throw new Error(`posed locals: ${info.boneNodes.length} glTF joints for a rig of ${n} bones`);
   if (poses.length !== 16 * n) throw new Error(`posed locals: poses has ${poses.length} values, expected ${16 * n}`);
   for (let k = 0; k < poses.length; k++)
-    if (!Number.isFinite(poses[k])) throw new Error(`posed locals: poses[${k}] (bone ${spec.names[k >> 4] ?? k >> 4}) is not finite`);
+    if (!Number.isFinite(poses[k]))
+      throw new Error(`posed locals: poses[${k}] (bone ${spec.names[k >> 4] ?? k >> 4}) is not finite`);
   const out = new Float64Array(16 * n);
-  const block = (a: ArrayLike<number>, i: number): Float64Array => Float64Array.from({ length: 16 }, (_, k) => a[16 * i + k]);
+  const block = (a: ArrayLike<number>, i: number): Float64Array =>
+    Float64Array.from({ length: 16 }, (_, k) => a[16 * i + k]);
   for (let i = 0; i < n; i++) {
     const W = block(info.restWorld, i);
     const Winv = invertAffine(W);
@@ -113,7 +122,9 @@ const CARRIED = new Set(ALL_EXTENSIONS.map((e) => e.EXTENSION_NAME).filter((name
 
 /** The glTF-Transform reader/writer used for pose export (warnings of glTF-Transform kept quiet). */
 function gltfIO(): WebIO {
-  return new WebIO().setLogger(new Logger(Logger.Verbosity.ERROR)).registerExtensions(ALL_EXTENSIONS.filter((e) => CARRIED.has(e.EXTENSION_NAME)));
+  return new WebIO()
+    .setLogger(new Logger(Logger.Verbosity.ERROR))
+    .registerExtensions(ALL_EXTENSIONS.filter((e) => CARRIED.has(e.EXTENSION_NAME)));
 }
 
 /** Reads `bytes` (.glb, or .gltf with side files through readSibling or data: URIs) into a Document. */
@@ -123,7 +134,10 @@ async function readDocument(bytes: Uint8Array, fileName: string, readSibling?: S
   const used = json.extensionsUsed;
   const lost = Array.isArray(used) ? used.map(String).filter((name) => !CARRIED.has(name)) : [];
   if (lost.length > 0)
-    failIn(fileName, `pose export cannot carry the extension(s) ${lost.join(', ')} (compressed geometry or an extension glTF-Transform does not know), which would be lost`);
+    failIn(
+      fileName,
+      `pose export cannot carry the extension(s) ${lost.join(', ')} (compressed geometry or an extension glTF-Transform does not know), which would be lost`,
+    );
   const io = gltfIO();
   if (container.bin !== undefined || fileName.toLowerCase().endsWith('.glb')) return io.readBinary(bytes);
   const resources: Record<string, Uint8Array<ArrayBuffer>> = {};
@@ -162,11 +176,15 @@ export async function posedGlb(
   info.boneNodes.forEach((index, i) => {
     const node = nodes[index];
     if (!node || node.getName() !== info.nodeNames[i])
-      throw new Error(`${fileName}: glTF node ${index} is not the joint "${info.nodeNames[i]}" of bone ${spec.names[i]}: the rig was read from another file`);
+      throw new Error(
+        `${fileName}: glTF node ${index} is not the joint "${info.nodeNames[i]}" of bone ${spec.names[i]}: the rig was read from another file`,
+      );
     const file: NodeTRS = { translation: node.getTranslation(), rotation: node.getRotation(), scale: node.getScale() };
     const trs = decomposeLocal(locals.subarray(16 * i, 16 * i + 16), file);
     if (!trs)
-      throw new Error(`${fileName}: bone ${spec.names[i]}: its posed local matrix is no translation * rotation * scale (a non-uniform scale under a rotation); glTF cannot store it`);
+      throw new Error(
+        `${fileName}: bone ${spec.names[i]}: its posed local matrix is no translation * rotation * scale (a non-uniform scale under a rotation); glTF cannot store it`,
+      );
     node.setTranslation(trs.translation).setRotation(trs.rotation).setScale(trs.scale);
   });
   // A GLB holds one buffer: move every accessor onto the first and drop the others.

@@ -52,7 +52,9 @@ export class PoseWriter {
   ) {
     const n = spec.parents.length;
     if (bones.length !== n || info.boneNodes.length !== n)
-      throw new Error(`PoseWriter: ${bones.length} three.js bones and ${info.boneNodes.length} glTF joints for a rig of ${n} bones`);
+      throw new Error(
+        `PoseWriter: ${bones.length} three.js bones and ${info.boneNodes.length} glTF joints for a rig of ${n} bones`,
+      );
     this.parents = spec.parents;
     this.written = parentsFirst(this.parents, only ? Array.from(only) : bones.map((_, i) => i));
     const chosen = new Set(this.written);
@@ -64,7 +66,13 @@ export class PoseWriter {
       this.left[i] = this.restLocal[i].clone().multiply(this.right[i].clone().invert());
       this.inverse[i] = new Matrix4();
       const b = bones[i];
-      this.initial[i] = { matrix: b.matrix.clone(), position: b.position.clone(), quaternion: b.quaternion.clone(), scale: b.scale.clone(), matrixAutoUpdate: b.matrixAutoUpdate };
+      this.initial[i] = {
+        matrix: b.matrix.clone(),
+        position: b.position.clone(),
+        quaternion: b.quaternion.clone(),
+        scale: b.scale.clone(),
+        matrixAutoUpdate: b.matrixAutoUpdate,
+      };
       b.matrixAutoUpdate = false;
     }
   }
@@ -75,7 +83,8 @@ export class PoseWriter {
    */
   write(poses: ArrayLike<number>): void {
     const n = this.bones.length;
-    if (poses.length !== 16 * n) throw new Error(`PoseWriter.write: poses has ${poses.length} values, expected ${16 * n}`);
+    if (poses.length !== 16 * n)
+      throw new Error(`PoseWriter.write: poses has ${poses.length} values, expected ${16 * n}`);
     for (const i of this.written) {
       const p = this.parents[i];
       fromRowMajor(_pose, poses, 16 * i);
@@ -110,7 +119,8 @@ export class PoseWriter {
   /** Gives the written bones back as they were when the writer took them: local matrix, position, quaternion, scale and matrixAutoUpdate. */
   dispose(): void {
     for (const i of this.written) {
-      const b = this.bones[i], s = this.initial[i];
+      const b = this.bones[i],
+        s = this.initial[i];
       b.matrix.copy(s.matrix);
       b.position.copy(s.position);
       b.quaternion.copy(s.quaternion);

@@ -9,7 +9,13 @@ import type { RigSpec } from '../ik/rig_arrays.js';
 import { followLimbEnds, limbEndFollowers } from '../rig/humanoid/control_follow.js';
 import type { RigLimits } from '../rig/humanoid/humanoid_limits.js';
 import type { HumanoidMap } from '../rig/humanoid/humanoid_roles.js';
-import { loadRig, specWithFileLimits, type GltfRigInfo, type LoadRigOptions, type SiblingReader } from '../rig/load_rig.js';
+import {
+  loadRig,
+  specWithFileLimits,
+  type GltfRigInfo,
+  type LoadRigOptions,
+  type SiblingReader,
+} from '../rig/load_rig.js';
 import { multiply } from '../rig/mat4.js';
 import { urdfChains } from '../rig/urdf/urdf_chains.js';
 import { parseUrdfModel, URDF_MESH_FORMATS } from '../rig/urdf/urdf_model.js';
@@ -79,7 +85,7 @@ export async function fetchBytes(url: string | URL, what: string): Promise<Uint8
   try {
     res = await fetch(url);
   } catch (e) {
-    throw new Error(`${what}: could not fetch (${errorText(e)})`);
+    throw new Error(`${what}: could not fetch (${errorText(e)})`, { cause: e });
   }
   if (!res.ok) throw new Error(`${what}: HTTP ${res.status} ${res.statusText}`);
   return new Uint8Array(await res.arrayBuffer());
@@ -89,7 +95,13 @@ export async function fetchBytes(url: string | URL, what: string): Promise<Uint8
  * The glTF scene of `bytes` through GLTFLoader, posed by a PoseWriter. The rig importer has checked
  * the file's structure; anything three.js still refuses is an Error naming the file.
  */
-async function gltfMesh(bytes: Uint8Array, fileName: string, resourcePath: string, spec: RigSpec, info: GltfRigInfo): Promise<MeshBinding> {
+async function gltfMesh(
+  bytes: Uint8Array,
+  fileName: string,
+  resourcePath: string,
+  spec: RigSpec,
+  info: GltfRigInfo,
+): Promise<MeshBinding> {
   const loader = new GLTFLoader().setMeshoptDecoder(MeshoptDecoder);
   const data: ArrayBuffer | string = fileName.toLowerCase().endsWith('.gltf')
     ? new TextDecoder().decode(bytes)
@@ -146,13 +158,20 @@ const MAX_LISTED_CHAINS = 100;
  * (a ?chain= left from another file) gives the default chain and a warning; any other refusal of
  * the importer (a prismatic joint in the chain, a chain that is not serial) is thrown.
  */
-async function readUrdf(bytes: Uint8Array, fileName: string, wanted: string | undefined, readSibling?: SiblingReader): Promise<RigSource> {
+async function readUrdf(
+  bytes: Uint8Array,
+  fileName: string,
+  wanted: string | undefined,
+  readSibling?: SiblingReader,
+): Promise<RigSource> {
   const model = parseUrdfModel(bytes, fileName);
   const notes: string[] = [];
   if (wanted !== undefined) {
     const missing = wanted.split(':').filter((link) => !model.links.includes(link));
     if (missing.length > 0) {
-      notes.push(`the chain ${wanted} is not in this file (no link ${missing.map((l) => `"${l}"`).join(', ')}): took the file's longest chain`);
+      notes.push(
+        `the chain ${wanted} is not in this file (no link ${missing.map((l) => `"${l}"`).join(', ')}): took the file's longest chain`,
+      );
       wanted = undefined;
     }
   }
@@ -183,14 +202,23 @@ async function readUrdf(bytes: Uint8Array, fileName: string, wanted: string | un
   // The mesh files, where they sit beside the file (a folder dropped): read now, drawn by makeMesh.
   const names = [...new Set(model.meshes)];
   const files = new Map<string, Uint8Array>();
-  if (readSibling) for (const name of names) await readSibling(name).then((b) => files.set(name, b), () => undefined);
+  if (readSibling)
+    for (const name of names)
+      await readSibling(name).then(
+        (b) => files.set(name, b),
+        () => undefined,
+      );
   const lacking = names.length - files.size;
   if (files.size === 0 && names.length > 0)
-    notes.push(`${names.length} mesh file${names.length === 1 ? ' is' : 's are'} not beside it (drop the robot's folder to see them): the chain's links show as bones`);
-  else if (lacking > 0) notes.push(`${lacking} of ${names.length} mesh files are not beside it: their links are not drawn`);
+    notes.push(
+      `${names.length} mesh file${names.length === 1 ? ' is' : 's are'} not beside it (drop the robot's folder to see them): the chain's links show as bones`,
+    );
+  else if (lacking > 0)
+    notes.push(`${lacking} of ${names.length} mesh files are not beside it: their links are not drawn`);
   const drawn = new Map([...files].filter(([name]) => URDF_MESH_FORMATS.test(name)));
   const unread = files.size - drawn.size;
-  if (unread > 0) notes.push(`${unread} mesh file${unread === 1 ? ' is' : 's are'} neither STL nor Collada (.dae): not drawn`);
+  if (unread > 0)
+    notes.push(`${unread} mesh file${unread === 1 ? ' is' : 's are'} neither STL nor Collada (.dae): not drawn`);
   const text = new TextDecoder().decode(bytes);
   const links = { base: urdf.base, joints: urdf.joints, toPage: Z_UP_TO_Y_UP };
   return {
@@ -199,7 +227,8 @@ async function readUrdf(bytes: Uint8Array, fileName: string, wanted: string | un
     spec: yUp(rig.spec),
     warnings: notes,
     // urdf-loader and its Collada reader load with the first robot drawn, not with the page.
-    makeMesh: drawn.size > 0 ? async () => (await (await import('./urdf_mesh.js')).urdfMesh(text, links, drawn)).binding : null,
+    makeMesh:
+      drawn.size > 0 ? async () => (await (await import('./urdf_mesh.js')).urdfMesh(text, links, drawn)).binding : null,
     urdf: { bytes, fileName, chain, defaultChain, chains, joints: urdf.joints, readSibling },
   };
 }
@@ -209,7 +238,13 @@ async function readUrdf(bytes: Uint8Array, fileName: string, wanted: string | un
  * live (for GLTFLoader); `options.chain` picks a URDF's chain (readUrdf). Throws an Error whose
  * message names the file.
  */
-export async function readRig(bytes: Uint8Array, fileName: string, readSibling?: SiblingReader, resourcePath = '', options: LoadRigOptions = {}): Promise<RigSource> {
+export async function readRig(
+  bytes: Uint8Array,
+  fileName: string,
+  readSibling?: SiblingReader,
+  resourcePath = '',
+  options: LoadRigOptions = {},
+): Promise<RigSource> {
   if (/\.urdf$/i.test(fileName)) return readUrdf(bytes, fileName, options.chain, readSibling);
   const rig = await loadRig(bytes, fileName, readSibling);
   const info = rig.gltf;
@@ -221,7 +256,10 @@ export async function readRig(bytes: Uint8Array, fileName: string, readSibling?:
     humanoidLimits: info?.fileLimits ? { lower: rig.spec.lower, upper: rig.spec.upper } : undefined,
     humanoid: info?.humanoid ?? undefined,
     warnings: tooDeep
-      ? [...rig.warnings, `the node tree is ${info.treeDepth} levels deep, more than three.js's glTF loader takes (${MAX_MODEL_TREE_DEPTH}): showing the bones without the model`]
+      ? [
+          ...rig.warnings,
+          `the node tree is ${info.treeDepth} levels deep, more than three.js's glTF loader takes (${MAX_MODEL_TREE_DEPTH}): showing the bones without the model`,
+        ]
       : rig.warnings,
     makeMesh: info && !tooDeep ? () => gltfMesh(bytes, fileName, resourcePath, rig.spec, info) : null,
     gltf: info ? { bytes, fileName, info, spec: rig.spec, readSibling } : undefined,

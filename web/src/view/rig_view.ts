@@ -45,13 +45,25 @@ const X_AXIS = new Vector3(1, 0, 0);
 
 /** An elongated octahedron from (0,0,0) to (1,0,0), the classic bone glyph. */
 function boneGeometry(): BufferGeometry {
-  const w = 0.1, h = 0.18;
+  const w = 0.1,
+    h = 0.18;
   const p = [
-    [0, 0, 0], [h, w, 0], [h, 0, w], [h, -w, 0], [h, 0, -w], [1, 0, 0],
+    [0, 0, 0],
+    [h, w, 0],
+    [h, 0, w],
+    [h, -w, 0],
+    [h, 0, -w],
+    [1, 0, 0],
   ];
   const faces = [
-    [0, 2, 1], [0, 3, 2], [0, 4, 3], [0, 1, 4],
-    [5, 1, 2], [5, 2, 3], [5, 3, 4], [5, 4, 1],
+    [0, 2, 1],
+    [0, 3, 2],
+    [0, 4, 3],
+    [0, 1, 4],
+    [5, 1, 2],
+    [5, 2, 3],
+    [5, 3, 4],
+    [5, 4, 1],
   ];
   const pos: number[] = [];
   for (const f of faces) for (const i of f) pos.push(...p[i]);
@@ -80,7 +92,11 @@ export class RigView {
   private colored: { effectors: Int32Array | null; selected: number | null } = { effectors: null, selected: null };
 
   /** `ghost`: a faint copy used to show the previous iterate in step mode. */
-  constructor(readonly spec: RigSpec, restPoses: Float64Array, private readonly ghost = false) {
+  constructor(
+    readonly spec: RigSpec,
+    restPoses: Float64Array,
+    private readonly ghost = false,
+  ) {
     const n = spec.parents.length;
     this.boneWorld = new Float64Array(16 * n);
     const box = new Box3();
@@ -92,7 +108,8 @@ export class RigView {
     this.size = Math.max(box.getSize(v).length(), 1e-3);
     this.glyphTurn = Array.from({ length: n }, () => new Quaternion());
     this.glyphLength = Float64Array.from(spec.lengths);
-    const children = new Int32Array(n), child = new Int32Array(n).fill(-1);
+    const children = new Int32Array(n),
+      child = new Int32Array(n).fill(-1);
     for (let i = 0; i < n; i++) {
       const p = spec.parents[i];
       if (p < 0) continue;
@@ -110,7 +127,12 @@ export class RigView {
     }
 
     const boneMat = new MeshStandardMaterial({
-      color: 0xffffff, roughness: 0.5, metalness: 0.1, depthTest: false, transparent: true, opacity: ghost ? 0.3 : 0.92,
+      color: 0xffffff,
+      roughness: 0.5,
+      metalness: 0.1,
+      depthTest: false,
+      transparent: true,
+      opacity: ghost ? 0.3 : 0.92,
       depthWrite: !ghost,
     });
     this.bones = new InstancedMesh(boneGeometry(), boneMat, n);

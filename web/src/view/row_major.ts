@@ -5,9 +5,21 @@ import type { Matrix4 } from 'three';
 export function fromRowMajor(out: Matrix4, src: ArrayLike<number>, offset: number): Matrix4 {
   const o = offset;
   return out.set(
-    src[o], src[o + 1], src[o + 2], src[o + 3],
-    src[o + 4], src[o + 5], src[o + 6], src[o + 7],
-    src[o + 8], src[o + 9], src[o + 10], src[o + 11],
-    src[o + 12], src[o + 13], src[o + 14], src[o + 15],
+    src[o],
+    src[o + 1],
+    src[o + 2],
+    src[o + 3],
+    src[o + 4],
+    src[o + 5],
+    src[o + 6],
+    src[o + 7],
+    src[o + 8],
+    src[o + 9],
+    src[o + 10],
+    src[o + 11],
+    src[o + 12],
+    src[o + 13],
+    src[o + 14],
+    src[o + 15],
   );
 }

@@ -197,7 +197,12 @@ export class Stage {
     this.last = t;
     for (const cb of this.callbacks) cb(dt);
     const now = performance.now();
-    if (!this.renderer.xr.isPresenting && !this.drawNext && now >= this.activeUntil && now - this.lastDraw < IDLE_FRAME_MS) {
+    if (
+      !this.renderer.xr.isPresenting &&
+      !this.drawNext &&
+      now >= this.activeUntil &&
+      now - this.lastDraw < IDLE_FRAME_MS
+    ) {
       // Not drawn, but posed: clicks pick targets and bones by their world matrices, which a
       // draw would have brought up to date (the gizmo places its own on each pointer event).
       this.scene.updateMatrixWorld();

@@ -27,14 +27,17 @@ export interface UrdfMesh {
   missing: string[];
 }
 
-
 /**
  * The visuals of the URDF `text` bound to `chain`'s rig; `files` maps each mesh file name as the
  * URDF writes it (package:// or relative) to its bytes, STL or Collada (URDF_MESH_FORMATS of
  * urdf_model.ts; absent: not found or not drawn, its visual is skipped).
  * Resolves once every mesh file has been parsed.
  */
-export async function urdfMesh(text: string, chain: UrdfChainLinks, files: ReadonlyMap<string, Uint8Array>): Promise<UrdfMesh> {
+export async function urdfMesh(
+  text: string,
+  chain: UrdfChainLinks,
+  files: ReadonlyMap<string, Uint8Array>,
+): Promise<UrdfMesh> {
   const urls = new Map<string, string>();
   for (const [name, bytes] of files) urls.set(name, URL.createObjectURL(new Blob([bytes as BlobPart])));
   const missing = new Set<string>();
@@ -43,7 +46,8 @@ export async function urdfMesh(text: string, chain: UrdfChainLinks, files: Reado
   let robot: URDFRobot;
   try {
     await new Promise<void>((resolve, reject) => {
-      let pending = 0, parsed = false;
+      let pending = 0,
+        parsed = false;
       const finish = (): void => {
         if (parsed && pending === 0) resolve();
       };
@@ -119,9 +123,13 @@ function bindLinks(robot: URDFRobot, chain: UrdfChainLinks): MeshBinding {
     },
     dispose(): void {
       root.traverse((o) => {
-        const mesh = o as Object3D & { geometry?: { dispose(): void }; material?: { dispose(): void } | Array<{ dispose(): void }> };
+        const mesh = o as Object3D & {
+          geometry?: { dispose(): void };
+          material?: { dispose(): void } | Array<{ dispose(): void }>;
+        };
         mesh.geometry?.dispose();
-        for (const m of Array.isArray(mesh.material) ? mesh.material : mesh.material ? [mesh.material] : []) m.dispose();
+        for (const m of Array.isArray(mesh.material) ? mesh.material : mesh.material ? [mesh.material] : [])
+          m.dispose();
       });
       root.removeFromParent();
     },

@@ -33,7 +33,13 @@ export function parseGoalKinds(attr: string, names: readonly string[]): { goals:
     if (!item) continue;
     const colon = item.lastIndexOf(':');
     const name = (colon < 0 ? item : item.slice(0, colon)).trim();
-    const kind = colon < 0 ? '' : item.slice(colon + 1).trim().toLowerCase();
+    const kind =
+      colon < 0
+        ? ''
+        : item
+            .slice(colon + 1)
+            .trim()
+            .toLowerCase();
     const bone = findBone(names, name);
     if (bone < 0) {
       problems.push(`unknown goal bone "${name.slice(0, 60)}"`);

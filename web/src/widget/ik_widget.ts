@@ -52,7 +52,13 @@ export class IkWidget extends HTMLElement {
   private methods: MethodList | null = null;
   private controller: LiveController | null = null;
   /** The per-frame solve: the `method` attribute, the rig's drag tolerances, 50 iterations or 3 ms. */
-  private readonly settings: FrameSettings = { method: '', gradientTolerance: 0, tipTolerance: 0, ...FRAME_DEFAULTS, paperMode: false };
+  private readonly settings: FrameSettings = {
+    method: '',
+    gradientTolerance: 0,
+    tipTolerance: 0,
+    ...FRAME_DEFAULTS,
+    paperMode: false,
+  };
   private token = 0;
 
   constructor() {
@@ -188,7 +194,8 @@ export class IkWidget extends HTMLElement {
     this.settings.maxJointMove = tolerances.maxJointMove;
     this.settings.method = this.methodSelect.value = this.method;
     const controller = new LiveController(this.view, this.settings, {
-      solved: (outcome, ms) => this.status.show(this.settings.method, outcome, ms, controller.live?.session.orientationErrorDeg() ?? NaN),
+      solved: (outcome, ms) =>
+        this.status.show(this.settings.method, outcome, ms, controller.live?.session.orientationErrorDeg() ?? NaN),
       failed: (message) => this.status.note(message, 'failed'),
       targetChanged: () => this.useGizmo(),
     });

@@ -49,7 +49,9 @@ export function widgetProbe(controller: LiveController): WidgetProbe | null {
     effectorNames: bones.map((b) => spec.names[b] || `bone ${b}`),
     positionGoals: bones.map((_, k) => goals.position[k] === 1),
     orientationGoals: bones.map((_, k) =>
-      goals.orientation[k] === 1 ? (Array.from(goals.rotations.subarray(4 * k, 4 * k + 4)) as [number, number, number, number]) : null,
+      goals.orientation[k] === 1
+        ? (Array.from(goals.rotations.subarray(4 * k, 4 * k + 4)) as [number, number, number, number])
+        : null,
     ),
     orientationErrors: bones.map((_, k) => (errors && goals.orientation[k] === 1 ? errors[k] : null)),
     gizmoMode: handles.gizmoMode,

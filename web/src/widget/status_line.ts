@@ -81,7 +81,9 @@ export class StatusLine {
     const l = this.latest;
     if (!this.words) return;
     const turn = Number.isNaN(l.orientationDeg) ? '' : ` · orientation error ${l.orientationDeg.toPrecision(3)}°`;
-    this.element.textContent = this.withProblem(`${l.method} · ${l.iterations} it · tip error ${twoDigits(l.tipDistance)}${turn} · ${l.ms.toFixed(2)} ms · ${this.words.text}`);
+    this.element.textContent = this.withProblem(
+      `${l.method} · ${l.iterations} it · tip error ${twoDigits(l.tipDistance)}${turn} · ${l.ms.toFixed(2)} ms · ${this.words.text}`,
+    );
   }
 
   private withProblem(text: string): string {

@@ -86,7 +86,8 @@ export function parseA7Rig(text: string, file: string): RigSpec {
 
   /** rest_T (3x4 or 4x4, row-major, rigid) into `m` (16 numbers). */
   function readRest(rows: unknown, m: Float64Array, where: string): void {
-    if (!Array.isArray(rows) || (rows.length !== 3 && rows.length !== 4)) fail(`${where} must be a 3x4 or 4x4 row-major matrix`);
+    if (!Array.isArray(rows) || (rows.length !== 3 && rows.length !== 4))
+      fail(`${where} must be a 3x4 or 4x4 row-major matrix`);
     m.set([0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1]);
     (rows as unknown[]).forEach((row, r) => {
       if (!Array.isArray(row) || row.length !== 4) fail(`${where} row ${r} must have 4 numbers`);
@@ -95,7 +96,8 @@ export function parseA7Rig(text: string, file: string): RigSpec {
         m[4 * r + c] = c === 3 && r < 3 ? coordinate(v, at) : num(v, at);
       });
     });
-    if (Math.hypot(m[12], m[13], m[14], m[15] - 1) > BOTTOM_ROW_TOLERANCE) fail(`${where} bottom row is not (0, 0, 0, 1)`);
+    if (Math.hypot(m[12], m[13], m[14], m[15] - 1) > BOTTOM_ROW_TOLERANCE)
+      fail(`${where} bottom row is not (0, 0, 0, 1)`);
     let off = 0;
     for (let r = 0; r < 3; r++)
       for (let c = 0; c < 3; c++) {
@@ -103,7 +105,8 @@ export function parseA7Rig(text: string, file: string): RigSpec {
         off += (dot - (r === c ? 1 : 0)) ** 2;
       }
     if (Math.sqrt(off) > RIGID_TOLERANCE) fail(`${where} is not rigid (its rotation part is not orthonormal)`);
-    const det = m[0] * (m[5] * m[10] - m[6] * m[9]) - m[1] * (m[4] * m[10] - m[6] * m[8]) + m[2] * (m[4] * m[9] - m[5] * m[8]);
+    const det =
+      m[0] * (m[5] * m[10] - m[6] * m[9]) - m[1] * (m[4] * m[10] - m[6] * m[8]) + m[2] * (m[4] * m[9] - m[5] * m[8]);
     if (det < 0) fail(`${where} is not rigid (it mirrors: determinant < 0)`);
   }
 
@@ -135,7 +138,12 @@ export function parseA7Rig(text: string, file: string): RigSpec {
   /** The end-effector bones of `ik_constraints` (a bone index or a list), the last bone when missing. */
   function readEffectors(c: unknown, n: number): Int32Array {
     if (c === undefined) return Int32Array.of(n - 1);
-    const list = typeof c === 'number' ? [c] : Array.isArray(c) ? c : fail('ik_constraints must be a bone index or a list of them');
+    const list =
+      typeof c === 'number'
+        ? [c]
+        : Array.isArray(c)
+          ? c
+          : fail('ik_constraints must be a bone index or a list of them');
     if (list.length === 0) fail('ik_constraints is empty: a rig needs an end effector');
     const tooMany = effectorCountProblem(list.length, n);
     if (tooMany) fail(`ik_constraints lists ${tooMany}`);

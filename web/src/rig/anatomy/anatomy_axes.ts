@@ -38,11 +38,16 @@ function palmNormal(spec: RigSpec, hand: number): Vec3 | null {
 /** The direction `toward` names for bone `bone`, in rig space (null: a palm without fingers). */
 function direction(toward: Toward, frame: BodyFrame, spec: RigSpec, bone: number): Vec3 | null {
   switch (toward) {
-    case 'forward': return frame.forward;
-    case 'back': return scale(frame.forward, -1);
-    case 'up': return frame.up;
-    case 'down': return scale(frame.up, -1);
-    case 'palm': return palmNormal(spec, bone);
+    case 'forward':
+      return frame.forward;
+    case 'back':
+      return scale(frame.forward, -1);
+    case 'up':
+      return frame.up;
+    case 'down':
+      return scale(frame.up, -1);
+    case 'palm':
+      return palmNormal(spec, bone);
   }
 }
 
@@ -58,7 +63,13 @@ function upperBone(spec: RigSpec, map: HumanoidMap, role: HumanoidRole, bone: nu
 }
 
 /** The axis of role `role`'s main bend on its bone `bone` (see BendAxis). */
-export function bendAxis(spec: RigSpec, map: HumanoidMap, role: HumanoidRole, bone: number, frame: BodyFrame): BendAxis {
+export function bendAxis(
+  spec: RigSpec,
+  map: HumanoidMap,
+  role: HumanoidRole,
+  bone: number,
+  frame: BodyFrame,
+): BendAxis {
   const x = restAxis(spec, bone, 0);
   // The first listed direction far enough off the bone, else the one farthest off.
   let axis: Vec3 = [0, 0, 0];
@@ -73,6 +84,7 @@ export function bendAxis(spec: RigSpec, map: HumanoidMap, role: HumanoidRole, bo
   const upper = upperBone(spec, map, role, bone);
   const upperDir = upper === undefined ? null : unit(sub(restOrigin(spec, bone), restOrigin(spec, upper)));
   const bent = upperDir ? cross(upperDir, x) : null;
-  if (bent && norm(bent) >= MIN_REST_BEND && dot(unit(bent)!, axis) < -0.5) return { axis: scale(axis, -1), reversed: true };
+  if (bent && norm(bent) >= MIN_REST_BEND && dot(unit(bent)!, axis) < -0.5)
+    return { axis: scale(axis, -1), reversed: true };
   return { axis, reversed: false };
 }

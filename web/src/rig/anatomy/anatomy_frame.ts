@@ -34,18 +34,40 @@ export function bodyFrame(spec: RigSpec, map: HumanoidMap): BodyFrame {
   const at = (role: HumanoidRole): Vec3 => restOrigin(spec, bone(role)!);
 
   const up = (has('hips', 'head') && unit(sub(at('head'), at('hips')))) || ([0, 1, 0] as Vec3);
-  const sides = (['left', 'right'] as const);
+  const sides = ['left', 'right'] as const;
   const candidates: [FacingSource, () => Vec3 | null][] = [
-    ['toes', () => horizontal(sides.filter((s) => has(`${s}Foot`, `${s}Toes`)).map((s) => sub(at(`${s}Toes`), at(`${s}Foot`))), up)],
-    ['feet', () => horizontal(sides.filter((s) => has(`${s}Foot`)).map((s) => restAxis(spec, bone(`${s}Foot`)!, 0)), up)],
+    [
+      'toes',
+      () =>
+        horizontal(
+          sides.filter((s) => has(`${s}Foot`, `${s}Toes`)).map((s) => sub(at(`${s}Toes`), at(`${s}Foot`))),
+          up,
+        ),
+    ],
+    [
+      'feet',
+      () =>
+        horizontal(
+          sides.filter((s) => has(`${s}Foot`)).map((s) => restAxis(spec, bone(`${s}Foot`)!, 0)),
+          up,
+        ),
+    ],
     ['head', () => (has('head') ? horizontal([restAxis(spec, bone('head')!, 0)], up) : null)],
-    ['sides', () => {
-      const pairs = (['UpperLeg', 'UpperArm'] as const).filter((p) => has(`left${p}`, `right${p}`));
-      const left = pairs.reduce<Vec3>((s, p) => add(s, sub(at(`left${p}`), at(`right${p}`))), [0, 0, 0]);
-      return pairs.length ? unit(reject(cross(left, up), up)) : null;
-    }],
+    [
+      'sides',
+      () => {
+        const pairs = (['UpperLeg', 'UpperArm'] as const).filter((p) => has(`left${p}`, `right${p}`));
+        const left = pairs.reduce<Vec3>((s, p) => add(s, sub(at(`left${p}`), at(`right${p}`))), [0, 0, 0]);
+        return pairs.length ? unit(reject(cross(left, up), up)) : null;
+      },
+    ],
   ];
-  const frame = (forward: Vec3, facingFrom: FacingSource): BodyFrame => ({ up, forward, left: cross(up, forward), facingFrom });
+  const frame = (forward: Vec3, facingFrom: FacingSource): BodyFrame => ({
+    up,
+    forward,
+    left: cross(up, forward),
+    facingFrom,
+  });
   for (const [facingFrom, find] of candidates) {
     const forward = find();
     if (forward) return frame(forward, facingFrom);

@@ -4,7 +4,19 @@
 import type { HumanoidRole } from '../humanoid/humanoid_roles.js';
 
 /** A humanoid role without its side; chest and upperChest count as spine. */
-export type Joint = 'hips' | 'spine' | 'neck' | 'head' | 'shoulder' | 'upperArm' | 'lowerArm' | 'hand' | 'upperLeg' | 'lowerLeg' | 'foot' | 'toes';
+export type Joint =
+  | 'hips'
+  | 'spine'
+  | 'neck'
+  | 'head'
+  | 'shoulder'
+  | 'upperArm'
+  | 'lowerArm'
+  | 'hand'
+  | 'upperLeg'
+  | 'lowerLeg'
+  | 'foot'
+  | 'toes';
 
 /**
  * Where a positive bend moves the bone's tip, in the character's frame. 'palm': across the palm,

@@ -25,7 +25,16 @@ import { xzxWithinLimits } from '../xzx_angles.js';
 import type { RigSpec } from '../../ik/rig_arrays.js';
 import { failIn } from '../rig_format_error.js';
 import { nodeLabel, type GltfSkin, type GltfTree } from './gltf_nodes.js';
-import { det3, invertAffine, maxAbs, maxAbsDiff, multiply, polarRotation, transformDirection, type Mat4 } from '../mat4.js';
+import {
+  det3,
+  invertAffine,
+  maxAbs,
+  maxAbsDiff,
+  multiply,
+  polarRotation,
+  transformDirection,
+  type Mat4,
+} from '../mat4.js';
 import { fromRotation } from '../quat.js';
 
 /** Offsets and scales of the bind pose and the nodes agree within this share of the skeleton's size. */
@@ -58,27 +67,37 @@ export function bindMatrices(ibm: Float64Array, skin: GltfSkin, tree: GltfTree, 
   return skin.joints.map((j, k) => {
     const m = ibm.subarray(16 * k, 16 * k + 16);
     const joint = `${where}: matrix ${k}, of joint ${nodeLabel(tree.nodes[j])},`;
-    if (Math.abs(m[12]) + Math.abs(m[13]) + Math.abs(m[14]) + Math.abs(m[15] - 1) > 1e-6) failIn(file, `${joint} is not affine (its last row is not 0 0 0 1)`);
+    if (Math.abs(m[12]) + Math.abs(m[13]) + Math.abs(m[14]) + Math.abs(m[15] - 1) > 1e-6)
+      failIn(file, `${joint} is not affine (its last row is not 0 0 0 1)`);
     const inv = invertAffine(m);
     if (inv === null) failIn(file, `${joint} is not invertible (a zero scale?)`);
     return inv;
   });
 }
 
-const linearOf = (m: ArrayLike<number>): Float64Array => Float64Array.of(m[0], m[1], m[2], m[4], m[5], m[6], m[8], m[9], m[10]);
+const linearOf = (m: ArrayLike<number>): Float64Array =>
+  Float64Array.of(m[0], m[1], m[2], m[4], m[5], m[6], m[8], m[9], m[10]);
 function mul3(a: ArrayLike<number>, b: ArrayLike<number>): Float64Array {
   const out = new Float64Array(9);
-  for (let r = 0; r < 3; r++) for (let c = 0; c < 3; c++) out[3 * r + c] = a[3 * r] * b[c] + a[3 * r + 1] * b[3 + c] + a[3 * r + 2] * b[6 + c];
+  for (let r = 0; r < 3; r++)
+    for (let c = 0; c < 3; c++) out[3 * r + c] = a[3 * r] * b[c] + a[3 * r + 1] * b[3 + c] + a[3 * r + 2] * b[6 + c];
   return out;
 }
-const transpose3 = (a: ArrayLike<number>): Float64Array => Float64Array.of(a[0], a[3], a[6], a[1], a[4], a[7], a[2], a[5], a[8]);
+const transpose3 = (a: ArrayLike<number>): Float64Array =>
+  Float64Array.of(a[0], a[3], a[6], a[1], a[4], a[7], a[2], a[5], a[8]);
 
 /**
  * The rest pose of every node of `tree` from the skins' bind pose (see the top of this file).
  * `binds[s]` is skin s's bindMatrices, or undefined when it has none; `current` the nodes' world
  * matrices (worldMatrices), joints non-singular; `isJoint` the joints of every skin.
  */
-export function restFromBindPose(tree: GltfTree, skins: GltfSkin[], binds: (Mat4[] | undefined)[], current: Mat4[], isJoint: Set<number>): RestPose {
+export function restFromBindPose(
+  tree: GltfTree,
+  skins: GltfSkin[],
+  binds: (Mat4[] | undefined)[],
+  current: Mat4[],
+  isJoint: Set<number>,
+): RestPose {
   const { nodes, order } = tree;
   // The nearest joint strictly above each node, -1 for none.
   const above = new Int32Array(nodes.length).fill(-1);
@@ -87,7 +106,8 @@ export function restFromBindPose(tree: GltfTree, skins: GltfSkin[], binds: (Mat4
     if (p >= 0) above[i] = isJoint.has(p) ? p : above[p];
   }
   // The skeleton's size: the diagonal of its joints' bounding box (scene units).
-  const lo = [Infinity, Infinity, Infinity], hi = [-Infinity, -Infinity, -Infinity];
+  const lo = [Infinity, Infinity, Infinity],
+    hi = [-Infinity, -Infinity, -Infinity];
   for (const j of isJoint)
     for (let k = 0; k < 3; k++) {
       lo[k] = Math.min(lo[k], current[j][4 * k + 3]);
@@ -98,11 +118,14 @@ export function restFromBindPose(tree: GltfTree, skins: GltfSkin[], binds: (Mat4
   const slots = skins.map((s) => new Map(s.joints.map((j, k) => [j, k])));
 
   const build = (usable: boolean[]): { rest: RestPose; failed: Set<number> } => {
-    const local = new Array<Mat4>(nodes.length), world = new Array<Mat4>(nodes.length);
+    const local = new Array<Mat4>(nodes.length),
+      world = new Array<Mat4>(nodes.length);
     const rebound: number[] = [];
     const failed = new Set<number>();
     for (const i of order) {
-      const node = nodes[i], p = node.parent, a = above[i];
+      const node = nodes[i],
+        p = node.parent,
+        a = above[i];
       let L = node.local;
       // Every usable skin that relates joint i to the joint above is checked (so one pass finds all
       // the skins that fail here); the first that passes gives the rest.
@@ -113,11 +136,15 @@ export function restFromBindPose(tree: GltfTree, skins: GltfSkin[], binds: (Mat4
         const bind = binds[s]!;
         const bindWorld = multiply(multiply(world[a], invertAffine(bind[slots[s].get(a)!])!), bind[slots[s].get(i)!]);
         const Lb = multiply(invertAffine(world[p])!, bindWorld);
-        const Qb = polarRotation(Lb), Qn = polarRotation(L);
-        const Pb = mul3(transpose3(Qb), linearOf(Lb)), Pn = mul3(transpose3(Qn), linearOf(L));
+        const Qb = polarRotation(Lb),
+          Qn = polarRotation(L);
+        const Pb = mul3(transpose3(Qb), linearOf(Lb)),
+          Pn = mul3(transpose3(Qn), linearOf(L));
         const moved = transformDirection(world[p], [Lb[3] - L[3], Lb[7] - L[7], Lb[11] - L[11]]);
         const sameShape =
-          Math.hypot(...moved) <= SHAPE_TOLERANCE * size && maxAbsDiff(Pb, Pn) <= SHAPE_TOLERANCE * maxAbs(Pn) && det3(Lb) * det3(L) > 0;
+          Math.hypot(...moved) <= SHAPE_TOLERANCE * size &&
+          maxAbsDiff(Pb, Pn) <= SHAPE_TOLERANCE * maxAbs(Pn) &&
+          det3(Lb) * det3(L) > 0;
         if (!sameShape) failed.add(s);
         else chosen ??= { Qb, Qn, Pn };
       }
@@ -175,7 +202,8 @@ function straightened(r: Float64Array): Float64Array {
 /** Rx(a0) Rz(a1) Rx(a2), angles in degrees, as 9 row-major numbers. */
 function xzxRotation(a: ArrayLike<number>, at: number): Float64Array {
   const [a0, a1, a2] = [a[at], a[at + 1], a[at + 2]].map((v) => (v * Math.PI) / 180);
-  const rx = (t: number): Float64Array => Float64Array.of(1, 0, 0, 0, Math.cos(t), -Math.sin(t), 0, Math.sin(t), Math.cos(t));
+  const rx = (t: number): Float64Array =>
+    Float64Array.of(1, 0, 0, 0, Math.cos(t), -Math.sin(t), 0, Math.sin(t), Math.cos(t));
   const rz = Float64Array.of(Math.cos(a1), -Math.sin(a1), 0, Math.sin(a1), Math.cos(a1), 0, 0, 0, 1);
   return mul3(mul3(rx(a0), rz), rx(a2));
 }
@@ -187,11 +215,18 @@ function xzxRotation(a: ArrayLike<number>, at: number): Float64Array {
  * rest_i^-1 T_p^-1 T_i rest_i (README "Conventions"), read by xzxWithinLimits (the decomposition
  * nearest the spec's limits, then clamped into them). `clamped` lists the bones the limits moved.
  */
-export function startAngles(spec: RigSpec, boneNodes: ArrayLike<number>, restWorld: Mat4[], current: Mat4[]): { angles: Float64Array; clamped: number[] } {
+export function startAngles(
+  spec: RigSpec,
+  boneNodes: ArrayLike<number>,
+  restWorld: Mat4[],
+  current: Mat4[],
+): { angles: Float64Array; clamped: number[] } {
   const n = spec.parents.length;
   const angles = new Float64Array(3 * n);
   const clamped: number[] = [];
-  const motion = Array.from({ length: n }, (_, b) => multiply(current[boneNodes[b]], invertAffine(restWorld[boneNodes[b]])!));
+  const motion = Array.from({ length: n }, (_, b) =>
+    multiply(current[boneNodes[b]], invertAffine(restWorld[boneNodes[b]])!),
+  );
   for (let b = 0; b < n; b++) {
     const rest = spec.rest.subarray(16 * b, 16 * b + 16);
     const p = spec.parents[b];

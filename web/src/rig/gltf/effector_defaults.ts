@@ -4,7 +4,14 @@
 // (control_bones.ts: IK targets and poles off the root, a foot off the root beside the legs) are
 // never chosen: where one is named as a hand or foot, the limb's own end is taken in its place.
 import { isSideToken, nameSide, nameTokens, type Side } from '../bone_names.js';
-import { controlBones, limbChainEnd, limbRoles, lowerLimbStandIns, type ControlBone, type EndStandIn } from '../humanoid/control_bones.js';
+import {
+  controlBones,
+  limbChainEnd,
+  limbRoles,
+  lowerLimbStandIns,
+  type ControlBone,
+  type EndStandIn,
+} from '../humanoid/control_bones.js';
 import { listed } from './gltf_json.js';
 import type { HumanoidMap, HumanoidRole } from '../humanoid/humanoid_roles.js';
 import { maxEffectors } from '../rig_limits.js';
@@ -25,8 +32,27 @@ const ARM_WORDS = new Set(['arm', 'upperarm', 'lowerarm', 'forearm', 'elbow']);
 
 // A name with one of these words is a part of a hand or foot, not the hand or foot itself.
 const EXCLUDE = new Set([
-  'thumb', 'index', 'middle', 'ring', 'pinky', 'little', 'finger', 'fingers', 'toe', 'toes', 'ball', 'heel',
-  'ik', 'fk', 'target', 'pole', 'ctrl', 'control', 'twist', 'roll', 'mch',
+  'thumb',
+  'index',
+  'middle',
+  'ring',
+  'pinky',
+  'little',
+  'finger',
+  'fingers',
+  'toe',
+  'toes',
+  'ball',
+  'heel',
+  'ik',
+  'fk',
+  'target',
+  'pole',
+  'ctrl',
+  'control',
+  'twist',
+  'roll',
+  'mch',
 ]);
 
 /** The roles whose bones are a humanoid's default end effectors. */
@@ -38,7 +64,12 @@ const HUMANOID_EFFECTOR_ROLES: readonly HumanoidRole[] = ['head', 'leftHand', 'r
  * A limb the mapping leaves out (RobotExpressive's legs hang off the body beside its hips) whose
  * end a control bone names gets the end of its chain by name (limbChainEnd) all the same.
  */
-function humanoidEffectors(map: HumanoidMap, controls: readonly ControlBone[], names: readonly string[], parents: ArrayLike<number>): { effectors: number[]; standIns: EndStandIn[] } {
+function humanoidEffectors(
+  map: HumanoidMap,
+  controls: readonly ControlBone[],
+  names: readonly string[],
+  parents: ArrayLike<number>,
+): { effectors: number[]; standIns: EndStandIn[] } {
   const bones = HUMANOID_EFFECTOR_ROLES.flatMap((r) => (map.bones[r] === undefined ? [] : [map.bones[r]]));
   const standIns = lowerLimbStandIns(map.bones, controls);
   const isControl = new Set(controls.map((c) => c.bone));
@@ -70,18 +101,27 @@ function depths(parents: ArrayLike<number>): Int32Array {
  * Control bones (`controls`, found here when not given) are never taken; a side whose hand or
  * foot only a control bone names gets the end of that arm or leg (limbChainEnd). Linear time.
  */
-export function effectorsByName(names: readonly string[], parents: ArrayLike<number>, controls: readonly ControlBone[] = controlBones(names, parents)): number[] {
+export function effectorsByName(
+  names: readonly string[],
+  parents: ArrayLike<number>,
+  controls: readonly ControlBone[] = controlBones(names, parents),
+): number[] {
   return namedEffectors(names, parents, controls).effectors;
 }
 
 /** effectorsByName, and the limb ends taken in place of control bones. */
-function namedEffectors(names: readonly string[], parents: ArrayLike<number>, controls: readonly ControlBone[]): { effectors: number[]; standIns: EndStandIn[] } {
+function namedEffectors(
+  names: readonly string[],
+  parents: ArrayLike<number>,
+  controls: readonly ControlBone[],
+): { effectors: number[]; standIns: EndStandIn[] } {
   const isControl = new Set(controls.map((c) => c.bone));
   const depth = depths(parents);
   const tokens = names.map(nameTokens);
   const isArm = tokens.map((t) => t.some((w) => ARM_WORDS.has(w)));
   const armBelow = new Array<boolean>(names.length).fill(false);
-  for (let b = names.length - 1; b >= 0; b--) if (parents[b] >= 0 && (isArm[b] || armBelow[b])) armBelow[parents[b]] = true;
+  for (let b = names.length - 1; b >= 0; b--)
+    if (parents[b] >= 0 && (isArm[b] || armBelow[b])) armBelow[parents[b]] = true;
 
   // Per role and side, the best bone: lowest [tier, other words, depth] (tier 1: an arm's end).
   const best = new Map<string, { bone: number; score: number[] }>();
@@ -165,13 +205,20 @@ export function defaultEffectors(
   }
   const byName = namedEffectors(names, parents, controls);
   const named = kept(byName.effectors);
-  if (named.length) return { effectors: named, which: `the hands, feet and head found by name${standInText(names, keptStandIns(byName.standIns))}` };
+  if (named.length)
+    return {
+      effectors: named,
+      which: `the hands, feet and head found by name${standInText(names, keptStandIns(byName.standIns))}`,
+    };
   // Leaves, but control bones only when every leaf is one.
   const allLeaves = leafBones(parents).filter((b) => !excluded.has(b));
   const leaves = allLeaves.some((b) => !isControl.has(b)) ? allLeaves.filter((b) => !isControl.has(b)) : allLeaves;
   const effectors = deepestBones(leaves, depths(parents), maxEffectors(parents.length));
   if (effectors.length === leaves.length) return { effectors, which: 'all leaf joints' };
-  return { effectors, which: `the ${effectors.length} leaf joints furthest from the root, of ${leaves.length} (the most this rig may have)` };
+  return {
+    effectors,
+    which: `the ${effectors.length} leaf joints furthest from the root, of ${leaves.length} (the most this rig may have)`,
+  };
 }
 
 /**
@@ -206,7 +253,6 @@ export function deepestBones(bones: readonly number[], depth: ArrayLike<number>,
   let room = keep;
   while (room > atDepth[cut]) room -= atDepth[cut--];
   const kept: number[] = [];
-  for (const b of bones)
-    if (depth[b] > cut || (depth[b] === cut && room-- > 0)) kept.push(b);
+  for (const b of bones) if (depth[b] > cut || (depth[b] === cut && room-- > 0)) kept.push(b);
   return kept;
 }

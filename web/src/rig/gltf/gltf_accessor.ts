@@ -25,7 +25,14 @@ export class BufferCache {
     let p = this.loaded.get(index);
     if (!p) {
       const def = this.lists.buffers[index];
-      p = loadBuffer(this.container, index, def.uri as string | undefined, def.byteLength as number, this.file, this.readSibling);
+      p = loadBuffer(
+        this.container,
+        index,
+        def.uri as string | undefined,
+        def.byteLength as number,
+        this.file,
+        this.readSibling,
+      );
       this.loaded.set(index, p);
     }
     return p;

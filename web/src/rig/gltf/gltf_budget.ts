@@ -52,6 +52,7 @@ export function checkGltfBudget(json: JsonObject, file: string): void {
     const entries = Array.isArray(json[parent]) ? (json[parent] as unknown[]) : [];
     let n = 0;
     for (const e of entries) n += typeof e === 'object' && e !== null ? lengthOf((e as JsonObject)[child]) : 0;
-    if (n > most) failIn(file, `${n} ${parent}[].${child} in all; at most ${most} (the limit on glTF ${parent}' ${child})`);
+    if (n > most)
+      failIn(file, `${n} ${parent}[].${child} in all; at most ${most} (the limit on glTF ${parent}' ${child})`);
   }
 }

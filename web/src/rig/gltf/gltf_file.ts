@@ -34,7 +34,8 @@ function parseGlb(bytes: Uint8Array, view: DataView, file: string): GltfContaine
   const version = view.getUint32(4, true);
   if (version !== 2) failIn(file, `GLB version ${version} is not supported (need 2)`);
   const total = view.getUint32(8, true);
-  if (total > bytes.byteLength) failIn(file, `truncated GLB: the header says ${total} bytes, the file has ${bytes.byteLength}`);
+  if (total > bytes.byteLength)
+    failIn(file, `truncated GLB: the header says ${total} bytes, the file has ${bytes.byteLength}`);
   let json: Record<string, unknown> | undefined;
   let bin: Uint8Array | undefined;
   let at = 12;
@@ -70,7 +71,8 @@ function parseJsonText(bytes: Uint8Array, file: string): Record<string, unknown>
   } catch (e) {
     return failIn(file, `bad JSON: ${(e as Error).message}`);
   }
-  if (typeof doc !== 'object' || doc === null || Array.isArray(doc)) failIn(file, 'bad glTF: the JSON is not an object');
+  if (typeof doc !== 'object' || doc === null || Array.isArray(doc))
+    failIn(file, 'bad glTF: the JSON is not an object');
   const asset = (doc as Record<string, unknown>).asset;
   const version = typeof asset === 'object' && asset !== null ? (asset as Record<string, unknown>).version : undefined;
   if (typeof version !== 'string') failIn(file, 'bad glTF: no asset.version (is this a glTF file?)');

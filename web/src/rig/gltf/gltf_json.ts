@@ -50,7 +50,10 @@ export function badValue(v: unknown, where: string, expected: string): string {
 /** `v` as an integer in [0, count), or a RigFormatError naming `where`. */
 export function asIndex(v: unknown, count: number, where: string, file: string): number {
   if (typeof v !== 'number' || !Number.isInteger(v) || v < 0 || v >= count)
-    failIn(file, badValue(v, where, count > 0 ? `an index in 0..${count - 1}` : 'an index (the list it refers to is empty)'));
+    failIn(
+      file,
+      badValue(v, where, count > 0 ? `an index in 0..${count - 1}` : 'an index (the list it refers to is empty)'),
+    );
   return v;
 }
 
@@ -58,9 +61,19 @@ export function asIndex(v: unknown, count: number, where: string, file: string):
  * `v` as an integer in [min, max] (max = Number.MAX_SAFE_INTEGER for "no upper bound"; `fallback`
  * when missing), or a RigFormatError naming `where`.
  */
-export function asInteger(v: unknown, min: number, max: number, where: string, file: string, fallback?: number): number {
+export function asInteger(
+  v: unknown,
+  min: number,
+  max: number,
+  where: string,
+  file: string,
+  fallback?: number,
+): number {
   if (v === undefined && fallback !== undefined) return fallback;
   if (typeof v !== 'number' || !Number.isInteger(v) || v < min || v > max)
-    failIn(file, badValue(v, where, `a whole number ${max >= Number.MAX_SAFE_INTEGER ? `>= ${min}` : `in ${min}..${max}`}`));
+    failIn(
+      file,
+      badValue(v, where, `a whole number ${max >= Number.MAX_SAFE_INTEGER ? `>= ${min}` : `in ${min}..${max}`}`),
+    );
   return v;
 }

@@ -38,7 +38,8 @@ export function nodeLabel(node: { index: number; name: string }): string {
 function numbers(v: unknown, length: number, where: string, file: string): number[] {
   if (!Array.isArray(v) || v.length !== length) failIn(file, `${where} must be ${length} numbers`);
   return v.map((x, k) => {
-    if (typeof x !== 'number' || !Number.isFinite(x)) failIn(file, `${where}[${k}] is not a finite number (NaN or infinite)`);
+    if (typeof x !== 'number' || !Number.isFinite(x))
+      failIn(file, `${where}[${k}] is not a finite number (NaN or infinite)`);
     return x;
   });
 }
@@ -93,7 +94,13 @@ export function readNodes(defs: JsonObject[], file: string): GltfTree {
   const cycle = findCycle(parents);
   if (cycle) failIn(file, `node hierarchy has a cycle: ${cycleText(cycle, (i) => nodeLabel(nodes[i]))}`);
   nodes.forEach((node, i) => (node.local = readLocal(defs[i], `nodes[${i}]`, file)));
-  return { nodes, order: preorder(parents, nodes.map((n) => n.children)) };
+  return {
+    nodes,
+    order: preorder(
+      parents,
+      nodes.map((n) => n.children),
+    ),
+  };
 }
 
 /** World matrices of all nodes (row-major), composing local transforms from the roots down. */

@@ -11,13 +11,32 @@ import { asIndex, asInteger, asObject, badValue, type JsonObject } from './gltf_
 import type { GltfLists } from './gltf_references.js';
 
 /** Bytes per component of each glTF componentType. */
-const COMPONENT_BYTES: ReadonlyMap<unknown, number> = new Map([[5120, 1], [5121, 1], [5122, 2], [5123, 2], [5125, 4], [5126, 4]]);
+const COMPONENT_BYTES: ReadonlyMap<unknown, number> = new Map([
+  [5120, 1],
+  [5121, 1],
+  [5122, 2],
+  [5123, 2],
+  [5125, 4],
+  [5126, 4],
+]);
 
 /** Bytes per index of the componentTypes a sparse accessor's indices may have. */
-const SPARSE_INDEX_BYTES: ReadonlyMap<unknown, number> = new Map([[5121, 1], [5123, 2], [5125, 4]]);
+const SPARSE_INDEX_BYTES: ReadonlyMap<unknown, number> = new Map([
+  [5121, 1],
+  [5123, 2],
+  [5125, 4],
+]);
 
 /** Components per element of each accessor type. */
-const TYPE_COMPONENTS: ReadonlyMap<unknown, number> = new Map([['SCALAR', 1], ['VEC2', 2], ['VEC3', 3], ['VEC4', 4], ['MAT2', 4], ['MAT3', 9], ['MAT4', 16]]);
+const TYPE_COMPONENTS: ReadonlyMap<unknown, number> = new Map([
+  ['SCALAR', 1],
+  ['VEC2', 2],
+  ['VEC3', 3],
+  ['VEC4', 4],
+  ['MAT2', 4],
+  ['MAT3', 9],
+  ['MAT4', 16],
+]);
 
 /** Largest byte count or element count the checks accept (2^53: exact in a double). */
 const MAX_SIZE = Number.MAX_SAFE_INTEGER;
@@ -43,18 +62,26 @@ export function checkRanges(container: GltfContainer, lists: GltfLists, file: st
     if (b.uri !== undefined && typeof b.uri !== 'string') failIn(file, `buffers[${i}].uri is not a string`);
     const bin = container.bin;
     if (i === 0 && b.uri === undefined && bin !== undefined && bin.byteLength < length)
-      failIn(file, `buffers[0].byteLength = ${length} is more than the ${bin.byteLength} bytes of the GLB binary chunk (truncated file?)`);
+      failIn(
+        file,
+        `buffers[0].byteLength = ${length} is more than the ${bin.byteLength} bytes of the GLB binary chunk (truncated file?)`,
+      );
     return length;
   });
   const views = lists.bufferViews.map((v, i) => {
     const where = `bufferViews[${i}]`;
     const offset = asInteger(v.byteOffset, 0, MAX_SIZE, `${where}.byteOffset`, file, 0);
     const length = asInteger(v.byteLength, 1, MAX_SIZE, `${where}.byteLength`, file);
-    const stride = v.byteStride === undefined ? undefined : asInteger(v.byteStride, 4, 252, `${where}.byteStride`, file);
-    if (stride !== undefined && stride % 4 !== 0) failIn(file, `${where}.byteStride = ${stride} is not a multiple of 4`);
+    const stride =
+      v.byteStride === undefined ? undefined : asInteger(v.byteStride, 4, 252, `${where}.byteStride`, file);
+    if (stride !== undefined && stride % 4 !== 0)
+      failIn(file, `${where}.byteStride = ${stride} is not a multiple of 4`);
     const buffer = v.buffer as number;
     if (offset + length > bufferLengths[buffer])
-      failIn(file, `${where} (bytes ${offset} to ${offset + length}) lies outside buffers[${buffer}] (${bufferLengths[buffer]} bytes)`);
+      failIn(
+        file,
+        `${where} (bytes ${offset} to ${offset + length}) lies outside buffers[${buffer}] (${bufferLengths[buffer]} bytes)`,
+      );
     return { offset, length, stride };
   });
   let accessorBytes = 0;
@@ -62,46 +89,80 @@ export function checkRanges(container: GltfContainer, lists: GltfLists, file: st
     const where = `accessors[${i}]`;
     const componentBytes = COMPONENT_BYTES.get(a.componentType);
     if (componentBytes === undefined)
-      failIn(file, badValue(a.componentType, `${where}.componentType`, `a glTF component type (${[...COMPONENT_BYTES.keys()].join(', ')})`));
+      failIn(
+        file,
+        badValue(
+          a.componentType,
+          `${where}.componentType`,
+          `a glTF component type (${[...COMPONENT_BYTES.keys()].join(', ')})`,
+        ),
+      );
     const components = TYPE_COMPONENTS.get(a.type);
-    if (components === undefined) failIn(file, badValue(a.type, `${where}.type`, `a glTF accessor type (${[...TYPE_COMPONENTS.keys()].join(', ')})`));
+    if (components === undefined)
+      failIn(
+        file,
+        badValue(a.type, `${where}.type`, `a glTF accessor type (${[...TYPE_COMPONENTS.keys()].join(', ')})`),
+      );
     const count = asInteger(a.count, 1, MAX_SIZE, `${where}.count`, file);
     const element = elementBytes(a.type as string, components, componentBytes);
     for (const key of ['min', 'max'] as const) {
       const v = a[key];
-      if (v !== undefined && (!Array.isArray(v) || v.length !== components || !v.every((x) => typeof x === 'number' && Number.isFinite(x))))
+      if (
+        v !== undefined &&
+        (!Array.isArray(v) || v.length !== components || !v.every((x) => typeof x === 'number' && Number.isFinite(x)))
+      )
         failIn(file, `${where}.${key} must be ${components} finite numbers`);
     }
     accessorBytes += count * element;
     if (accessorBytes > MAX_ACCESSOR_BYTES)
-      failIn(file, `${accessorBytes} bytes of accessor data in ${i === 0 ? where : `accessors[0..${i}]`} (${where}: ${count} elements of ${element} bytes${a.bufferView === undefined ? ' without a bufferView, zeros to allocate' : ''}); at most ${MAX_ACCESSOR_BYTES} bytes (256 MiB) in one file`);
+      failIn(
+        file,
+        `${accessorBytes} bytes of accessor data in ${i === 0 ? where : `accessors[0..${i}]`} (${where}: ${count} elements of ${element} bytes${a.bufferView === undefined ? ' without a bufferView, zeros to allocate' : ''}); at most ${MAX_ACCESSOR_BYTES} bytes (256 MiB) in one file`,
+      );
     if (a.bufferView !== undefined) {
       const offset = asInteger(a.byteOffset, 0, MAX_SIZE, `${where}.byteOffset`, file, 0);
       checkSpan(a.bufferView as number, offset, count, element, componentBytes, where);
     }
-    if (a.sparse !== undefined) checkSparse(asObject(a.sparse, `${where}.sparse`, file), count, element, componentBytes, `${where}.sparse`);
+    if (a.sparse !== undefined)
+      checkSparse(asObject(a.sparse, `${where}.sparse`, file), count, element, componentBytes, `${where}.sparse`);
   });
 
   /**
    * `count` elements of `element` bytes from `offset` in view `v`, aligned and inside it; `packed`
    * (sparse data) ignores the view's byteStride.
    */
-  function checkSpan(v: number, offset: number, count: number, element: number, componentBytes: number, where: string, packed = false): void {
+  function checkSpan(
+    v: number,
+    offset: number,
+    count: number,
+    element: number,
+    componentBytes: number,
+    where: string,
+    packed = false,
+  ): void {
     const view = views[v];
     if (offset % componentBytes !== 0 || (view.offset + offset) % componentBytes !== 0)
-      failIn(file, `${where}: byte ${offset} of bufferViews[${v}] (byte ${view.offset + offset} of its buffer) is not a multiple of its ${componentBytes}-byte components`);
+      failIn(
+        file,
+        `${where}: byte ${offset} of bufferViews[${v}] (byte ${view.offset + offset} of its buffer) is not a multiple of its ${componentBytes}-byte components`,
+      );
     const stride = packed ? element : (view.stride ?? element);
-    if (stride < element) failIn(file, `${where}: bufferViews[${v}].byteStride = ${stride} is less than its ${element}-byte elements`);
+    if (stride < element)
+      failIn(file, `${where}: bufferViews[${v}].byteStride = ${stride} is less than its ${element}-byte elements`);
     const end = offset + stride * (count - 1) + element;
     if (end > view.length)
-      failIn(file, `${where}: ${count} elements from byte ${offset} end at byte ${end}, past the ${view.length} bytes of bufferViews[${v}]`);
+      failIn(
+        file,
+        `${where}: ${count} elements from byte ${offset} end at byte ${end}, past the ${view.length} bytes of bufferViews[${v}]`,
+      );
   }
 
   function checkSparse(s: JsonObject, count: number, element: number, componentBytes: number, where: string): void {
     const n = asInteger(s.count, 1, count, `${where}.count`, file);
     const indices = asObject(s.indices, `${where}.indices`, file);
     const indexBytes = SPARSE_INDEX_BYTES.get(indices.componentType);
-    if (indexBytes === undefined) failIn(file, badValue(indices.componentType, `${where}.indices.componentType`, '5121, 5123 or 5125'));
+    if (indexBytes === undefined)
+      failIn(file, badValue(indices.componentType, `${where}.indices.componentType`, '5121, 5123 or 5125'));
     const part = (o: JsonObject, at: string, bytes: number, size: number): void => {
       const v = asIndex(o.bufferView, views.length, `${at}.bufferView`, file);
       checkSpan(v, asInteger(o.byteOffset, 0, MAX_SIZE, `${at}.byteOffset`, file, 0), n, bytes, size, at, true);

@@ -6,8 +6,19 @@ import { failIn } from '../rig_format_error.js';
 import { asIndex, asObject, asObjectList, type JsonObject } from './gltf_json.js';
 
 const LISTS = [
-  'accessors', 'animations', 'buffers', 'bufferViews', 'cameras', 'images', 'materials', 'meshes', 'nodes', 'samplers', 'scenes',
-  'skins', 'textures',
+  'accessors',
+  'animations',
+  'buffers',
+  'bufferViews',
+  'cameras',
+  'images',
+  'materials',
+  'meshes',
+  'nodes',
+  'samplers',
+  'scenes',
+  'skins',
+  'textures',
 ] as const;
 
 type ListName = (typeof LISTS)[number];
@@ -36,7 +47,8 @@ export function checkReferences(json: JsonObject, lists: GltfLists, file: string
     if (!Array.isArray(v)) failIn(file, `${where} is not an array`);
     v.forEach((x, k) => ref(x, list, `${where}[${k}]`));
   };
-  const object = (v: unknown, where: string): JsonObject | undefined => (v === undefined ? undefined : asObject(v, where, file));
+  const object = (v: unknown, where: string): JsonObject | undefined =>
+    v === undefined ? undefined : asObject(v, where, file);
 
   for (const key of LISTS)
     lists[key].forEach((o, i) => {
@@ -55,7 +67,8 @@ export function checkReferences(json: JsonObject, lists: GltfLists, file: string
   });
   lists.meshes.forEach((m, i) => {
     const primitives = m.primitives;
-    if (!Array.isArray(primitives) || primitives.length === 0) failIn(file, `meshes[${i}].primitives is missing or empty`);
+    if (!Array.isArray(primitives) || primitives.length === 0)
+      failIn(file, `meshes[${i}].primitives is missing or empty`);
     primitives.forEach((raw, j) => {
       const where = `meshes[${i}].primitives[${j}]`;
       const p = asObject(raw, where, file);
@@ -100,7 +113,11 @@ export function checkReferences(json: JsonObject, lists: GltfLists, file: string
     });
     asObjectList(a.channels, `${where}.channels`, file).forEach((c, k) => {
       asIndex(c.sampler, samplers.length, `${where}.channels[${k}].sampler`, file);
-      ref(asObject(c.target, `${where}.channels[${k}].target`, file).node, 'nodes', `${where}.channels[${k}].target.node`);
+      ref(
+        asObject(c.target, `${where}.channels[${k}].target`, file).node,
+        'nodes',
+        `${where}.channels[${k}].target.node`,
+      );
     });
   });
   lists.accessors.forEach((a, i) => ref(a.bufferView, 'bufferViews', `accessors[${i}].bufferView`));

@@ -121,7 +121,10 @@ export async function importGltfRig(bytes: Uint8Array, file: string, readSibling
       if (!allFinite(W)) failIn(file, `${nodeLabel(n)}: ${which}world matrix has a non-finite entry`);
       if (invertAffine(W) === null) failIn(file, `${nodeLabel(n)}: ${which}world matrix is singular (a zero scale?)`);
       if (Math.max(Math.abs(W[3]), Math.abs(W[7]), Math.abs(W[11])) > MAX_COORDINATE)
-        failIn(file, `${nodeLabel(n)}: ${which}world position (${W[3]}, ${W[7]}, ${W[11]}) lies beyond +-${MAX_COORDINATE} scene units`);
+        failIn(
+          file,
+          `${nodeLabel(n)}: ${which}world position (${W[3]}, ${W[7]}, ${W[11]}) lies beyond +-${MAX_COORDINATE} scene units`,
+        );
     }
   };
   checkWorld(posed, '');
@@ -150,7 +153,8 @@ export async function importGltfRig(bytes: Uint8Array, file: string, readSibling
     const m = world[order[b].index];
     return [m[3], m[7], m[11]];
   };
-  let lo: Vec3 = [Infinity, Infinity, Infinity], hi: Vec3 = [-Infinity, -Infinity, -Infinity];
+  let lo: Vec3 = [Infinity, Infinity, Infinity],
+    hi: Vec3 = [-Infinity, -Infinity, -Infinity];
   for (let b = 0; b < count; b++) {
     const p = origin(b);
     lo = lo.map((v, k) => Math.min(v, p[k])) as Vec3;
@@ -167,7 +171,12 @@ export async function importGltfRig(bytes: Uint8Array, file: string, readSibling
     upper: new Float64Array(3 * count),
     effectors: new Int32Array(0),
   };
-  const humanoid = recognizeHumanoid(json, order.map((n) => n.name), parents, boneOfNode);
+  const humanoid = recognizeHumanoid(
+    json,
+    order.map((n) => n.name),
+    parents,
+    boneOfNode,
+  );
   const info: GltfRigInfo = {
     boneNodes: Int32Array.from(order, (n) => n.index),
     nodeNames: order.map((n) => n.name),
@@ -188,7 +197,8 @@ export async function importGltfRig(bytes: Uint8Array, file: string, readSibling
     const ex = extras[b];
     const p = origin(b);
     // Scale of W along a local direction u: how long one local unit along u is in the world.
-    const worldLength = (localLength: number, u: Vec3): number => localLength * norm(transformDirection(W, u)) / norm(u);
+    const worldLength = (localLength: number, u: Vec3): number =>
+      (localLength * norm(transformDirection(W, u))) / norm(u);
     let dir: Vec3 = transformDirection(W, [0, 1, 0]); // local +Y: the bone axis of Blender and Mixamo
     let length: number;
     if (ex?.tail) {
@@ -205,7 +215,8 @@ export async function importGltfRig(bytes: Uint8Array, file: string, readSibling
       } else if (ex?.length !== undefined) length = worldLength(ex.length, [0, 1, 0]);
       else length = parents[b] >= 0 ? 0.5 * spec.lengths[parents[b]] : 0;
     }
-    if (length > MAX_COORDINATE) failIn(file, `${nodeLabel(node)}: bone length ${length} is beyond ${MAX_COORDINATE} scene units`);
+    if (length > MAX_COORDINATE)
+      failIn(file, `${nodeLabel(node)}: bone length ${length} is beyond ${MAX_COORDINATE} scene units`);
     const dn = norm(dir);
     const unit: Vec3 = [dir[0] / dn, dir[1] / dn, dir[2] / dn];
     spec.lengths[b] = length;
@@ -218,7 +229,10 @@ export async function importGltfRig(bytes: Uint8Array, file: string, readSibling
       spec.lower[3 * b + k] = ex?.min?.[k] ?? -DEFAULT_LIMIT_DEG;
       spec.upper[3 * b + k] = ex?.max?.[k] ?? DEFAULT_LIMIT_DEG;
       if (spec.lower[3 * b + k] > spec.upper[3 * b + k])
-        failIn(file, `${nodeLabel(node)}: extras.ik gives xzx_min[${k}] = ${spec.lower[3 * b + k]} above xzx_max[${k}] = ${spec.upper[3 * b + k]}`);
+        failIn(
+          file,
+          `${nodeLabel(node)}: extras.ik gives xzx_min[${k}] = ${spec.lower[3 * b + k]} above xzx_max[${k}] = ${spec.upper[3 * b + k]}`,
+        );
     }
   });
 
@@ -227,7 +241,8 @@ export async function importGltfRig(bytes: Uint8Array, file: string, readSibling
     if (ex?.child !== undefined) {
       const want = ex.child;
       const found = kids.find((c) => (typeof want === 'number' ? order[c].index === want : order[c].name === want));
-      if (found === undefined) failIn(file, `${nodeLabel(order[b])}: extras.ik.child ${shown(want)} is not one of its child joints`);
+      if (found === undefined)
+        failIn(file, `${nodeLabel(order[b])}: extras.ik.child ${shown(want)} is not one of its child joints`);
       return norm(sub(origin(found), origin(b))) > eps ? found : undefined;
     }
     const candidates = kids
@@ -243,14 +258,19 @@ export async function importGltfRig(bytes: Uint8Array, file: string, readSibling
   if (effectors.length === 0) {
     const chosen = defaultEffectors(info.nodeNames, parents, info.humanoid, unflagged);
     effectors = chosen.effectors;
-    info.warnings.push(`no joint is flagged extras.ik.effector: end effectors are ${chosen.which} (${listed(effectors.map((b) => spec.names[b]))})`);
+    info.warnings.push(
+      `no joint is flagged extras.ik.effector: end effectors are ${chosen.which} (${listed(effectors.map((b) => spec.names[b]))})`,
+    );
   }
   if (effectors.length === 0) failIn(file, 'no end effector: every joint is marked extras.ik.effector = false');
   const tooMany = effectorCountProblem(effectors.length, count);
   if (tooMany) failIn(file, `too many end effectors flagged in extras.ik: ${tooMany}`);
   spec.effectors = Int32Array.from(effectors);
   const offRoot = rootChainEffectors(effectors, parents).map((b) => spec.names[b]);
-  if (offRoot.length) info.warnings.push(grouped('end effector', offRoot, 'moved by the root bone alone, so dragging swings the whole body'));
+  if (offRoot.length)
+    info.warnings.push(
+      grouped('end effector', offRoot, 'moved by the root bone alone, so dragging swings the whole body'),
+    );
   // A humanoid gets anatomical limits on its mapped bones (limits given in extras.ik win; a rig
   // that gives them for every mapped bone is left as it is).
   const explicit = extras.map((e) => e?.min !== undefined || e?.max !== undefined);
@@ -272,16 +292,34 @@ export async function importGltfRig(bytes: Uint8Array, file: string, readSibling
 
   // Which pose is the rest, and the file's pose as start angles where it differs from the rest.
   const skinList = (list: number[]): string[] => list.map(String);
-  if (restPose.unbound.length) info.warnings.push(grouped('skin', skinList(restPose.unbound), "no inverse bind matrices, so the nodes' pose is the rest"));
-  if (restPose.unusable.length) info.warnings.push(grouped('skin', skinList(restPose.unusable), "the nodes are not in the bind pose; the rig's rest pose is the nodes' pose"));
+  if (restPose.unbound.length)
+    info.warnings.push(
+      grouped('skin', skinList(restPose.unbound), "no inverse bind matrices, so the nodes' pose is the rest"),
+    );
+  if (restPose.unusable.length)
+    info.warnings.push(
+      grouped(
+        'skin',
+        skinList(restPose.unusable),
+        "the nodes are not in the bind pose; the rig's rest pose is the nodes' pose",
+      ),
+    );
   if (restPose.rebound.length) {
     const start = startAngles(spec, info.boneNodes, world, posed);
     info.startAngles = start.angles;
     const moved = restPose.rebound.map((n) => spec.names[boneOfNode[n]]);
     const at = moved.length === 1 ? 'joint' : `${moved.length} joints`;
-    info.warnings.push(`the file's pose differs from the bind pose (${at}: ${listed(moved)}): opened posed, the rest is the bind pose`);
+    info.warnings.push(
+      `the file's pose differs from the bind pose (${at}: ${listed(moved)}): opened posed, the rest is the bind pose`,
+    );
     if (start.clamped.length)
-      info.warnings.push(grouped('bone', start.clamped.map((b) => spec.names[b]), "posed past its limits in the file: opened at the nearest angles within them"));
+      info.warnings.push(
+        grouped(
+          'bone',
+          start.clamped.map((b) => spec.names[b]),
+          'posed past its limits in the file: opened at the nearest angles within them',
+        ),
+      );
   }
   return { spec, gltf: info };
 }

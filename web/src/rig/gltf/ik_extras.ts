@@ -32,7 +32,8 @@ export function readIkExtras(extras: unknown, where: string, file: string): IkEx
   const at = `${where}: extras.ik`;
   if (typeof ik !== 'object' || ik === null || Array.isArray(ik)) failIn(file, `${at} is not a JSON object`);
   const o = ik as Record<string, unknown>;
-  for (const key of Object.keys(o)) if (!KEYS.has(key)) failIn(file, `${at}.${key} is not a known key (${[...KEYS].join(', ')})`);
+  for (const key of Object.keys(o))
+    if (!KEYS.has(key)) failIn(file, `${at}.${key} is not a known key (${[...KEYS].join(', ')})`);
   const limits = (side: LimitSide): [number, number, number] | undefined => {
     const key = `xzx_${side}`;
     const unbounded = side === 'min' ? -Infinity : Infinity;
@@ -71,7 +72,10 @@ export function readIkExtras(extras: unknown, where: string, file: string): IkEx
   if (o.tail !== undefined) {
     const t = o.tail;
     if (!Array.isArray(t) || t.length !== 3 || !t.every((x) => typeof x === 'number' && Math.abs(x) <= MAX_COORDINATE))
-      failIn(file, `${at}.tail must be 3 numbers within +-${MAX_COORDINATE} (a point in the joint's local coordinates)`);
+      failIn(
+        file,
+        `${at}.tail must be 3 numbers within +-${MAX_COORDINATE} (a point in the joint's local coordinates)`,
+      );
     result.tail = t as [number, number, number];
   }
   if (o.child !== undefined) {

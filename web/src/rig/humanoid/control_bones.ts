@@ -39,7 +39,20 @@ const END_WORDS: Record<Limb, ReadonlySet<string>> = {
   arm: new Set(['hand', 'wrist', 'palm']),
 };
 /** Words of a part of a hand or foot: such a bone is no limb end. */
-const PART_WORDS = new Set(['thumb', 'index', 'middle', 'ring', 'pinky', 'little', 'finger', 'fingers', 'toe', 'toes', 'ball', 'heel']);
+const PART_WORDS = new Set([
+  'thumb',
+  'index',
+  'middle',
+  'ring',
+  'pinky',
+  'little',
+  'finger',
+  'fingers',
+  'toe',
+  'toes',
+  'ball',
+  'heel',
+]);
 
 /** What the control-bone rules read of a rig: each bone's words, side, depth and limb membership. */
 interface NameFacts {
@@ -83,7 +96,8 @@ export function controlBones(names: readonly string[], parents: ArrayLike<number
   for (let b = n - 1; b >= 0; b--) if (parents[b] >= 0 && !allControl[b]) allControl[parents[b]] = false;
   // Per limb and side, whether a bone of that limb's chain lies deeper than a root's child.
   const deepLimb = new Set<string>();
-  for (const limb of LIMBS) for (let b = 0; b < n; b++) if (f.inLimb[limb][b] && f.depth[b] >= 2) deepLimb.add(`${limb} ${f.side[b]}`);
+  for (const limb of LIMBS)
+    for (let b = 0; b < n; b++) if (f.inLimb[limb][b] && f.depth[b] >= 2) deepLimb.add(`${limb} ${f.side[b]}`);
 
   const hangsAbove = (b: number): boolean => {
     const p = parents[b];
@@ -118,24 +132,34 @@ export function controlBones(names: readonly string[], parents: ArrayLike<number
  * no child; a child that is a control bone is passed over. Undefined when there is no such chain,
  * or its end moves with the root alone. Linear time.
  */
-export function limbChainEnd(names: readonly string[], parents: ArrayLike<number>, limb: Limb, side: Side, controls: ReadonlySet<number>): number | undefined {
+export function limbChainEnd(
+  names: readonly string[],
+  parents: ArrayLike<number>,
+  limb: Limb,
+  side: Side,
+  controls: ReadonlySet<number>,
+): number | undefined {
   const f = nameFacts(names, parents);
   let last = -1;
   for (let b = 0; b < names.length; b++)
-    if (f.inLimb[limb][b] && f.side[b] === side && !f.limbBelow[limb][b] && (last < 0 || f.depth[b] > f.depth[last])) last = b;
+    if (f.inLimb[limb][b] && f.side[b] === side && !f.limbBelow[limb][b] && (last < 0 || f.depth[b] > f.depth[last]))
+      last = b;
   if (last < 0) return undefined;
   const descendants = new Int32Array(names.length);
   for (let b = names.length - 1; b >= 0; b--) if (parents[b] >= 0) descendants[parents[b]] += descendants[b] + 1;
   const children: { bone: number; name: string; descendants: number }[] = [];
   for (let b = last + 1; b < names.length && f.depth[b] > f.depth[last]; b++)
-    if (parents[b] === last && !controls.has(b)) children.push({ bone: b, name: names[b], descendants: descendants[b] });
+    if (parents[b] === last && !controls.has(b))
+      children.push({ bone: b, name: names[b], descendants: descendants[b] });
   const end = children.length ? chooseChainChild(children).bone : last;
   return f.depth[end] >= 2 ? end : undefined;
 }
 
 /** The humanoid roles of a limb's lower bone and end on a side: ('leg', 'left') -> leftLowerLeg, leftFoot. */
 export function limbRoles(limb: Limb, side: 'left' | 'right'): { lower: HumanoidRole; end: HumanoidRole } {
-  return limb === 'leg' ? { lower: `${side}LowerLeg`, end: `${side}Foot` } : { lower: `${side}LowerArm`, end: `${side}Hand` };
+  return limb === 'leg'
+    ? { lower: `${side}LowerLeg`, end: `${side}Foot` }
+    : { lower: `${side}LowerArm`, end: `${side}Hand` };
 }
 
 /** A limb's own end standing in for a control bone named as that end. */
@@ -150,13 +174,17 @@ export interface EndStandIn {
  * For a humanoid mapping (role -> bone) that lacks a hand or foot on a side where a control bone
  * is named as one: its lower arm or leg, whose tip then is the limb's end effector.
  */
-export function lowerLimbStandIns(bones: Partial<Record<HumanoidRole, number>>, controls: readonly ControlBone[]): EndStandIn[] {
+export function lowerLimbStandIns(
+  bones: Partial<Record<HumanoidRole, number>>,
+  controls: readonly ControlBone[],
+): EndStandIn[] {
   const out: EndStandIn[] = [];
   for (const c of controls) {
     if (c.kind !== 'limbEnd' || c.side === 'none' || !c.limb) continue;
     const { lower, end } = limbRoles(c.limb, c.side);
     const low = bones[lower];
-    if (bones[end] === undefined && low !== undefined && !out.some((s) => s.end === low)) out.push({ control: c.bone, end: low });
+    if (bones[end] === undefined && low !== undefined && !out.some((s) => s.end === low))
+      out.push({ control: c.bone, end: low });
   }
   return out;
 }

@@ -78,7 +78,14 @@ export function followLimbEnds(followers: readonly Follower[]): (poses: ArrayLik
 }
 
 /** out[o..o+16] = a[i..i+16] * b[j..j+16] (row-major 4x4). `out` must not overlap a or b. */
-function multiplyInto(a: ArrayLike<number>, i: number, b: ArrayLike<number>, j: number, out: Float64Array, o = 0): void {
+function multiplyInto(
+  a: ArrayLike<number>,
+  i: number,
+  b: ArrayLike<number>,
+  j: number,
+  out: Float64Array,
+  o = 0,
+): void {
   for (let r = 0; r < 4; r++)
     for (let c = 0; c < 4; c++) {
       let s = 0;

@@ -58,12 +58,16 @@ export function hipsRange(spec: RigSpec, humanoid: HumanoidMap, bone: number): {
 export function floatingHipsSpec(spec: RigSpec, humanoid: HumanoidMap, height: number): RigSpec {
   const hipsBone = humanoid.bones.hips;
   if (hipsBone === undefined) throw new Error('floating hips need a humanoid hips bone');
-  const lower = Float64Array.from(spec.lower), upper = Float64Array.from(spec.upper);
+  const lower = Float64Array.from(spec.lower),
+    upper = Float64Array.from(spec.upper);
   const range = hipsRange(spec, humanoid, hipsBone);
   lower.set(range.lower, 3 * hipsBone);
   upper.set(range.upper, 3 * hipsBone);
   const h = height;
-  const floatingRoot = { lower: [-ROOT_REACH.across * h, -ROOT_REACH.down * h, -ROOT_REACH.across * h], upper: [ROOT_REACH.across * h, ROOT_REACH.up * h, ROOT_REACH.across * h] };
+  const floatingRoot = {
+    lower: [-ROOT_REACH.across * h, -ROOT_REACH.down * h, -ROOT_REACH.across * h],
+    upper: [ROOT_REACH.across * h, ROOT_REACH.up * h, ROOT_REACH.across * h],
+  };
   return { ...spec, lower, upper, floatingRoot };
 }
 

@@ -69,7 +69,8 @@ interface BoneLimits {
 /** One mapped bone's limits (see BoneLimits); a fixed joint's are all 0. */
 function boneLimits(spec: RigSpec, map: HumanoidMap, role: HumanoidRole, bone: number, frame: BodyFrame): BoneLimits {
   const range = JOINT_RANGES[jointOf(role)];
-  if (range.twist === 0 && range.bend[0] === 0 && range.bend[1] === 0) return { lower: [0, 0, 0], upper: [0, 0, 0], reversed: false };
+  if (range.twist === 0 && range.bend[0] === 0 && range.bend[1] === 0)
+    return { lower: [0, 0, 0], upper: [0, 0, 0], reversed: false };
   const bend = bendAxis(spec, map, role, bone, frame);
   const limits = turnedLimits(planeTurn(spec, bone, bend.axis), range);
   return { ...limits, reversed: bend.reversed };
@@ -83,9 +84,11 @@ function boneLimits(spec: RigSpec, map: HumanoidMap, role: HumanoidRole, bone: n
  * the spec is not changed.
  */
 export function humanoidLimits(spec: RigSpec, map: HumanoidMap, explicit: readonly boolean[]): HumanoidLimits {
-  const lower = spec.lower.slice(), upper = spec.upper.slice();
+  const lower = spec.lower.slice(),
+    upper = spec.upper.slice();
   const frame = bodyFrame(spec, map);
-  const kept: string[] = [], reversed: string[] = [];
+  const kept: string[] = [],
+    reversed: string[] = [];
   for (const role of HUMANOID_ROLES) {
     const bone = map.bones[role];
     if (bone === undefined) continue;
@@ -99,7 +102,9 @@ export function humanoidLimits(spec: RigSpec, map: HumanoidMap, explicit: readon
     upper.set(limits.upper, 3 * bone);
     if (limits.reversed) reversed.push(name);
   }
-  const notes = [`humanoid limits: the character faces ${describeDirection(frame.forward)} (from the ${frame.facingFrom})`];
+  const notes = [
+    `humanoid limits: the character faces ${describeDirection(frame.forward)} (from the ${frame.facingFrom})`,
+  ];
   if (reversed.length) notes.push(`bent the other way in the rest pose, so limited that way: ${reversed.join(', ')}`);
   if (kept.length) notes.push(`extras.ik limits kept: ${kept.join(', ')}`);
   return { lower, upper, notes };

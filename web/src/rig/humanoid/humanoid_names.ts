@@ -7,7 +7,8 @@ import { isSideToken, nameSide, nameTokens, type Side } from '../bone_names.js';
 import type { HumanoidSource } from './humanoid_roles.js';
 
 /** A body part a name can state; with a side it is a HumanoidRole ("left" + "upperArm"). */
-export type BodyPart = 'hips' | 'neck' | 'head' | 'shoulder' | 'upperArm' | 'lowerArm' | 'hand' | 'upperLeg' | 'lowerLeg' | 'foot' | 'toes';
+export type BodyPart =
+  'hips' | 'neck' | 'head' | 'shoulder' | 'upperArm' | 'lowerArm' | 'hand' | 'upperLeg' | 'lowerLeg' | 'foot' | 'toes';
 
 /** The parts without a side (the head, neck and hips lie on the body's midline). */
 export const MIDLINE_PARTS: readonly BodyPart[] = ['hips', 'neck', 'head'];
@@ -32,45 +33,83 @@ export const CONVENTIONS: readonly Convention[] = [
   {
     source: 'mixamo',
     names: {
-      hips: ['hips'], neck: ['neck'], head: ['head'],
-      shoulder: ['shoulder'], upperArm: ['arm'], lowerArm: ['forearm'], hand: ['hand'],
-      upperLeg: ['upleg'], lowerLeg: ['leg'], foot: ['foot'], toes: ['toebase'],
+      hips: ['hips'],
+      neck: ['neck'],
+      head: ['head'],
+      shoulder: ['shoulder'],
+      upperArm: ['arm'],
+      lowerArm: ['forearm'],
+      hand: ['hand'],
+      upperLeg: ['upleg'],
+      lowerLeg: ['leg'],
+      foot: ['foot'],
+      toes: ['toebase'],
     },
   },
   {
     source: 'unreal',
     names: {
-      hips: ['pelvis'], neck: ['neck01', 'neck'], head: ['head'],
-      shoulder: ['clavicle'], upperArm: ['upperarm'], lowerArm: ['lowerarm'], hand: ['hand'],
-      upperLeg: ['thigh'], lowerLeg: ['calf'], foot: ['foot'], toes: ['ball'],
+      hips: ['pelvis'],
+      neck: ['neck01', 'neck'],
+      head: ['head'],
+      shoulder: ['clavicle'],
+      upperArm: ['upperarm'],
+      lowerArm: ['lowerarm'],
+      hand: ['hand'],
+      upperLeg: ['thigh'],
+      lowerLeg: ['calf'],
+      foot: ['foot'],
+      toes: ['ball'],
     },
   },
   {
     // The metarig's spine chain: spine (the hips), spine.001-.003, spine.004 (neck), spine.006 (head).
     source: 'rigify',
     names: {
-      hips: ['hips', 'pelvis'], neck: ['neck'], head: ['head'],
-      shoulder: ['shoulder'], upperArm: ['upperarm'], lowerArm: ['forearm'], hand: ['hand'],
-      upperLeg: ['thigh'], lowerLeg: ['shin'], foot: ['foot'], toes: ['toe'],
+      hips: ['hips', 'pelvis'],
+      neck: ['neck'],
+      head: ['head'],
+      shoulder: ['shoulder'],
+      upperArm: ['upperarm'],
+      lowerArm: ['forearm'],
+      hand: ['hand'],
+      upperLeg: ['thigh'],
+      lowerLeg: ['shin'],
+      foot: ['foot'],
+      toes: ['toe'],
     },
     fallbacks: { hips: ['spine'], neck: ['spine004'], head: ['spine006'] },
   },
   {
     source: 'biped',
     names: {
-      hips: ['pelvis'], neck: ['neck'], head: ['head'],
-      shoulder: ['clavicle'], upperArm: ['upperarm'], lowerArm: ['forearm'], hand: ['hand'],
-      upperLeg: ['thigh'], lowerLeg: ['calf'], foot: ['foot'], toes: ['toe0'],
+      hips: ['pelvis'],
+      neck: ['neck'],
+      head: ['head'],
+      shoulder: ['clavicle'],
+      upperArm: ['upperarm'],
+      lowerArm: ['forearm'],
+      hand: ['hand'],
+      upperLeg: ['thigh'],
+      lowerLeg: ['calf'],
+      foot: ['foot'],
+      toes: ['toe0'],
     },
   },
   {
     source: 'generic',
     names: {
-      hips: ['hips', 'hip', 'pelvis'], neck: ['neck'], head: ['head'],
+      hips: ['hips', 'hip', 'pelvis'],
+      neck: ['neck'],
+      head: ['head'],
       shoulder: ['shoulder', 'clavicle', 'collar', 'collarbone'],
-      upperArm: ['upperarm', 'armupper', 'arm'], lowerArm: ['lowerarm', 'armlower', 'forearm', 'elbow'], hand: ['hand', 'palm', 'wrist'],
-      upperLeg: ['upperleg', 'legupper', 'upleg', 'thigh'], lowerLeg: ['lowerleg', 'leglower', 'shin', 'calf', 'knee'],
-      foot: ['foot', 'ankle'], toes: ['toes', 'toe', 'toebase', 'ball'],
+      upperArm: ['upperarm', 'armupper', 'arm'],
+      lowerArm: ['lowerarm', 'armlower', 'forearm', 'elbow'],
+      hand: ['hand', 'palm', 'wrist'],
+      upperLeg: ['upperleg', 'legupper', 'upleg', 'thigh'],
+      lowerLeg: ['lowerleg', 'leglower', 'shin', 'calf', 'knee'],
+      foot: ['foot', 'ankle'],
+      toes: ['toes', 'toe', 'toebase', 'ball'],
     },
     numbered: true,
   },
@@ -114,7 +153,12 @@ export function readBoneName(name: string): BoneName | null {
   const words = tokens.filter((t) => !isSideToken(t) && !JOINT_WORDS.has(t));
   const read: BoneName = { side: nameSide(tokens), endings: endingsOf(words) };
   // Side and joint words hold no digits, so a number last among the words is the name's last number.
-  if (words.length >= 2 && /^[0-9]+$/.test(words[words.length - 1]) && /^[a-z]/.test(words[words.length - 2]) && LAST_NUMBER.exec(name)?.[1])
+  if (
+    words.length >= 2 &&
+    /^[0-9]+$/.test(words[words.length - 1]) &&
+    /^[a-z]/.test(words[words.length - 2]) &&
+    LAST_NUMBER.exec(name)?.[1]
+  )
     read.unnumbered = endingsOf(words.slice(0, -1));
   return read;
 }
@@ -135,7 +179,11 @@ export function nameTable(c: Convention): NameTable {
  * The part (and rank) a bone name states in a convention: its longest ending found in the table;
  * with `numbered`, else its longest ending without a glued number, ranked after the others.
  */
-export function namedPart(name: BoneName, table: NameTable, numbered = false): { part: BodyPart; rank: number } | undefined {
+export function namedPart(
+  name: BoneName,
+  table: NameTable,
+  numbered = false,
+): { part: BodyPart; rank: number } | undefined {
   for (const ending of name.endings) {
     const hit = table.get(ending);
     if (hit) return hit;

@@ -58,18 +58,30 @@ function counted(noun: string, items: string[]): string {
 }
 
 /** The notes on control bones: which were left out, and which limb ends stand in for them. */
-function controlNotes(names: readonly string[], controls: readonly ControlBone[], map: HumanoidMap | null, standIns: readonly EndStandIn[]): string[] {
+function controlNotes(
+  names: readonly string[],
+  controls: readonly ControlBone[],
+  map: HumanoidMap | null,
+  standIns: readonly EndStandIn[],
+): string[] {
   if (controls.length === 0) return [];
   const notes = [
-    `${counted('control bone', controls.map((c) => names[c.bone]))} off the root (IK targets, poles, or a hand or foot outside the limbs): ` +
+    `${counted(
+      'control bone',
+      controls.map((c) => names[c.bone]),
+    )} off the root (IK targets, poles, or a hand or foot outside the limbs): ` +
       'not taken as default end effectors nor as humanoid bones',
   ];
   if (!map) return notes;
   const roleOf = new Map(Object.entries(map.bones).map(([role, bone]) => [bone, role]));
   for (const s of standIns)
-    notes.push(`${roleOf.get(s.end)} is ${names[s.end]}, the end of its limb, in place of the control bone ${names[s.control]}`);
+    notes.push(
+      `${roleOf.get(s.end)} is ${names[s.end]}, the end of its limb, in place of the control bone ${names[s.control]}`,
+    );
   for (const s of lowerLimbStandIns(map.bones, controls))
-    notes.push(`${roleOf.get(s.end)} ${names[s.end]} ends its limb: its tip is the end effector in place of the control bone ${names[s.control]}`);
+    notes.push(
+      `${roleOf.get(s.end)} ${names[s.end]} ends its limb: its tip is the end effector in place of the control bone ${names[s.control]}`,
+    );
   return notes;
 }
 
@@ -78,12 +90,19 @@ function controlNotes(names: readonly string[], controls: readonly ControlBone[]
  * the bones' node names, `parents` their parents (depth-first), `boneOfNode` the bone of each node
  * (-1 for a node that is no joint). Linear in the file apart from sorting candidates.
  */
-export function recognizeHumanoid(json: JsonObject, names: readonly string[], parents: ArrayLike<number>, boneOfNode: Int32Array): HumanoidRecognition {
+export function recognizeHumanoid(
+  json: JsonObject,
+  names: readonly string[],
+  parents: ArrayLike<number>,
+  boneOfNode: Int32Array,
+): HumanoidRecognition {
   const notes: string[] = [];
   const vrm = readVrmHumanoid(json, boneOfNode);
   if (vrm?.problem) notes.push(vrm.bones ? vrm.problem : `${vrm.problem}: bones recognised by name instead`);
   const controls = controlBones(names, parents);
-  const found = vrm?.bones ? { source: vrm.source, bones: vrm.bones, standIns: [] } : humanoidByName(names, parents, controls);
+  const found = vrm?.bones
+    ? { source: vrm.source, bones: vrm.bones, standIns: [] }
+    : humanoidByName(names, parents, controls);
   if (!isHumanoid(found.bones)) return { map: null, notes: [...notes, ...controlNotes(names, controls, null, [])] };
 
   const missing = CORE_HUMANOID_ROLES.filter((r) => found.bones[r] === undefined);

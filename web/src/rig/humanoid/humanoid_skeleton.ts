@@ -8,7 +8,14 @@
 // limb's own end stands in for the control.
 import type { Side } from '../bone_names.js';
 import { limbRoles, type ControlBone, type EndStandIn } from './control_bones.js';
-import { MIDLINE_PARTS, namedPart, nameTable, type BodyPart, type BoneName, type Convention } from './humanoid_names.js';
+import {
+  MIDLINE_PARTS,
+  namedPart,
+  nameTable,
+  type BodyPart,
+  type BoneName,
+  type Convention,
+} from './humanoid_names.js';
 import type { HumanoidRole } from './humanoid_roles.js';
 import type { BoneTree } from './humanoid_tree.js';
 
@@ -98,7 +105,13 @@ export function assembleHumanoid(
     const used = new Set(Object.values(bones));
     let child: number | undefined;
     for (const k of tree.children(low))
-      if (!isControl.has(k) && names[k] !== null && !used.has(k) && (child === undefined || tree.descendants(k) > tree.descendants(child))) child = k;
+      if (
+        !isControl.has(k) &&
+        names[k] !== null &&
+        !used.has(k) &&
+        (child === undefined || tree.descendants(k) > tree.descendants(child))
+      )
+        child = k;
     if (child === undefined) continue;
     bones[end] = child;
     standIns.push({ control: c.bone, end: child });

@@ -18,7 +18,8 @@ export class BoneTree {
     this.depth = new Int32Array(n);
     for (let b = 0; b < n; b++) if (parents[b] >= 0) this.depth[b] = this.depth[parents[b]] + 1;
     this.last = Int32Array.from({ length: n }, (_, b) => b);
-    for (let b = n - 1; b >= 0; b--) if (parents[b] >= 0) this.last[parents[b]] = Math.max(this.last[parents[b]], this.last[b]);
+    for (let b = n - 1; b >= 0; b--)
+      if (parents[b] >= 0) this.last[parents[b]] = Math.max(this.last[parents[b]], this.last[b]);
   }
 
   /** True when bone `a` lies strictly below bone `b` (a descendant of it). */

@@ -15,7 +15,8 @@ export interface VrmHumanoid {
 }
 
 const isObject = (v: unknown): v is JsonObject => typeof v === 'object' && v !== null && !Array.isArray(v);
-const isRole = (v: unknown): v is HumanoidRole => typeof v === 'string' && (HUMANOID_ROLES as readonly string[]).includes(v);
+const isRole = (v: unknown): v is HumanoidRole =>
+  typeof v === 'string' && (HUMANOID_ROLES as readonly string[]).includes(v);
 
 /**
  * The VRM humanoid of a glTF document (VRM 1.0 first, then 0.x), with the node of each role
@@ -25,7 +26,11 @@ const isRole = (v: unknown): v is HumanoidRole => typeof v === 'string' && (HUMA
 export function readVrmHumanoid(json: JsonObject, boneOfNode: Int32Array): VrmHumanoid | undefined {
   const extensions = json.extensions;
   if (!isObject(extensions)) return undefined;
-  const name = Object.hasOwn(extensions, 'VRMC_vrm') ? 'VRMC_vrm' : Object.hasOwn(extensions, 'VRM') ? 'VRM' : undefined;
+  const name = Object.hasOwn(extensions, 'VRMC_vrm')
+    ? 'VRMC_vrm'
+    : Object.hasOwn(extensions, 'VRM')
+      ? 'VRM'
+      : undefined;
   if (name === undefined) return undefined;
   const source = name === 'VRMC_vrm' ? 'vrm1' : 'vrm0';
   const ext = extensions[name];
@@ -47,10 +52,15 @@ export function readVrmHumanoid(json: JsonObject, boneOfNode: Int32Array): VrmHu
   for (const [role, entry] of entries) {
     if (bones[role] !== undefined) continue; // a role listed twice (0.x): the first counts
     const node = isObject(entry) ? entry.node : undefined;
-    const bone = typeof node === 'number' && Number.isInteger(node) && node >= 0 && node < boneOfNode.length ? boneOfNode[node] : -1;
+    const bone =
+      typeof node === 'number' && Number.isInteger(node) && node >= 0 && node < boneOfNode.length
+        ? boneOfNode[node]
+        : -1;
     if (bone >= 0) bones[role] = bone;
     else unmapped.push(`${role} (node ${shown(node)})`);
   }
-  const problem = unmapped.length ? `the ${name} extension maps ${listed(unmapped)} to no joint of a skin; left out` : '';
+  const problem = unmapped.length
+    ? `the ${name} extension maps ${listed(unmapped)} to no joint of a skin; left out`
+    : '';
   return { source, bones, problem };
 }

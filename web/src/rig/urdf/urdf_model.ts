@@ -82,10 +82,12 @@ function tagCount(text: string): number {
 
 /** Parses the URDF `bytes` into its kinematic tree. Throws RigFormatError naming `file` and the element. */
 export function parseUrdfModel(bytes: Uint8Array, file: string): UrdfModel {
-  if (bytes.byteLength > MAX_URDF_BYTES) failIn(file, `${bytes.byteLength} bytes; a URDF file may have at most ${MAX_URDF_BYTES}`);
+  if (bytes.byteLength > MAX_URDF_BYTES)
+    failIn(file, `${bytes.byteLength} bytes; a URDF file may have at most ${MAX_URDF_BYTES}`);
   const text = new TextDecoder().decode(bytes).replace(/^\ufeff/, '');
   const tags = tagCount(text);
-  if (tags > MAX_URDF_TAGS) failIn(file, `more than ${MAX_URDF_TAGS} XML tags (${tags}); a URDF file may have at most ${MAX_URDF_TAGS}`);
+  if (tags > MAX_URDF_TAGS)
+    failIn(file, `more than ${MAX_URDF_TAGS} XML tags (${tags}); a URDF file may have at most ${MAX_URDF_TAGS}`);
   const valid = XMLValidator.validate(text);
   if (valid !== true) failIn(file, `bad XML at line ${valid.err.line}, column ${valid.err.col}: ${valid.err.msg}`);
   let doc: XmlElement;
@@ -102,15 +104,22 @@ export function parseUrdfModel(bytes: Uint8Array, file: string): UrdfModel {
     }).parse(text) as XmlElement;
   } catch (e) {
     const message = (e as Error).message;
-    failIn(file, /nested/i.test(message) ? `the XML nests deeper than ${MAX_URDF_DEPTH} elements` : `bad XML: ${message}`);
+    failIn(
+      file,
+      /nested/i.test(message) ? `the XML nests deeper than ${MAX_URDF_DEPTH} elements` : `bad XML: ${message}`,
+    );
   }
   const robots = children(doc, 'robot');
   if (robots.length !== 1) failIn(file, 'not a URDF file: its root element is not <robot>');
   const robot = robots[0];
   const linkElements = children(robot, 'link');
   const jointElements = children(robot, 'joint');
-  for (const [what, list] of [['links', linkElements], ['joints', jointElements]] as const)
-    if (list.length > MAX_URDF_LINKS) failIn(file, `${list.length} ${what}; a URDF robot may have at most ${MAX_URDF_LINKS}`);
+  for (const [what, list] of [
+    ['links', linkElements],
+    ['joints', jointElements],
+  ] as const)
+    if (list.length > MAX_URDF_LINKS)
+      failIn(file, `${list.length} ${what}; a URDF robot may have at most ${MAX_URDF_LINKS}`);
   if (linkElements.length === 0) failIn(file, 'the robot has no <link>');
 
   const links: string[] = [];
@@ -140,23 +149,39 @@ export function parseUrdfModel(bytes: Uint8Array, file: string): UrdfModel {
     const where = `joint "${name}"`;
     const type = attribute(e, 'type');
     if (type === undefined) failIn(file, `${where} has no type`);
-    if (!JOINT_TYPES.includes(type)) failIn(file, `${where} has the unknown type "${type}" (URDF has ${JOINT_TYPES.join(', ')})`);
+    if (!JOINT_TYPES.includes(type))
+      failIn(file, `${where} has the unknown type "${type}" (URDF has ${JOINT_TYPES.join(', ')})`);
     const end = (tag: 'parent' | 'child'): number => {
       const list = children(e, tag);
-      if (list.length !== 1) failIn(file, `${where} has ${list.length === 0 ? 'no' : list.length} <${tag}> link${list.length > 1 ? 's' : ''}; it needs one`);
+      if (list.length !== 1)
+        failIn(
+          file,
+          `${where} has ${list.length === 0 ? 'no' : list.length} <${tag}> link${list.length > 1 ? 's' : ''}; it needs one`,
+        );
       const link = attribute(list[0], 'link');
       if (!link) failIn(file, `${where}: its <${tag}> has no link attribute`);
       const at = linkIndex.get(link);
       if (at === undefined) failIn(file, `${where}: its ${tag} link "${link}" is no <link> of the robot`);
       return at;
     };
-    const parent = end('parent'), child = end('child');
+    const parent = end('parent'),
+      child = end('child');
     if (parent === child) failIn(file, `${where} joins the link "${links[child]}" to itself`);
     if (parentJoint[child] !== -1)
-      failIn(file, `the link "${links[child]}" is the child of two joints, "${joints[parentJoint[child]].name}" and "${name}"`);
+      failIn(
+        file,
+        `the link "${links[child]}" is the child of two joints, "${joints[parentJoint[child]].name}" and "${name}"`,
+      );
     parentJoint[child] = joints.length;
     childJoints[parent].push(joints.length);
-    joints.push({ name, type: type as UrdfJointType, parent, child, mimic: children(e, 'mimic').length > 0, element: e });
+    joints.push({
+      name,
+      type: type as UrdfJointType,
+      parent,
+      child,
+      mimic: children(e, 'mimic').length > 0,
+      element: e,
+    });
   });
 
   const parentLink = Int32Array.from(parentJoint, (j) => (j === -1 ? -1 : joints[j].parent));
@@ -199,7 +224,12 @@ export function readJointGeometry(joint: UrdfJoint, file: string): JointGeometry
     if (list.length > 1) failIn(file, `${where} has ${list.length} <${tag}> elements; at most one`);
     return list[0];
   };
-  const triple = (e: XmlElement | undefined, tag: string, name: string, missing: [number, number, number]): [number, number, number] => {
+  const triple = (
+    e: XmlElement | undefined,
+    tag: string,
+    name: string,
+    missing: [number, number, number],
+  ): [number, number, number] => {
     const text = e && attribute(e, name);
     if (text === undefined) return missing;
     const parts = text.trim().split(/\s+/);
@@ -208,7 +238,10 @@ export function readJointGeometry(joint: UrdfJoint, file: string): JointGeometry
   };
   const origin = only('origin');
   const axisElement = only('axis');
-  const axis = joint.type === 'revolute' || joint.type === 'continuous' ? triple(axisElement, 'axis', 'xyz', [1, 0, 0]) : [1, 0, 0];
+  const axis =
+    joint.type === 'revolute' || joint.type === 'continuous'
+      ? triple(axisElement, 'axis', 'xyz', [1, 0, 0])
+      : [1, 0, 0];
   const norm = Math.hypot(axis[0], axis[1], axis[2]);
   if (!(norm > 1e-12)) failIn(file, `${where}: its <axis xyz="${attribute(axisElement!, 'xyz')}"> has zero length`);
   const geometry: JointGeometry = {
@@ -222,18 +255,23 @@ export function readJointGeometry(joint: UrdfJoint, file: string): JointGeometry
       const text = attribute(limit, name);
       return text === undefined ? 0 : number(text, `<limit ${name}>`); // URDF's default is 0
     };
-    let lower = side('lower'), upper = side('upper');
+    let lower = side('lower'),
+      upper = side('upper');
     if (lower > upper) failIn(file, `${where}: <limit lower="${lower}"> is above upper="${upper}"`);
     const safety = only('safety_controller');
     const soft = (name: string): number | undefined => {
       const text = safety && attribute(safety, name);
       return text === undefined ? undefined : number(text, `<safety_controller ${name}>`);
     };
-    const softLower = soft('soft_lower_limit'), softUpper = soft('soft_upper_limit');
+    const softLower = soft('soft_lower_limit'),
+      softUpper = soft('soft_upper_limit');
     if (softLower !== undefined) lower = Math.max(lower, softLower);
     if (softUpper !== undefined) upper = Math.min(upper, softUpper);
     if (lower > upper)
-      failIn(file, `${where}: its <safety_controller> soft limits leave no range within <limit> (${lower} > ${upper} radians)`);
+      failIn(
+        file,
+        `${where}: its <safety_controller> soft limits leave no range within <limit> (${lower} > ${upper} radians)`,
+      );
     geometry.limit = { lower, upper };
   }
   return geometry;

@@ -67,7 +67,9 @@ function pathDown(model: UrdfModel, base: number, tip: number): number[] | null 
 function longestChain(model: UrdfModel): { base: number; tip: number; moving: number } | null {
   const n = model.links.length;
   // Best (moving joints, joints, tip) below each link, children before parents.
-  const moving = new Int32Array(n), total = new Int32Array(n), leaf = Int32Array.from({ length: n }, (_, k) => k);
+  const moving = new Int32Array(n),
+    total = new Int32Array(n),
+    leaf = Int32Array.from({ length: n }, (_, k) => k);
   const order: number[] = [];
   const stack = Array.from({ length: n }, (_, k) => n - 1 - k).filter((l) => model.parentJoint[l] === -1);
   while (stack.length) {
@@ -80,7 +82,9 @@ function longestChain(model: UrdfModel): { base: number; tip: number; moving: nu
     for (const j of model.childJoints[l]) {
       const joint = model.joints[j];
       if (!importable(joint)) continue;
-      const c = joint.child, m = moving[c] + (isRevolute(joint) ? 1 : 0), t = total[c] + 1;
+      const c = joint.child,
+        m = moving[c] + (isRevolute(joint) ? 1 : 0),
+        t = total[c] + 1;
       if (m > moving[l] || (m === moving[l] && t > total[l])) [moving[l], total[l], leaf[l]] = [m, t, leaf[c]];
     }
   }
@@ -99,31 +103,55 @@ function chooseChain(model: UrdfModel, chain: string | undefined, file: string, 
     const found = longestChain(model);
     if (!found) failIn(file, 'the robot has no chain of revolute or continuous joints');
     const [base, tip] = [model.links[found.base], model.links[found.tip]];
-    warnings.push(`no chain given: took the longest serial chain ${base}:${tip} (${found.moving} moving joints); choose another with --chain BASE:TIP`);
+    warnings.push(
+      `no chain given: took the longest serial chain ${base}:${tip} (${found.moving} moving joints); choose another with --chain BASE:TIP`,
+    );
     return pathDown(model, found.base, found.tip)!;
   }
   const parts = chain.split(':');
-  if (parts.length !== 2 || !parts[0] || !parts[1]) failIn(file, `the chain "${chain}" is not BASE:TIP (two link names)`);
+  if (parts.length !== 2 || !parts[0] || !parts[1])
+    failIn(file, `the chain "${chain}" is not BASE:TIP (two link names)`);
   const index = (name: string, role: string): number => {
     const at = model.links.indexOf(name);
     if (at === -1) failIn(file, `the chain's ${role} link "${name}" is no <link> of the robot`);
     return at;
   };
-  const base = index(parts[0], 'BASE'), tip = index(parts[1], 'TIP');
+  const base = index(parts[0], 'BASE'),
+    tip = index(parts[1], 'TIP');
   if (base === tip) failIn(file, `the chain "${chain}" starts and ends at the same link`);
   const path = pathDown(model, base, tip);
-  if (!path) failIn(file, `the chain "${chain}" is not serial: the link "${parts[1]}" does not hang below "${parts[0]}"`);
+  if (!path)
+    failIn(file, `the chain "${chain}" is not serial: the link "${parts[1]}" does not hang below "${parts[0]}"`);
   return path;
 }
 
 /** The rotation of a URDF origin: Rz(yaw) Ry(pitch) Rx(roll), and its translation. */
 function originMatrix(xyz: readonly number[], rpy: readonly number[]): Mat4 {
-  const [cr, sr, cp, sp, cy, sy] = [Math.cos(rpy[0]), Math.sin(rpy[0]), Math.cos(rpy[1]), Math.sin(rpy[1]), Math.cos(rpy[2]), Math.sin(rpy[2])];
+  const [cr, sr, cp, sp, cy, sy] = [
+    Math.cos(rpy[0]),
+    Math.sin(rpy[0]),
+    Math.cos(rpy[1]),
+    Math.sin(rpy[1]),
+    Math.cos(rpy[2]),
+    Math.sin(rpy[2]),
+  ];
   return Float64Array.of(
-    cy * cp, cy * sp * sr - sy * cr, cy * sp * cr + sy * sr, xyz[0],
-    sy * cp, sy * sp * sr + cy * cr, sy * sp * cr - cy * sr, xyz[1],
-    -sp, cp * sr, cp * cr, xyz[2],
-    0, 0, 0, 1,
+    cy * cp,
+    cy * sp * sr - sy * cr,
+    cy * sp * cr + sy * sr,
+    xyz[0],
+    sy * cp,
+    sy * sp * sr + cy * cr,
+    sy * sp * cr - cy * sr,
+    xyz[1],
+    -sp,
+    cp * sr,
+    cp * cr,
+    xyz[2],
+    0,
+    0,
+    0,
+    1,
   );
 }
 
@@ -152,14 +180,25 @@ export function urdfRigSpec(model: UrdfModel, file: string, chain?: string): { s
   const base = model.links[model.joints[path[0]].parent];
   for (const j of path) {
     const joint = model.joints[j];
-    if (joint.mimic) failIn(file, `joint "${joint.name}" (${joint.type}) mimics another joint and lies in the chain ${base}:${tip}; mimic joints cannot be imported`);
+    if (joint.mimic)
+      failIn(
+        file,
+        `joint "${joint.name}" (${joint.type}) mimics another joint and lies in the chain ${base}:${tip}; mimic joints cannot be imported`,
+      );
     if (!importable(joint))
-      failIn(file, `joint "${joint.name}" is ${joint.type} and lies in the chain ${base}:${tip}; only revolute, continuous and fixed joints can be imported`);
+      failIn(
+        file,
+        `joint "${joint.name}" is ${joint.type} and lies in the chain ${base}:${tip}; only revolute, continuous and fixed joints can be imported`,
+      );
   }
   const moving = path.filter((j) => isRevolute(model.joints[j]));
   if (moving.length === 0) failIn(file, `the chain ${base}:${tip} has no revolute or continuous joint`);
   const n = moving.length + 1;
-  if (n > MAX_BONES) failIn(file, `the chain ${base}:${tip} has ${moving.length} moving joints; the core takes at most ${MAX_BONES - 1}`);
+  if (n > MAX_BONES)
+    failIn(
+      file,
+      `the chain ${base}:${tip} has ${moving.length} moving joints; the core takes at most ${MAX_BONES - 1}`,
+    );
 
   const spec: RigSpec = {
     names: [],
@@ -197,12 +236,23 @@ export function urdfRigSpec(model: UrdfModel, file: string, chain?: string): { s
   // A name of its own, so that goals naming the bone find it (URDF joints and links may share names).
   spec.names.push(spec.names.includes(tip) ? `${tip} (link)` : tip);
   spec.rest.set(link, 16 * (n - 1));
-  for (let k = 0; k + 1 < n; k++) spec.lengths[k] = distance(spec.rest.subarray(16 * k, 16 * k + 16), spec.rest.subarray(16 * k + 16, 16 * k + 32));
+  for (let k = 0; k + 1 < n; k++)
+    spec.lengths[k] = distance(spec.rest.subarray(16 * k, 16 * k + 16), spec.rest.subarray(16 * k + 16, 16 * k + 32));
   const packageMeshes = model.meshes.filter((m) => m.startsWith('package://')).length;
   if (packageMeshes > 0)
-    warnings.push(`${packageMeshes} package:// mesh files not read: the rig needs none (a viewer without the ROS package draws the links as bones)`);
+    warnings.push(
+      `${packageMeshes} package:// mesh files not read: the rig needs none (a viewer without the ROS package draws the links as bones)`,
+    );
   return {
     spec,
-    urdf: { robot: model.robot, base, tip, joints: moving.map((j) => model.joints[j].name), path: path.map((j) => model.joints[j].name), tipBone: n - 1, warnings },
+    urdf: {
+      robot: model.robot,
+      base,
+      tip,
+      joints: moving.map((j) => model.joints[j].name),
+      path: path.map((j) => model.joints[j].name),
+      tipBone: n - 1,
+      warnings,
+    },
   };
 }
