@@ -30,6 +30,11 @@ Eigen::Map<Eigen::MatrixXd> RigBinding::jacobian_buffer() {
   return Eigen::Map<Eigen::MatrixXd>(jac_.data(), kin_.num_residuals(), kin_.num_angles());
 }
 
+Eigen::Map<Eigen::VectorXd> RigBinding::residual_buffer() {
+  tips_.resize(kin_.num_residuals());
+  return Eigen::Map<Eigen::VectorXd>(tips_.data(), tips_.size());
+}
+
 Kinematics RigBinding::build(const val& spec) {
   std::vector<int> parents, effectors;
   copy_in(spec["parents"], parents, "parents");
@@ -129,9 +134,7 @@ val RigBinding::forward_outputs() {
 val RigBinding::jacobian(const val& angles) {
   return guarded(
       [&] {
-        tips_.resize(kin_.num_residuals());
-        Eigen::Map<Eigen::VectorXd> tips(tips_.data(), tips_.size());
-        kin_.jacobian(read_angles(angles), tips, jacobian_buffer());
+        kin_.jacobian(read_angles(angles), residual_buffer(), jacobian_buffer());
         return row_major_copy();
       },
       val::null());
@@ -161,10 +164,7 @@ double RigBinding::objective(const val& angles, const val& target) {
   return guarded(
       [&] {
         const auto a = read_angles(angles);
-        const auto t = read_target(target);
-        tips_.resize(kin_.num_residuals());
-        Eigen::Map<Eigen::VectorXd> r(tips_.data(), tips_.size());
-        return ik::objective(kin_, a, t, r);
+        return ik::objective(kin_, a, read_target(target), residual_buffer());
       },
       std::numeric_limits<double>::quiet_NaN());
 }
@@ -174,12 +174,9 @@ val RigBinding::gradient(const val& angles, const val& target) {
       [&] {
         const auto a = read_angles(angles);
         const auto t = read_target(target);
-        tips_.resize(kin_.num_residuals());
-        Eigen::Map<Eigen::VectorXd> r(tips_.data(), tips_.size());
-        Eigen::Map<Eigen::MatrixXd> jac = jacobian_buffer();
         scratch_.resize(kin_.num_angles());
-        Eigen::Map<Eigen::VectorXd> g(scratch_.data(), scratch_.size());
-        objective_and_gradient(kin_, a, t, r, jac, g);
+        objective_and_gradient(kin_, a, t, residual_buffer(), jacobian_buffer(),
+                               Eigen::Map<Eigen::VectorXd>(scratch_.data(), scratch_.size()));
         return copy_out(scratch_.data(), scratch_.size());
       },
       val::null());

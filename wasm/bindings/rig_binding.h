@@ -65,7 +65,8 @@ class RigBinding {
  private:
   explicit RigBinding(Kinematics kin) : kin_(std::move(kin)) {}
   static Kinematics build(const emscripten::val& spec);
-  // Sizes jac_ for the current effectors (allocated on first use, inside a guarded call).
+  // Sizes tips_ (3 per effector) and jac_ for the current effectors (allocated on first use, inside a guarded call).
+  Eigen::Map<Eigen::VectorXd> residual_buffer();
   Eigen::Map<Eigen::MatrixXd> jacobian_buffer();
   emscripten::val row_major_copy();
 
