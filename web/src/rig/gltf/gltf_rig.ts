@@ -5,23 +5,23 @@
 // as the file shows it. Bones are ordered depth-first through the node tree (parents first).
 // A humanoid skeleton is recognised (humanoid_recognition.ts) and gives the default end effectors.
 import type { RigSpec } from '../../ik/rig_arrays.js';
-import { bindMatrices, restFromBindPose, startAngles } from './bind_pose.js';
+import { restFromBindPose, startAngles } from './bind_pose.js';
 import { boneRestFrame } from '../bone_frame.js';
 import { chooseChainChild } from '../chain_child.js';
 import { DEFAULT_LIMIT_DEG, defaultEffectors, rootChainEffectors } from './effector_defaults.js';
-import { BufferCache, readMat4Accessor } from './gltf_accessor.js';
 import { checkGltfBudget } from './gltf_budget.js';
 import { failIn } from '../rig_format_error.js';
 import { parseGltfContainer, type SiblingReader } from './gltf_file.js';
 import { listed, shown } from './gltf_json.js';
-import { nodeLabel, readNodes, readSkins, worldMatrices, type GltfNode } from './gltf_nodes.js';
+import { checkWorldMatrices, jointsInTreeOrder, readBindMatrices } from './gltf_joints.js';
+import { nodeLabel, readNodes, readSkins, worldMatrices } from './gltf_nodes.js';
 import { checkRanges } from './gltf_ranges.js';
 import { checkReferences, readLists } from './gltf_references.js';
 import { humanoidLimits, type RigLimits } from '../humanoid/humanoid_limits.js';
 import { recognizeHumanoid } from '../humanoid/humanoid_recognition.js';
 import type { HumanoidMap } from '../humanoid/humanoid_roles.js';
 import { readIkExtras, type IkExtras } from './ik_extras.js';
-import { allFinite, invertAffine, transformDirection, transformPoint, type Mat4 } from '../mat4.js';
+import { invertAffine, transformDirection, transformPoint, type Mat4 } from '../mat4.js';
 import { effectorCountProblem, MAX_BONES, MAX_COORDINATE } from '../rig_limits.js';
 
 /** What the write-back and the page need to map rig bones onto the glTF (and three.js) nodes. */
@@ -92,57 +92,15 @@ export async function importGltfRig(bytes: Uint8Array, file: string, readSibling
   const isJoint = new Set(skins.flatMap((s) => s.joints));
   if (isJoint.size > MAX_BONES) failIn(file, `${isJoint.size} joints; at most ${MAX_BONES} bones`);
   const tree = readNodes(lists.nodes, file);
-  const nodes = tree.nodes;
-
-  // Joints in tree order (parents first); a bone's parent is its nearest ancestor joint.
-  const order: GltfNode[] = [];
-  const boneOfNode = new Int32Array(nodes.length).fill(-1);
-  const jointAbove = new Int32Array(nodes.length).fill(-1); // bone of the nearest joint at or above each node
-  const nodeDepth = new Int32Array(nodes.length);
-  const parentList: number[] = [];
-  for (const i of tree.order) {
-    const p = nodes[i].parent;
-    const above = p === -1 ? -1 : jointAbove[p];
-    nodeDepth[i] = p === -1 ? 1 : nodeDepth[p] + 1;
-    if (isJoint.has(i)) {
-      boneOfNode[i] = order.length;
-      order.push(nodes[i]);
-      parentList.push(above);
-    }
-    jointAbove[i] = boneOfNode[i] >= 0 ? boneOfNode[i] : above;
-  }
+  const { order, parents, boneOfNode, nodeDepth } = jointsInTreeOrder(tree, isJoint);
   const count = order.length;
-  const parents = Int32Array.from(parentList);
-
   const posed = worldMatrices(tree); // the nodes' own pose
-  const checkWorld = (world: Mat4[], which: string): void => {
-    for (const n of order) {
-      const W = world[n.index];
-      if (!allFinite(W)) failIn(file, `${nodeLabel(n)}: ${which}world matrix has a non-finite entry`);
-      if (invertAffine(W) === null) failIn(file, `${nodeLabel(n)}: ${which}world matrix is singular (a zero scale?)`);
-      if (Math.max(Math.abs(W[3]), Math.abs(W[7]), Math.abs(W[11])) > MAX_COORDINATE)
-        failIn(
-          file,
-          `${nodeLabel(n)}: ${which}world position (${W[3]}, ${W[7]}, ${W[11]}) lies beyond +-${MAX_COORDINATE} scene units`,
-        );
-    }
-  };
-  checkWorld(posed, '');
-  // Inverse bind matrices: read (so a missing buffer or NaN is an error) and checked; they give the rest.
-  const buffers = new BufferCache(container, lists, file, readSibling);
-  const binds: (Mat4[] | undefined)[] = [];
-  for (const skin of skins) {
-    if (skin.inverseBindMatrices === undefined) {
-      binds.push(undefined);
-      continue;
-    }
-    const where = `skins[${skin.index}].inverseBindMatrices`;
-    const ibm = await readMat4Accessor(lists, buffers, skin.inverseBindMatrices, skin.joints.length, where, file);
-    binds.push(bindMatrices(ibm, skin, tree, `${where} (accessor ${skin.inverseBindMatrices})`, file));
-  }
+  checkWorldMatrices(order, posed, '', file);
+  // The inverse bind matrices give the rest.
+  const binds = await readBindMatrices(container, lists, skins, tree, file, readSibling);
   const restPose = restFromBindPose(tree, skins, binds, posed, isJoint);
   const world = restPose.world;
-  if (restPose.rebound.length) checkWorld(world, 'bind pose ');
+  if (restPose.rebound.length) checkWorldMatrices(order, world, 'bind pose ', file);
   const extras: (IkExtras | undefined)[] = order.map((n) => readIkExtras(n.extras, nodeLabel(n), file));
   const children: number[][] = order.map(() => []);
   parents.forEach((p, b) => p >= 0 && children[p].push(b));
@@ -251,26 +209,7 @@ export async function importGltfRig(bytes: Uint8Array, file: string, readSibling
     return candidates.length ? chooseChainChild(candidates).bone : undefined;
   }
 
-  // End effectors: flagged in extras, else the humanoid's or by name, else the deepest leaf joints.
-  const flagged = extras.flatMap((e, b) => (e?.effector === true ? [b] : []));
-  const unflagged = new Set(extras.flatMap((e, b) => (e?.effector === false ? [b] : [])));
-  let effectors = flagged;
-  if (effectors.length === 0) {
-    const chosen = defaultEffectors(info.nodeNames, parents, info.humanoid, unflagged);
-    effectors = chosen.effectors;
-    info.warnings.push(
-      `no joint is flagged extras.ik.effector: end effectors are ${chosen.which} (${listed(effectors.map((b) => spec.names[b]))})`,
-    );
-  }
-  if (effectors.length === 0) failIn(file, 'no end effector: every joint is marked extras.ik.effector = false');
-  const tooMany = effectorCountProblem(effectors.length, count);
-  if (tooMany) failIn(file, `too many end effectors flagged in extras.ik: ${tooMany}`);
-  spec.effectors = Int32Array.from(effectors);
-  const offRoot = rootChainEffectors(effectors, parents).map((b) => spec.names[b]);
-  if (offRoot.length)
-    info.warnings.push(
-      grouped('end effector', offRoot, 'moved by the root bone alone, so dragging swings the whole body'),
-    );
+  spec.effectors = chooseEffectors(extras, spec, info, file);
   // A humanoid gets anatomical limits on its mapped bones (limits given in extras.ik win; a rig
   // that gives them for every mapped bone is left as it is).
   const explicit = extras.map((e) => e?.min !== undefined || e?.max !== undefined);
@@ -290,6 +229,51 @@ export async function importGltfRig(bytes: Uint8Array, file: string, readSibling
         : `no IK extras: every angle is limited to +-${DEFAULT_LIMIT_DEG} degrees`,
     );
 
+  posedFile(restPose, posed, boneOfNode, spec, info);
+  return { spec, gltf: info };
+}
+
+/**
+ * The end effectors (bone indices): the joints flagged in extras.ik, else the humanoid's hands,
+ * feet and head or those found by name, else the deepest leaf joints (effector_defaults.ts);
+ * never one marked extras.ik.effector = false. Says which in `info.warnings`, and which ones the
+ * root bone alone moves. Throws RigFormatError for none at all or more than the core takes.
+ */
+function chooseEffectors(extras: (IkExtras | undefined)[], spec: RigSpec, info: GltfRigInfo, file: string): Int32Array {
+  const parents = spec.parents;
+  const flagged = extras.flatMap((e, b) => (e?.effector === true ? [b] : []));
+  const unflagged = new Set(extras.flatMap((e, b) => (e?.effector === false ? [b] : [])));
+  let effectors = flagged;
+  if (effectors.length === 0) {
+    const chosen = defaultEffectors(info.nodeNames, parents, info.humanoid, unflagged);
+    effectors = chosen.effectors;
+    info.warnings.push(
+      `no joint is flagged extras.ik.effector: end effectors are ${chosen.which} (${listed(effectors.map((b) => spec.names[b]))})`,
+    );
+  }
+  if (effectors.length === 0) failIn(file, 'no end effector: every joint is marked extras.ik.effector = false');
+  const tooMany = effectorCountProblem(effectors.length, parents.length);
+  if (tooMany) failIn(file, `too many end effectors flagged in extras.ik: ${tooMany}`);
+  const offRoot = rootChainEffectors(effectors, parents).map((b) => spec.names[b]);
+  if (offRoot.length)
+    info.warnings.push(
+      grouped('end effector', offRoot, 'moved by the root bone alone, so dragging swings the whole body'),
+    );
+  return Int32Array.from(effectors);
+}
+
+/**
+ * Which pose is the rest (`restPose`, bind_pose.ts), said in `info.warnings` where it is not the
+ * bind pose, and the file's pose (`posed`: the nodes' world matrices) as `info.startAngles` where
+ * it differs from the rest.
+ */
+function posedFile(
+  restPose: ReturnType<typeof restFromBindPose>,
+  posed: Mat4[],
+  boneOfNode: Int32Array,
+  spec: RigSpec,
+  info: GltfRigInfo,
+): void {
   // Which pose is the rest, and the file's pose as start angles where it differs from the rest.
   const skinList = (list: number[]): string[] => list.map(String);
   if (restPose.unbound.length)
@@ -305,7 +289,7 @@ export async function importGltfRig(bytes: Uint8Array, file: string, readSibling
       ),
     );
   if (restPose.rebound.length) {
-    const start = startAngles(spec, info.boneNodes, world, posed);
+    const start = startAngles(spec, info.boneNodes, restPose.world, posed);
     info.startAngles = start.angles;
     const moved = restPose.rebound.map((n) => spec.names[boneOfNode[n]]);
     const at = moved.length === 1 ? 'joint' : `${moved.length} joints`;
@@ -321,7 +305,6 @@ export async function importGltfRig(bytes: Uint8Array, file: string, readSibling
         ),
       );
   }
-  return { spec, gltf: info };
 }
 
 /** One warning line about one or several things: "skin 2: text", or "4 skins (0, 1, 2, 3): text". */
