@@ -108,23 +108,17 @@ export class SolveReport {
   pending(): void {
     const session = this.controller.live?.session;
     if (!session) return;
-    const tips = session.tips(),
-      targets = session.targets;
-    const k = Math.min(this.controller.handles.selected ?? 0, targets.length / 3 - 1);
-    const s = this.values;
-    s.method = this.settings.method;
+    const tips = session.tips();
+    const s = this.sharedValues(tips, session.targets);
     s.iterations = 0;
     s.E = session.objective();
     s.gradNorm = NaN;
-    s.tipDistance = largestTipDistance(tips, targets);
+    s.tipDistance = largestTipDistance(tips, session.targets);
     s.orientationErrorDeg = session.orientationErrorDeg();
     s.reached = s.tipDistance < this.settings.tipTolerance && !(s.orientationErrorDeg >= ORIENTATION_TOLERANCE_DEG);
-    s.pixelsPerUnit = k < 0 ? NaN : this.controller.stage.pixelsPerUnit(v.fromArray(targets, 3 * k));
     s.stopReason = 'not_started';
     s.outOfReach = s.orientationOutOfReach = false;
-    s.paperMode = this.settings.paperMode;
     s.ms = NaN;
-    s.pinnedDrift = largestTipDistance(tips, targets, this.controller.handles.selected ?? -1);
     this.stats.showPending(s);
   }
 
@@ -151,23 +145,33 @@ export class SolveReport {
 
   /** The stats of one solve. Pinned: every effector but the selected target's (the one dragged, or last dragged). */
   private valuesOf(outcome: SolveOutcome, ms: number, tips: Float64Array): StatsValues {
-    const targets = this.controller.live?.session.targets ?? tips;
-    const k = Math.min(this.controller.handles.selected ?? 0, targets.length / 3 - 1);
-    const s = this.values;
-    s.method = this.settings.method;
+    const s = this.sharedValues(tips, this.controller.live?.session.targets ?? tips);
     s.iterations = outcome.iterations;
     s.E = outcome.E;
     s.gradNorm = outcome.gradNorm;
     s.reached = outcome.reached;
     s.tipDistance = outcome.tipDistance;
     s.orientationErrorDeg = this.controller.live?.session.orientationErrorDeg() ?? NaN;
-    s.pixelsPerUnit = k < 0 ? NaN : this.controller.stage.pixelsPerUnit(v.fromArray(targets, 3 * k));
     s.stopReason = outcome.stopReason;
     s.outOfReach = outcome.outOfReach;
     s.orientationOutOfReach = outcome.orientationOutOfReach;
-    s.paperMode = this.settings.paperMode;
     s.ms = ms;
-    s.pinnedDrift = largestTipDistance(tips, targets, this.controller.handles.selected ?? -1);
+    return s;
+  }
+
+  /**
+   * The stats record with what a solve and a pose nobody solved share written: the method, paper
+   * mode, the pixels per rig unit at the selected target and the pinned effectors' drift (`tips`
+   * from `targets`, the selected target's left out).
+   */
+  private sharedValues(tips: Float64Array, targets: Float64Array): StatsValues {
+    const selected = this.controller.handles.selected;
+    const k = Math.min(selected ?? 0, targets.length / 3 - 1);
+    const s = this.values;
+    s.method = this.settings.method;
+    s.paperMode = this.settings.paperMode;
+    s.pixelsPerUnit = k < 0 ? NaN : this.controller.stage.pixelsPerUnit(v.fromArray(targets, 3 * k));
+    s.pinnedDrift = largestTipDistance(tips, targets, selected ?? -1);
     return s;
   }
 }
