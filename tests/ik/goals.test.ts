@@ -14,6 +14,8 @@ import { disposeAfterAll } from '../helpers/owned.js';
 import { sketchRig, straightLimb } from '../../scripts/rig_files/rig_builder.js';
 
 let ik: IkCoreModule;
+/** The methods the core registers (a new one is tested without a change here). */
+const registered = IkSolver.methods(await loadIkNode());
 const keep = disposeAfterAll();
 
 beforeAll(async () => {
@@ -264,8 +266,10 @@ describe('bend hints, rest pull and stiffness', () => {
   // |grad E| < 1e-4 a few 1e-3 off a 1e-4 tip tolerance, and the solve falls back to the plain
   // solve from the start: on target, but unflipped.)
   const swivels: [string, string, number][] = [
-    ...['lm', 'gn', 'newton', 'bfgs'].map((m): [string, string, number] => [m, 'mirrored through the axis', 180]),
-    ...['lm', 'gn', 'newton', 'bfgs', 'gd'].map((m): [string, string, number] => [m, 'a quarter turn away', 90]),
+    // gd stays put for the half turn: there the pole's pull on the elbow has no gradient (the elbow
+    // ends pointing away, cos -1), and a first-order method has nothing else to go on.
+    ...registered.filter((m) => m !== 'gd').map((m): [string, string, number] => [m, 'mirrored through the axis', 180]),
+    ...registered.map((m): [string, string, number] => [m, 'a quarter turn away', 90]),
   ];
   it.each(swivels)(
     '%s: a pole %s turns a bent limb to its side without moving the tip (restarts 0)',
