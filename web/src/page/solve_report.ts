@@ -9,7 +9,7 @@ import type { MethodList } from '../live/methods.js';
 import type { SolveOutcome } from '../live/method_solver.js';
 import type { PageSettings } from './page_settings.js';
 import { ConvergencePlot } from './plots.js';
-import { StatsPanel, type StatsValues } from './stats.js';
+import { emptyStatsValues, StatsPanel, type StatsValues } from './stats.js';
 
 /** The slowest per-frame solve: page ms, ms inside the solver, iterations, stop reason. */
 export interface SlowestSolve {
@@ -32,22 +32,7 @@ export class SolveReport {
   /** Each method's last E history for the plot (its start; the plot is told the length). */
   private readonly histories = new Map<string, Float64Array>();
   /** The stats of the last solve (one record, rewritten by each). */
-  private readonly values: StatsValues = {
-    method: '',
-    iterations: 0,
-    E: 0,
-    gradNorm: 0,
-    reached: false,
-    tipDistance: 0,
-    orientationErrorDeg: NaN,
-    pixelsPerUnit: NaN,
-    stopReason: '',
-    outOfReach: false,
-    orientationOutOfReach: false,
-    paperMode: false,
-    ms: 0,
-    pinnedDrift: 0,
-  };
+  private readonly values: StatsValues = emptyStatsValues();
 
   /** The stats and the plot go into `side`; `controller` shows the rig, `settings` name the method. */
   constructor(

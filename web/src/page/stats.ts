@@ -33,6 +33,26 @@ export interface StatsValues {
   pinnedDrift: number;
 }
 
+/** A stats record before any solve (each holder rewrites its own in place). */
+export function emptyStatsValues(): StatsValues {
+  return {
+    method: '',
+    iterations: 0,
+    E: 0,
+    gradNorm: 0,
+    reached: false,
+    tipDistance: 0,
+    orientationErrorDeg: NaN,
+    pixelsPerUnit: NaN,
+    stopReason: '',
+    outOfReach: false,
+    orientationOutOfReach: false,
+    paperMode: false,
+    ms: 0,
+    pinnedDrift: 0,
+  };
+}
+
 /** Fields shown only while their value is a number (not NaN). */
 const OPTIONAL = new Set<string>(['orientationErrorDeg']);
 
@@ -90,22 +110,7 @@ export class StatsPanel {
   readonly median = new RunningMedian(121);
   private readonly cells = new Map<string, HTMLElement>();
   /** The last solve's values, written out by writeNumbers(). */
-  private readonly latest: StatsValues = {
-    method: '',
-    iterations: 0,
-    E: 0,
-    gradNorm: 0,
-    reached: false,
-    tipDistance: 0,
-    orientationErrorDeg: NaN,
-    pixelsPerUnit: NaN,
-    stopReason: '',
-    outOfReach: false,
-    orientationOutOfReach: false,
-    paperMode: false,
-    ms: 0,
-    pinnedDrift: 0,
-  };
+  private readonly latest: StatsValues = emptyStatsValues();
   /** The words the status cell shows, or null. */
   private words: StatusWords | null = null;
   private readonly numbers = new Throttle(() => this.writeNumbers());
