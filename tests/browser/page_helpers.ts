@@ -146,15 +146,28 @@ export async function waitForSettled(page: Page): Promise<string> {
   return (await page.getAttribute('[data-stat="status"]', 'data-reason')) ?? '';
 }
 
+/** The stats panel's text on one line (what a failed wait reports). */
+async function statsLine(page: Page): Promise<string> {
+  return page.evaluate(() =>
+    [...document.querySelectorAll<HTMLElement>('[data-stat]')]
+      .map(
+        (e) => `${e.dataset.stat}=${(e.textContent ?? '').trim()}${e.dataset.reason ? ` (${e.dataset.reason})` : ''}`,
+      )
+      .join('; '),
+  );
+}
+
 /** Waits until the stats say "on target" (every effector within the tip tolerance). */
 export async function waitForConvergence(page: Page): Promise<void> {
-  await page.waitForFunction(
-    () => document.querySelector<HTMLElement>('[data-stat="status"]')?.dataset.reached === 'true',
-    null,
-    {
-      timeout: 20_000,
-    },
-  );
+  try {
+    await page.waitForFunction(
+      () => document.querySelector<HTMLElement>('[data-stat="status"]')?.dataset.reached === 'true',
+      null,
+      { timeout: 20_000 },
+    );
+  } catch (e) {
+    throw new Error(`not on target after 20 s; the stats read: ${await statsLine(page)}`, { cause: e });
+  }
   expect(await statText(page, 'status')).toBe('on target');
 }
 

@@ -16,6 +16,7 @@ import { describe, expect, it } from 'vitest';
 
 import { a7Required } from '../../scripts/a7_folder.js';
 import { robotsDir, robotsMissingMessage, robotsPresent } from '../helpers/robots_folder.js';
+import { armUrdf, revolute } from '../helpers/test_arm_urdf.js';
 import { openPage, renderedFrames, resultsDir } from './harness.js';
 import {
   dragTargetAlongY,
@@ -32,27 +33,6 @@ const env = usePageServer();
 
 type Point = [number, number, number];
 const distance = (a: Point, b: Point): number => Math.hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]);
-
-/** A revolute joint of the test arm. */
-const revolute = (
-  name: string,
-  parent: string,
-  child: string,
-  xyz: string,
-  axis: string,
-  lower: number,
-  upper: number,
-  rpy = '0 0 0',
-): string =>
-  `<joint name="${name}" type="revolute"><parent link="${parent}"/><child link="${child}"/><origin xyz="${xyz}" rpy="${rpy}"/>` +
-  `<axis xyz="${axis}"/><limit lower="${lower}" upper="${upper}" effort="10" velocity="1"/></joint>`;
-
-/** The arm's visuals: a box mesh on link1 at the link's origin, one on link3 off its origin (0.1 along its z), both package:// files. */
-const VISUALS: Record<string, string> = {
-  link1: '<visual><geometry><mesh filename="package://test_arm/meshes/link1.stl"/></geometry></visual>',
-  link3:
-    '<visual><origin xyz="0 0 0.1"/><geometry><mesh filename="package://test_arm/meshes/link3.stl"/></geometry><material name="orange"><color rgba="1 0.5 0 1"/></material></visual>',
-};
 
 /** An ASCII STL box of half-size `h` (metres) centred on its origin: 12 triangles. */
 function boxStl(h: number): Uint8Array {
@@ -89,36 +69,6 @@ function boxStl(h: number): Uint8Array {
     return `facet normal ${n.map((x) => x / len).join(' ')}\nouter loop\n${f.map((i) => `vertex ${c[i].join(' ')}`).join('\n')}\nendloop\nendfacet`;
   };
   return new TextEncoder().encode(`solid box\n${faces.map(facet).join('\n')}\nendsolid box\n`);
-}
-
-/** The test arm: base_link -> six revolute joints -> flange, a fixed joint to the off-axis tool0; a camera on link2. */
-function armUrdf(cameraLimits: [number, number] = [-1.0, 1.0]): string {
-  const links = [
-    'base_link',
-    'link1',
-    'link2',
-    'link3',
-    'link4',
-    'link5',
-    'flange',
-    'tool0',
-    'camera_link',
-    'camera_optical_frame',
-  ];
-  return `<?xml version="1.0"?>
-<robot name="test_arm">
-  ${links.map((l) => (VISUALS[l] ? `<link name="${l}">${VISUALS[l]}</link>` : `<link name="${l}"/>`)).join('\n  ')}
-  ${revolute('shoulder_pan', 'base_link', 'link1', '0 0 0.1', '0 0 1', -2.9, 2.9)}
-  ${revolute('shoulder_lift', 'link1', 'link2', '0 0.08 0.05', '0 1 0', -2.0, 2.0, '0 0.3 0')}
-  ${revolute('elbow', 'link2', 'link3', '0 -0.06 0.35', '0 1 0', -2.6, 2.6, '0 1.0 0')}
-  ${revolute('wrist_1', 'link3', 'link4', '0 0 0.3', '0 1 0', -3.0, 3.0, '0 0.5 0')}
-  ${revolute('wrist_2', 'link4', 'link5', '0 0.05 0.05', '0 0 1', -3.0, 3.0)}
-  ${revolute('wrist_3', 'link5', 'flange', '0 0 0.06', '0 1 0', -3.0, 3.0)}
-  <joint name="tool_mount" type="fixed"><parent link="flange"/><child link="tool0"/><origin xyz="0.03 0.08 0.02" rpy="0.3 -0.5 0.2"/></joint>
-  ${revolute('camera_tilt', 'link2', 'camera_link', '0 0.06 0.2', '0 1 0', ...cameraLimits)}
-  <joint name="camera_optical" type="fixed"><parent link="camera_link"/><child link="camera_optical_frame"/><origin xyz="0.04 0 0.03" rpy="-1.5708 0 -1.5708"/></joint>
-</robot>
-`;
 }
 
 /** A robot whose only chain base:tip runs through the prismatic joint "slider". */

@@ -80,6 +80,8 @@ StopReason Solver::begin(const Eigen::Ref<const Eigen::VectorXd>& angles, const 
   const bool continues =
       chain_index_ > 0 && angles.size() == summary_.angles.size() && incoming_ == goals_ && angles == summary_.angles;
   if (!continues) chain_index_ = 0;
+  bool carry = carrying_ && continues && angles == carried_at_;
+  carrying_ = false;
   opt_ = next_opt_;
   clock_.reset(opt_.time_budget_s);
   summary_.iterations = summary_.function_evaluations = summary_.jacobian_evaluations = summary_.restarts = 0;
@@ -130,8 +132,10 @@ StopReason Solver::begin(const Eigen::Ref<const Eigen::VectorXd>& angles, const 
   if (budget_stopped && goals_.has_soft() && !opt_.paper_mode)
     goals_.set_soft_scale(lowered_soft_scale(cut_soft_scale));
   if (m_ != goals_.rows() || n_ != kin_.num_angles() || effectors_ != kin_.rig().effectors ||
-      layout_ != goals_.layout())
+      layout_ != goals_.layout()) {
     resize_workspace();
+    carry = false;
+  }
   pattern_.set_root_weight(opt_.root_unit * opt_.root_unit);
   priority_.clear();
   restarts_.begin_solve(n_, opt_.seed);
@@ -144,6 +148,7 @@ StopReason Solver::begin(const Eigen::Ref<const Eigen::VectorXd>& angles, const 
   const bool resume = heading_ && bounds_joints() && a_ == partway_;  // sized alike by resize_workspace()
   heading_ = false;
   resumed_ = resume;
+  chain_run_going_ = false;
   nearer_tries_ = 0;
   together_ = together_tried_ = false;
   discarded_chain_restarts_ = 0;
@@ -201,6 +206,7 @@ StopReason Solver::begin(const Eigen::Ref<const Eigen::VectorXd>& angles, const 
   best_given_up_E_ = priority_.given_up_E(goals_, r_);
   note_given_up(r_);
   record();
+  if (carry && bounds_joints() && running()) carry_run_on();
   if (running()) {
     // A start on a stationary point off target (a tip pointing straight away from its target, a
     // straight limb whose target lies along it) moves on at once, as a stopped run would.
@@ -217,11 +223,16 @@ StopReason Solver::begin(const Eigen::Ref<const Eigen::VectorXd>& angles, const 
 }
 
 void Solver::conclude() {
+  const bool carry = carries_run();
+  if (carry) carried_run_ = a_;
   end_together();
   take_nearest();
   finish();
   bound_motion();
   keep_contract();
+  carrying_ = carry && !heading_ &&
+              (summary_.stop_reason == StopReason::max_iterations || summary_.stop_reason == StopReason::timeout);
+  if (carrying_) carried_at_ = summary_.angles;
 }
 
 void Solver::resize_workspace() {
@@ -249,6 +260,9 @@ void Solver::resize_workspace() {
   moved_from_.resize(n_);
   heading_to_.resize(n_);
   partway_.resize(n_);
+  carried_run_.resize(n_);
+  carried_at_.resize(n_);
+  carrying_ = false;
   heading_ = false;
   nearest_.resize(n_);
   stuck_.resize(n_);

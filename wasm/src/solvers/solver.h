@@ -318,6 +318,20 @@ class Solver {
   Eigen::VectorXd heading_to_, partway_;
   bool heading_ = false;
   bool resumed_ = false;  // this solve resumed such a move
+  // After a budget stop (max_iterations, timeout) off target in the middle of a chain restart's
+  // run, with joint speed bounded: the run's point, and the pose the solve returned (its best
+  // point, not the run's). A solve from that pose towards the same goals carries the run on from
+  // its point, the pose staying the best point until the run beats it: a frame too short for a
+  // chain restart's run no longer throws the run away and draws the next one (a 6-joint arm's
+  // tool turned onto another branch of solutions drew all 64 chain restarts, 5 iterations each,
+  // and gave up its orientation goal as out of reach).
+  Eigen::VectorXd carried_run_, carried_at_;
+  bool carrying_ = false;
+  bool chain_run_going_ = false;  // the current run began at a chain restart, or carries one on
+  // At the end of a solve, before anything moves a_: is its run one to carry on (above)?
+  bool carries_run() const;
+  // At the start of a solve that carries a run on: the run goes on from carried_run_.
+  void carry_run_on();
   // Everything a solve does when it stops, in order: back from a run of the goals as equals
   // (end_together()), the nearest answer a search found (take_nearest()), the out_of_reach flags
   // (finish()), the speed bound (bound_motion()), the summary's rules (keep_contract()).

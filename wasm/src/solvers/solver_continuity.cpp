@@ -1,7 +1,8 @@
 // The Solver's continuity while a user drags (option max_joint_move > 0, outside paper mode):
 // a chain restart that lands on another branch of solutions far from the start looks for a
 // nearer answer (seek_nearer(), take_nearest()), and an answer still too far comes back partway,
-// the next solve resuming the move (bound_motion(), joint_motion.h). The rest of the Solver is in
+// the next solve resuming the move (bound_motion(), joint_motion.h); a chain restart's run that
+// the budget cut off target goes on in the next solve (carries_run(), carry_run_on()). The rest of the Solver is in
 // solver.cpp, solver_move_on.cpp and solver_priority.cpp.
 #include <cmath>
 
@@ -90,6 +91,30 @@ void Solver::bound_motion() {
   }
   partway_ = a_;
   heading_ = true;
+}
+
+bool Solver::carries_run() const {
+  const bool budget = summary_.stop_reason == StopReason::max_iterations || summary_.stop_reason == StopReason::timeout;
+  return bounds_joints() && budget && chain_run_going_ && !together_ && nearer_tries_ == 0 && !summary_.reached &&
+         std::isfinite(E_) && a_ != summary_.angles;
+}
+
+void Solver::carry_run_on() {
+  a_ = carried_run_;
+  E_ = evaluate(a_, r_);
+  if (!std::isfinite(E_) || !update_derivatives(true)) {  // finite when it was cut; kept safe
+    a_ = start_;
+    E_ = evaluate(a_, r_);
+    update_derivatives(true);
+    return;
+  }
+  settling_.begin_run();
+  reset();
+  chain_run_ = priority_.active();
+  chain_run_going_ = true;
+  resumed_ = true;  // its answer may lie on another branch: bound_motion() bounds the move
+  priority_damping_.reset(opt_.lm_initial_mu);
+  note_best();
 }
 
 }  // namespace ik

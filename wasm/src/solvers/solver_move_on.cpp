@@ -73,6 +73,7 @@ void Solver::retry_without_soft_terms() {
 
 void Solver::run_from_start() {
   a_ = start_;
+  chain_run_going_ = false;
   restarts_.begin_run();
   settling_.begin_run();
   reset();
@@ -82,6 +83,7 @@ void Solver::run_from_start() {
 bool Solver::restart() {
   if (!restarts_left()) return false;
   restarts_.next_start(kin_.lower(), kin_.upper(), a_);
+  chain_run_going_ = false;
   settling_.begin_run();
   reset();
   E_ = evaluate(a_, r_);
@@ -125,6 +127,7 @@ bool Solver::chain_restart() {
   settling_.begin_run();
   reset();
   chain_run_ = priority_.active();
+  chain_run_going_ = true;
   priority_damping_.reset(opt_.lm_initial_mu);
   E_ = evaluate(a_, r_);
   return finite(E_);
