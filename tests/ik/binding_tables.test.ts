@@ -1,9 +1,9 @@
 // The names the TypeScript API shares with the bindings, written once on each side and checked
 // here: SolverOptions (web/src/ik/solver.ts) documents exactly the core's options, each with the
 // core's default (read from the interface's source with the TypeScript compiler, so no list of
-// names is repeated here), and the result numbers solveIo() writes (IoStat) are exactly
-// SolverResult's numeric fields, at the offsets the core names: solve() (the shared buffer)
-// agrees with result() (embind's object).
+// names is repeated here), and the result numbers the core writes (wasm/src/solvers/
+// summary_numbers.def) are exactly SolverResult's numeric and boolean fields, its flags the
+// booleans: a solve in one call (solve()) and step by step (start(), step(), result()) agree.
 import { readFileSync } from 'node:fs';
 import { resolve } from 'node:path';
 
@@ -90,15 +90,24 @@ describe('tables shared with the bindings', () => {
     expect(statedDefault('no default here')).toBeUndefined();
   });
 
-  it("the result numbers are SolverResult's, and solve() reads each at the core's offset", () => {
+  it("the result numbers are SolverResult's, and a solve in one call and step by step read alike", () => {
     expect([...ik.Solver.ioStats()].sort()).toEqual(Object.keys(resultNumbers).sort());
     const rig = keep(new IkRig(ik, straightLimb()));
     // A straight limb whose target lies along it: an escape and iterations, so the numbers differ.
     const solver = keep(new IkSolver(rig, 'lm', { restarts: 0, tipTolerance: 1e-6 }));
-    const fast = solver.solve(new Float64Array(rig.numAngles), [1.5, 0, 0]);
+    const start = new Float64Array(rig.numAngles);
+    const fast = solver.solve(start, [1.5, 0, 0]);
+    solver.start(start, [1.5, 0, 0]);
+    while (solver.step());
     const slow = solver.result();
-    for (const name of Object.keys(resultNumbers) as ResultNumber[]) expect(fast[name], name).toBe(slow[name]);
+    const flags = new Set(ik.Solver.ioFlags());
+    for (const name of Object.keys(resultNumbers) as ResultNumber[]) {
+      expect(typeof fast[name], name).toBe(flags.has(name) ? 'boolean' : 'number');
+      if (name !== 'elapsedSeconds') expect(fast[name], name).toBe(slow[name]);
+    }
+    expect([...flags].sort()).toEqual(['orientationOutOfReach', 'outOfReach', 'reached']);
     expect(fast.escapes + fast.iterations).toBeGreaterThan(0);
+    expect(slow.stopReason).toBe(fast.stopReason);
     expect(Array.from(fast.angles)).toEqual(Array.from(slow.angles));
   });
 });

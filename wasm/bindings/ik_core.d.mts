@@ -41,27 +41,6 @@ export interface EmbindRig {
   delete(): void;
 }
 
-export interface EmbindSolverResult {
-  angles: Float64Array;
-  E: number;
-  initialE: number;
-  gradNorm: number;
-  tipDistance: number;
-  reached: boolean;
-  iterations: number;
-  functionEvaluations: number;
-  jacobianEvaluations: number;
-  restarts: number;
-  escapes: number;
-  chainRestarts: number;
-  outOfReach: boolean;
-  orientationOutOfReach: boolean;
-  goalsGivenUp: number;
-  stopReason: string;
-  message: string;
-  elapsedSeconds: number;
-}
-
 /**
  * Solver options by their camelCase names: the list is wasm/src/solvers/solver_options.def (read
  * by wasm/bindings/solver_options.h); web/src/ik/solver.ts's SolverOptions types and documents it,
@@ -86,7 +65,10 @@ export interface EmbindSolver {
   readonly hasGoals: boolean;
   start(angles: Float64Array, target: Float64Array): string;
   step(): boolean;
-  result(): EmbindSolverResult;
+  /** Writes the solve so far into ioView() as solveIo() writes a solve (asked for the rig's current effectors); the stop reason's index, -1 on failure. */
+  resultIo(): number;
+  /** The current solve's message (invalid_input, numerical_failure); "" otherwise. */
+  message(): string;
   /** Copies E's history (the start, then each iteration) into historyView(); returns its length, -1 on failure. */
   historyIo(): number;
   /** The history buffer; ask again when it is shorter than historyIo()'s count (it grew, or memory did). */
@@ -108,6 +90,8 @@ export interface EmbindSolverClass {
   stopReasons(): string[];
   /** The names of the result numbers solveIo() writes after the target, in order. */
   ioStats(): string[];
+  /** Which of them are flags (written as 1 or 0). */
+  ioFlags(): string[];
 }
 
 export interface IkCoreModule {

@@ -1,13 +1,14 @@
 // embind bindings for the solvers: a Solver is one method (solver_registry.h) on one Rig.
-// Arrays cross as typed arrays in bulk; results are copied out. A failed call returns null ("",
-// false, -1) and leaves the message for takeError() (js_arrays.h says why nothing is thrown).
-// The Rig must outlive the Solver; JavaScript must call delete() on the Solver (the TS wrapper's
-// dispose() does).
+// Arrays cross as typed arrays in bulk; a result crosses one way, through the solve buffer
+// (io_view(): solve_io() and result_io() write it, summary_numbers.def lists its numbers). A failed call returns null
+// ("", false, -1) and leaves the message for takeError() (js_arrays.h says why nothing is thrown). The Rig must outlive
+// the Solver; JavaScript must call delete() on the Solver (the TS wrapper's dispose() does).
 #include <emscripten/bind.h>
 
 #include <algorithm>
 #include <memory>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "goal_input.h"
@@ -19,18 +20,6 @@
 namespace ik::js {
 
 using emscripten::val;
-
-// The result object JavaScript receives (converted by embind's value_object, which is faster
-// than setting fields one by one).
-struct SolverResultJs {
-  val angles = val::undefined();  // Float64Array copy
-  double E = 0, initial_E = 0, gradient_norm = 0, tip_distance = 0;
-  bool reached = false, out_of_reach = false, orientation_out_of_reach = false;
-  int iterations = 0, function_evaluations = 0, jacobian_evaluations = 0, restarts = 0, escapes = 0, chain_restarts = 0;
-  int goals_given_up = 0;
-  std::string stop_reason, message;
-  double elapsed_s = 0;
-};
 
 class SolverBinding {
  public:
@@ -117,33 +106,22 @@ class SolverBinding {
   // One iteration; true while still running. No allocation on the C++ side.
   bool step() { return solver_->step(); }
 
-  // { angles, E, initialE, gradNorm, tipDistance, reached, iterations, functionEvaluations,
-  //   jacobianEvaluations, restarts, escapes, chainRestarts, outOfReach, orientationOutOfReach,
-  //   goalsGivenUp, stopReason, message, elapsedSeconds }
-  //   of the solve so far (best angles found).
-  SolverResultJs result() const {
-    const SolverSummary& s = solver_->summary();
-    SolverResultJs r;
-    r.angles = copy_out(s.angles.data(), s.angles.size());
-    r.E = s.E;
-    r.initial_E = s.initial_E;
-    r.gradient_norm = s.gradient_norm;
-    r.tip_distance = s.tip_distance;
-    r.reached = s.reached;
-    r.iterations = s.iterations;
-    r.function_evaluations = s.function_evaluations;
-    r.jacobian_evaluations = s.jacobian_evaluations;
-    r.restarts = s.restarts;
-    r.escapes = s.escapes;
-    r.chain_restarts = s.chain_restarts;
-    r.out_of_reach = s.out_of_reach;
-    r.orientation_out_of_reach = s.orientation_out_of_reach;
-    r.goals_given_up = s.goals_given_up;
-    r.stop_reason = stop_reason_name(s.stop_reason);
-    r.message = s.message;
-    r.elapsed_s = s.elapsed_s;
-    return r;
+  // The solve so far (or the finished one) into the solve buffer, as solve_io() writes a solve's:
+  // its best angles over the start angles, the result numbers after the target. For step-wise
+  // solves (start(), step()); io_view() must have been asked for the rig's current effectors.
+  // Returns the stop reason's index, or -1 on failure.
+  int result_io() {
+    return guarded(
+        [&] {
+          check_io_lengths();
+          write_result(solver_->summary());
+          return static_cast<int>(solver_->summary().stop_reason);
+        },
+        -1);
   }
+
+  // The current solve's message: why, for invalid_input and numerical_failure; "" otherwise.
+  std::string message() const { return solver_->summary().message; }
 
   // E at the start and after each iteration so far, with no JavaScript values crossing:
   // history_io() copies it into a buffer kept across calls (it only grows) and returns how many
@@ -195,28 +173,9 @@ class SolverBinding {
   int solve_io() {
     return guarded(
         [&] {
-          const Kinematics& kin = rig_.kinematics();
-          check_length(io_n_, kin.num_angles(), "angles");
-          check_length(io_m_, kin.num_residuals(), "target");
-          const SolverSummary& s = solve_on(io_.data(), io_.data() + io_n_);
-          std::copy(s.angles.data(), s.angles.data() + io_n_, io_.begin());
-          double* stats = io_.data() + io_n_ + io_m_;
-          stats[kE] = s.E;
-          stats[kInitialE] = s.initial_E;
-          stats[kGradNorm] = s.gradient_norm;
-          stats[kIterations] = s.iterations;
-          stats[kFunctionEvaluations] = s.function_evaluations;
-          stats[kJacobianEvaluations] = s.jacobian_evaluations;
-          stats[kRestarts] = s.restarts;
-          stats[kElapsed] = s.elapsed_s;
-          stats[kTipDistance] = s.tip_distance;
-          stats[kReached] = s.reached ? 1 : 0;
-          stats[kEscapes] = s.escapes;
-          stats[kChainRestarts] = s.chain_restarts;
-          stats[kOutOfReach] = s.out_of_reach ? 1 : 0;
-          stats[kOrientationOutOfReach] = s.orientation_out_of_reach ? 1 : 0;
-          stats[kGoalsGivenUp] = s.goals_given_up;
-          return static_cast<int>(s.stop_reason);
+          check_io_lengths();
+          write_result(solve_on(io_.data(), io_.data() + io_n_));
+          return static_cast<int>(solver_->summary().stop_reason);
         },
         -1);
   }
@@ -229,46 +188,32 @@ class SolverBinding {
     return names;
   }
 
-  // Where solve_io() writes each result number, after the target; io_stats() names them in this
-  // order, so JavaScript reads the offsets from here instead of repeating them.
+  // Where solve_io() and result_io() write each result number, after the target
+  // (summary_numbers.def); io_stats() names them in this order, so JavaScript reads the offsets
+  // from here instead of repeating them.
   enum IoStat {
-    kE,
-    kInitialE,
-    kGradNorm,
-    kIterations,
-    kFunctionEvaluations,
-    kJacobianEvaluations,
-    kRestarts,
-    kElapsed,
-    kTipDistance,
-    kReached,
-    kEscapes,
-    kChainRestarts,
-    kOutOfReach,
-    kOrientationOutOfReach,
-    kGoalsGivenUp,
+#define IK_SUMMARY_NUMBER(field, js_name) k_##field,
+#include "solvers/summary_numbers.def"
+#undef IK_SUMMARY_NUMBER
     kIoStats
   };
 
   // The result numbers' names (as in the result object), indexed by IoStat.
   static val io_stats() {
-    static const char* const kNames[kIoStats] = {"E",
-                                                 "initialE",
-                                                 "gradNorm",
-                                                 "iterations",
-                                                 "functionEvaluations",
-                                                 "jacobianEvaluations",
-                                                 "restarts",
-                                                 "elapsedSeconds",
-                                                 "tipDistance",
-                                                 "reached",
-                                                 "escapes",
-                                                 "chainRestarts",
-                                                 "outOfReach",
-                                                 "orientationOutOfReach",
-                                                 "goalsGivenUp"};
     val names = val::array();
-    for (const char* name : kNames) names.call<void>("push", std::string(name));
+#define IK_SUMMARY_NUMBER(field, js_name) names.call<void>("push", std::string(js_name));
+#include "solvers/summary_numbers.def"
+#undef IK_SUMMARY_NUMBER
+    return names;
+  }
+
+  // The names of the result numbers that are flags (bools, written as 1 or 0).
+  static val io_flags() {
+    val names = val::array();
+#define IK_SUMMARY_NUMBER(field, js_name) \
+  if (std::is_same_v<decltype(SolverSummary::field), bool>) names.call<void>("push", std::string(js_name));
+#include "solvers/summary_numbers.def"
+#undef IK_SUMMARY_NUMBER
     return names;
   }
 
@@ -319,6 +264,24 @@ class SolverBinding {
       throw RigError(with_js_option_names(solver_->summary().message));
   }
 
+  // The solve buffer's angles and target are the rig's current sizes (io_view() was asked since
+  // the effectors last changed); throws otherwise.
+  void check_io_lengths() const {
+    const Kinematics& kin = rig_.kinematics();
+    check_length(io_n_, kin.num_angles(), "angles");
+    check_length(io_m_, kin.num_residuals(), "target");
+  }
+
+  // `s`'s best angles over the buffer's start angles (none before a first solve, or after a
+  // refused one: invalid_input), its numbers after the target.
+  void write_result(const SolverSummary& s) {
+    if (s.angles.size() == io_n_) std::copy(s.angles.data(), s.angles.data() + io_n_, io_.begin());
+    double* stats = io_.data() + io_n_ + io_m_;
+#define IK_SUMMARY_NUMBER(field, js_name) stats[k_##field] = static_cast<double>(s.field);
+#include "solvers/summary_numbers.def"
+#undef IK_SUMMARY_NUMBER
+  }
+
   static void check_length(int given, int expected, const char* what) {
     if (given != expected)
       throw RigError(std::string(what) + " has " + std::to_string(given) + " values, expected " +
@@ -340,26 +303,6 @@ class SolverBinding {
 
 EMSCRIPTEN_BINDINGS(ik_solvers) {
   using ik::js::SolverBinding;
-  using ik::js::SolverResultJs;
-  emscripten::value_object<SolverResultJs>("SolverResult")
-      .field("angles", &SolverResultJs::angles)
-      .field("E", &SolverResultJs::E)
-      .field("initialE", &SolverResultJs::initial_E)
-      .field("gradNorm", &SolverResultJs::gradient_norm)
-      .field("tipDistance", &SolverResultJs::tip_distance)
-      .field("reached", &SolverResultJs::reached)
-      .field("iterations", &SolverResultJs::iterations)
-      .field("functionEvaluations", &SolverResultJs::function_evaluations)
-      .field("jacobianEvaluations", &SolverResultJs::jacobian_evaluations)
-      .field("restarts", &SolverResultJs::restarts)
-      .field("escapes", &SolverResultJs::escapes)
-      .field("chainRestarts", &SolverResultJs::chain_restarts)
-      .field("outOfReach", &SolverResultJs::out_of_reach)
-      .field("orientationOutOfReach", &SolverResultJs::orientation_out_of_reach)
-      .field("goalsGivenUp", &SolverResultJs::goals_given_up)
-      .field("stopReason", &SolverResultJs::stop_reason)
-      .field("message", &SolverResultJs::message)
-      .field("elapsedSeconds", &SolverResultJs::elapsed_s);
   emscripten::class_<SolverBinding>("Solver")
       .class_function("create", &SolverBinding::create, emscripten::allow_raw_pointers())
       .class_function("methods", &SolverBinding::methods)
@@ -375,12 +318,14 @@ EMSCRIPTEN_BINDINGS(ik_solvers) {
       .property("hasGoals", &SolverBinding::has_goals)
       .function("start", &SolverBinding::start)
       .function("step", &SolverBinding::step)
-      .function("result", &SolverBinding::result)
+      .function("resultIo", &SolverBinding::result_io)
+      .function("message", &SolverBinding::message)
       .function("historyIo", &SolverBinding::history_io)
       .function("historyView", &SolverBinding::history_view)
       .function("angles", &SolverBinding::angles)
       .function("ioView", &SolverBinding::io_view)
       .function("solveIo", &SolverBinding::solve_io)
       .class_function("stopReasons", &SolverBinding::stop_reasons)
-      .class_function("ioStats", &SolverBinding::io_stats);
+      .class_function("ioStats", &SolverBinding::io_stats)
+      .class_function("ioFlags", &SolverBinding::io_flags);
 }

@@ -3,7 +3,7 @@
 // units; E = 1/2 |tips - target|^2. In place of a target, start() and solve() take Goals
 // (goals.ts): positions and orientations per effector, with weights. The object owns
 // WebAssembly memory: call dispose() when done, and dispose it before its rig.
-import type { EmbindSolver, EmbindSolverOptions, EmbindSolverResult, IkCoreModule } from './generated/ik_core.mjs';
+import type { EmbindSolver, EmbindSolverOptions, IkCoreModule } from './generated/ik_core.mjs';
 import { isGoals, packGoals, type Goals, type PackedGoals } from './goals.js';
 import { checkedNumbers, coreError, plainOptions, toFloat64 } from './inputs.js';
 import type { IkRig, Numbers } from './rig.js';
@@ -209,32 +209,27 @@ function copyInto(out: Float64Array, from: Float64Array<ArrayBufferLike>, n: num
   return out;
 }
 
-function toResult(r: EmbindSolverResult): SolverResult {
-  return { ...r, stopReason: r.stopReason as StopReason };
-}
-
-/** The numbers solveIo() writes after the angles and target (solver_bindings.cpp IoStat). */
-type IoStat = Exclude<keyof SolverResult, 'angles' | 'stopReason' | 'message'>;
-
-/** What the API reads once per module: stop reasons by solveIo()'s index, option names, result offsets. */
+/** What the API reads once per module: stop reasons by solveIo()'s index, option names, the result numbers. */
 interface ModuleFacts {
   stopReasons: readonly string[];
   optionNames: readonly string[];
-  /** Offset of each result number after the target, and how many there are. */
-  io: Record<IoStat, number>;
-  ioCount: number;
+  /** The result numbers' names in the order the core writes them after the target (wasm/src/solvers/summary_numbers.def). */
+  ioNames: readonly string[];
+  /** Per result number, whether it is a flag (1 or 0, read as a boolean). */
+  ioFlags: readonly boolean[];
 }
 const factsCache = new WeakMap<IkCoreModule, ModuleFacts>();
 
 function moduleFacts(module: IkCoreModule): ModuleFacts {
   let facts = factsCache.get(module);
   if (!facts) {
-    const stats = module.Solver.ioStats();
+    const names = module.Solver.ioStats(),
+      flags = new Set(module.Solver.ioFlags());
     facts = {
       stopReasons: module.Solver.stopReasons(),
       optionNames: Object.keys(module.Solver.defaultOptions()),
-      io: Object.fromEntries(stats.map((name, k) => [name, k])) as Record<IoStat, number>,
-      ioCount: stats.length,
+      ioNames: names,
+      ioFlags: names.map((name) => flags.has(name)),
     };
     factsCache.set(module, facts);
   }
@@ -381,41 +376,51 @@ export class IkSolver {
     const handle = this.live();
     const n = this.rig.numAngles,
       m = t.length;
-    const facts = moduleFacts(this.rig.module);
-    let io = this.buffer(n, m, facts.ioCount);
+    let io = this.buffer(n, m);
     io.set(a, 0);
     io.set(t, n);
     const code = handle.solveIo();
     if (code < 0) throw coreError(this.rig.module, 'solve');
-    if (io.length === 0) io = this.buffer(n, m, facts.ioCount); // the memory grew during the solve
-    const at = facts.io,
-      s = n + m;
-    const stopReason = facts.stopReasons[code] as StopReason;
-    return {
-      angles: out ? copyInto(out, io, n) : io.slice(0, n),
-      E: io[s + at.E],
-      initialE: io[s + at.initialE],
-      gradNorm: io[s + at.gradNorm],
-      iterations: io[s + at.iterations],
-      functionEvaluations: io[s + at.functionEvaluations],
-      jacobianEvaluations: io[s + at.jacobianEvaluations],
-      restarts: io[s + at.restarts],
-      escapes: io[s + at.escapes],
-      chainRestarts: io[s + at.chainRestarts],
-      outOfReach: io[s + at.outOfReach] === 1,
-      orientationOutOfReach: io[s + at.orientationOutOfReach] === 1,
-      goalsGivenUp: io[s + at.goalsGivenUp],
-      tipDistance: io[s + at.tipDistance],
-      reached: io[s + at.reached] === 1,
-      stopReason,
-      message: stopReason === 'numerical_failure' ? handle.result().message : '',
-      elapsedSeconds: io[s + at.elapsedSeconds],
-    };
+    if (io.length === 0) io = this.buffer(n, m); // the memory grew during the solve
+    return this.readResult(io, n, m, code, out);
   }
 
   /** The solve so far (or the finished one). */
   result(): SolverResult {
-    return toResult(this.live().result());
+    const handle = this.live();
+    const n = this.rig.numAngles,
+      m = 3 * this.rig.numEffectors;
+    const io = this.buffer(n, m);
+    const code = handle.resultIo();
+    if (code < 0) throw coreError(this.rig.module, 'result');
+    return this.readResult(io, n, m, code);
+  }
+
+  /**
+   * The result the core wrote into `io` (n angles, m target numbers, then the result numbers in
+   * ModuleFacts.ioNames's order) with stop reason index `code`; the angles into `out` when given.
+   * The message crosses only when there is one to tell (a string per frame otherwise).
+   */
+  private readResult(
+    io: Float64Array<ArrayBufferLike>,
+    n: number,
+    m: number,
+    code: number,
+    out?: Float64Array,
+  ): SolverResult {
+    const facts = moduleFacts(this.rig.module);
+    const stopReason = facts.stopReasons[code] as StopReason;
+    const failed = stopReason === 'numerical_failure' || stopReason === 'invalid_input';
+    const result: Record<string, unknown> = {
+      // A refused solve (invalid_input; result() before any solve too) has no angles.
+      angles: stopReason === 'invalid_input' ? new Float64Array(0) : out ? copyInto(out, io, n) : io.slice(0, n),
+      stopReason,
+      message: failed ? this.handle.message() : '',
+    };
+    const names = facts.ioNames,
+      flags = facts.ioFlags;
+    for (let k = 0, at = n + m; k < names.length; k++, at++) result[names[k]] = flags[k] ? io[at] === 1 : io[at];
+    return result as unknown as SolverResult;
   }
 
   /** E at the start and after each iteration so far (a fresh array). */
@@ -514,9 +519,9 @@ export class IkSolver {
     return n;
   }
 
-  /** The solve buffer for n angles, m target numbers and `stats` result numbers (asked anew when stale or resized). */
-  private buffer(n: number, m: number, stats: number): Float64Array<ArrayBufferLike> {
-    if (this.io.length === n + m + stats) return this.io;
+  /** The solve buffer for n angles, m target numbers and the result numbers (asked anew when stale or resized). */
+  private buffer(n: number, m: number): Float64Array<ArrayBufferLike> {
+    if (this.io.length === n + m + moduleFacts(this.rig.module).ioNames.length) return this.io;
     const view = this.live().ioView();
     if (!view) throw coreError(this.rig.module, 'solve');
     return (this.io = view);
