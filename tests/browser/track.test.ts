@@ -70,16 +70,31 @@ describe('track mode', () => {
       await nextFrame(page);
     }
     await page.mouse.up();
-    await page.waitForFunction(
-      (d) => {
+    const handOff = () =>
+      page.evaluate(() => {
         const t = window.ikTrack!,
           tips = t.tips(),
           p = t.points();
-        return Math.hypot(tips[3] - p[3], tips[4] - p[4], tips[5] - p[5]) < d;
-      },
-      delta,
-      { timeout: 10_000 },
-    );
+        return Math.hypot(tips[3] - p[3], tips[4] - p[4], tips[5] - p[5]);
+      });
+    await page
+      .waitForFunction(
+        (d) => {
+          const t = window.ikTrack!,
+            tips = t.tips(),
+            p = t.points();
+          return Math.hypot(tips[3] - p[3], tips[4] - p[4], tips[5] - p[5]) < d;
+        },
+        delta,
+        { timeout: 10_000 },
+      )
+      .catch(async (e: unknown) => {
+        const status = (await page.textContent('.track-status')) ?? '';
+        throw new Error(
+          `the hand is ${(await handOff()).toExponential(2)} off its point after 10 s (δ ${delta.toExponential(2)}); status: ${status}`,
+          { cause: e },
+        );
+      });
     const points = await page.evaluate(() => window.ikTrack!.points());
     const tips = await page.evaluate(() => window.ikTrack!.tips());
     expect(distance(points, 1, start)).toBeGreaterThan(0.05 * h); // the hand's point moved 5% of the height or more
