@@ -80,7 +80,7 @@ StopReason Solver::begin(const Eigen::Ref<const Eigen::VectorXd>& angles, const 
   const bool continues =
       chain_index_ > 0 && angles.size() == summary_.angles.size() && incoming_ == goals_ && angles == summary_.angles;
   if (!continues) chain_index_ = 0;
-  bool carry = carrying_ && continues && angles == carried_at_;
+  bool carry = carrying_ && continues;  // continues: from the pose the last solve returned
   carrying_ = false;
   opt_ = next_opt_;
   clock_.reset(opt_.time_budget_s);
@@ -232,7 +232,6 @@ void Solver::conclude() {
   keep_contract();
   carrying_ = carry && !heading_ &&
               (summary_.stop_reason == StopReason::max_iterations || summary_.stop_reason == StopReason::timeout);
-  if (carrying_) carried_at_ = summary_.angles;
 }
 
 void Solver::resize_workspace() {
@@ -261,7 +260,6 @@ void Solver::resize_workspace() {
   heading_to_.resize(n_);
   partway_.resize(n_);
   carried_run_.resize(n_);
-  carried_at_.resize(n_);
   carrying_ = false;
   heading_ = false;
   nearest_.resize(n_);

@@ -319,13 +319,13 @@ class Solver {
   bool heading_ = false;
   bool resumed_ = false;  // this solve resumed such a move
   // After a budget stop (max_iterations, timeout) off target in the middle of a chain restart's
-  // run, with joint speed bounded: the run's point, and the pose the solve returned (its best
-  // point, not the run's). A solve from that pose towards the same goals carries the run on from
+  // run, with joint speed bounded: the run's point. A solve from the pose the last one returned
+  // (summary_.angles, its best point, not the run's) towards the same goals carries the run on from
   // its point, the pose staying the best point until the run beats it: a frame too short for a
   // chain restart's run no longer throws the run away and draws the next one (a 6-joint arm's
   // tool turned onto another branch of solutions drew all 64 chain restarts, 5 iterations each,
   // and gave up its orientation goal as out of reach).
-  Eigen::VectorXd carried_run_, carried_at_;
+  Eigen::VectorXd carried_run_;
   bool carrying_ = false;
   bool chain_run_going_ = false;  // the current run began at a chain restart, or carries one on
   // At the end of a solve, before anything moves a_: is its run one to carry on (above)?
