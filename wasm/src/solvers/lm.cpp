@@ -31,6 +31,8 @@ namespace {
 class LevenbergMarquardt final : public Solver {
  public:
   using Solver::Solver;
+  // |r| below this share of the reach is round-off: no step is tried.
+  static constexpr double kRoundOffShare = 1e-12;
   const char* name() const override { return "lm"; }
 
  private:
@@ -61,6 +63,10 @@ class LevenbergMarquardt final : public Solver {
     if (!std::isfinite(s)) return fail("the Jacobian is not finite");
     if (!(s > 0)) return Progress::stuck;  // no free angle moves a tip
     const double relative_error2 = 2 * E_ / (reach_ * reach_);
+    // An error at round-off (a tracked frame whose targets did not move, polished because of
+    // min_iterations) leaves no decrease to find: every trial would be rejected, each costing a
+    // factorisation (10 of them a frame on the avatar's still frames).
+    if (relative_error2 < kRoundOffShare * kRoundOffShare) return Progress::stuck;
 
     for (int attempt = 0; attempt < opt_.lm_max_rejections; ++attempt) {
       if (attempt > 0 && time_is_up()) return Progress::stuck;

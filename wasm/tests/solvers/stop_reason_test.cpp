@@ -110,16 +110,25 @@ TEST_P(StopReasonConsistency, AFarTargetWithRestartsClaimsNoStopItDidNotReach) {
   expect_consistent(kin, s, target, o);
 }
 
+// A pose of the branched rig (every angle 10 degrees, within the limits) and its tips moved by
+// `offset` in every coordinate: a start on target.
+struct StartOnTarget {
+  Eigen::VectorXd angles, target;
+};
+StartOnTarget start_on_target(Kinematics& kin, double offset) {
+  StartOnTarget s{Eigen::VectorXd::Constant(kin.num_angles(), 10.0), Eigen::VectorXd(kin.num_residuals())};
+  kin.project(s.angles);
+  kin.tips(s.angles, s.target);
+  s.target.array() += offset;
+  return s;
+}
+
 // min_iterations: a start already on target (the tips' own positions, moved less than the tip
 // tolerance) ends at once by default, and takes exactly that many iterations with the option,
 // ending on target nearer than it started.
 TEST_P(StopReasonConsistency, MinIterationsPolishesAStartOnTarget) {
   Kinematics kin(branched_rig());
-  Eigen::VectorXd angles = Eigen::VectorXd::Constant(kin.num_angles(), 10.0);
-  kin.project(angles);
-  Eigen::VectorXd target(kin.num_residuals());
-  kin.tips(angles, target);
-  target.array() += 0.002;  // within the tip tolerance
+  const auto [angles, target] = start_on_target(kin, 0.002);  // within the tip tolerance
   SolverOptions o;
   o.tip_tolerance = 0.01;
   o.restarts = 0;
@@ -135,6 +144,25 @@ TEST_P(StopReasonConsistency, MinIterationsPolishesAStartOnTarget) {
   EXPECT_EQ(polished.iterations, 1);
   EXPECT_LT(polished.tip_distance, start_distance);
   expect_consistent(kin, polished, target, o);
+}
+
+// lm with min_iterations from a start on its target to round-off (a tracked frame whose targets
+// did not move): no step can lower such an error, so none is tried; the solve ends on target
+// after the start's one evaluation (it used to try, and reject, lm_max_rejections steps).
+TEST(LmRoundOff, AStartOnTargetToRoundOffTriesNoStep) {
+  Kinematics kin(branched_rig());
+  const auto [angles, target] = start_on_target(kin, 1e-15);  // round-off: a step from here is no better
+  SolverOptions o;
+  o.tip_tolerance = 0.01;
+  o.restarts = 0;
+  o.min_iterations = 1;
+  auto solver = make_solver("lm", kin, o);
+  const SolverSummary& s = solver->solve(angles, target);
+  EXPECT_EQ(s.stop_reason, StopReason::converged_E);
+  EXPECT_EQ(s.iterations, 0);
+  EXPECT_EQ(s.function_evaluations, 1);
+  EXPECT_EQ(s.angles, angles);
+  expect_consistent(kin, s, target, o);
 }
 
 INSTANTIATE_TEST_SUITE_P(EveryMethod, StopReasonConsistency, ::testing::ValuesIn(solver_names()),
