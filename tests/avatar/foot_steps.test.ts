@@ -14,11 +14,18 @@ const rest: FootPose[] = [
 const hips = [0, 1, 0];
 const yaw = (degrees: number) => [0, Math.sin((degrees * Math.PI) / 360), 0, Math.cos((degrees * Math.PI) / 360)];
 
-/** Runs `frames` frames with the head's frame and the hips' tip given per frame; the targets per frame. */
-function run(frames: number, head: (f: number) => number[], at: (f: number) => number[]): FootPose[][] {
+/**
+ * Runs `frames` frames with the head's frame, the hips' tip and the head's tip (default: over the
+ * hips) given per frame; the targets per frame.
+ */
+function run(
+  frames: number,
+  head: (f: number) => number[],
+  at: (f: number) => number[],
+  headAt = (f: number) => [at(f)[0], at(f)[1] + 0.5, at(f)[2]],
+): FootPose[][] {
   const steps = new FootSteps(rest, hips, { position: [0, 1.5, 0], orientation: identity }, H);
-  // The head over the hips.
-  const tracked = (f: number) => ({ position: [at(f)[0], at(f)[1] + 0.5, at(f)[2]], orientation: head(f) });
+  const tracked = (f: number) => ({ position: headAt(f), orientation: head(f) });
   return Array.from({ length: frames }, (_, f) =>
     steps.update(tracked(f), at(f)).map((p) => ({ position: [...p.position], orientation: [...p.orientation] })),
   );
@@ -59,6 +66,19 @@ describe('the avatar feet', () => {
     // At the end both feet face within the turn that starts a step of the head (180 degrees).
     const facing = (q: number[]) => (2 * Math.atan2(q[1], q[3]) * 180) / Math.PI;
     for (const foot of out[out.length - 1]) expect(Math.abs(Math.abs(facing(foot.orientation)) - 180)).toBeLessThan(60);
+  });
+
+  it('stay where they stand in a crouch that sits the hips back while the head stays over the feet', () => {
+    // The hips 0.2 of the height back and a quarter down, the head lowered above the feet: by the
+    // hips alone (beyond 0.15 of the height from the feet) both feet stepped back.
+    const out = run(
+      90,
+      () => identity,
+      (f) => [0, 1 - 0.25 * H * Math.min(1, f / 60), -0.2 * H * Math.min(1, f / 60)],
+      (f) => [0, 1.5 - 0.25 * H * Math.min(1, f / 60), 0.02 * H * Math.min(1, f / 60)],
+    );
+    expect(moving(out, 0)).toEqual([]);
+    expect(moving(out, 1)).toEqual([]);
   });
 
   it('step towards the hips when they move away from the feet', () => {

@@ -1,15 +1,17 @@
 // Where the avatar's feet stand: planted until the body leaves them behind, then one
 // foot at a time steps to where the stance puts it. With three tracked points nothing tells where
-// the feet are; they stay where they stood (no sliding) while the hips are within reach of them
-// and the head faces their way. When the hips' floor point is more than STEP_DISTANCE of the
-// height from where the stance would put a foot, or the head has turned more than STEP_TURN
-// degrees from the feet (turning in place), or the last solve could not reach a tracked point
-// from this stance and a foot is a little way from its place, the foot farther from its place
-// steps over STEP_FRAMES frames: lifted on an arc, never below the floor it stood on, turned with
-// the head, to its place under the tracked head (under the hips' drift, a turn in place walked
-// the feet away from the head until the head was out of reach). The step is counted in frames,
-// not seconds, so that a stream of inputs gives the same steps on any machine. No three.js and
-// no allocation while the feet stand: plain arrays, quaternions [x, y, z, w], rig units (y up).
+// the feet are; they stay where they stood (no sliding) while the body is within reach of them
+// and the head faces their way. When the body's floor point (midway between the hips and where
+// they would stand under the head: a crouch sits the hips back while the head stays over the
+// feet) is more than STEP_DISTANCE of the height from where the stance would put a foot, or the
+// head has turned more than STEP_TURN degrees from the feet (turning in place), or the last solve
+// could not reach a tracked point from this stance and a foot is a little way from its place, the
+// foot farther from its place steps over STEP_FRAMES frames: lifted on an arc, never below the
+// floor it stood on, turned with the head, to its place under the tracked head (under the hips'
+// drift, a turn in place walked the feet away from the head until the head was out of reach).
+// The step is counted in frames, not seconds, so that a stream of inputs gives the same steps on
+// any machine. No three.js and no allocation while the feet stand: plain arrays, quaternions
+// [x, y, z, w], rig units (y up).
 import { mul } from '../rig/quat.js';
 
 /** A foot's target: its bone's tip and frame (rig units; unit quaternion [x, y, z, w]). */
@@ -91,10 +93,10 @@ export class FootSteps {
   /**
    * The feet's targets this frame (left, right), for the head's tracked tip and frame `head` and
    * the hips' tip `hips` (the last pose's); `missed`: the last solve left a tracked point off its
-   * target. A foot steps when it is far from its place under the hips, or turned away from the
-   * head; it steps to its place under the head (where the hips stand under it upright), so that
-   * the stance follows the tracked head, not the hips' drift. A planted foot's target is the pose
-   * planted() gives (no new object while the feet stand).
+   * target. A foot steps when it is far from its place under the body (the hips and the head),
+   * or turned away from the head; it steps to its place under the head (where the hips stand
+   * under it upright), so that the stance follows the tracked head, not the hips' drift. A
+   * planted foot's target is the pose planted() gives (no new object while the feet stand).
    */
   update(
     head: { position: ArrayLike<number>; orientation: ArrayLike<number> },
@@ -103,6 +105,12 @@ export class FootSteps {
   ): FootPose[] {
     const yaw = yawFrom(head.orientation, this.restHead);
     if (this.stepping() < 0) {
+      // The body's floor point (by the hips alone, a crouch a little deeper than the crouch
+      // clip's, its hips 14% of the height back, walked the feet back). [hx, hz]: the hips' place
+      // under the head, from the head.
+      const [hx, hz] = turnedOnFloor(this.restHipsFromHead, yaw);
+      const bodyX = 0.5 * (hips[0] + head.position[0] + hx),
+        bodyZ = 0.5 * (hips[2] + head.position[2] + hz);
       // The foot farther from its place steps, if either is far enough.
       let worst = -1,
         worstMiss = missed ? MISSED_SHARE : 1;
@@ -110,7 +118,7 @@ export class FootSteps {
         const [x, z] = turnedOnFloor(this.restOffsets[k], yaw),
           at = this.feet[k].planted.position;
         const miss = Math.max(
-          Math.hypot(hips[0] + x - at[0], hips[2] + z - at[2]) / (STEP_DISTANCE * this.height),
+          Math.hypot(bodyX + x - at[0], bodyZ + z - at[2]) / (STEP_DISTANCE * this.height),
           Math.abs(angleBetween(yaw, this.feet[k].plantedYaw)) / ((STEP_TURN * Math.PI) / 180),
         );
         if (miss > worstMiss) {
@@ -119,8 +127,7 @@ export class FootSteps {
         }
       }
       if (worst >= 0) {
-        const [x, z] = turnedOnFloor(this.restHipsFromHead, yaw);
-        const under = [head.position[0] + x, 0, head.position[2] + z];
+        const under = [head.position[0] + hx, 0, head.position[2] + hz];
         this.feet[worst].step = { to: this.home(worst, yaw, under), frame: 0 };
       }
     }
