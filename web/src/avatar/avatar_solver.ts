@@ -7,7 +7,8 @@
 // pose into the whole rig's. No three.js and no DOM: a page, a widget or a Node script drives it.
 // With three points the feet stand where they stood and step when the body leaves them
 // (foot_steps.ts), the foot in the air giving way to everything else. With six (the hips and
-// feet as well) the feet go where they are tracked.
+// feet as well) the feet go where they are tracked. The upper arms leave the T-pose in the plane
+// their hands are asked to go in (swing_planes.ts).
 import type { IkCoreModule } from '../ik/module.js';
 import type { RigSpec } from '../ik/rig_arrays.js';
 import { type PoleLimb, poleLimbs } from '../live/pole_limbs.js';
@@ -21,6 +22,7 @@ import type { HumanoidMap, HumanoidRole } from '../rig/humanoid/humanoid_roles.j
 import { dragTolerances, restHeight } from '../rig/tolerances.js';
 import { FootSteps } from './foot_steps.js';
 import { scatterAngles, type SubRig, subHumanoid, subRig } from './sub_rig.js';
+import { seatSwingPlane } from './swing_planes.js';
 
 /** A tracked pose: a position (rig units) and an orientation, a unit quaternion [x, y, z, w] of the bone's frame, rig coordinates. */
 export interface TrackedPose {
@@ -118,6 +120,8 @@ export class AvatarSolver {
   private heelsLifted = false;
   /** Frames in a row whose solves left a tracked point off its target. */
   private missed = 0;
+  /** The part's left and right upper arms (whose swing planes seatSwingPlane() turns where their swing is 0). */
+  private readonly arms: Array<number | undefined>;
 
   /**
    * An avatar of `spec` (a humanoid's rig, its limits in place) mapped by `humanoid`, standing in
@@ -170,6 +174,7 @@ export class AvatarSolver {
     // line, which each frame's least change from the last keeps (a fixed pole pulled it off the
     // tracked hand on 30% of the frames of an arm motion).
     const partHumanoid = subHumanoid(this.part, humanoid);
+    this.arms = [partHumanoid.bones.leftUpperArm, partHumanoid.bones.rightUpperArm];
     const knees = [partHumanoid.bones.leftLowerLeg, partHumanoid.bones.rightLowerLeg];
     this.limbs = poleLimbs(this.part.spec, s.effectors(), partHumanoid).filter((l) => knees.includes(l.bone));
     this.poleBones = this.limbs.map((l) => l.bone);
@@ -212,6 +217,12 @@ export class AvatarSolver {
       const root = s.angles.length - 3;
       for (let i = 0; i < 3; i++) this.hips[i] = this.restHips[i] + s.angles[root + i];
       feet = this.steps.update(input.head, this.hips, this.missed >= MISSED_FRAMES);
+    }
+    // An upper arm at its swing's 0 (the T-pose) swings the way its hand is asked to go.
+    for (let i = 0; i < 2; i++) {
+      const arm = this.arms[i];
+      if (arm !== undefined)
+        seatSwingPlane(s.rig, s.angles, arm, 1 + i, (i ? input.rightHand : input.leftHand).position);
     }
     // A foot in the air gives way first: the tracked points and the planted foot are held.
     const swinging = this.steps.stepping();

@@ -1,0 +1,89 @@
+// A ball joint's swing plane where its swing is 0. The XZX angles of a bone (twist a0 about the
+// bone, swing a1 about z, twist a2) lose a degree of freedom at a1 = 0: a0 and a2 then both turn
+// the bone about itself, and a0 alone decides which way a swing of a1 moves it. A humanoid's
+// T-pose has the upper arms there, their plane wherever the angles' zero puts it; when the first
+// tracked frame asked the hands down, no angle lowered them at first order, so the solves lowered
+// them with the clavicles and the spine until the clavicles met their limits and the arms took
+// over in one frame (a jolt of the whole upper body, the track experiment's worst frames on every
+// clip). At a1 = 0, a0 + c and a2 - c give the same rotation for any c: the plane is chosen from
+// the target before the solve that leaves the T-pose. No three.js; angles in degrees, rig units.
+import type { IkRig } from '../ik/rig.js';
+
+/**
+ * The swing the slopes are measured with, degrees: small beside how far a frame's target moves
+ * (a frame's first move from the T-pose is a fraction of a millimetre).
+ */
+const TRIAL_SWING_DEG = 1e-3;
+/**
+ * A swing this small (degrees) counts as 0: the first solves from the rest pose move the angles a
+ * little (a tracked frame given to 1e-8 of a unit), and turning the plane of so small a swing
+ * turns the bone by at most twice that.
+ */
+const ZERO_SWING_DEG = 1e-3;
+/** The target must be this many trial swings' moves away: nearer, the slopes are round-off. */
+const NEAR_TRIALS = 10;
+
+/**
+ * Turns the swing plane of `bone` of `rig` in `angles` (3 per bone, degrees; the pose) when its
+ * swing a1 is 0 (within ZERO_SWING_DEG), keeping its rotation (a1 and a0 + a2 unchanged, a0 and a2
+ * within their limits): to the plane in which a swing its limits allow brings effector
+ * `effector`'s tip fastest towards `target` (rig units). Left as it is when no swing does. Three
+ * forward passes: the slope towards the target of a swing in plane a0 is A cos a0 + B sin a0.
+ */
+export function seatSwingPlane(
+  rig: IkRig,
+  angles: Float64Array,
+  bone: number,
+  effector: number,
+  target: ArrayLike<number>,
+): void {
+  const j = 3 * bone;
+  if (!(Math.abs(angles[j + 1]) <= ZERO_SWING_DEG)) return;
+  const twist = angles[j] + angles[j + 2];
+  // a0 within its limits with a2 = twist - a0 within its own.
+  const lo = Math.max(rig.lower[j], twist - rig.upper[j + 2]),
+    hi = Math.min(rig.upper[j], twist - rig.lower[j + 2]);
+  const up = rig.upper[j + 1] > 0,
+    down = rig.lower[j + 1] < 0;
+  if (!(lo < hi) || !(up || down)) return;
+  const trial = angles.slice();
+  const tip = (): Float64Array => rig.tips(trial).slice(3 * effector, 3 * effector + 3);
+  const at = tip();
+  const towards = [0, 1, 2].map((i) => target[i] - at[i]);
+  // The slope of a swing of TRIAL_SWING_DEG in plane a0 towards the target, and how far it moved the tip.
+  let step = 0;
+  const slope = (a0: number): number => {
+    trial[j] = a0;
+    trial[j + 1] = TRIAL_SWING_DEG;
+    trial[j + 2] = twist - a0;
+    const moved = tip().map((x, i) => x - at[i]);
+    step = Math.hypot(...moved);
+    return towards.reduce((sum, t, i) => sum + t * moved[i], 0);
+  };
+  const p = lo,
+    q = lo + Math.min(90, hi - lo);
+  const sp = slope(p),
+    sq = slope(q);
+  if (!(Math.hypot(...towards) > NEAR_TRIALS * step)) return;
+  // A cos a + B sin a through (p, sp) and (q, sq).
+  const rad = Math.PI / 180,
+    det = Math.sin((q - p) * rad);
+  const A = (sp * Math.sin(q * rad) - sq * Math.sin(p * rad)) / det,
+    B = (sq * Math.cos(p * rad) - sp * Math.cos(q * rad)) / det;
+  const score = (a0: number): number => {
+    const s = A * Math.cos(a0 * rad) + B * Math.sin(a0 * rad);
+    return Math.max(up ? s : 0, down ? -s : 0);
+  };
+  const peak = Math.atan2(B, A) / rad;
+  let best = angles[j],
+    bestScore = score(best);
+  for (const a0 of [lo, hi, ...[-360, -180, 0, 180, 360].map((t) => Math.min(hi, Math.max(lo, peak + t)))]) {
+    const s = score(a0);
+    if (s > bestScore) {
+      bestScore = s;
+      best = a0;
+    }
+  }
+  angles[j] = best;
+  angles[j + 2] = twist - best;
+}
