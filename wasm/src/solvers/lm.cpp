@@ -51,6 +51,12 @@ class LevenbergMarquardt final : public Solver {
   Progress iterate() override {
     const int nf = num_free_;
     if (nf == 0) return Progress::stuck;
+    // An error at round-off (a tracked frame whose targets did not move, polished because of
+    // min_iterations) leaves no decrease to find: every trial would be rejected, each costing a
+    // factorisation (10 of them a frame on the avatar's still frames). Checked before Jf Jf^T is
+    // built, which such a frame does not need either.
+    const double relative_error2 = 2 * E_ / (reach_ * reach_);
+    if (relative_error2 < kRoundOffShare * kRoundOffShare) return Progress::stuck;
     // Jf Jf^T from the 3x1 blocks of J that can be non-zero (block_pattern.h).
     normal_.setZero();
     for (int c = 0; c < nf; ++c) {
@@ -62,11 +68,6 @@ class LevenbergMarquardt final : public Solver {
     const double s = normal_.trace() / (goals_.soft_on() ? m_ : goals_.hard_rows());
     if (!std::isfinite(s)) return fail("the Jacobian is not finite");
     if (!(s > 0)) return Progress::stuck;  // no free angle moves a tip
-    const double relative_error2 = 2 * E_ / (reach_ * reach_);
-    // An error at round-off (a tracked frame whose targets did not move, polished because of
-    // min_iterations) leaves no decrease to find: every trial would be rejected, each costing a
-    // factorisation (10 of them a frame on the avatar's still frames).
-    if (relative_error2 < kRoundOffShare * kRoundOffShare) return Progress::stuck;
 
     for (int attempt = 0; attempt < opt_.lm_max_rejections; ++attempt) {
       if (attempt > 0 && time_is_up()) return Progress::stuck;
