@@ -22,6 +22,7 @@ constexpr int kMaxHalvings = 28;
 }  // namespace
 
 void SaddleEscape::resize(const Kinematics& kin, int residuals) {
+  count_ = 0;  // index_ is cleared below: no angle of the last find() is left to unmark
   position_.assign(kin.num_angles(), -1);
   bones_.resize(kin.num_bones());
   index_.assign(kMaxAngles, -1);
