@@ -275,6 +275,8 @@ class Solver {
   Progress priority_iterate();
   // How far off a goal may be and count as met (the options' tolerances).
   GoalTolerance goal_tolerance() const;
+  // The soft rows' residual at the current point is under kSoftMetShare of the tip tolerance.
+  bool soft_rows_met() const;
   // The current point's rank: 2 on target, 1 the held goals met (priority mode), 0 otherwise.
   int rank() const;
   // Sets the summary's out_of_reach flags for the best point, whose residual is `r`.
