@@ -37,6 +37,17 @@ double goal_objective(Kinematics& kin, const GoalSet& goals, const Eigen::Ref<co
   return 0.5 * residual.squaredNorm();
 }
 
+namespace {
+
+// An orientation block's rows' Jacobian is M a for a turn about the world axis a (per degree):
+// M = w_o L (pi/180) J_r^-1(e) R_tip^T (the header's derivation).
+Eigen::Matrix3d orientation_map(const Kinematics& kin, const GoalSet::Block& g, int bone) {
+  const Eigen::Matrix3d R = kin.tip_rotation(bone);
+  return g.scale * kRadPerDeg * so3_right_jacobian_inverse(so3_log(g.rotation.transpose() * R)) * R.transpose();
+}
+
+}  // namespace
+
 void goal_jacobian(const Kinematics& kin, const GoalSet& goals, Eigen::Ref<Eigen::MatrixXd> jac,
                    Kinematics::Columns columns) {
   if (goals.plain()) {
@@ -49,8 +60,7 @@ void goal_jacobian(const Kinematics& kin, const GoalSet& goals, Eigen::Ref<Eigen
     const int bone = kin.rig().effectors[g.effector];
     const double scale = g.scale * kRadPerDeg;
     if (g.orientation) {
-      const Eigen::Matrix3d R = kin.tip_rotation(bone);
-      const Eigen::Matrix3d M = scale * so3_right_jacobian_inverse(so3_log(g.rotation.transpose() * R)) * R.transpose();
+      const Eigen::Matrix3d M = orientation_map(kin, g, bone);
       for (int j : kin.effector_chain(g.effector)) {
         const int filled = kin.columns_of(j, columns);
         for (int a = 0; a < 3; ++a)
@@ -89,6 +99,28 @@ void goal_jacobian(const Kinematics& kin, const GoalSet& goals, Eigen::Ref<Eigen
     if (kin.floats()) jac.block<3, 3>(hard + 3 * p, kin.root_translation()) = d.shoulder + d.elbow + d.wrist;
   }
   rest_jacobian(goals, jac.bottomRows(3 * goals.num_rest()));
+}
+
+void goal_gradient(const Kinematics& kin, const GoalSet& goals, const Eigen::Ref<const Eigen::VectorXd>& residual,
+                   Eigen::Ref<Eigen::VectorXd> gradient, Kinematics::Columns columns) {
+  gradient.setZero();
+  for (int b = 0; b < goals.num_blocks(); ++b) {
+    const GoalSet::Block& g = goals.block(b);
+    const int bone = kin.rig().effectors[g.effector];
+    const Eigen::Vector3d r = residual.segment<3>(3 * b);
+    // A column c of the block against r: (M a) . r = a . (M^T r); scale (a x (p - o)) . r =
+    // a . (scale (p - o) x r). One vector per block or per joint, then a dot per angle.
+    Eigen::Vector3d pulled = Eigen::Vector3d::Zero();
+    if (g.orientation) pulled = orientation_map(kin, g, bone).transpose() * r;
+    const Eigen::Vector3d p = kin.tip(bone);
+    for (int j : kin.effector_chain(g.effector)) {
+      const int filled = kin.columns_of(j, columns);
+      if (!g.orientation) pulled = g.scale * kRadPerDeg * (p - kin.joint_origin(j)).cross(r);
+      for (int a = 0; a < 3; ++a)
+        if (filled & (1 << a)) gradient[3 * j + a] += kin.joint_axis(j, a).dot(pulled);
+    }
+    if (!g.orientation && kin.floats()) gradient.segment<3>(kin.root_translation()) += g.scale * r;
+  }
 }
 
 double largest_tip_distance(const GoalSet& goals, const Eigen::Ref<const Eigen::VectorXd>& residual) {

@@ -33,6 +33,12 @@ double goal_objective(Kinematics& kin, const GoalSet& goals, const Eigen::Ref<co
 void goal_jacobian(const Kinematics& kin, const GoalSet& goals, Eigen::Ref<Eigen::MatrixXd> jac,
                    Kinematics::Columns columns = Kinematics::Columns::all);
 
+// After kin.forward(): the gradient J^T r of E (#angles, rig units^2 per degree) over the hard
+// rows of `goals` (soft rows off: GoalSet::soft_on() false; not for plain goals) at `residual`,
+// without forming J: a dot per angle and block. Columns as for goal_jacobian. No allocation.
+void goal_gradient(const Kinematics& kin, const GoalSet& goals, const Eigen::Ref<const Eigen::VectorXd>& residual,
+                   Eigen::Ref<Eigen::VectorXd> gradient, Kinematics::Columns columns = Kinematics::Columns::all);
+
 // The largest distance of an effector's tip from its position target (rig units, unweighted);
 // 0 without position goals.
 double largest_tip_distance(const GoalSet& goals, const Eigen::Ref<const Eigen::VectorXd>& residual);

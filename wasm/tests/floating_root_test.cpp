@@ -17,22 +17,6 @@
 namespace ik {
 namespace {
 
-// A trunk with two two-bone arms (limits +-120 degrees), effectors at both hands, and a floating
-// root within [-2, 2] x [-1, 0.5] x [-2, 2] when `floating`.
-Rig two_arms(bool floating) {
-  Rig rig;
-  const int trunk = test::add_bone(rig, -1, Eigen::Vector3d(0, 0, 0), 1, 120, "trunk");
-  const int upper_l = test::add_bone(rig, trunk, Eigen::Vector3d(1, 0.2, 0), 1, 120, "upper.L");
-  const int hand_l = test::add_bone(rig, upper_l, Eigen::Vector3d(2, 0.2, 0), 1, 120, "hand.L");
-  const int upper_r = test::add_bone(rig, trunk, Eigen::Vector3d(1, -0.2, 0), 1, 120, "upper.R");
-  const int hand_r = test::add_bone(rig, upper_r, Eigen::Vector3d(2, -0.2, 0), 1, 120, "hand.R");
-  rig.effectors = {hand_l, hand_r};
-  rig.floating_root.on = floating;
-  rig.floating_root.min = Eigen::Vector3d(-2, -1, -2);
-  rig.floating_root.max = Eigen::Vector3d(2, 0.5, 2);
-  return rig;
-}
-
 // A pose of `kin` with random angles within +-40 degrees and, when it floats, translation t.
 Eigen::VectorXd pose(const Kinematics& kin, std::mt19937_64& rng, const Eigen::Vector3d& t) {
   std::uniform_real_distribution<double> u(-40, 40);
@@ -43,7 +27,7 @@ Eigen::VectorXd pose(const Kinematics& kin, std::mt19937_64& rng, const Eigen::V
 }
 
 TEST(FloatingRoot, OffChangesNothing) {
-  Kinematics fixed(two_arms(false)), plain(two_arms(false));
+  Kinematics fixed(test::two_arms(false)), plain(test::two_arms(false));
   EXPECT_EQ(fixed.num_angles(), 15);
   EXPECT_EQ(fixed.root_translation(), -1);
   EXPECT_EQ(fixed.lower().size(), 15);
@@ -57,7 +41,7 @@ TEST(FloatingRoot, OffChangesNothing) {
 }
 
 TEST(FloatingRoot, MovesEveryTipByItsTranslation) {
-  Kinematics fixed(two_arms(false)), floating(two_arms(true));
+  Kinematics fixed(test::two_arms(false)), floating(test::two_arms(true));
   ASSERT_EQ(floating.num_angles(), 18);
   ASSERT_EQ(floating.root_translation(), 15);
   EXPECT_TRUE((floating.lower().tail<3>() == Eigen::Vector3d(-2, -1, -2)));
@@ -74,7 +58,7 @@ TEST(FloatingRoot, MovesEveryTipByItsTranslation) {
 }
 
 TEST(FloatingRoot, JacobianMatchesCentralDifferencesForEveryKindOfRow) {
-  Kinematics kin(two_arms(true));
+  Kinematics kin(test::two_arms(true));
   std::mt19937_64 rng(11);
   for (int trial = 0; trial < 5; ++trial) {
     const Eigen::VectorXd a = pose(kin, rng, Eigen::Vector3d(0.3 * trial, -0.2, 0.1));
@@ -105,7 +89,7 @@ TEST(FloatingRoot, JacobianMatchesCentralDifferencesForEveryKindOfRow) {
 
 TEST(FloatingRoot, EveryMethodReachesPastTheChainByMovingTheRootWithinItsBounds) {
   for (const std::string& method : solver_names()) {
-    Kinematics kin(two_arms(true));
+    Kinematics kin(test::two_arms(true));
     const Eigen::VectorXd start = Eigen::VectorXd::Zero(kin.num_angles());
     Eigen::VectorXd tips(6);
     kin.tips(start, tips);
@@ -136,7 +120,7 @@ TEST(FloatingRoot, EveryMethodReachesPastTheChainByMovingTheRootWithinItsBounds)
 // degree: nearly free) and mostly the joints at 0.01, both on target. Without a
 // floating root the option changes nothing, bit for bit.
 TEST(FloatingRoot, RootUnitWeighsTheRootsMoveAgainstTheJoints) {
-  Kinematics kin(two_arms(true));
+  Kinematics kin(test::two_arms(true));
   std::mt19937_64 rng(7);
   const Eigen::VectorXd start = pose(kin, rng, Eigen::Vector3d::Zero());
   Eigen::VectorXd tips(6);
@@ -162,7 +146,7 @@ TEST(FloatingRoot, RootUnitWeighsTheRootsMoveAgainstTheJoints) {
   EXPECT_LT(held_move, 0.5 * free_move);  // measured 0.012, the joints up to 1.2 degrees
   EXPECT_GT(joints_held, 100 * joints_free);
 
-  Kinematics fixed(two_arms(false));
+  Kinematics fixed(test::two_arms(false));
   const Eigen::VectorXd a = start.head(15);
   Eigen::VectorXd fixed_target(6);
   fixed.tips(a, fixed_target);
@@ -176,7 +160,7 @@ TEST(FloatingRoot, RootUnitWeighsTheRootsMoveAgainstTheJoints) {
 }
 
 TEST(FloatingRoot, RefusesBadBoundsByName) {
-  Rig rig = two_arms(true);
+  Rig rig = test::two_arms(true);
   rig.floating_root.min.y() = 1;  // above its max, 0.5
   EXPECT_THROW(
       {
@@ -188,7 +172,7 @@ TEST(FloatingRoot, RefusesBadBoundsByName) {
         }
       },
       RigError);
-  rig = two_arms(true);
+  rig = test::two_arms(true);
   rig.floating_root.max.z() = kUnbounded;
   EXPECT_THROW(Kinematics kin(rig), RigError);
   rig.floating_root.on = false;  // off: its bounds are not read

@@ -55,6 +55,22 @@ inline Rig two_bones() {
   return rig;
 }
 
+// A trunk with two two-bone arms (limits +-120 degrees), effectors at both hands, and a floating
+// root within [-2, 2] x [-1, 0.5] x [-2, 2] when `floating`.
+inline Rig two_arms(bool floating) {
+  Rig rig;
+  const int trunk = test::add_bone(rig, -1, Eigen::Vector3d(0, 0, 0), 1, 120, "trunk");
+  const int upper_l = test::add_bone(rig, trunk, Eigen::Vector3d(1, 0.2, 0), 1, 120, "upper.L");
+  const int hand_l = test::add_bone(rig, upper_l, Eigen::Vector3d(2, 0.2, 0), 1, 120, "hand.L");
+  const int upper_r = test::add_bone(rig, trunk, Eigen::Vector3d(1, -0.2, 0), 1, 120, "upper.R");
+  const int hand_r = test::add_bone(rig, upper_r, Eigen::Vector3d(2, -0.2, 0), 1, 120, "hand.R");
+  rig.effectors = {hand_l, hand_r};
+  rig.floating_root.on = floating;
+  rig.floating_root.min = Eigen::Vector3d(-2, -1, -2);
+  rig.floating_root.max = Eigen::Vector3d(2, 0.5, 2);
+  return rig;
+}
+
 // A straight chain of `bones` bones of length 1 along +x, each limited to +-90 degrees per
 // angle, with the given end effectors (bone indices).
 inline Rig straight_chain(int bones, std::vector<int> effectors) {

@@ -295,7 +295,7 @@ bool Solver::advance(Clock::time_point begin) {
       case Progress::moved:
         ++summary_.iterations;
         if (goals_.soft_on()) previous_E = before;
-        if (!finite(E_) || !update_derivatives(true)) {
+        if (!finite(E_) || !(ends_on_target() ? update_gradient() : update_derivatives(true))) {
           reason = StopReason::numerical_failure;
           summary_.message = "E or its gradient became non-finite";
           break;
@@ -392,6 +392,19 @@ bool Solver::update_derivatives(bool posed) {
     if (!priority_.prepare(kin_, J_, pattern_)) return false;
     gradient_norm_ = priority_.reduced_gradient_norm(kin_, J_, pattern_, a_, r_);
   }
+  return finite(gradient_norm_);
+}
+
+bool Solver::ends_on_target() const {
+  return !opt_.paper_mode && !goals_.plain() && !goals_.soft_on() && !priority_.active() && !together_ &&
+         summary_.iterations >= opt_.min_iterations && on_target();
+}
+
+bool Solver::update_gradient() {
+  goal_gradient(kin_, goals_, r_, g_, Kinematics::Columns::movable);
+  const FreeAngles found = find_free_angles(a_, kin_.lower(), kin_.upper(), g_, free_, free_mask_);
+  num_free_ = found.count;
+  gradient_norm_ = found.gradient_norm;
   return finite(gradient_norm_);
 }
 

@@ -177,6 +177,14 @@ class Solver {
   // J_, g_, the free set and the gradient norm at a_, given r_. `posed`: kin_ is posed at a_.
   // Returns false if the gradient is not finite.
   bool update_derivatives(bool posed);
+  // After an accepted step: does it end the run on target whatever the gradient (no soft rows,
+  // nothing given up, the iterations asked for taken; not plain goals, paper mode or a run of
+  // the goals together)? Then only the gradient there is needed, for its norm.
+  bool ends_on_target() const;
+  // g_, the free set and the gradient norm at a_ (kin_ posed there), as update_derivatives()
+  // but without J_ (goal_gradient: a tracked frame's last Jacobian was never used). Returns
+  // false if the gradient is not finite.
+  bool update_gradient();
   // Marks a numerical failure with `message` (a string literal); returns Progress::failed.
   Progress fail(const char* message);
   // Is the solve over its time budget right now?
