@@ -117,6 +117,12 @@ describe('what a student sees', () => {
     const view = (await page.locator('#viewport').boundingBox())!,
       box = (await page.locator('#compare').boundingBox())!;
     expect(overlaps(view, box)).toBe(false);
+    // The plot shows each method's E per iteration, not a dot: drawn with every history in it.
+    await page.waitForFunction(() => {
+      const plot = document.querySelector<HTMLElement>('#compare .plot');
+      return plot?.dataset.state === 'drawn' && plot.dataset.empty === 'false';
+    });
+    expect(await page.locator('#compare .plot-note').isHidden()).toBe(true);
     mkdirSync(resultsDir, { recursive: true });
     await page.screenshot({ path: join(resultsDir, 'compare-after-drag.png') });
     expect(errors).toEqual([]);
