@@ -135,6 +135,34 @@ void GoalSet::moving_bones(const Kinematics& kin, int k, std::vector<int>& bones
 
 std::string GoalSet::set(const Kinematics& kin, const Goals& goals) {
   const int m = kin.num_effectors();
+  clear(kin);
+  // target_ keeps its size (read only when plain_): a second start allocates nothing.
+  if (static_cast<int>(goals.effectors.size()) != m)
+    return "goals has " + std::to_string(goals.effectors.size()) + " entries, expected " + std::to_string(m) +
+           " (one per end effector)";
+  if (!(goals.length_scale >= 0 && goals.length_scale <= kMaxCoordinate))
+    return "the goals' length scale must be a number in 0..1e9 (rig units per radian; 0: the rig's reach)";
+  length_ = goals.length_scale > 0 ? goals.length_scale : rig_reach(kin);
+  std::string problem = effector_goal_problem(goals);
+  if (!problem.empty()) return problem;
+  add_effector_blocks(kin, goals);
+  if (blocks_.empty()) return "no goal: every end effector's goals are off or of weight 0";
+  int yielding = 0;
+  for (const Block& b : blocks_) yielding += b.yields;
+  has_yielding_ = yielding > 0 && yielding < num_blocks();
+  problem = add_poles(kin, goals);
+  if (!problem.empty()) return problem;
+  problem = set_stiffness(kin, goals);
+  if (!problem.empty()) return problem;
+  plain_ = plain_ && !has_orientation_;
+  if (plain_) {
+    target_.resize(3 * m);
+    for (int e = 0; e < m; ++e) target_.segment<3>(3 * e) = goals.effectors[e].position_target;
+  }
+  return {};
+}
+
+void GoalSet::clear(const Kinematics& kin) {
   plain_ = true;
   has_orientation_ = false;
   has_yielding_ = false;
@@ -146,16 +174,11 @@ std::string GoalSet::set(const Kinematics& kin, const Goals& goals) {
   rest_bones_.clear();
   rest_scale_.clear();
   on_chain_.assign(kin.num_bones(), 0);
-  position_block_.assign(m, -1);
-  // target_ keeps its size (read only when plain_): a second start allocates nothing.
-  if (static_cast<int>(goals.effectors.size()) != m)
-    return "goals has " + std::to_string(goals.effectors.size()) + " entries, expected " + std::to_string(m) +
-           " (one per end effector)";
-  if (!(goals.length_scale >= 0 && goals.length_scale <= kMaxCoordinate))
-    return "the goals' length scale must be a number in 0..1e9 (rig units per radian; 0: the rig's reach)";
-  const double length = goals.length_scale > 0 ? goals.length_scale : rig_reach(kin);
-  length_ = length;
-  for (int e = 0; e < m; ++e) {
+  position_block_.assign(kin.num_effectors(), -1);
+}
+
+std::string GoalSet::effector_goal_problem(const Goals& goals) const {
+  for (size_t e = 0; e < goals.effectors.size(); ++e) {
     const EffectorGoal& g = goals.effectors[e];
     // The message's subject, built only when there is a problem (a start allocates nothing).
     const auto which = [e](const char* what) {
@@ -169,10 +192,14 @@ std::string GoalSet::set(const Kinematics& kin, const Goals& goals) {
       return which("orientation weight") + " must be a finite number >= 0";
     if (g.orientation && !is_rotation(g.orientation_target)) return which("orientation target") + " is not a rotation";
   }
+  return {};
+}
+
+void GoalSet::add_effector_blocks(const Kinematics& kin, const Goals& goals) {
   // Relative weights: the largest becomes 1, so that neither huge nor tiny weights (all alike)
   // move the E test's scale or the steps' conditioning.
   const double largest = largest_goal_weight(goals);
-  for (int e = 0; e < m && largest > 0; ++e) {
+  for (int e = 0; e < static_cast<int>(goals.effectors.size()) && largest > 0; ++e) {
     const EffectorGoal& g = goals.effectors[e];
     const double position_weight = g.position_weight / largest, orientation_weight = g.orientation_weight / largest;
     if (g.position && position_weight > 0) {
@@ -187,7 +214,7 @@ std::string GoalSet::set(const Kinematics& kin, const Goals& goals) {
       Block b;
       b.effector = e;
       b.orientation = true;
-      b.scale = orientation_weight * length;
+      b.scale = orientation_weight * length_;
       b.rotation = g.orientation_target;
       b.yields = g.yields;
       add(b);
@@ -195,10 +222,9 @@ std::string GoalSet::set(const Kinematics& kin, const Goals& goals) {
     plain_ = plain_ && g.position && position_weight == 1 && !g.yields;
     if (!blocks_.empty() && blocks_.back().effector == e) mark_chain(kin, kin.rig().effectors[e]);
   }
-  if (blocks_.empty()) return "no goal: every end effector's goals are off or of weight 0";
-  int yielding = 0;
-  for (const Block& b : blocks_) yielding += b.yields;
-  has_yielding_ = yielding > 0 && yielding < num_blocks();
+}
+
+std::string GoalSet::add_poles(const Kinematics& kin, const Goals& goals) {
   const int bones = kin.num_bones();
   if (goals.poles.size() > static_cast<size_t>(kMaxPoles))
     return "goals has " + std::to_string(goals.poles.size()) + " poles, more than " + std::to_string(kMaxPoles) +
@@ -219,27 +245,27 @@ std::string GoalSet::set(const Kinematics& kin, const Goals& goals) {
     pole.bone = p.bone;
     pole.parent = parent;
     pole.point = p.point;
-    pole.scale = p.weight * length;
+    pole.scale = p.weight * length_;
     // |M - S| and |T - M| at rest: the rest heads' distance and the bone's length.
     const double upper =
         (kin.rig().bones[p.bone].rest.block<3, 1>(0, 3) - kin.rig().bones[parent].rest.block<3, 1>(0, 3)).norm();
     const double shorter = std::min(upper, kin.rig().bones[p.bone].length);
-    pole.bend_floor = kBendFloorShare * (shorter > 0 ? shorter : length);
+    pole.bend_floor = kBendFloorShare * (shorter > 0 ? shorter : length_);
     poles_.push_back(pole);
     layout_.push_back(pole_code(p.bone));
     mark_chain(kin, p.bone);
   }
+  return {};
+}
+
+std::string GoalSet::set_stiffness(const Kinematics& kin, const Goals& goals) {
+  const int bones = kin.num_bones();
   if (!goals.stiffness.empty() && static_cast<int>(goals.stiffness.size()) != bones)
     return "goals has " + std::to_string(goals.stiffness.size()) + " stiffness values, expected " +
            std::to_string(bones) + " (one per bone) or none";
   for (int b = 0; b < static_cast<int>(goals.stiffness.size()); ++b)
     if (!valid_soft_weight(goals.stiffness[b])) return "the stiffness of " + bone_label(kin.rig(), b) + kSoftWeightRule;
   stiffness_ = goals.stiffness;
-  plain_ = plain_ && !has_orientation_;
-  if (plain_) {
-    target_.resize(3 * m);
-    for (int e = 0; e < m; ++e) target_.segment<3>(3 * e) = goals.effectors[e].position_target;
-  }
   return {};
 }
 

@@ -147,6 +147,15 @@ class GoalSet {
   bool operator==(const GoalSet& other) const;
 
  private:
+  // The steps of set(). clear(): no goal, sized for `kin`. effector_goal_problem(): what is wrong
+  // with an effector's goal, or "". add_effector_blocks(): the blocks of the goals on, weights
+  // relative to the largest (length_ set before). add_poles(), set_stiffness(): check and take
+  // them, or say what is wrong.
+  void clear(const Kinematics& kin);
+  std::string effector_goal_problem(const Goals& goals) const;
+  void add_effector_blocks(const Kinematics& kin, const Goals& goals);
+  std::string add_poles(const Kinematics& kin, const Goals& goals);
+  std::string set_stiffness(const Kinematics& kin, const Goals& goals);
   void add(const Block& block);
   void mark_chain(const Kinematics& kin, int bone);
   bool plain_ = true;

@@ -192,6 +192,112 @@ const KdlSummary& KdlSolver::solve(const Eigen::VectorXd& start, const Eigen::Ve
   return solve(start, targets, none, on_iterate);
 }
 
+// One solve call: what it runs with, the best point met so far, and its runs (one per start
+// point), each ending with a stop reason.
+struct KdlSolver::Call {
+  State& s;
+  const SolverOptions& o;
+  const Eigen::VectorXd& targets;  // #effectors x 3, rig units
+  const std::function<void(const Eigen::VectorXd&)>& on_iterate;
+  KdlSummary& out;
+  const Clock::time_point t0;
+  const bool pose;  // with orientation goals
+  double best_E = std::numeric_limits<double>::infinity();
+  bool best_on_target = false;
+
+  // The time budget (options.time_budget_s, seconds from t0) has run out.
+  bool out_of_time() const {
+    const bool timed = o.time_budget_s > 0 && std::isfinite(o.time_budget_s);
+    return timed && std::chrono::duration<double>(Clock::now() - t0).count() >= o.time_budget_s;
+  }
+
+  // The point whose residual s.r holds, of error `E`, is on target. With pose goals: the position
+  // rows' E (or the tip test), and every frame within the tolerance.
+  bool on_target(double E) const {
+    if (pose) E = 0.5 * s.r.squaredNorm();
+    const bool position = o.tip_tolerance > 0 ? s.tip_distance() < o.tip_tolerance : E < o.error_tolerance;
+    return pose ? position && s.rotation_error_deg() < o.orientation_tolerance_deg : position;
+  }
+
+  // Keeps the point s.q of error `E` if it is the best: the lowest E; with pose goals an on-target
+  // point before any other (E mixes positions and orientations there, so a lower E need not be on
+  // target).
+  void consider(double E) {
+    const bool on = pose && on_target(E);
+    if ((on && !best_on_target) || (on == best_on_target && E < best_E)) {
+      best_E = E;
+      best_on_target = on;
+      joints_to_angles(s.rig, s.q, s.best);
+    }
+  }
+
+  // One run from s.angles (degrees): damped Newton-Raphson steps until on target, out of
+  // iterations or time, or stalled. Returns its stop reason.
+  std::string run() {
+    angles_to_joints(s.rig, s.angles, s.q);
+    s.set_damping(kInitialDamping * s.reach_);
+    double E = s.evaluate(s.q, targets);
+    s.r_q = s.r;
+    s.rot_q = s.rot;
+    ++out.function_evaluations;
+    consider(E);
+    while (true) {
+      if (on_target(E)) return "converged_E";
+      if (out.iterations >= o.max_iterations) return "max_iterations";
+      if (out_of_time()) return "timeout";
+      if (!step(E)) return "zero_step";
+      if (s.restarts.stalls(E, o.stall_iterations)) return "zero_step";  // no lower E for a while
+    }
+  }
+
+  // One iteration from s.q of error `E`: a step, tried again with more damping while it does not
+  // lower E. Returns false if no step lowered it (s.q and its residual kept); else moves to the
+  // new point and sets `E` to its error.
+  bool step(double& E) {
+    const double moved = s.step();
+    ++out.jacobian_evaluations;
+    if (moved < kZeroStepRad) return false;
+    double E_next = s.evaluate(s.q_next, targets);
+    ++out.function_evaluations;
+    for (int tries = 0; E_next >= E && tries < kMaxRejections; ++tries) {  // more damping, shorter step
+      s.set_damping(s.damping * kDampingFactor);
+      if (s.step() < kZeroStepRad) break;
+      ++out.jacobian_evaluations;
+      E_next = s.evaluate(s.q_next, targets);
+      ++out.function_evaluations;
+    }
+    if (E_next >= E) {
+      s.r = s.r_q;  // the residual of the point kept
+      s.rot = s.rot_q;
+      return false;
+    }
+    s.set_damping(std::max(s.damping / kDampingFactor, s.min_damping));
+    std::swap(s.q, s.q_next);
+    s.r_q = s.r;
+    s.rot_q = s.rot;
+    E = E_next;
+    ++out.iterations;
+    consider(E);
+    if (on_iterate) {
+      joints_to_angles(s.rig, s.q, s.angles);
+      on_iterate(s.angles);
+    }
+    return true;
+  }
+
+  // Fills `out` with the best point; `reason`: the last run's stop reason.
+  void describe(const std::string& reason) {
+    out.angles = s.best;
+    angles_to_joints(s.rig, s.best, s.q);
+    out.E = s.evaluate(s.q, targets);
+    out.tip_distance = s.tip_distance();
+    out.rotation_error_deg = s.rotation_error_deg();
+    out.gradient_norm = s.gradient_norm(s.q);
+    out.reached = on_target(out.E);
+    out.stop_reason = out.reached ? "converged_E" : reason == "converged_E" ? "zero_step" : reason;
+  }
+};
+
 const KdlSummary& KdlSolver::solve(const Eigen::VectorXd& start, const Eigen::VectorXd& targets,
                                    const std::vector<Eigen::Matrix3d>& orientations,
                                    const std::function<void(const Eigen::VectorXd&)>& on_iterate) {
@@ -210,103 +316,22 @@ const KdlSummary& KdlSolver::solve(const Eigen::VectorXd& start, const Eigen::Ve
     return out;
   }
   s.set_orientations(orientations);
-  const bool timed = o.time_budget_s > 0 && std::isfinite(o.time_budget_s);
-  auto out_of_time = [&] {
-    return timed && std::chrono::duration<double>(Clock::now() - t0).count() >= o.time_budget_s;
-  };
-  // With pose goals: the position rows' E (or the tip test), and every frame within the tolerance.
-  const bool pose = !orientations.empty();
-  auto on_target = [&](double E) {
-    if (pose) E = 0.5 * s.r.squaredNorm();
-    const bool position = o.tip_tolerance > 0 ? s.tip_distance() < o.tip_tolerance : E < o.error_tolerance;
-    return pose ? position && s.rotation_error_deg() < o.orientation_tolerance_deg : position;
-  };
-
+  Call call{s, o, targets, on_iterate, out, t0, !orientations.empty()};
   s.angles = start.cwiseMax(s.lower).cwiseMin(s.upper);
   s.restarts.begin_solve(s.rig.num_angles(), o.seed);
-  double best_E = std::numeric_limits<double>::infinity();
-  // Keeps the best point: the lowest E; with pose goals an on-target point before any other (E
-  // mixes positions and orientations there, so a lower E need not be on target).
-  bool best_on_target = false;
-  auto consider = [&](double E) {
-    const bool on = pose && on_target(E);
-    if ((on && !best_on_target) || (on == best_on_target && E < best_E)) {
-      best_E = E;
-      best_on_target = on;
-      joints_to_angles(s.rig, s.q, s.best);
+  const long restarts = o.paper_mode ? 0 : o.restarts;  // as the core: none in paper mode
+  while (true) {
+    const std::string reason = call.run();
+    const bool again = reason == "zero_step" && s.restarts.used() < restarts && !call.out_of_time() &&
+                       out.iterations < o.max_iterations;
+    if (!again) {
+      call.describe(reason);
+      return out;
     }
-  };
-  std::string reason;
-  while (true) {  // one run per start point
-    angles_to_joints(s.rig, s.angles, s.q);
-    s.set_damping(kInitialDamping * s.reach_);
-    double E = s.evaluate(s.q, targets);
-    s.r_q = s.r;
-    s.rot_q = s.rot;
-    ++out.function_evaluations;
-    consider(E);
-    std::string run_end;
-    while (run_end.empty()) {
-      if (on_target(E))
-        run_end = "converged_E";
-      else if (out.iterations >= o.max_iterations)
-        run_end = "max_iterations";
-      else if (out_of_time())
-        run_end = "timeout";
-      if (!run_end.empty()) break;
-      const double moved = s.step();
-      ++out.jacobian_evaluations;
-      if (moved < kZeroStepRad) {
-        run_end = "zero_step";
-        break;
-      }
-      double E_next = s.evaluate(s.q_next, targets);
-      ++out.function_evaluations;
-      for (int tries = 0; E_next >= E && tries < kMaxRejections; ++tries) {  // more damping, shorter step
-        s.set_damping(s.damping * kDampingFactor);
-        if (s.step() < kZeroStepRad) break;
-        ++out.jacobian_evaluations;
-        E_next = s.evaluate(s.q_next, targets);
-        ++out.function_evaluations;
-      }
-      if (E_next >= E) {
-        s.r = s.r_q;  // the residual of the point kept
-        s.rot = s.rot_q;
-        run_end = "zero_step";
-        break;
-      }
-      s.set_damping(std::max(s.damping / kDampingFactor, s.min_damping));
-      std::swap(s.q, s.q_next);
-      s.r_q = s.r;
-      s.rot_q = s.rot;
-      E = E_next;
-      ++out.iterations;
-      consider(E);
-      if (on_iterate) {
-        joints_to_angles(s.rig, s.q, s.angles);
-        on_iterate(s.angles);
-      }
-      if (s.restarts.stalls(E, o.stall_iterations)) run_end = "zero_step";  // no lower E for a while
-    }
-    reason = run_end;
-    const long restarts = o.paper_mode ? 0 : o.restarts;  // as the core: none in paper mode
-    const bool again =
-        run_end == "zero_step" && s.restarts.used() < restarts && !out_of_time() && out.iterations < o.max_iterations;
-    if (!again) break;
     s.restarts.next_start(s.lower, s.upper, s.angles);
     ++out.restarts;
     ++out.iterations;
   }
-  // Describe the best point.
-  out.angles = s.best;
-  angles_to_joints(s.rig, s.best, s.q);
-  out.E = s.evaluate(s.q, targets);
-  out.tip_distance = s.tip_distance();
-  out.rotation_error_deg = s.rotation_error_deg();
-  out.gradient_norm = s.gradient_norm(s.q);
-  out.reached = on_target(out.E);
-  out.stop_reason = out.reached ? "converged_E" : reason == "converged_E" ? "zero_step" : reason;
-  return out;
 }
 
 }  // namespace ik::kdl

@@ -59,6 +59,7 @@ class KdlSolver {
 
  private:
   struct State;
+  struct Call;
   std::unique_ptr<State> s_;
   SolverOptions options_;
   KdlSummary summary_;
