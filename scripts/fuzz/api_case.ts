@@ -15,6 +15,9 @@ import { randomRig } from './random_rig.js';
 /** The most bones a rig with MAX_EFFECTORS end effectors may have (the Jacobian cap). */
 const LARGEST_WITH_64_EFFECTORS = Math.floor(MAX_JACOBIAN_ENTRIES / (9 * MAX_EFFECTORS));
 
+/** The methods that hold an n x n matrix of the angles (bfgs's inverse Hessian, newton's Hessian): drawn on rigs of at most 1024 angles only. */
+const DENSE_METHODS: ReadonlySet<string> = new Set(['bfgs', 'newton']);
+
 /**
  * Runs one API case drawn from `r` on module `ik`. `note` gets each part of the description as
  * it is drawn (so a hang still says how far the case got); `budgets` gets the budgeted solves.
@@ -29,7 +32,8 @@ export function runApiCase(r: Rand, ik: IkCoreModule, note: (text: string) => vo
     [0.3, () => r.pick([MAX_BONES, LARGEST_WITH_64_EFFECTORS])],
   ])();
   const spec = randomRig(r, bones, bones > 300 ? Math.min(maxEffectors(bones), bones >= 1800 ? 64 : 20) : 4);
-  const method = 3 * bones <= 1024 ? r.pick(['lm', 'gn', 'bfgs', 'newton', 'gd']) : r.pick(['lm', 'gn', 'gd']);
+  const methods = IkSolver.methods(ik);
+  const method = r.pick(3 * bones <= 1024 ? methods : methods.filter((m) => !DENSE_METHODS.has(m)));
   const options = saneOptions(r);
   if (bones > 300) options.timeBudgetSeconds = r.pick([1e-6, 1e-3, 0.01, 0.03]);
   note(`${bones}-bone rig, ${spec.effectors.length} effectors, ${method} ${JSON.stringify(options)}`);

@@ -272,7 +272,7 @@ const setEffectors: Op = (r, s) => {
 };
 
 const newSolver: Op = (r, s) => {
-  const m = methodArg(r),
+  const m = methodArg(r, IkSolver.methods(s.ik)),
     o = optionsArg(r, s);
   return {
     text: `new IkSolver(rig, ${m.text}, ${o.text})`,
@@ -516,7 +516,7 @@ const disposeSolver: Op = (_, s) => ({
 });
 
 const describe: Op = (r, s) => {
-  const m = methodArg(r);
+  const m = methodArg(r, IkSolver.methods(s.ik));
   return {
     text: `IkSolver.describe(${m.text})`,
     run: () =>

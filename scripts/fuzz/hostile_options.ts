@@ -259,10 +259,10 @@ export function optionsArg(r: Rand, s: ApiState): OptionsArg {
   ])();
 }
 
-/** A solver method name: a registered one, or not a method at all. */
-export function methodArg(r: Rand): { value: unknown; text: string; accept: Acceptance } {
+/** A solver method name: one of `methods` (the core's registry), or not a method at all. */
+export function methodArg(r: Rand, methods: readonly string[]): { value: unknown; text: string; accept: Acceptance } {
   if (r.chance(0.7)) {
-    const m = r.pick(['lm', 'gn', 'bfgs', 'newton', 'gd']);
+    const m = r.pick(methods);
     return { value: m, text: m, accept: 'either' };
   }
   const v = r.pick<unknown>([
