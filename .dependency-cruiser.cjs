@@ -43,6 +43,13 @@ module.exports = {
       to: { path: '^web/src/(page|widget|lib)/' },
     },
     {
+      name: 'tools-import-by-name',
+      comment: 'bench-node and scripts import the shared library by name (#ik/, #rig/, ...: package.json imports), not by a path into web/',
+      severity: 'error',
+      from: { path: '^(bench-node|scripts)/' },
+      to: { path: '^web/src/', dependencyTypesNot: ['aliased-subpath-import'] },
+    },
+    {
       name: 'product-not-tests',
       comment: 'product code and commands never import test code',
       severity: 'error',

@@ -3,8 +3,8 @@
 import { existsSync, readdirSync, readFileSync } from 'node:fs';
 import { join } from 'node:path';
 
-import { writeA7Rig } from '../../web/src/rig/a7/a7_writer.js';
-import { MAX_BONES } from '../../web/src/rig/rig_limits.js';
+import { writeA7Rig } from '#rig/a7/a7_writer.js';
+import { MAX_BONES } from '#rig/rig_limits.js';
 import { a7Dir } from '../a7_folder.js';
 import { mutateA7, type A7Doc } from './a7_mutators.js';
 import { mutateBytes } from './byte_mutators.js';

@@ -1,8 +1,8 @@
 // An API case: a random rig and solver, then one to six calls with careless or hostile arguments.
-import type { IkCoreModule } from '../../web/src/ik/module.js';
-import { IkRig } from '../../web/src/ik/rig.js';
-import { IkSolver, type SolverOptions } from '../../web/src/ik/solver.js';
-import { MAX_BONES, MAX_EFFECTORS, MAX_JACOBIAN_ENTRIES, maxEffectors } from '../../web/src/rig/rig_limits.js';
+import type { IkCoreModule } from '#ik/module.js';
+import { IkRig } from '#ik/rig.js';
+import { IkSolver, type SolverOptions } from '#ik/solver.js';
+import { MAX_BONES, MAX_EFFECTORS, MAX_JACOBIAN_ENTRIES, maxEffectors } from '#rig/rig_limits.js';
 import { API_OPS } from './api_ops.js';
 import type { ApiState } from './api_state.js';
 import type { BudgetSample } from './case_id.js';

@@ -1,7 +1,7 @@
 // The calls an API case strings together, each with careless or hostile arguments, and what a
 // correct result of each must satisfy.
-import type { Numbers } from '../../web/src/ik/rig.js';
-import { IkSolver, type SolverOptions, type SolverResult } from '../../web/src/ik/solver.js';
+import type { Numbers } from '#ik/rig.js';
+import { IkSolver, type SolverOptions, type SolverResult } from '#ik/solver.js';
 import { changeEffectors, type ApiState } from './api_state.js';
 import { attempt, both } from './attempt.js';
 import { forwardKinematics } from './forward_kinematics.js';

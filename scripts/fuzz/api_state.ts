@@ -1,8 +1,8 @@
 // What an API case works on: one rig, its current solver, and what the fuzzer knows about them.
-import type { IkCoreModule } from '../../web/src/ik/module.js';
-import type { IkRig } from '../../web/src/ik/rig.js';
-import type { RigSpec } from '../../web/src/ik/rig_arrays.js';
-import type { IkSolver } from '../../web/src/ik/solver.js';
+import type { IkCoreModule } from '#ik/module.js';
+import type { IkRig } from '#ik/rig.js';
+import type { RigSpec } from '#ik/rig_arrays.js';
+import type { IkSolver } from '#ik/solver.js';
 import type { BudgetSample } from './case_id.js';
 
 export interface ApiState {

@@ -1,8 +1,8 @@
 // The canary: after every case, a small fresh rig must still solve cleanly, or the case left the
 // module unusable (a crash even if the case itself looked fine).
-import type { IkCoreModule } from '../../web/src/ik/module.js';
-import { IkRig } from '../../web/src/ik/rig.js';
-import { IkSolver } from '../../web/src/ik/solver.js';
+import type { IkCoreModule } from '#ik/module.js';
+import { IkRig } from '#ik/rig.js';
+import { IkSolver } from '#ik/solver.js';
 import { straightLimb } from '../rig_files/rig_builder.js';
 import { solveProblem } from './result_checks.js';
 

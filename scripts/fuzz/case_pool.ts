@@ -5,7 +5,7 @@
 import { readFileSync } from 'node:fs';
 import { Worker } from 'node:worker_threads';
 
-import { wasmPath } from '../../web/src/ik/node.js';
+import { wasmPath } from '#ik/node.js';
 import type { CaseId, CaseReport } from './case_id.js';
 import { modelFolder, type Fixture } from './fixture.js';
 import { releaseFifos } from './folder.js';

@@ -1,6 +1,6 @@
 // Runs one case in a worker: draws it from its seed, runs it, then runs the canary. A crash, or
 // a canary that fails, makes the worker load a fresh instance of the core for the next case.
-import type { IkCoreModule } from '../../web/src/ik/module.js';
+import type { IkCoreModule } from '#ik/module.js';
 import { runApiCase } from './api_case.js';
 import { a7Case, type A7Seed } from './a7_case.js';
 import { canaryProblem } from './canary.js';

@@ -1,9 +1,9 @@
 // The deep-chain figure: a 10,000-bone chain goes from file bytes to a rig in WebAssembly (the
 // loader's checks, the tree walk, the core's build) in well under a second, because each step is
 // linear. Printed by `npm run fuzz`; the issue promised under 1 s.
-import type { IkCoreModule } from '../../web/src/ik/module.js';
-import { IkRig } from '../../web/src/ik/rig.js';
-import { loadRig } from '../../web/src/rig/load_rig.js';
+import type { IkCoreModule } from '#ik/module.js';
+import { IkRig } from '#ik/rig.js';
+import { loadRig } from '#rig/load_rig.js';
 import { chainParents, treeA7, treeGlb } from '../rig_files/tree_rigs.js';
 import { BROKEN } from './report.js';
 

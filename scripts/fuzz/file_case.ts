@@ -4,9 +4,9 @@
 // the folder.
 import { join } from 'node:path';
 
-import type { IkCoreModule } from '../../web/src/ik/module.js';
-import { loadRigFromPath } from '../../web/src/rig/load_rig_node.js';
-import type { LoadedRig } from '../../web/src/rig/load_rig.js';
+import type { IkCoreModule } from '#ik/module.js';
+import { loadRigFromPath } from '#rig/load_rig_node.js';
+import type { LoadedRig } from '#rig/load_rig.js';
 import type { BudgetSample } from './case_id.js';
 import { classifyThrown } from './classify_error.js';
 import { prepareFolder, type Entry } from './folder.js';

@@ -4,7 +4,7 @@
 // which is PROTOCOL's tip_i = T_i * rest_i * (length, 0, 0). rest_i^-1 is the inverse of a rigid
 // transform (transposed rotation), as the core takes it: rest matrices need only be rigid within
 // the core's tolerance, and this is the reading the core promises for them.
-import type { RigSpec } from '../../web/src/ik/rig_arrays.js';
+import type { RigSpec } from '#ik/rig_arrays.js';
 
 const RAD_PER_DEG = Math.PI / 180;
 

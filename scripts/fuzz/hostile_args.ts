@@ -1,7 +1,7 @@
 // Array arguments for the rig and solver calls: the right numbers, or careless and hostile
 // versions of them (wrong lengths, NaN, array-likes that lie, typed arrays of other kinds,
 // detached buffers, and elements whose valueOf disposes the rig or re-enters the API).
-import { IkRig } from '../../web/src/ik/rig.js';
+import { IkRig } from '#ik/rig.js';
 import { sketchRig } from '../rig_files/rig_builder.js';
 import { FUZZ_THROW } from './classify_error.js';
 import { changeEffectors, type ApiState } from './api_state.js';

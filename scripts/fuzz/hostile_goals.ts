@@ -2,7 +2,7 @@
 // (with a rest pull of the same size), thousands of poles, thousands of goal entries, positions at
 // 1e150. Finite values within the documented ranges must be accepted or refused with a clear
 // error; a solve that runs must stay clean and within its time budget.
-import type { Goals } from '../../web/src/ik/goals.js';
+import type { Goals } from '#ik/goals.js';
 import type { ApiState } from './api_state.js';
 import type { Acceptance } from './hostile_args.js';
 import type { Rand } from './random.js';

@@ -1,6 +1,6 @@
 // The outcome of a solve that returned: clean, silently wrong, or a reported numerical failure.
-import type { RigSpec } from '../../web/src/ik/rig_arrays.js';
-import type { SolverResult } from '../../web/src/ik/solver.js';
+import type { RigSpec } from '#ik/rig_arrays.js';
+import type { SolverResult } from '#ik/solver.js';
 import { OK, type Outcome } from './outcome.js';
 import { solveProblem } from './result_checks.js';
 

@@ -2,8 +2,8 @@
 // two bones share, a name that looks like an index key "#3"). A pose written for such a rig must
 // read back the same, bit for bit; a file keying a bone by a name that cannot tell it apart must
 // be refused with a clear error, never read into some other bone.
-import type { RigSpec } from '../../web/src/ik/rig_arrays.js';
-import { poseFromJson, poseToJson, POSE_FORMAT, POSE_VERSION } from '../../web/src/rig/pose_json.js';
+import type { RigSpec } from '#ik/rig_arrays.js';
+import { poseFromJson, poseToJson, POSE_FORMAT, POSE_VERSION } from '#rig/pose_json.js';
 import { attempt } from './attempt.js';
 import type { Acceptance } from './hostile_args.js';
 import { worse, type Outcome } from './outcome.js';

@@ -1,6 +1,6 @@
 // Valid rigs of every shape the core accepts: chains and trees, random rigid rest frames,
 // bounded, one-sided, unbounded and fixed limits, several end effectors.
-import type { RigSpec } from '../../web/src/ik/rig_arrays.js';
+import type { RigSpec } from '#ik/rig_arrays.js';
 import type { Rand } from './random.js';
 
 /** A random rigid 4x4 (row-major): a uniform random rotation and a translation within `reach`. */

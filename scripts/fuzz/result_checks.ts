@@ -1,7 +1,7 @@
 // Checks of what the API returned: each returns undefined for a clean value or one line saying
 // what is wrong (a silent wrong result).
-import type { RigSpec } from '../../web/src/ik/rig_arrays.js';
-import type { SolverResult } from '../../web/src/ik/solver.js';
+import type { RigSpec } from '#ik/rig_arrays.js';
+import type { SolverResult } from '#ik/solver.js';
 import { effectorTips, forwardKinematics } from './forward_kinematics.js';
 
 /** Relative tolerance of a tip against the reference forward kinematics. */

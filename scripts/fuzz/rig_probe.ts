@@ -1,9 +1,9 @@
 // What a loaded rig must do: build in the core (else the loader let a bad rig through, and the
 // core's error does not name the file), give the reference tips, and solve cleanly.
-import type { IkCoreModule } from '../../web/src/ik/module.js';
-import { IkRig } from '../../web/src/ik/rig.js';
-import type { RigSpec } from '../../web/src/ik/rig_arrays.js';
-import { IkSolver } from '../../web/src/ik/solver.js';
+import type { IkCoreModule } from '#ik/module.js';
+import { IkRig } from '#ik/rig.js';
+import type { RigSpec } from '#ik/rig_arrays.js';
+import { IkSolver } from '#ik/solver.js';
 import { attempt } from './attempt.js';
 import type { BudgetSample } from './case_id.js';
 import { classifyThrown } from './classify_error.js';

@@ -2,9 +2,9 @@
 // that throws out of WebAssembly without restoring its stack pointer leaks stack on every throw
 // and traps after ~1e5. The refusal used is one only the core can make (an option out of range:
 // the TypeScript layer checks types, the core ranges), so each one goes into the module.
-import type { IkCoreModule } from '../../web/src/ik/module.js';
-import { IkRig } from '../../web/src/ik/rig.js';
-import { IkSolver } from '../../web/src/ik/solver.js';
+import type { IkCoreModule } from '#ik/module.js';
+import { IkRig } from '#ik/rig.js';
+import { IkSolver } from '#ik/solver.js';
 import { straightLimb } from '../rig_files/rig_builder.js';
 import { canaryProblem } from './canary.js';
 import { classifyThrown } from './classify_error.js';

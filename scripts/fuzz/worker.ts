@@ -3,7 +3,7 @@
 // describe a case that hangs).
 import { parentPort, workerData } from 'node:worker_threads';
 
-import { loadIk, type IkCoreModule } from '../../web/src/ik/module.js';
+import { loadIk, type IkCoreModule } from '#ik/module.js';
 import { readA7Seeds } from './a7_case.js';
 import { runCase, type CaseEnv } from './case_runner.js';
 import { modelFolder } from './fixture.js';

@@ -1,5 +1,5 @@
 // Taking a .glb apart and putting it back together, to make variants and broken files in tests.
-import { parseGltfContainer } from '../../web/src/rig/gltf/gltf_file.js';
+import { parseGltfContainer } from '#rig/gltf/gltf_file.js';
 
 export type Json = Record<string, unknown> & { nodes: Record<string, unknown>[]; skins: Record<string, unknown>[] };
 

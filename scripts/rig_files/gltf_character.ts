@@ -7,7 +7,7 @@ import { Document, WebIO, type Node } from '@gltf-transform/core';
 import { boneAxes, quaternionFromAxes } from '../models/model.js';
 import { block, frustum } from '../models/shapes.js';
 import { type Vec3, mirrorX } from '../models/vec.js';
-import { fromTRS, invertAffine, multiply } from '../../web/src/rig/mat4.js';
+import { fromTRS, invertAffine, multiply } from '#rig/mat4.js';
 
 interface TestJoint {
   name: string;

@@ -1,6 +1,6 @@
 // Test helper: small rigs written by hand. Every bone points along +x at rest (rest rotation the
 // identity) from its base `at` (world coordinates), so its tip at rest is at + (length, 0, 0).
-import type { RigSpec } from '../../web/src/ik/rig_arrays.js';
+import type { RigSpec } from '#ik/rig_arrays.js';
 
 export interface BoneSketch {
   parent: number;
