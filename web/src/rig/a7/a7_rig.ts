@@ -12,7 +12,7 @@ import type { RigSpec } from '../../ik/rig_arrays.js';
 import { jsonBudgetProblem } from '../json_budget.js';
 import { limitProblem } from '../limit_degrees.js';
 import { effectorCountProblem, MAX_BONES, MAX_COORDINATE } from '../rig_limits.js';
-import { RigFormatError } from '../rig_format_error.js';
+import { failIn } from '../rig_format_error.js';
 import { cycleText, findCycle } from '../tree.js';
 
 /** Largest deviation of rest_T's rotation block from orthonormal (Frobenius norm), as the core allows. */
@@ -21,29 +21,52 @@ const RIGID_TOLERANCE = 1e-6;
 /** Largest deviation of a 4x4 rest_T's bottom row from (0, 0, 0, 1), as the core allows. */
 const BOTTOM_ROW_TOLERANCE = 1e-9;
 
+/** What the A7 JSON holds at the top: the bones (unchecked) and `ik_constraints` (unchecked). */
+interface A7Record {
+  bones: unknown[];
+  ik_constraints?: unknown;
+}
+
 /**
  * Parses A7 JSON `text`; `file` names the source in error messages. Lengths and positions are
  * in rig units, limits in degrees. Throws RigFormatError naming the file and the field.
  */
 export function parseA7Rig(text: string, file: string): RigSpec {
-  const tooBig = jsonBudgetProblem(text);
-  if (tooBig) throw new RigFormatError(`${file}: ${tooBig}`);
-  let doc: unknown;
-  try {
-    doc = JSON.parse(text.charCodeAt(0) === 0xfeff ? text.slice(1) : text);
-  } catch (e) {
-    throw new RigFormatError(`${file}: bad JSON: ${(e as Error).message}`);
-  }
-  const fail = (what: string): never => {
-    throw new RigFormatError(`${file}: ${what}`);
-  };
-  if (typeof doc !== 'object' || doc === null || !Array.isArray((doc as { bones?: unknown }).bones))
-    fail('no "bones" array');
-  const record = doc as { bones: unknown[]; ik_constraints?: unknown };
+  const record = readRecord(parseJson(text, file), file);
   const n = record.bones.length;
-  if (n === 0) fail('"bones" is empty');
-  if (n > MAX_BONES) fail(`${n} bones; at most ${MAX_BONES}`);
-  const spec: RigSpec = {
+  const spec = emptySpec(n);
+  record.bones.forEach((raw, i) => readBone(raw, i, spec, file));
+  const cycle = findCycle(spec.parents);
+  if (cycle) failIn(file, `the bones' parent_id form a cycle: ${cycleText(cycle, (b) => `bones[${b}]`)}`);
+  spec.effectors = readEffectors(record.ik_constraints, n, file);
+  return spec;
+}
+
+/** The JSON value of `text` (a leading byte order mark skipped), once it is within the JSON budget. */
+function parseJson(text: string, file: string): unknown {
+  const tooBig = jsonBudgetProblem(text);
+  if (tooBig) failIn(file, tooBig);
+  try {
+    return JSON.parse(text.charCodeAt(0) === 0xfeff ? text.slice(1) : text);
+  } catch (e) {
+    return failIn(file, `bad JSON: ${(e as Error).message}`);
+  }
+}
+
+/** `doc` as an A7 record whose "bones" array holds 1 to MAX_BONES entries. */
+function readRecord(doc: unknown, file: string): A7Record {
+  if (typeof doc !== 'object' || doc === null || !Array.isArray((doc as { bones?: unknown }).bones))
+    failIn(file, 'no "bones" array');
+  const record = doc as A7Record;
+  const n = record.bones.length;
+  if (n === 0) failIn(file, '"bones" is empty');
+  if (n > MAX_BONES) failIn(file, `${n} bones; at most ${MAX_BONES}`);
+  return record;
+}
+
+/** A RigSpec for `n` bones with every array allocated and zero, no names and no end effectors yet. */
+function emptySpec(n: number): RigSpec {
+  return {
     names: [],
     parents: new Int32Array(n),
     rest: new Float64Array(16 * n),
@@ -52,109 +75,122 @@ export function parseA7Rig(text: string, file: string): RigSpec {
     upper: new Float64Array(3 * n),
     effectors: new Int32Array(0),
   };
-  const num = (v: unknown, where: string): number => {
-    if (typeof v !== 'number' || !Number.isFinite(v)) fail(`${where} is not a finite number`);
-    return v as number;
-  };
-  const coordinate = (v: unknown, where: string): number => {
-    const x = num(v, where);
-    if (Math.abs(x) > MAX_COORDINATE) fail(`${where} = ${x} lies beyond +-${MAX_COORDINATE} rig units`);
-    return x;
-  };
-  record.bones.forEach((raw, i) => {
-    const where = `bones[${i}]`;
-    if (typeof raw !== 'object' || raw === null || Array.isArray(raw)) fail(`${where} is not an object`);
-    const b = raw as Record<string, unknown>;
-    if (b.name !== undefined && typeof b.name !== 'string') fail(`${where}.name is not a string`);
-    spec.names.push(typeof b.name === 'string' ? b.name : '');
-    if (b.parent_id === undefined) fail(`${where}.parent_id is missing`);
-    const parent = num(b.parent_id, `${where}.parent_id`);
-    if (!Number.isInteger(parent) || parent < -1 || parent >= n)
-      fail(`${where}.parent_id ${parent} is not -1 or a bone index (0..${n - 1})`);
-    if (parent === i) fail(`${where}.parent_id is the bone itself`);
-    spec.parents[i] = parent;
-    const length = b.length === undefined ? 0 : coordinate(b.length, `${where}.length`);
-    if (length < 0) fail(`${where}.length ${length} is negative`);
-    spec.lengths[i] = length;
-    readRest(b.rest_T, spec.rest.subarray(16 * i, 16 * i + 16), `${where}.rest_T`);
-    readLimits(b, i, where);
+}
+
+/** `v` as a number; throws when it is not a finite number (`where` names the field). */
+function finiteNumber(v: unknown, where: string, file: string): number {
+  if (typeof v !== 'number' || !Number.isFinite(v)) failIn(file, `${where} is not a finite number`);
+  return v as number;
+}
+
+/** `v` as a length or position in rig units; throws when it is not finite or beyond +-MAX_COORDINATE. */
+function coordinate(v: unknown, where: string, file: string): number {
+  const x = finiteNumber(v, where, file);
+  if (Math.abs(x) > MAX_COORDINATE) failIn(file, `${where} = ${x} lies beyond +-${MAX_COORDINATE} rig units`);
+  return x;
+}
+
+/**
+ * Bone `i` of the file (`raw`, unchecked) into `spec`: its name, parent, length (rig units), rest
+ * matrix and limits (degrees). Checks the fields in that order.
+ */
+function readBone(raw: unknown, i: number, spec: RigSpec, file: string): void {
+  const where = `bones[${i}]`;
+  if (typeof raw !== 'object' || raw === null || Array.isArray(raw)) failIn(file, `${where} is not an object`);
+  const b = raw as Record<string, unknown>;
+  if (b.name !== undefined && typeof b.name !== 'string') failIn(file, `${where}.name is not a string`);
+  spec.names.push(typeof b.name === 'string' ? b.name : '');
+  spec.parents[i] = readParent(b.parent_id, i, spec.parents.length, where, file);
+  const length = b.length === undefined ? 0 : coordinate(b.length, `${where}.length`, file);
+  if (length < 0) failIn(file, `${where}.length ${length} is negative`);
+  spec.lengths[i] = length;
+  readRest(b.rest_T, spec.rest.subarray(16 * i, 16 * i + 16), `${where}.rest_T`, file);
+  readLimits(b, i, spec, where, file);
+}
+
+/** parent_id `v` of bone `i` of `n`: -1 or the index of another bone. */
+function readParent(v: unknown, i: number, n: number, where: string, file: string): number {
+  if (v === undefined) failIn(file, `${where}.parent_id is missing`);
+  const parent = finiteNumber(v, `${where}.parent_id`, file);
+  if (!Number.isInteger(parent) || parent < -1 || parent >= n)
+    failIn(file, `${where}.parent_id ${parent} is not -1 or a bone index (0..${n - 1})`);
+  if (parent === i) failIn(file, `${where}.parent_id is the bone itself`);
+  return parent;
+}
+
+/** rest_T (3x4 or 4x4, row-major, rigid; translation in rig units) into `m` (16 numbers). */
+function readRest(rows: unknown, m: Float64Array, where: string, file: string): void {
+  if (!Array.isArray(rows) || (rows.length !== 3 && rows.length !== 4))
+    failIn(file, `${where} must be a 3x4 or 4x4 row-major matrix`);
+  m.set([0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1]);
+  (rows as unknown[]).forEach((row, r) => {
+    if (!Array.isArray(row) || row.length !== 4) failIn(file, `${where} row ${r} must have 4 numbers`);
+    (row as unknown[]).forEach((v, c) => {
+      const at = `${where}[${r}][${c}]`;
+      m[4 * r + c] = c === 3 && r < 3 ? coordinate(v, at, file) : finiteNumber(v, at, file);
+    });
   });
-  const cycle = findCycle(spec.parents);
-  if (cycle) fail(`the bones' parent_id form a cycle: ${cycleText(cycle, (b) => `bones[${b}]`)}`);
-  spec.effectors = readEffectors(record.ik_constraints, n);
-  return spec;
-
-  /** rest_T (3x4 or 4x4, row-major, rigid) into `m` (16 numbers). */
-  function readRest(rows: unknown, m: Float64Array, where: string): void {
-    if (!Array.isArray(rows) || (rows.length !== 3 && rows.length !== 4))
-      fail(`${where} must be a 3x4 or 4x4 row-major matrix`);
-    m.set([0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1]);
-    (rows as unknown[]).forEach((row, r) => {
-      if (!Array.isArray(row) || row.length !== 4) fail(`${where} row ${r} must have 4 numbers`);
-      (row as unknown[]).forEach((v, c) => {
-        const at = `${where}[${r}][${c}]`;
-        m[4 * r + c] = c === 3 && r < 3 ? coordinate(v, at) : num(v, at);
-      });
-    });
-    if (Math.hypot(m[12], m[13], m[14], m[15] - 1) > BOTTOM_ROW_TOLERANCE)
-      fail(`${where} bottom row is not (0, 0, 0, 1)`);
-    let off = 0;
-    for (let r = 0; r < 3; r++)
-      for (let c = 0; c < 3; c++) {
-        const dot = m[r] * m[c] + m[4 + r] * m[4 + c] + m[8 + r] * m[8 + c]; // (R^T R)[r][c]
-        off += (dot - (r === c ? 1 : 0)) ** 2;
-      }
-    if (Math.sqrt(off) > RIGID_TOLERANCE) fail(`${where} is not rigid (its rotation part is not orthonormal)`);
-    const det =
-      m[0] * (m[5] * m[10] - m[6] * m[9]) - m[1] * (m[4] * m[10] - m[6] * m[8]) + m[2] * (m[4] * m[9] - m[5] * m[8]);
-    if (det < 0) fail(`${where} is not rigid (it mirrors: determinant < 0)`);
-  }
-
-  /** xzx_min and xzx_max of bone `i` (degrees; missing means unbounded). */
-  function readLimits(b: Record<string, unknown>, i: number, where: string): void {
-    for (const [side, out, missing] of [
-      ['min', spec.lower, -Infinity],
-      ['max', spec.upper, Infinity],
-    ] as const) {
-      const key = `xzx_${side}`;
-      const v = b[key];
-      if (v === undefined) {
-        out.fill(missing, 3 * i, 3 * i + 3);
-        continue;
-      }
-      if (!Array.isArray(v) || v.length !== 3) fail(`${where}.${key} must be 3 numbers (degrees)`);
-      (v as unknown[]).forEach((x, k) => {
-        if (typeof x !== 'number') fail(`${where}.${key}[${k}] is not a number (degrees)`);
-        const problem = limitProblem(x as number, side);
-        if (problem) fail(`${where}.${key}[${k}] ${problem}`);
-        out[3 * i + k] = x as number;
-      });
+  if (Math.hypot(m[12], m[13], m[14], m[15] - 1) > BOTTOM_ROW_TOLERANCE)
+    failIn(file, `${where} bottom row is not (0, 0, 0, 1)`);
+  let off = 0;
+  for (let r = 0; r < 3; r++)
+    for (let c = 0; c < 3; c++) {
+      const dot = m[r] * m[c] + m[4 + r] * m[4 + c] + m[8 + r] * m[8 + c]; // (R^T R)[r][c]
+      off += (dot - (r === c ? 1 : 0)) ** 2;
     }
-    for (let k = 0; k < 3; k++)
-      if (spec.lower[3 * i + k] > spec.upper[3 * i + k])
-        fail(`${where}.xzx_min[${k}] = ${spec.lower[3 * i + k]} is above xzx_max[${k}] = ${spec.upper[3 * i + k]}`);
-  }
+  if (Math.sqrt(off) > RIGID_TOLERANCE) failIn(file, `${where} is not rigid (its rotation part is not orthonormal)`);
+  const det =
+    m[0] * (m[5] * m[10] - m[6] * m[9]) - m[1] * (m[4] * m[10] - m[6] * m[8]) + m[2] * (m[4] * m[9] - m[5] * m[8]);
+  if (det < 0) failIn(file, `${where} is not rigid (it mirrors: determinant < 0)`);
+}
 
-  /** The end-effector bones of `ik_constraints` (a bone index or a list), the last bone when missing. */
-  function readEffectors(c: unknown, n: number): Int32Array {
-    if (c === undefined) return Int32Array.of(n - 1);
-    const list =
-      typeof c === 'number'
-        ? [c]
-        : Array.isArray(c)
-          ? c
-          : fail('ik_constraints must be a bone index or a list of them');
-    if (list.length === 0) fail('ik_constraints is empty: a rig needs an end effector');
-    const tooMany = effectorCountProblem(list.length, n);
-    if (tooMany) fail(`ik_constraints lists ${tooMany}`);
-    const seen = new Set<number>();
-    return Int32Array.from(list, (v: unknown, k) => {
-      const where = typeof c === 'number' ? 'ik_constraints' : `ik_constraints[${k}]`;
-      const e = num(v, where);
-      if (!Number.isInteger(e) || e < 0 || e >= n) fail(`${where} = ${e} is not a bone (0..${n - 1})`);
-      if (seen.has(e)) fail(`${where} lists bone ${e} a second time`);
-      seen.add(e);
-      return e;
+/** xzx_min and xzx_max of bone `i` (`b`) into `spec` (degrees; missing means unbounded). */
+function readLimits(b: Record<string, unknown>, i: number, spec: RigSpec, where: string, file: string): void {
+  for (const [side, out, missing] of [
+    ['min', spec.lower, -Infinity],
+    ['max', spec.upper, Infinity],
+  ] as const) {
+    const key = `xzx_${side}`;
+    const v = b[key];
+    if (v === undefined) {
+      out.fill(missing, 3 * i, 3 * i + 3);
+      continue;
+    }
+    if (!Array.isArray(v) || v.length !== 3) failIn(file, `${where}.${key} must be 3 numbers (degrees)`);
+    (v as unknown[]).forEach((x, k) => {
+      if (typeof x !== 'number') failIn(file, `${where}.${key}[${k}] is not a number (degrees)`);
+      const problem = limitProblem(x as number, side);
+      if (problem) failIn(file, `${where}.${key}[${k}] ${problem}`);
+      out[3 * i + k] = x as number;
     });
   }
+  for (let k = 0; k < 3; k++)
+    if (spec.lower[3 * i + k] > spec.upper[3 * i + k])
+      failIn(
+        file,
+        `${where}.xzx_min[${k}] = ${spec.lower[3 * i + k]} is above xzx_max[${k}] = ${spec.upper[3 * i + k]}`,
+      );
+}
+
+/** The end-effector bones (of `n`) of `ik_constraints` `c` (a bone index or a list), the last bone when missing. */
+function readEffectors(c: unknown, n: number, file: string): Int32Array {
+  if (c === undefined) return Int32Array.of(n - 1);
+  const list =
+    typeof c === 'number'
+      ? [c]
+      : Array.isArray(c)
+        ? c
+        : failIn(file, 'ik_constraints must be a bone index or a list of them');
+  if (list.length === 0) failIn(file, 'ik_constraints is empty: a rig needs an end effector');
+  const tooMany = effectorCountProblem(list.length, n);
+  if (tooMany) failIn(file, `ik_constraints lists ${tooMany}`);
+  const seen = new Set<number>();
+  return Int32Array.from(list, (v: unknown, k) => {
+    const where = typeof c === 'number' ? 'ik_constraints' : `ik_constraints[${k}]`;
+    const e = finiteNumber(v, where, file);
+    if (!Number.isInteger(e) || e < 0 || e >= n) failIn(file, `${where} = ${e} is not a bone (0..${n - 1})`);
+    if (seen.has(e)) failIn(file, `${where} lists bone ${e} a second time`);
+    seen.add(e);
+    return e;
+  });
 }

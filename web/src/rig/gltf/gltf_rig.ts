@@ -6,22 +6,22 @@
 // A humanoid skeleton is recognised (humanoid_recognition.ts) and gives the default end effectors.
 import type { RigSpec } from '../../ik/rig_arrays.js';
 import { restFromBindPose, startAngles } from './bind_pose.js';
+import { boneAxis, jointOrigin, restJoints, type RestJoints, type Vec3 } from './bone_axes.js';
 import { boneRestFrame } from '../bone_frame.js';
-import { chooseChainChild } from '../chain_child.js';
 import { DEFAULT_LIMIT_DEG, defaultEffectors, rootChainEffectors } from './effector_defaults.js';
 import { checkGltfBudget } from './gltf_budget.js';
 import { failIn } from '../rig_format_error.js';
-import { parseGltfContainer, type SiblingReader } from './gltf_file.js';
-import { listed, shown } from './gltf_json.js';
-import { checkWorldMatrices, jointsInTreeOrder, readBindMatrices } from './gltf_joints.js';
-import { nodeLabel, readNodes, readSkins, worldMatrices } from './gltf_nodes.js';
+import { parseGltfContainer, type GltfContainer, type SiblingReader } from './gltf_file.js';
+import { listed, type JsonObject } from './gltf_json.js';
+import { checkWorldMatrices, jointsInTreeOrder, readBindMatrices, type JointOrder } from './gltf_joints.js';
+import { nodeLabel, readNodes, readSkins, worldMatrices, type GltfNode, type GltfSkin } from './gltf_nodes.js';
 import { checkRanges } from './gltf_ranges.js';
-import { checkReferences, readLists } from './gltf_references.js';
+import { checkReferences, readLists, type GltfLists } from './gltf_references.js';
 import { humanoidLimits, type RigLimits } from '../humanoid/humanoid_limits.js';
 import { recognizeHumanoid } from '../humanoid/humanoid_recognition.js';
 import type { HumanoidMap } from '../humanoid/humanoid_roles.js';
 import { readIkExtras, type IkExtras } from './ik_extras.js';
-import { invertAffine, transformDirection, transformPoint, type Mat4 } from '../mat4.js';
+import { invertAffine, transformPoint, type Mat4 } from '../mat4.js';
 import { effectorCountProblem, MAX_BONES, MAX_COORDINATE } from '../rig_limits.js';
 
 /** What the write-back and the page need to map rig bones onto the glTF (and three.js) nodes. */
@@ -66,11 +66,6 @@ export interface GltfRig {
   gltf: GltfRigInfo;
 }
 
-type Vec3 = [number, number, number];
-
-const sub = (a: Vec3, b: Vec3): Vec3 => [a[0] - b[0], a[1] - b[1], a[2] - b[2]];
-const norm = (a: Vec3): number => Math.hypot(a[0], a[1], a[2]);
-
 /**
  * Imports the skeleton of a .glb or .gltf. `file` names the source in errors; `readSibling`
  * reads side buffers of a .gltf (URI-decoded relative path). Throws RigFormatError for a malformed
@@ -81,45 +76,59 @@ const norm = (a: Vec3): number => Math.hypot(a[0], a[1], a[2]);
  * scene units; limits in degrees.
  */
 export async function importGltfRig(bytes: Uint8Array, file: string, readSibling?: SiblingReader): Promise<GltfRig> {
+  const { container, lists } = openGltf(bytes, file);
+  const skins = readSkins(lists.skins, lists.nodes.length, file);
+  const isJoint = skinJoints(skins, file);
+  const tree = readNodes(lists.nodes, file);
+  const joints = jointsInTreeOrder(tree, isJoint);
+  const posed = worldMatrices(tree); // the nodes' own pose
+  checkWorldMatrices(joints.order, posed, '', file);
+  // The inverse bind matrices give the rest.
+  const binds = await readBindMatrices(container, lists, skins, tree, file, readSibling);
+  const restPose = restFromBindPose(tree, skins, binds, posed, isJoint);
+  if (restPose.rebound.length) checkWorldMatrices(joints.order, restPose.world, 'bind pose ', file);
+  const extras: (IkExtras | undefined)[] = joints.order.map((n) => readIkExtras(n.extras, nodeLabel(n), file));
+  const skeleton = restJoints(joints.order, joints.parents, restPose.world);
+  const { spec, gltf: info } = emptyRig(container.json, joints, skins, extras);
+  // Parents first: a bone with no tail, child or length of its own takes half its parent's length.
+  for (let b = 0; b < skeleton.order.length; b++) placeBone(skeleton, b, extras[b], restPose.local, spec, info, file);
+  spec.effectors = chooseEffectors(extras, spec, info, file);
+  humanoidAnatomy(extras, spec, info);
+  if (!info.hasIkExtras) info.warnings.push(noExtrasWarning(info.humanoid));
+  posedFile(restPose, posed, joints.boneOfNode, spec, info);
+  return { spec, gltf: info };
+}
+
+/**
+ * The container of `bytes` (.glb or .gltf) and its top-level lists, once the file is within
+ * gltf_budget.ts, every index in it points at something, and every accessor range fits its buffer.
+ */
+function openGltf(bytes: Uint8Array, file: string): { container: GltfContainer; lists: GltfLists } {
   const container = parseGltfContainer(bytes, file);
   const json = container.json;
   checkGltfBudget(json, file);
   const lists = readLists(json, file);
   checkReferences(json, lists, file);
   checkRanges(container, lists, file);
-  const skins = readSkins(lists.skins, lists.nodes.length, file);
+  return { container, lists };
+}
+
+/** The joints (node indices) of all `skins`; throws when there is no skin or more joints than MAX_BONES. */
+function skinJoints(skins: GltfSkin[], file: string): Set<number> {
   if (skins.length === 0) failIn(file, 'no skin: the file has no skinned character (glTF "skins" is empty or missing)');
   const isJoint = new Set(skins.flatMap((s) => s.joints));
   if (isJoint.size > MAX_BONES) failIn(file, `${isJoint.size} joints; at most ${MAX_BONES} bones`);
-  const tree = readNodes(lists.nodes, file);
-  const { order, parents, boneOfNode, nodeDepth } = jointsInTreeOrder(tree, isJoint);
+  return isJoint;
+}
+
+/**
+ * A RigSpec and GltfRigInfo for the bones `joints.order`, named, with their parents, skins,
+ * humanoid roles (recognised in `json`) and its notes, and whether any bone has `extras`; the
+ * per-bone arrays are zero and there are no end effectors yet.
+ */
+function emptyRig(json: JsonObject, joints: JointOrder, skins: GltfSkin[], extras: (IkExtras | undefined)[]): GltfRig {
+  const { order, parents, boneOfNode, nodeDepth } = joints;
   const count = order.length;
-  const posed = worldMatrices(tree); // the nodes' own pose
-  checkWorldMatrices(order, posed, '', file);
-  // The inverse bind matrices give the rest.
-  const binds = await readBindMatrices(container, lists, skins, tree, file, readSibling);
-  const restPose = restFromBindPose(tree, skins, binds, posed, isJoint);
-  const world = restPose.world;
-  if (restPose.rebound.length) checkWorldMatrices(order, world, 'bind pose ', file);
-  const extras: (IkExtras | undefined)[] = order.map((n) => readIkExtras(n.extras, nodeLabel(n), file));
-  const children: number[][] = order.map(() => []);
-  parents.forEach((p, b) => p >= 0 && children[p].push(b));
-  const descendants = new Int32Array(count);
-  for (let b = count - 1; b >= 0; b--) if (parents[b] >= 0) descendants[parents[b]] += descendants[b] + 1;
-
-  const origin = (b: number): Vec3 => {
-    const m = world[order[b].index];
-    return [m[3], m[7], m[11]];
-  };
-  let lo: Vec3 = [Infinity, Infinity, Infinity],
-    hi: Vec3 = [-Infinity, -Infinity, -Infinity];
-  for (let b = 0; b < count; b++) {
-    const p = origin(b);
-    lo = lo.map((v, k) => Math.min(v, p[k])) as Vec3;
-    hi = hi.map((v, k) => Math.max(v, p[k])) as Vec3;
-  }
-  const eps = 1e-9 * (norm(sub(hi, lo)) || 1);
-
   const spec: RigSpec = {
     names: order.map((n) => n.name || `node ${n.index}`),
     parents,
@@ -149,69 +158,57 @@ export async function importGltfRig(bytes: Uint8Array, file: string, readSibling
     startAngles: null,
     warnings: [...humanoid.notes],
   };
+  return { spec, gltf: info };
+}
 
-  order.forEach((node, b) => {
-    const W = world[node.index];
-    const ex = extras[b];
-    const p = origin(b);
-    // Scale of W along a local direction u: how long one local unit along u is in the world.
-    const worldLength = (localLength: number, u: Vec3): number =>
-      (localLength * norm(transformDirection(W, u))) / norm(u);
-    let dir: Vec3 = transformDirection(W, [0, 1, 0]); // local +Y: the bone axis of Blender and Mixamo
-    let length: number;
-    if (ex?.tail) {
-      const d = sub(transformPoint(W, ex.tail), p);
-      length = norm(d);
-      if (length > eps) dir = d;
-      else length = 0;
-    } else {
-      const child = pickChild(b, ex);
-      if (child !== undefined) {
-        dir = sub(origin(child), p);
-        length = norm(dir);
-        if (ex?.length !== undefined) length = worldLength(ex.length, transformDirection(invertAffine(W)!, dir));
-      } else if (ex?.length !== undefined) length = worldLength(ex.length, [0, 1, 0]);
-      else length = parents[b] >= 0 ? 0.5 * spec.lengths[parents[b]] : 0;
-    }
-    if (length > MAX_COORDINATE)
-      failIn(file, `${nodeLabel(node)}: bone length ${length} is beyond ${MAX_COORDINATE} scene units`);
-    const dn = norm(dir);
-    const unit: Vec3 = [dir[0] / dn, dir[1] / dn, dir[2] / dn];
-    spec.lengths[b] = length;
-    spec.rest.set(boneRestFrame(W, unit), 16 * b);
-    info.restWorld.set(W, 16 * b);
-    info.restLocal.set(restPose.local[node.index], 16 * b);
-    const tip: Vec3 = [p[0] + length * unit[0], p[1] + length * unit[1], p[2] + length * unit[2]];
-    info.tailLocal.set(transformPoint(invertAffine(W)!, tip), 3 * b);
-    for (let k = 0; k < 3; k++) {
-      spec.lower[3 * b + k] = ex?.min?.[k] ?? -DEFAULT_LIMIT_DEG;
-      spec.upper[3 * b + k] = ex?.max?.[k] ?? DEFAULT_LIMIT_DEG;
-      if (spec.lower[3 * b + k] > spec.upper[3 * b + k])
-        failIn(
-          file,
-          `${nodeLabel(node)}: extras.ik gives xzx_min[${k}] = ${spec.lower[3 * b + k]} above xzx_max[${k}] = ${spec.upper[3 * b + k]}`,
-        );
-    }
-  });
+/**
+ * Bone `b` (extras.ik `ex`) into `spec` and `info`: its length (scene units) and rest frame, its
+ * rest matrices and tip, and its limits (degrees). `restLocal` holds each node's rest local matrix
+ * (by node index); the bone's parent must be placed already.
+ */
+function placeBone(
+  joints: RestJoints,
+  b: number,
+  ex: IkExtras | undefined,
+  restLocal: Mat4[],
+  spec: RigSpec,
+  info: GltfRigInfo,
+  file: string,
+): void {
+  const node = joints.order[b];
+  const W = joints.world[node.index];
+  const p = jointOrigin(joints, b);
+  const { unit, length } = boneAxis(joints, b, p, ex, spec.lengths, file);
+  if (length > MAX_COORDINATE)
+    failIn(file, `${nodeLabel(node)}: bone length ${length} is beyond ${MAX_COORDINATE} scene units`);
+  spec.lengths[b] = length;
+  spec.rest.set(boneRestFrame(W, unit), 16 * b);
+  info.restWorld.set(W, 16 * b);
+  info.restLocal.set(restLocal[node.index], 16 * b);
+  const tip: Vec3 = [p[0] + length * unit[0], p[1] + length * unit[1], p[2] + length * unit[2]];
+  info.tailLocal.set(transformPoint(invertAffine(W)!, tip), 3 * b);
+  extrasLimits(ex, b, node, spec, file);
+}
 
-  function pickChild(b: number, ex: IkExtras | undefined): number | undefined {
-    const kids = children[b];
-    if (ex?.child !== undefined) {
-      const want = ex.child;
-      const found = kids.find((c) => (typeof want === 'number' ? order[c].index === want : order[c].name === want));
-      if (found === undefined)
-        failIn(file, `${nodeLabel(order[b])}: extras.ik.child ${shown(want)} is not one of its child joints`);
-      return norm(sub(origin(found), origin(b))) > eps ? found : undefined;
-    }
-    const candidates = kids
-      .filter((c) => norm(sub(origin(c), origin(b))) > eps)
-      .map((c) => ({ bone: c, name: order[c].name, descendants: descendants[c] }));
-    return candidates.length ? chooseChainChild(candidates).bone : undefined;
+/** Bone `b`'s (joint `node`) limits from extras.ik `ex` into `spec` (degrees, +-DEFAULT_LIMIT_DEG where not given). */
+function extrasLimits(ex: IkExtras | undefined, b: number, node: GltfNode, spec: RigSpec, file: string): void {
+  for (let k = 0; k < 3; k++) {
+    spec.lower[3 * b + k] = ex?.min?.[k] ?? -DEFAULT_LIMIT_DEG;
+    spec.upper[3 * b + k] = ex?.max?.[k] ?? DEFAULT_LIMIT_DEG;
+    if (spec.lower[3 * b + k] > spec.upper[3 * b + k])
+      failIn(
+        file,
+        `${nodeLabel(node)}: extras.ik gives xzx_min[${k}] = ${spec.lower[3 * b + k]} above xzx_max[${k}] = ${spec.upper[3 * b + k]}`,
+      );
   }
+}
 
-  spec.effectors = chooseEffectors(extras, spec, info, file);
-  // A humanoid gets anatomical limits on its mapped bones (limits given in extras.ik win; a rig
-  // that gives them for every mapped bone is left as it is).
+/**
+ * A humanoid's anatomical limits (humanoid_limits.ts, degrees) on its mapped bones in `spec`, the
+ * file's own kept as `info.fileLimits`. Limits given in extras.ik win; a rig that gives them for
+ * every mapped bone, or is no humanoid, is left as it is.
+ */
+function humanoidAnatomy(extras: (IkExtras | undefined)[], spec: RigSpec, info: GltfRigInfo): void {
   const explicit = extras.map((e) => e?.min !== undefined || e?.max !== undefined);
   const mapped = info.humanoid ? Object.values(info.humanoid.bones) : [];
   if (info.humanoid && mapped.some((b) => !explicit[b])) {
@@ -221,16 +218,13 @@ export async function importGltfRig(bytes: Uint8Array, file: string, readSibling
     spec.upper = anatomy.upper;
     info.warnings.push(...anatomy.notes);
   }
+}
 
-  if (!info.hasIkExtras)
-    info.warnings.push(
-      info.humanoid
-        ? `no IK extras: anatomical limits on the humanoid's bones, +-${DEFAULT_LIMIT_DEG} degrees on the others`
-        : `no IK extras: every angle is limited to +-${DEFAULT_LIMIT_DEG} degrees`,
-    );
-
-  posedFile(restPose, posed, boneOfNode, spec, info);
-  return { spec, gltf: info };
+/** The warning for a file without extras.ik, which says the limits used (degrees) for a humanoid or not. */
+function noExtrasWarning(humanoid: HumanoidMap | null): string {
+  return humanoid
+    ? `no IK extras: anatomical limits on the humanoid's bones, +-${DEFAULT_LIMIT_DEG} degrees on the others`
+    : `no IK extras: every angle is limited to +-${DEFAULT_LIMIT_DEG} degrees`;
 }
 
 /**
