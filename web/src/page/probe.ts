@@ -121,102 +121,102 @@ declare global {
   }
 }
 
+/** The probe: its parts below, each about one side of the page, put together. */
 export function makeProbe(app: PageApp): PageProbe {
-  const a = new Vector3(),
-    b = new Vector3(),
-    turn = new Quaternion();
-  const quad = (q: ArrayLike<number>, k: number): [number, number, number, number] => [
-    q[4 * k],
-    q[4 * k + 1],
-    q[4 * k + 2],
-    q[4 * k + 3],
-  ];
+  return {
+    ...sessionParts(app),
+    ...statsParts(app),
+    ...viewParts(app),
+    ...targetParts(app),
+    ...boneParts(app),
+    ...effectorParts(app),
+    ...gizmoParts(app),
+    ...poleParts(app),
+  };
+}
+
+/** The live rig's IK session, or undefined when none is loaded. */
+function sessionOf(app: PageApp): IkSession | undefined {
+  return app.controller.live?.session;
+}
+
+/** Point k of a flat list of 3-vectors as an array, or null when k is out of range (or there is no list). */
+function point3(list: ArrayLike<number> | undefined, k: number): [number, number, number] | null {
+  return list && k >= 0 && 3 * k < list.length ? [list[3 * k], list[3 * k + 1], list[3 * k + 2]] : null;
+}
+
+/** Quaternion k of a flat list of quaternions (4 each) as [x, y, z, w]. */
+function quad(q: ArrayLike<number>, k: number): [number, number, number, number] {
+  return [q[4 * k], q[4 * k + 1], q[4 * k + 2], q[4 * k + 3]];
+}
+
+/** What is loaded and the solver's state: the rig, its bones, the pose, the targets, limits, settings, undo. */
+function sessionParts(
+  app: PageApp,
+): Pick<
+  PageProbe,
+  | 'loads'
+  | 'rigName'
+  | 'effectors'
+  | 'boneNames'
+  | 'boneLengths'
+  | 'angles'
+  | 'targets'
+  | 'limits'
+  | 'settings'
+  | 'undoSteps'
+  | 'alive'
+> {
   const { controller } = app;
-  const { stage } = controller;
-  const session = () => controller.live?.session;
+  const session = () => sessionOf(app);
   return {
     loads: () => app.loads,
     rigName: () => controller.live?.name ?? null,
     effectors: () => Array.from(session()?.effectors() ?? []),
+    boneNames: () => [...(session()?.spec.names ?? [])],
+    boneLengths: () => Array.from(session()?.spec.lengths ?? []),
+    angles: () => Array.from(session()?.angles ?? []),
+    targets: () => Array.from(session()?.targets ?? []),
+    limits: () => ({ lower: Array.from(session()?.spec.lower ?? []), upper: Array.from(session()?.spec.upper ?? []) }),
+    undoSteps: () => app.history.undoSteps,
+    settings: () => app.settings,
+    alive() {
+      const memory = controller.stage.renderer.info.memory;
+      return { ...IkSession.alive, geometries: memory.geometries, textures: memory.textures };
+    },
+  };
+}
+
+/** Stats and timing: solve times, the slowest solve, and the tip tolerance they are judged by. */
+function statsParts(app: PageApp): Pick<PageProbe, 'solveMs' | 'slowestSolve' | 'tipTolerance'> {
+  return {
     tipTolerance: () => app.settings.tipTolerance,
     slowestSolve: () => app.report.slowest,
     solveMs: () => {
       const t = app.solveTimes;
       return { median: t.median(), p95: t.quantile(0.95), max: t.max(), n: t.size, total: t.total };
     },
-    boneNames: () => [...(session()?.spec.names ?? [])],
-    boneLengths: () => Array.from(session()?.spec.lengths ?? []),
+  };
+}
+
+/** The 3D view: world to screen, the camera, the floor, frames drawn, and the world boxes of the rig and of objects. */
+function viewParts(
+  app: PageApp,
+): Pick<
+  PageProbe,
+  'worldToScreen' | 'cameraPosition' | 'floorY' | 'drawnFrames' | 'redraw' | 'bounds' | 'objectBounds'
+> {
+  const { controller } = app;
+  const { stage } = controller;
+  const a = new Vector3();
+  return {
     worldToScreen: (p) => stage.toScreen(a.set(p[0], p[1], p[2])),
-    targetScreen(k) {
-      const t = session()?.targets;
-      return t && k >= 0 && 3 * k < t.length ? stage.toScreen(a.fromArray(t, 3 * k)) : null;
-    },
-    boneTip(i) {
-      const live = controller.live;
-      if (!live || i < 0 || i >= live.session.rig.numBones) return null;
-      return live.view.boneTip(i, a).toArray() as [number, number, number];
-    },
-    boneBase(i) {
-      const live = controller.live;
-      if (!live || i < 0 || i >= live.session.rig.numBones) return null;
-      return live.view.boneBase(i, a).toArray() as [number, number, number];
-    },
-    boneScreen(i) {
-      const live = controller.live;
-      if (!live || i < 0 || i >= live.session.rig.numBones) return null;
-      live.view.boneBase(i, a);
-      live.view.glyphEnd(i, b);
-      return stage.toScreen(a.lerp(b, 0.5));
-    },
-    selectedTarget: () => controller.handles.selected,
-    gizmoAxis: () => controller.handles.gizmo.axis,
+    cameraPosition: () => stage.camera.position.toArray() as [number, number, number],
+    floorY: () => stage.floorY,
     drawnFrames: () => stage.drawnFrames,
     redraw() {
       stage.invalidate();
       return stage.drawnFrames;
-    },
-    selectedPole: () => controller.handles.selectedPole,
-    poleHandles() {
-      const s = session();
-      if (!s || controller.handles.poles.count !== s.goals.poleBones.length) return [];
-      const poses = s.poses();
-      return Array.from(s.goals.poleBones, (bone, j) => {
-        const point = Array.from(s.goals.polePoints.subarray(3 * j, 3 * j + 3)) as [number, number, number];
-        return { bone, point, ...limbPoints(s.spec, poses, bone), screen: stage.toScreen(a.fromArray(point)) };
-      });
-    },
-    solvePoles() {
-      const problem = session()?.problem();
-      if (!problem || !isGoals(problem)) return [];
-      return (problem.poles ?? []).map((p) => ({
-        bone: Number(p.bone),
-        point: Array.from(p.point) as [number, number, number],
-      }));
-    },
-    angles: () => Array.from(session()?.angles ?? []),
-    targets: () => Array.from(session()?.targets ?? []),
-    limits: () => ({ lower: Array.from(session()?.spec.lower ?? []), upper: Array.from(session()?.spec.upper ?? []) }),
-    undoSteps: () => app.history.undoSteps,
-    settings: () => app.settings,
-    cameraPosition: () => stage.camera.position.toArray() as [number, number, number],
-    floorY: () => stage.floorY,
-    alive() {
-      const memory = stage.renderer.info.memory;
-      return { ...IkSession.alive, geometries: memory.geometries, textures: memory.textures };
-    },
-    targetPosition(k) {
-      const t = session()?.targets;
-      return t && k >= 0 && 3 * k < t.length ? [t[3 * k], t[3 * k + 1], t[3 * k + 2]] : null;
-    },
-    tipPosition(k) {
-      const t = session()?.tips();
-      return t && k >= 0 && 3 * k < t.length ? [t[3 * k], t[3 * k + 1], t[3 * k + 2]] : null;
-    },
-    pixelsPerUnit() {
-      const t = session()?.targets;
-      if (!t) return NaN;
-      const k = Math.min(controller.handles.selected ?? 0, t.length / 3 - 1);
-      return stage.pixelsPerUnit(a.fromArray(t, 3 * k));
     },
     bounds() {
       const box = controller.live?.view.bounds();
@@ -229,30 +229,110 @@ export function makeProbe(app: PageApp): PageProbe {
       const box = new Box3().setFromObject(object, true);
       return box.isEmpty() ? null : { min: box.min.toArray(), max: box.max.toArray() };
     },
-    gizmoMode: () => controller.handles.gizmoMode,
+  };
+}
+
+/** The targets and the effectors' tips: where they are in the world and on screen, and the scale there. */
+function targetParts(
+  app: PageApp,
+): Pick<PageProbe, 'targetScreen' | 'targetPosition' | 'tipPosition' | 'pixelsPerUnit'> {
+  const { controller } = app;
+  const { stage } = controller;
+  const a = new Vector3();
+  return {
+    targetScreen(k) {
+      const p = point3(sessionOf(app)?.targets, k);
+      return p ? stage.toScreen(a.fromArray(p)) : null;
+    },
+    targetPosition: (k) => point3(sessionOf(app)?.targets, k),
+    tipPosition: (k) => point3(sessionOf(app)?.tips(), k),
+    pixelsPerUnit() {
+      const t = sessionOf(app)?.targets;
+      if (!t) return NaN;
+      const k = Math.min(controller.handles.selected ?? 0, t.length / 3 - 1);
+      return stage.pixelsPerUnit(a.fromArray(t, 3 * k));
+    },
+  };
+}
+
+/** The bones as drawn: their tips, bases (joints), middles on screen, and the root joint. */
+function boneParts(app: PageApp): Pick<PageProbe, 'boneTip' | 'boneBase' | 'boneScreen' | 'rootJoint'> {
+  const { controller } = app;
+  const a = new Vector3(),
+    b = new Vector3();
+  // The view drawing bone i, or null when no rig is loaded or it has no bone i.
+  const viewOf = (i: number) => {
+    const live = controller.live;
+    return live && i >= 0 && i < live.session.rig.numBones ? live.view : null;
+  };
+  return {
+    boneTip(i) {
+      const view = viewOf(i);
+      return view ? (view.boneTip(i, a).toArray() as [number, number, number]) : null;
+    },
+    boneBase(i) {
+      const view = viewOf(i);
+      return view ? (view.boneBase(i, a).toArray() as [number, number, number]) : null;
+    },
+    boneScreen(i) {
+      const view = viewOf(i);
+      if (!view) return null;
+      view.boneBase(i, a);
+      view.glyphEnd(i, b);
+      return controller.stage.toScreen(a.lerp(b, 0.5));
+    },
     rootJoint: () =>
       controller.live ? (controller.live.view.boneBase(0, a).toArray() as [number, number, number]) : null,
+  };
+}
+
+/** The effectors against their goals: how far each tip is off, its orientation goal, its rotation, and the angle off. */
+function effectorParts(
+  app: PageApp,
+): Pick<PageProbe, 'effectorError' | 'orientationGoal' | 'tipRotation' | 'orientationError'> {
+  return {
+    effectorError(k) {
+      const s = sessionOf(app);
+      if (!s) return NaN;
+      const tips = s.tips();
+      const t = s.targets;
+      return Math.hypot(tips[3 * k] - t[3 * k], tips[3 * k + 1] - t[3 * k + 1], tips[3 * k + 2] - t[3 * k + 2]);
+    },
     orientationGoal(k) {
-      const s = session();
+      const s = sessionOf(app);
       return s && s.goals.orientation[k] === 1 ? quad(s.goals.rotations, k) : null;
     },
     tipRotation(k) {
-      const s = session();
+      const s = sessionOf(app);
       return s && k >= 0 && k < s.goals.count ? quad(s.tipRotations(), k) : null;
     },
     orientationError(k) {
-      const s = session();
+      const s = sessionOf(app);
       return s && s.goals.orientation[k] === 1
         ? orientationErrorsDeg(s.rig, s.angles, s.goals.goals(s.effectors(), s.targets))[k]
         : NaN;
     },
-    axesShown: (k) => controller.handles.axesShown(k),
+  };
+}
+
+/** The selection and the gizmo: what it holds, its mode, handle and turn, the axes shown, and a rotate drag. */
+function gizmoParts(
+  app: PageApp,
+): Pick<PageProbe, 'selectedTarget' | 'gizmoAxis' | 'gizmoMode' | 'axesShown' | 'gizmoQuaternion' | 'turnGizmo'> {
+  const { handles } = app.controller;
+  const a = new Vector3(),
+    turn = new Quaternion();
+  return {
+    selectedTarget: () => handles.selected,
+    gizmoAxis: () => handles.gizmo.axis,
+    gizmoMode: () => handles.gizmoMode,
+    axesShown: (k) => handles.axesShown(k),
     gizmoQuaternion() {
-      const o = controller.handles.gizmo.object;
+      const o = handles.gizmo.object;
       return o ? (o.getWorldQuaternion(new Quaternion()).toArray() as [number, number, number, number]) : null;
     },
     async turnGizmo(axis, degrees, steps = 12) {
-      const gizmo = controller.handles.gizmo;
+      const gizmo = handles.gizmo;
       const object = gizmo.object;
       if (!object) throw new Error('the gizmo holds no target');
       const frame = (): Promise<void> => new Promise((done) => requestAnimationFrame(() => done()));
@@ -265,12 +345,36 @@ export function makeProbe(app: PageApp): PageProbe {
       }
       gizmo.dragging = false;
     },
-    effectorError(k) {
-      const s = session();
-      if (!s) return NaN;
-      const tips = s.tips();
-      const t = s.targets;
-      return Math.hypot(tips[3 * k] - t[3 * k], tips[3 * k + 1] - t[3 * k + 1], tips[3 * k + 2] - t[3 * k + 2]);
+  };
+}
+
+/** The limbs' poles: the pole handles as drawn, the one selected, and the poles the solve is sent. */
+function poleParts(app: PageApp): Pick<PageProbe, 'poleHandles' | 'selectedPole' | 'solvePoles'> {
+  const { controller } = app;
+  const a = new Vector3();
+  return {
+    selectedPole: () => controller.handles.selectedPole,
+    poleHandles() {
+      const s = sessionOf(app);
+      if (!s || controller.handles.poles.count !== s.goals.poleBones.length) return [];
+      const poses = s.poses();
+      return Array.from(s.goals.poleBones, (bone, j) => {
+        const point = Array.from(s.goals.polePoints.subarray(3 * j, 3 * j + 3)) as [number, number, number];
+        return {
+          bone,
+          point,
+          ...limbPoints(s.spec, poses, bone),
+          screen: controller.stage.toScreen(a.fromArray(point)),
+        };
+      });
+    },
+    solvePoles() {
+      const problem = sessionOf(app)?.problem();
+      if (!problem || !isGoals(problem)) return [];
+      return (problem.poles ?? []).map((p) => ({
+        bone: Number(p.bone),
+        point: Array.from(p.point) as [number, number, number],
+      }));
     },
   };
 }
