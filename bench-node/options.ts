@@ -3,17 +3,27 @@
 // The list options --rig, --experiment and --methods add up when repeated; any other option given
 // twice is refused rather than the last one silently winning.
 // Our methods are the core's (its registry, `IkSolver.methods`), given by the caller; the peers
-// are the bench's own.
-import { availableParallelism } from 'node:os';
+// are the bench's own. The options themselves, with their help and defaults, are declared in
+// option_flags.ts; one value's text is checked by option_values.ts.
+import { Command, CommanderError } from 'commander';
 
-import { Command, CommanderError, Option } from 'commander';
-
-import { BenchError, quote } from './errors.js';
+import { quote } from './errors.js';
 import { checkGoals } from './goals_option.js';
+import {
+  DEFAULT_SAMPLES,
+  MAX_RESTARTS,
+  MAX_SAMPLES,
+  MAX_TIMEOUT_SECONDS,
+  MAX_WARM_UP_MS,
+  MAX_WORKERS,
+  program,
+  WORKERS_CAP,
+  WORKERS_PER_CORE,
+} from './option_flags.js';
+import { fileName, integerIn, list, lists, pick, pickOne, positiveNumber, present, usage } from './option_values.js';
 import { goalsKinds, type GoalsKind } from './pose_goals.js';
 import { experiments, type Experiment } from './target_set.js';
 import { applyTracik, checkChain } from './tracik.js';
-import { WARM_UP_MS } from './warm_up.js';
 
 /** The peers: other libraries' solvers, run in JavaScript (peers/). */
 export const peerMethods: readonly string[] = ['three-ccd', 'closed-chain-ik'];
@@ -69,101 +79,6 @@ export interface BenchOptions {
   track?: { clips: string[] | 'all'; points: number };
 }
 
-/** Solves of one method per experiment: the default, and the largest --samples value. */
-const DEFAULT_SAMPLES = 1000;
-const MAX_SAMPLES = 1_000_000;
-/**
- * Worker threads or native processes --workers takes per core, and in all. Each worker holds its
- * own WebAssembly instance (about 45 MB), and more workers than cores only share the cores.
- */
-const WORKERS_PER_CORE = 4;
-const WORKERS_CAP = 64;
-const MAX_WORKERS = Math.min(WORKERS_CAP, WORKERS_PER_CORE * availableParallelism());
-/** Most --restarts per solve. */
-const MAX_RESTARTS = 1_000_000;
-/** Longest --timeout, seconds per solve. */
-const MAX_TIMEOUT_SECONDS = 3600;
-/** Longest --warm-up, milliseconds. */
-const MAX_WARM_UP_MS = 60_000;
-
-const usage = (message: string): BenchError => new BenchError(message, 2);
-
-/** `value` itself; a usage error naming `flag` when it is empty or blank. */
-function present(flag: string, value: string): string {
-  if (value.trim() === '') throw usage(`${flag}: empty value`);
-  return value;
-}
-
-/** The comma-separated items of `value`, trimmed; a usage error when there are none. */
-function list(flag: string, value: string): string[] {
-  const items = present(flag, value)
-    .split(',')
-    .map((s) => s.trim())
-    .filter((s) => s.length > 0);
-  if (items.length === 0) throw usage(`${flag}: empty list ${quote(value)}`);
-  return items;
-}
-
-/** The items of every value a list option was given (it may be repeated: --rig a --rig b is --rig a,b). */
-function lists(flag: string, values: string | string[]): string[] {
-  return (Array.isArray(values) ? values : [values]).flatMap((v) => list(flag, v));
-}
-
-/**
- * Commander's parsers for options given more than once: a list option collects its values (the
- * first one replaces the default), any other option is refused the second time.
- */
-function repeats(): {
-  collect: (value: string, previous: string | string[]) => string[];
-  once: (flag: string) => (value: string) => string;
-} {
-  const seen = new Set<string>();
-  return {
-    collect: (value, previous) => (Array.isArray(previous) ? [...previous, value] : [value]),
-    once: (flag) => (value) => {
-      if (seen.has(flag)) throw usage(`${flag} given twice (${quote(value)} the second time); give it once`);
-      seen.add(flag);
-      return value;
-    },
-  };
-}
-
-/** A finite number above 0 and at most `max`. */
-function positiveNumber(flag: string, value: string, max = Infinity): number {
-  const x = Number(present(flag, value));
-  if (!Number.isFinite(x) || x <= 0 || x > max)
-    throw usage(`${flag}: ${quote(value)} is not a positive number${Number.isFinite(max) ? ` of at most ${max}` : ''}`);
-  return x;
-}
-
-/**
- * An integer in min..max written in plain decimal digits (no 0x10, 1e3, 1.0 or blanks, which
- * Number() would take); `why` follows the range in the message.
- */
-function integerIn(flag: string, value: string, min: number, max: number, why = ''): number {
-  const x = /^-?\d+$/.test(present(flag, value)) ? Number(value) : NaN;
-  if (!Number.isSafeInteger(x) || x < min || x > max)
-    throw usage(`${flag}: ${quote(value)} is not an integer in ${min}..${max}${why}`);
-  return x;
-}
-
-/** The items of `value`, each one of `known`, without repeats. */
-function pick<T extends string>(flag: string, value: string | string[], known: readonly T[], what: string): T[] {
-  const values = lists(flag, value);
-  for (const v of values)
-    if (!(known as readonly string[]).includes(v))
-      throw usage(`${flag}: unknown ${what} ${quote(v)} (known: ${known.join(', ')})`);
-  return [...new Set(values)] as T[];
-}
-
-/** One of `known`. */
-function pickOne<T extends string>(flag: string, value: string, known: readonly T[], what: string): T {
-  const v = present(flag, value).trim();
-  if (!(known as readonly string[]).includes(v))
-    throw usage(`${flag}: unknown ${what} ${quote(v)} (known: ${known.join(', ')})`);
-  return v as T;
-}
-
 /** `1000` or `1000,gd=100`: a default plus per-method overrides (methods of `allMethods`), each in 1..MAX_SAMPLES. */
 function parseSamples(value: string, allMethods: readonly string[]): Record<string, number> {
   let fallback: number | undefined;
@@ -182,115 +97,6 @@ function parseSamples(value: string, allMethods: readonly string[]): Record<stri
     overrides.set(method, integerIn(`--samples ${method}`, entry.slice(eq + 1), 1, MAX_SAMPLES));
   }
   return Object.fromEntries(allMethods.map((m) => [m, overrides.get(m) ?? fallback ?? DEFAULT_SAMPLES]));
-}
-
-/** An output or --compare file name; undefined when the option is absent. */
-function fileName(flag: string, value: string | undefined): string | undefined {
-  return value === undefined ? undefined : present(flag, value);
-}
-
-function program(allMethods: readonly string[], defaultMethods: readonly string[]): Command {
-  const { collect, once } = repeats();
-  const single = (flags: string, description: string, fallback?: string): Option => {
-    const option = new Option(flags, description).argParser(once(flags.split(' ')[0]));
-    return fallback === undefined ? option : option.default(fallback);
-  };
-  const merged = ' (repeatable: --rig a --rig b is --rig a,b)';
-  return new Command('bench')
-    .description("Benchmarks the IK solvers on the report's target sets and more (see bench-node/README.md).")
-    .addOption(
-      new Option('--rig <paths>', `rig files (.glb, .gltf, A7 .json) or project rig names, comma-separated${merged}`)
-        .argParser(collect)
-        .makeOptionMandatory(),
-    )
-    .addOption(
-      single(
-        '--chain <base:tip>',
-        'URDF rigs: the chain, from its base link to its tip link (default: the longest serial chain)',
-      ),
-    )
-    .addOption(
-      new Option(
-        '--experiment <list>',
-        `experiments: ${experiments.filter((e) => e !== 'tracik').join(', ')}, or track or tracik alone${merged}`,
-      )
-        .argParser(collect)
-        .default('random,incremental'),
-    )
-    .addOption(single('--clips <list>', 'track: the animation clips to run, comma-separated, or all', 'all'))
-    .addOption(single('--points <n>', 'track: tracked points, 3 (head and hands) or 6 (and the hips and feet)', '3'))
-    .addOption(
-      new Option(
-        '--methods <list>',
-        `methods: ${allMethods.join(', ')} (kdl, kdl_nr_jl: --engine native only)${merged}`,
-      )
-        .argParser(collect)
-        .default(defaultMethods.join(',')),
-    )
-    .addOption(
-      single(
-        '--samples <n>',
-        `samples per experiment (at most ${MAX_SAMPLES}); per-method overrides like 1000,gd=100`,
-        String(DEFAULT_SAMPLES),
-      ),
-    )
-    .addOption(single('--seed <s>', 'seed of the target sets', '1'))
-    .addOption(single('--gradient-tolerance <x>', 'gradient tolerance (default: per rig, see README; was --gtol)'))
-    .addOption(
-      single(
-        '--error-tolerance <y>',
-        'E tolerance, also the success threshold (default: per rig; drag and reach: a tip distance, see README; was --ftol)',
-      ),
-    )
-    .addOption(
-      single('--time-budget <seconds>', `time budget per solve (at most ${MAX_TIMEOUT_SECONDS}; was --timeout)`, '1'),
-    )
-    .addOption(
-      single(
-        '--restarts <n>',
-        `restarts per solve for every method, peers included, within the time budget (random and incremental; default: the solvers' default; at most ${MAX_RESTARTS})`,
-      ),
-    )
-    .option('--paper', "the report's original algorithms (solver paper mode)", false)
-    .addOption(
-      single(
-        '--goals <kind>',
-        `targets per end effector: position (the protocol's tip positions) or pose (tip position and frame orientation)`,
-        'position',
-      ),
-    )
-    .option(
-      '--no-humanoid-limits',
-      "a recognised humanoid keeps the file's own limits (extras.ik or +-180) instead of anatomical ones",
-    )
-    .addOption(single('--engine <list>', 'wasm, native, or both (prints the ratio)', 'wasm'))
-    .addOption(
-      single(
-        '--workers <n>',
-        `worker threads (native: processes), at most ${MAX_WORKERS}`,
-        String(Math.min(availableParallelism(), MAX_WORKERS)),
-      ),
-    )
-    .addOption(single('--json <file>', 'write the rows as JSON (checked writable before the run)'))
-    .addOption(single('--csv <file>', 'write the rows as CSV (checked writable before the run)'))
-    .addOption(single('--markdown <file>', 'write the tables as Markdown (checked writable before the run)'))
-    .addOption(
-      single(
-        '--compare <file>',
-        'a results CSV of the report (results.csv, original-measured.csv) to print beside ours',
-      ),
-    )
-    .option('--no-progress', 'no progress bar even on a terminal')
-    .addOption(
-      single(
-        '--warm-up <ms>',
-        'untimed solving per worker and method before timing (0: a single solve; times then include V8 compiling)',
-        String(WARM_UP_MS),
-      ),
-    )
-    .helpOption('-h, --help')
-    .allowExcessArguments(false)
-    .showSuggestionAfterError(true);
 }
 
 interface RawOptions {
@@ -339,19 +145,10 @@ function renamedFlags(argv: string[], note: (text: string) => void): string[] {
 }
 
 /**
- * Parses argv (without node and the script); `ownMethods` are the core's methods (IkSolver.methods),
- * the default first; `note` gets a line per renamed flag used (RENAMED_FLAGS). Returns undefined after printing help. Throws BenchError (exit code 2) with
- * one line for any problem.
+ * Parses `argv` with `cmd`; a problem becomes a usage error with the first line of commander's
+ * message. True when the options were parsed, false when the help was printed instead.
  */
-export function parseOptions(
-  argv: string[],
-  isTTY: boolean,
-  ownMethods: readonly string[],
-  note: (text: string) => void = () => {},
-): BenchOptions | undefined {
-  argv = renamedFlags(argv, note);
-  const allMethods = [...ownMethods, ...nativeOnlyMethods, ...peerMethods];
-  const cmd = program(allMethods, [...ownMethods, ...peerMethods]);
+function parseArgv(cmd: Command, argv: string[]): boolean {
   let helped = false;
   cmd.exitOverride((err: CommanderError) => {
     if (err.code === 'commander.helpDisplayed' || err.code === 'commander.help') {
@@ -364,11 +161,18 @@ export function parseOptions(
   try {
     cmd.parse(argv, { from: 'user' });
   } catch (e) {
-    if (helped) return undefined;
+    if (helped) return false;
     throw e;
   }
-  const raw = cmd.opts<RawOptions>();
-  const opts: BenchOptions = {
+  return true;
+}
+
+/**
+ * Every option's value checked on its own, in this order (of two problems, the first is the one
+ * reported); the track experiment's settings are left to trackSettings.
+ */
+function checkedValues(raw: RawOptions, cmd: Command, allMethods: readonly string[], isTTY: boolean): BenchOptions {
+  return {
     rigs: lists('--rig', raw.rig),
     chain: raw.chain === undefined ? undefined : present('--chain', raw.chain).trim(),
     experiments: pick('--experiment', raw.experiment, [...experiments, TRACK], 'experiment').filter(
@@ -402,20 +206,59 @@ export function parseOptions(
     warmUpMs: integerIn('--warm-up', raw.warmUp, 0, MAX_WARM_UP_MS),
     goals: pickOne('--goals', raw.goals, goalsKinds, 'goal kind'),
   };
+}
+
+/**
+ * The track experiment's clips and points (3 or 6); a usage error for another experiment, other
+ * points, or an output of the other experiments (--markdown, --compare).
+ */
+function trackSettings(opts: BenchOptions, raw: RawOptions): NonNullable<BenchOptions['track']> {
+  if (opts.experiments.length > 0)
+    throw usage(`--experiment: track runs alone, not with ${opts.experiments.join(', ')}`);
+  const points = integerIn('--points', raw.points, 3, 6);
+  if (points !== 3 && points !== 6) throw usage('--points: 3 (head and hands) or 6 (and the hips and feet)');
+  if (opts.markdown || opts.compare)
+    throw usage(`${opts.markdown ? '--markdown' : '--compare'} goes with the other experiments, not track`);
+  return { clips: raw.clips.trim() === 'all' ? 'all' : lists('--clips', raw.clips), points };
+}
+
+/** A usage error when --clips or --points was given without the track experiment. */
+function refuseTrackOptions(cmd: Command): void {
+  for (const flag of ['--clips', '--points'] as const)
+    if (cmd.getOptionValueSource(flag.slice(2)) !== 'default') throw usage(`${flag} goes with --experiment track only`);
+}
+
+/** A usage error when a native-only method (kdl, kdl_nr_jl) would run without the native engine. */
+function checkNativeOnly(opts: BenchOptions): void {
+  const nativeOnly = opts.methods.find(isNativeOnly);
+  if (nativeOnly !== undefined && !opts.engines.includes('native'))
+    throw usage(`${nativeOnly} runs only on the native engine: add --engine native`);
+}
+
+/**
+ * Parses argv (without node and the script); `ownMethods` are the core's methods (IkSolver.methods),
+ * the default first; `note` gets a line per renamed flag used (RENAMED_FLAGS). Returns undefined after printing help. Throws BenchError (exit code 2) with
+ * one line for any problem.
+ */
+export function parseOptions(
+  argv: string[],
+  isTTY: boolean,
+  ownMethods: readonly string[],
+  note: (text: string) => void = () => {},
+): BenchOptions | undefined {
+  argv = renamedFlags(argv, note);
+  const allMethods = [...ownMethods, ...nativeOnlyMethods, ...peerMethods];
+  const cmd = program(allMethods, [...ownMethods, ...peerMethods]);
+  if (!parseArgv(cmd, argv)) return undefined;
+  const raw = cmd.opts<RawOptions>();
+  const opts = checkedValues(raw, cmd, allMethods, isTTY);
   checkChain(opts.chain, opts.rigs);
   const track = lists('--experiment', raw.experiment).includes(TRACK);
   if (track) {
-    if (opts.experiments.length > 0)
-      throw usage(`--experiment: track runs alone, not with ${opts.experiments.join(', ')}`);
-    const points = integerIn('--points', raw.points, 3, 6);
-    if (points !== 3 && points !== 6) throw usage('--points: 3 (head and hands) or 6 (and the hips and feet)');
-    if (opts.markdown || opts.compare)
-      throw usage(`${opts.markdown ? '--markdown' : '--compare'} goes with the other experiments, not track`);
-    opts.track = { clips: raw.clips.trim() === 'all' ? 'all' : lists('--clips', raw.clips), points };
+    opts.track = trackSettings(opts, raw);
     return opts;
   }
-  for (const flag of ['--clips', '--points'] as const)
-    if (cmd.getOptionValueSource(flag.slice(2)) !== 'default') throw usage(`${flag} goes with --experiment track only`);
+  refuseTrackOptions(cmd);
   applyTracik(opts, (option) => cmd.getOptionValueSource(option) === 'cli');
   opts.methods = checkGoals(
     opts.goals,
@@ -425,8 +268,6 @@ export function parseOptions(
     opts.paper,
     opts.compare !== undefined,
   );
-  const nativeOnly = opts.methods.find(isNativeOnly);
-  if (nativeOnly !== undefined && !opts.engines.includes('native'))
-    throw usage(`${nativeOnly} runs only on the native engine: add --engine native`);
+  checkNativeOnly(opts);
   return opts;
 }

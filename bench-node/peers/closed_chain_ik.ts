@@ -36,6 +36,21 @@ const DOF = (closedChainIk as unknown as { DOF: Record<'X' | 'Y' | 'Z' | 'EX' | 
 const X_AXIS = new Vector3(1, 0, 0);
 const Z_AXIS = new Vector3(0, 0, 1);
 
+/** Bone i's rest frame (spec.rest, row-major) as a three.js matrix. */
+function restOf(spec: RigSpec, i: number): Matrix4 {
+  return new Matrix4().fromArray(spec.rest.subarray(16 * i, 16 * i + 16)).transpose();
+}
+
+/** Bone i's rest frame relative to its parent's (its own rest frame for a root): where J_x0 sits. */
+function localRest(spec: RigSpec, i: number): { position: Vector3; rotation: Quaternion } {
+  const p = spec.parents[i];
+  const local = p === -1 ? restOf(spec, i) : restOf(spec, p).invert().multiply(restOf(spec, i));
+  const position = new Vector3(),
+    rotation = new Quaternion();
+  local.decompose(position, rotation, new Vector3());
+  return { position, rotation };
+}
+
 /** The library's per-chain solver, whose step we count (not part of its typings). */
 interface ChainSolverLike {
   applyJointAngles(...args: unknown[]): boolean;
@@ -66,82 +81,119 @@ export class ClosedChainIkRunner implements Runner {
       throw new Error("closed-chain-ik: pose goals need the rig's tip rotations");
     const n = spec.parents.length;
     const root = new Link();
+    const boneLinks = this.addBones(root);
+    this.addEffectors(boneLinks);
+    this.solver = this.makeSolver(root);
+    this.countIterations();
+    this.tipBuffer = new Float64Array(3 * spec.effectors.length);
+    this.poseOut = new Float64Array(3 * n);
+    this.setPose(project(spec, new Float64Array(3 * n)));
+  }
+
+  /** Every bone's joints under `root`, parents first; returns each bone's last link (its canonical frame). */
+  private addBones(root: Link): Link[] {
     const boneLinks: Link[] = [];
-    const restOf = (i: number): Matrix4 => new Matrix4().fromArray(spec.rest.subarray(16 * i, 16 * i + 16)).transpose();
-    const position = new Vector3(),
-      scale = new Vector3(),
-      rotation = new Quaternion();
-    for (const i of topologicalOrder(spec.parents)) {
-      const p = spec.parents[i];
-      const local = p === -1 ? restOf(i) : restOf(p).invert().multiply(restOf(i));
-      local.decompose(position, rotation, scale);
-      let parent = p === -1 ? root : boneLinks[p];
-      for (let k = 0; k < 3; k++) {
-        const joint = new Joint();
-        const axis = k === 1 ? Z_AXIS : X_AXIS;
-        const dof = k === 1 ? DOF.EZ : DOF.EX;
-        const q = k === 0 ? rotation.clone() : new Quaternion();
-        if (k === 0) joint.setPosition(position.x, position.y, position.z);
-        const lo = spec.lower[3 * i + k],
-          hi = spec.upper[3 * i + k];
-        if (lo === hi) {
-          q.multiply(new Quaternion().setFromAxisAngle(axis, lo * RAD));
-          this.dofs[3 * i + k] = null;
-        } else {
-          joint.setDoF(dof);
-          if (Number.isFinite(lo)) joint.setMinLimits(lo * RAD);
-          if (Number.isFinite(hi)) joint.setMaxLimits(hi * RAD);
-          this.dofs[3 * i + k] = { joint, dof };
-        }
-        joint.setQuaternion(q.x, q.y, q.z, q.w);
-        const link = new Link();
-        parent.addChild(joint);
-        joint.addChild(link);
-        parent = link;
-      }
-      boneLinks[i] = parent;
+    for (const i of topologicalOrder(this.spec.parents)) {
+      const p = this.spec.parents[i];
+      boneLinks[i] = this.addBone(i, p === -1 ? root : boneLinks[p]);
     }
-    spec.effectors.forEach((b, e) => {
+    return boneLinks;
+  }
+
+  /**
+   * Bone i's three joints J_x0 -> J_z -> J_x2 under `parent` (its parent bone's last link, or the
+   * root), each followed by a link, J_x0 at the bone's local rest frame; returns the last link.
+   */
+  private addBone(i: number, parent: Link): Link {
+    const { position, rotation } = localRest(this.spec, i);
+    let last = parent;
+    for (let k = 0; k < 3; k++) {
       const joint = new Joint();
-      joint.setPosition(spec.lengths[b], 0, 0);
+      const q = k === 0 ? rotation : new Quaternion();
+      if (k === 0) joint.setPosition(position.x, position.y, position.z);
+      this.setAngle(joint, 3 * i + k, k === 1 ? Z_AXIS : X_AXIS, k === 1 ? DOF.EZ : DOF.EX, q);
+      joint.setQuaternion(q.x, q.y, q.z, q.w);
+      const link = new Link();
+      last.addChild(joint);
+      joint.addChild(link);
+      last = link;
+    }
+    return last;
+  }
+
+  /**
+   * Angle `a` (3 per bone) on `joint`, turning about `axis`: the DOF `dof` within the angle's
+   * limits (degrees, set in radians); a fixed angle (min = max) has no DOF and turns `q` instead.
+   */
+  private setAngle(joint: Joint, a: number, axis: Vector3, dof: number, q: Quaternion): void {
+    const lo = this.spec.lower[a],
+      hi = this.spec.upper[a];
+    if (lo === hi) {
+      q.multiply(new Quaternion().setFromAxisAngle(axis, lo * RAD));
+      this.dofs[a] = null;
+    } else {
+      joint.setDoF(dof);
+      if (Number.isFinite(lo)) joint.setMinLimits(lo * RAD);
+      if (Number.isFinite(hi)) joint.setMaxLimits(hi * RAD);
+      this.dofs[a] = { joint, dof };
+    }
+  }
+
+  /**
+   * Per effector: a DOF-less joint at (length, 0, 0) of its bone (rig units), a tip link, and the
+   * Goal closing onto it (position only, or the whole pose with --goals pose).
+   */
+  private addEffectors(boneLinks: Link[]): void {
+    this.spec.effectors.forEach((b, e) => {
+      const joint = new Joint();
+      joint.setPosition(this.spec.lengths[b], 0, 0);
       const tip = new Link();
       boneLinks[b].addChild(joint);
       joint.addChild(tip);
       this.tipLinks[e] = tip;
       const goal = new Goal();
-      if (settings.goals === 'pose') goal.setGoalDoF(DOF.X, DOF.Y, DOF.Z, DOF.EX, DOF.EY, DOF.EZ);
+      if (this.settings.goals === 'pose') goal.setGoalDoF(DOF.X, DOF.Y, DOF.Z, DOF.EX, DOF.EY, DOF.EZ);
       else goal.setGoalDoF(DOF.X, DOF.Y, DOF.Z);
       goal.makeClosure(tip);
       this.goals[e] = goal;
     });
+  }
 
+  /** The library's solver over `root` and the goals, its thresholds and lengths set for this rig and run. */
+  private makeSolver(root: Link): Solver {
+    const { settings } = this;
     const size = settings.rigSize / REFERENCE_SIZE;
-    this.solver = new Solver([root, ...this.goals]);
-    this.solver.maxIterations = CHUNK_ITERATIONS;
-    this.solver.useSVD = false; // the library's default; its README warns SVD can diverge
-    this.solver.restPoseFactor = 0; // no rest pose is set: skip the null-space term
+    const solver = new Solver([root, ...this.goals]);
+    solver.maxIterations = CHUNK_ITERATIONS;
+    solver.useSVD = false; // the library's default; its README warns SVD can diverge
+    solver.restPoseFactor = 0; // no rest pose is set: skip the null-space term
     // Every goal nearer than this: on target by the run's test (tipTolerance, or E < errorTolerance).
-    this.solver.translationConvergeThreshold =
+    solver.translationConvergeThreshold =
       settings.tipTolerance > 0
         ? settings.tipTolerance
-        : Math.sqrt((2 * settings.errorTolerance) / spec.effectors.length);
+        : Math.sqrt((2 * settings.errorTolerance) / this.spec.effectors.length);
     // Its rotation error is the length of a quaternion difference, 2 sin(angle / 4) for unit
     // quaternions: under this, every frame is within the run's orientation tolerance.
     const toleranceRad = (settings.orientationToleranceDeg ?? ORIENTATION_TOLERANCE_DEG) * RAD;
-    if (settings.goals === 'pose') this.solver.rotationConvergeThreshold = 2 * Math.sin(toleranceRad / 4);
+    if (settings.goals === 'pose') solver.rotationConvergeThreshold = 2 * Math.sin(toleranceRad / 4);
     // Its rotation rows (a quaternion difference, about half the angle) weigh rotationFactor
     // (error and Jacobian alike) against translation rows in rig units: scaled with the rig like
     // every length here, as our solvers weigh orientations by a length (the rig's reach).
-    if (settings.goals === 'pose') this.solver.rotationFactor = size;
+    if (settings.goals === 'pose') solver.rotationFactor = size;
     // Lengths in the library's defaults assume a rig about 1 unit across; scale them with the rig.
-    this.solver.translationErrorClamp = 0.1 * size;
+    solver.translationErrorClamp = 0.1 * size;
     // As the library's authors run it: the damping of its own benchmark (benchmark/solve.js: 0.01,
     // ten times its default), and its own exits: a solve stops when the error grows by more than
     // divergeThreshold (0.01, a length) or no DOF moves more than stallThreshold (1e-4 rad). With
     // those exits off, a solve pinned against its limits (the library locks a joint that reaches
     // one) ran to the time budget, and its "solve times" were timeouts.
-    this.solver.dampingFactor = 0.01 * size;
-    this.solver.divergeThreshold = 0.01 * size;
+    solver.dampingFactor = 0.01 * size;
+    solver.divergeThreshold = 0.01 * size;
+    return solver;
+  }
+
+  /** Counts each chain's steps in `iterations` (and calls `observe` after each) by wrapping the library's step. */
+  private countIterations(): void {
     for (const chain of (this.solver as unknown as { solvers: ChainSolverLike[] }).solvers) {
       const apply = chain.applyJointAngles.bind(chain);
       chain.applyJointAngles = (...args: unknown[]): boolean => {
@@ -151,9 +203,6 @@ export class ClosedChainIkRunner implements Runner {
         return locked;
       };
     }
-    this.tipBuffer = new Float64Array(3 * spec.effectors.length);
-    this.poseOut = new Float64Array(3 * n);
-    this.setPose(project(spec, new Float64Array(3 * n)));
   }
 
   private setPose(angles: Float64Array): void {
