@@ -19,12 +19,13 @@
 //
 // Reading checks everything and names the field of the first problem: unknown bones are an error,
 // bones the file lacks get 0 (a warning), every angle is clamped into the rig's limits (a warning
-// naming the bone when one changes). Writing refuses what reading would refuse (the checks are
+// naming the bone when one changes; pose_clamp.ts). Writing refuses what reading would refuse (the checks are
 // shared: pose_checks.ts). Numbers are written in JavaScript's shortest round-trip form, so a pose
 // written and read back gives the same angles bit for bit.
 import type { RigSpec } from '../ik/rig_arrays.js';
 import { jsonBudgetProblem } from './json_budget.js';
 import { effectorsProblem, numbersProblem, orientationProblem, shown, targetProblem } from './pose_checks.js';
+import { clampAngles } from './pose_clamp.js';
 import { poseBoneKeys } from './pose_keys.js';
 
 /** The "format" of a pose file. */
@@ -86,6 +87,18 @@ const fail = (what: string): never => {
   throw new PoseFormatError(`pose file: ${what}`);
 };
 
+/** Throws a PoseFormatError for `problem`, when there is one. */
+function failOn(problem: string | undefined): void {
+  if (problem) fail(problem);
+}
+
+/** True when `v` is a JSON object (not null, not an array). */
+const isJsonObject = (v: unknown): v is Record<string, unknown> =>
+  typeof v === 'object' && v !== null && !Array.isArray(v);
+
+/** The value of `key` in the JSON object `o`, undefined unless `o` has that key of its own ("__proto__" is no field). */
+const ownField = (o: Record<string, unknown>, key: string): unknown => (Object.hasOwn(o, key) ? o[key] : undefined);
+
 const listed = (names: readonly string[]): string => {
   const shownNames = names
     .slice(0, NAMES_SHOWN)
@@ -96,8 +109,7 @@ const listed = (names: readonly string[]): string => {
 
 /** `v` as an array of `n` finite numbers, else a PoseFormatError naming `field`. */
 function finiteArray(v: unknown, n: number, field: string, what: string): number[] {
-  const bad = numbersProblem(v, n, field, what);
-  if (bad) fail(bad);
+  failOn(numbersProblem(v, n, field, what));
   return v as number[];
 }
 
@@ -191,61 +203,109 @@ export function poseFromJson(
   spec: Pick<RigSpec, 'names' | 'lower' | 'upper'>,
   limits?: PoseLimits,
 ): PoseRead {
+  const doc = parsePoseText(text);
+  const rigName = checkHeader(doc);
+  const clampTo = limitsFor(spec, limits);
+  const keys = readingKeys(spec.names);
+  const given = readBoneAngles(ownField(doc, 'bones'), keys);
+  const { angles, clamped } = clampAngles(given, keys.keys, clampTo);
+  const warnings = angleWarnings(clamped, given, keys.keys);
+  const root = readRootMove(ownField(doc, 'root'));
+  const { effectors, targets, orientations } = readEffectors(ownField(doc, 'effectors'), keys);
+  return { rigName, angles, effectors, targets, orientations, root, warnings };
+}
+
+/** The pose file's top-level JSON object, from `text` (a byte-order mark skipped) within MAX_POSE_CHARS and json_budget.ts. */
+function parsePoseText(text: string): Record<string, unknown> {
   if (typeof text !== 'string') fail(`expected text, got ${shown(text)}`);
   if (text.length > MAX_POSE_CHARS)
     fail(
       `${(text.length / 1048576).toFixed(1)} MB of text, more than a pose file holds (at most ${MAX_POSE_CHARS / 1048576} MB)`,
     );
-  const tooBig = jsonBudgetProblem(text);
-  if (tooBig) fail(tooBig);
+  failOn(jsonBudgetProblem(text));
   let doc: unknown;
   try {
     doc = JSON.parse(text.charCodeAt(0) === 0xfeff ? text.slice(1) : text);
   } catch (e) {
     return fail(`not JSON: ${(e as Error).message}`);
   }
-  if (typeof doc !== 'object' || doc === null || Array.isArray(doc))
-    return fail(`the JSON is ${shown(doc)}, not an object`);
-  const root = doc as Record<string, unknown>;
-  const field = (key: string): unknown => (Object.hasOwn(root, key) ? root[key] : undefined);
-  if (field('format') !== POSE_FORMAT) fail(`"format" is ${shown(field('format'))}, expected "${POSE_FORMAT}"`);
-  if (field('version') !== POSE_VERSION)
-    fail(`"version" is ${shown(field('version'))}; this reader takes version ${POSE_VERSION}`);
-  const rig = field('rig');
-  if (rig !== undefined && typeof rig !== 'string') fail(`"rig" is ${shown(rig)}, not a string`);
+  if (!isJsonObject(doc)) return fail(`the JSON is ${shown(doc)}, not an object`);
+  return doc;
+}
 
-  const names = spec.names;
-  const n = names.length;
+/** Checks the file's "format" and "version"; returns its "rig" name ('' when it gives none). */
+function checkHeader(doc: Record<string, unknown>): string {
+  const format = ownField(doc, 'format');
+  if (format !== POSE_FORMAT) fail(`"format" is ${shown(format)}, expected "${POSE_FORMAT}"`);
+  const version = ownField(doc, 'version');
+  if (version !== POSE_VERSION) fail(`"version" is ${shown(version)}; this reader takes version ${POSE_VERSION}`);
+  const rig = ownField(doc, 'rig');
+  if (rig !== undefined && typeof rig !== 'string') fail(`"rig" is ${shown(rig)}, not a string`);
+  return typeof rig === 'string' ? rig : '';
+}
+
+/**
+ * The limits to clamp against, 3 per bone in degrees: `limits`, else the spec's own. Throws an
+ * Error (the caller's fault, not the file's) when their lengths do not fit the spec's bones.
+ */
+function limitsFor(spec: Pick<RigSpec, 'names' | 'lower' | 'upper'>, limits: PoseLimits | undefined): PoseLimits {
+  const n = spec.names.length;
   const lower = limits?.lower ?? spec.lower,
     upper = limits?.upper ?? spec.upper;
   if (lower.length !== 3 * n || upper.length !== 3 * n)
     throw new Error(`poseFromJson: limits have ${lower.length} and ${upper.length} values for ${n} bones (3 per bone)`);
-  const keys = poseBoneKeys(names);
-  const index = new Map(keys.map((key, i) => [key, i]));
-  const unusable = new Set(names.filter((name, i) => keys[i] !== name)); // names the file cannot key by
-  const warnings: string[] = [];
+  return { lower, upper };
+}
 
-  const bones = field('bones');
-  if (typeof bones !== 'object' || bones === null || Array.isArray(bones))
+/** How a file may name the bones of a rig, for reading. */
+interface ReadingKeys {
+  /** Each bone's key, rig order (pose_keys.ts). */
+  keys: string[];
+  /** The bone index of each key. */
+  index: Map<string, number>;
+  /** The rig's names that are not their bone's key: a file naming one is told to use "#index". */
+  unusable: Set<string>;
+}
+
+/** The keys of the bones called `names` (rig order), with their indices and the names no key. */
+function readingKeys(names: readonly string[]): ReadingKeys {
+  const keys = poseBoneKeys(names);
+  return {
+    keys,
+    index: new Map(keys.map((key, i) => [key, i])),
+    unusable: new Set(names.filter((name, i) => keys[i] !== name)),
+  };
+}
+
+/**
+ * The file's "bones" (`bones`): per bone of the rig (rig order), the 3 XZX angles it gives in
+ * degrees, unchecked against the limits, or undefined where it gives none. Throws a
+ * PoseFormatError for a key that names no bone, then for angles that are not 3 finite numbers.
+ */
+function readBoneAngles(bones: unknown, keys: ReadingKeys): (number[] | undefined)[] {
+  if (!isJsonObject(bones))
     return fail(`"bones" is ${shown(bones)}, not an object of bone name -> [3 angles in degrees]`);
-  const entries = Object.entries(bones as Record<string, unknown>);
-  const ambiguous = entries.filter(([key]) => !index.has(key) && unusable.has(key)).map(([key]) => key);
+  const entries = Object.entries(bones);
+  const ambiguous = entries.filter(([key]) => !keys.index.has(key) && keys.unusable.has(key)).map(([key]) => key);
   if (ambiguous.length) fail(`"bones" names ${listed(ambiguous)}, ${KEYED_BY_INDEX}`);
-  const unknown = entries.filter(([key]) => !index.has(key)).map(([key]) => key);
+  const unknown = entries.filter(([key]) => !keys.index.has(key)).map(([key]) => key);
   if (unknown.length) fail(`"bones" names ${unknown.length} bone(s) the rig lacks: ${listed(unknown)}`);
-  const given = new Array<number[] | undefined>(n);
+  const given = new Array<number[] | undefined>(keys.keys.length);
   for (const [key, value] of entries)
-    given[index.get(key)!] = finiteArray(value, 3, `"bones"[${JSON.stringify(key)}]`, 'XZX angles in degrees');
-  // Every angle, also those of bones the file lacks (0), is clamped into the limits.
-  const angles = new Float64Array(3 * n);
-  const clamped: string[] = [];
-  for (let i = 0; i < n; i++) {
-    const a = given[i] ?? [0, 0, 0];
-    for (let k = 0; k < 3; k++) angles[3 * i + k] = Math.min(Math.max(a[k], lower[3 * i + k]), upper[3 * i + k]);
-    const now = Array.from(angles.subarray(3 * i, 3 * i + 3));
-    if (given[i] && now.some((v, k) => v !== a[k]))
-      clamped.push(`${JSON.stringify(keys[i])} [${a.join(', ')}] -> [${now.join(', ')}]`);
-  }
+    given[keys.index.get(key)!] = finiteArray(value, 3, `"bones"[${JSON.stringify(key)}]`, 'XZX angles in degrees');
+  return given;
+}
+
+/**
+ * The warnings about the angles read: the bones whose angles were clamped (`clamped`, from
+ * clampAngles), then the bones (`keys`, rig order) the file gives no angles for (`given` undefined).
+ */
+function angleWarnings(
+  clamped: readonly string[],
+  given: readonly (number[] | undefined)[],
+  keys: readonly string[],
+): string[] {
+  const warnings: string[] = [];
   if (clamped.length)
     warnings.push(
       `angles outside the rig's limits were clamped for ${clamped.length} bone(s): ${clamped.slice(0, NAMES_SHOWN).join('; ')}${clamped.length > NAMES_SHOWN ? `; and ${clamped.length - NAMES_SHOWN} more` : ''}`,
@@ -255,56 +315,66 @@ export function poseFromJson(
     warnings.push(
       `the pose gives no angles for ${missing.length} bone(s), set to 0 or the nearest limit: ${listed(missing)}`,
     );
+  return warnings;
+}
 
-  const rootField = field('root');
-  let rootMove: Float64Array | null = null;
-  if (rootField !== undefined) {
-    const r = finiteArray(rootField, 3, '"root"', "a floating root's move in rig units");
-    const far = targetProblem(r, '"root"');
-    if (far) fail(far);
-    rootMove = Float64Array.from(r);
-  }
+/** The file's "root" (`root`): a floating root's move (x, y, z, rig units), or null when it gives none. */
+function readRootMove(root: unknown): Float64Array | null {
+  if (root === undefined) return null;
+  const r = finiteArray(root, 3, '"root"', "a floating root's move in rig units");
+  failOn(targetProblem(r, '"root"'));
+  return Float64Array.from(r);
+}
 
-  const list = field('effectors');
+/** The end effectors a pose file gives, in its order. */
+type EffectorsRead = Pick<PoseRead, 'effectors' | 'targets' | 'orientations'>;
+
+/** The file's "effectors" (`list`), each naming a bone by its key in `keys`. Throws a PoseFormatError naming the entry. */
+function readEffectors(list: unknown, keys: ReadingKeys): EffectorsRead {
   if (!Array.isArray(list))
     return fail(`"effectors" is ${shown(list)}, not an array of { "bone", "target", "orientation"? }`);
-  const countProblem = effectorsProblem(list.length, n);
-  if (countProblem) fail(countProblem);
-  const effectors: number[] = [];
-  const targets = new Float64Array(3 * list.length);
-  const orientations: (Float64Array | null)[] = [];
+  failOn(effectorsProblem(list.length, keys.keys.length));
+  const read: EffectorsRead = { effectors: [], targets: new Float64Array(3 * list.length), orientations: [] };
   list.forEach((item: unknown, e) => {
-    const at = `"effectors"[${e}]`;
-    if (typeof item !== 'object' || item === null || Array.isArray(item))
-      fail(`${at} is ${shown(item)}, not an object`);
-    const entry = item as Record<string, unknown>;
-    const get = (key: string): unknown => (Object.hasOwn(entry, key) ? entry[key] : undefined);
-    const bone = get('bone');
-    if (typeof bone !== 'string') return fail(`${at}.bone is ${shown(bone)}, not a bone name`);
-    const b = index.get(bone);
-    if (b === undefined && unusable.has(bone)) fail(`${at}.bone ${JSON.stringify(bone)}, ${KEYED_BY_INDEX}`);
-    if (b === undefined) return fail(`${at}.bone ${JSON.stringify(bone)} is no bone of the rig`);
-    if (effectors.includes(b)) fail(`${at}.bone ${JSON.stringify(bone)} is listed twice`);
-    const t = get('target');
-    const badTarget = targetProblem(t, `${at}.target`);
-    if (badTarget) fail(badTarget);
-    const q = get('orientation');
-    if (q === undefined || q === null) orientations.push(null);
-    else {
-      const badOrientation = orientationProblem(q, `${at}.orientation`);
-      if (badOrientation) fail(badOrientation);
-      orientations.push(Float64Array.from(q as number[]));
-    }
-    effectors.push(b);
-    targets.set(t as number[], 3 * e);
+    const { bone, target, orientation } = readEffector(item, `"effectors"[${e}]`, keys, read.effectors);
+    read.orientations.push(orientation);
+    read.effectors.push(bone);
+    read.targets.set(target, 3 * e);
   });
-  return {
-    rigName: typeof rig === 'string' ? rig : '',
-    angles,
-    effectors,
-    targets,
-    orientations,
-    root: rootMove,
-    warnings,
-  };
+  return read;
+}
+
+/**
+ * One entry `item` of "effectors" (`at` names it): its bone index, not among `earlier`; its
+ * target (3 numbers, rig units); its orientation quaternion (x, y, z, w) or null.
+ */
+function readEffector(
+  item: unknown,
+  at: string,
+  keys: ReadingKeys,
+  earlier: readonly number[],
+): { bone: number; target: number[]; orientation: Float64Array | null } {
+  if (!isJsonObject(item)) return fail(`${at} is ${shown(item)}, not an object`);
+  const bone = effectorBone(ownField(item, 'bone'), at, keys, earlier);
+  const target = ownField(item, 'target');
+  failOn(targetProblem(target, `${at}.target`));
+  const orientation = readOrientation(ownField(item, 'orientation'), `${at}.orientation`);
+  return { bone, target: target as number[], orientation };
+}
+
+/** The bone index of an effector's "bone" `bone` (a key of `keys`), which no `earlier` effector has. */
+function effectorBone(bone: unknown, at: string, keys: ReadingKeys, earlier: readonly number[]): number {
+  if (typeof bone !== 'string') return fail(`${at}.bone is ${shown(bone)}, not a bone name`);
+  const b = keys.index.get(bone);
+  if (b === undefined && keys.unusable.has(bone)) fail(`${at}.bone ${JSON.stringify(bone)}, ${KEYED_BY_INDEX}`);
+  if (b === undefined) return fail(`${at}.bone ${JSON.stringify(bone)} is no bone of the rig`);
+  if (earlier.includes(b)) fail(`${at}.bone ${JSON.stringify(bone)} is listed twice`);
+  return b;
+}
+
+/** An effector's "orientation" `q` (`where` names it) as a unit quaternion (x, y, z, w), or null when it gives none. */
+function readOrientation(q: unknown, where: string): Float64Array | null {
+  if (q === undefined || q === null) return null;
+  failOn(orientationProblem(q, where));
+  return Float64Array.from(q as number[]);
 }

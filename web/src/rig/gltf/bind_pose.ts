@@ -98,14 +98,49 @@ export function restFromBindPose(
   current: Mat4[],
   isJoint: Set<number>,
 ): RestPose {
+  const skeleton: BindSkeleton = {
+    tree,
+    skins,
+    binds,
+    isJoint,
+    above: jointsAbove(tree, isJoint),
+    size: skeletonSize(isJoint, current),
+    slots: skins.map((s) => new Map(s.joints.map((j, k) => [j, k]))),
+  };
+  const { rest, usable } = restOfUsableSkins(skeleton);
+  rest.unusable = skins.flatMap((_, t) => (binds[t] !== undefined && !usable[t] ? [t] : []));
+  return rest;
+}
+
+/** The skins and nodes restFromBindPose reads, with what it works out from them once. */
+interface BindSkeleton {
+  tree: GltfTree;
+  skins: GltfSkin[];
+  /** Per skin, its bind matrices (bindMatrices), or undefined when it has none. */
+  binds: (Mat4[] | undefined)[];
+  /** The joints of every skin (node indices). */
+  isJoint: Set<number>;
+  /** The nearest joint strictly above each node, -1 for none. */
+  above: Int32Array;
+  /** The skeleton's size: the diagonal of its joints' bounding box (scene units). */
+  size: number;
+  /** Per skin, each of its joints' slot (index in its joints) by node. */
+  slots: Map<number, number>[];
+}
+
+/** The nearest joint (of `isJoint`) strictly above each node of `tree`, -1 for none. */
+function jointsAbove(tree: GltfTree, isJoint: Set<number>): Int32Array {
   const { nodes, order } = tree;
-  // The nearest joint strictly above each node, -1 for none.
   const above = new Int32Array(nodes.length).fill(-1);
   for (const i of order) {
     const p = nodes[i].parent;
     if (p >= 0) above[i] = isJoint.has(p) ? p : above[p];
   }
-  // The skeleton's size: the diagonal of its joints' bounding box (scene units).
+  return above;
+}
+
+/** The diagonal of the bounding box of the joints `isJoint` as they stand (`current` world matrices), scene units; 1 when that is 0. */
+function skeletonSize(isJoint: Set<number>, current: Mat4[]): number {
   const lo = [Infinity, Infinity, Infinity],
     hi = [-Infinity, -Infinity, -Infinity];
   for (const j of isJoint)
@@ -113,70 +148,120 @@ export function restFromBindPose(
       lo[k] = Math.min(lo[k], current[j][4 * k + 3]);
       hi[k] = Math.max(hi[k], current[j][4 * k + 3]);
     }
-  const size = Math.hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]) || 1;
-  // Each skin's joint slot by node.
-  const slots = skins.map((s) => new Map(s.joints.map((j, k) => [j, k])));
+  return Math.hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]) || 1;
+}
 
-  const build = (usable: boolean[]): { rest: RestPose; failed: Set<number> } => {
-    const local = new Array<Mat4>(nodes.length),
-      world = new Array<Mat4>(nodes.length);
-    const rebound: number[] = [];
-    const failed = new Set<number>();
-    for (const i of order) {
-      const node = nodes[i],
-        p = node.parent,
-        a = above[i];
-      let L = node.local;
-      // Every usable skin that relates joint i to the joint above is checked (so one pass finds all
-      // the skins that fail here); the first that passes gives the rest.
-      let chosen: { Qb: Float64Array; Qn: Float64Array; Pn: Float64Array } | undefined;
-      for (let s = 0; isJoint.has(i) && a >= 0 && s < skins.length; s++) {
-        if (!usable[s] || !slots[s].has(i) || !slots[s].has(a)) continue;
-        // Joint i's bind world matrix, placed by its rest joint above: world(a) * ibm(a) * ibm(i)^-1.
-        const bind = binds[s]!;
-        const bindWorld = multiply(multiply(world[a], invertAffine(bind[slots[s].get(a)!])!), bind[slots[s].get(i)!]);
-        const Lb = multiply(invertAffine(world[p])!, bindWorld);
-        const Qb = polarRotation(Lb),
-          Qn = polarRotation(L);
-        const Pb = mul3(transpose3(Qb), linearOf(Lb)),
-          Pn = mul3(transpose3(Qn), linearOf(L));
-        const moved = transformDirection(world[p], [Lb[3] - L[3], Lb[7] - L[7], Lb[11] - L[11]]);
-        const sameShape =
-          Math.hypot(...moved) <= SHAPE_TOLERANCE * size &&
-          maxAbsDiff(Pb, Pn) <= SHAPE_TOLERANCE * maxAbs(Pn) &&
-          det3(Lb) * det3(L) > 0;
-        if (!sameShape) failed.add(s);
-        else chosen ??= { Qb, Qn, Pn };
-      }
-      if (chosen && maxAbsDiff(chosen.Qb, chosen.Qn) > SAME_ROTATION) {
-        // The bind rotation with the node's own offset and scale (stretch Pn).
-        const R = mul3(chosen.Qb, chosen.Pn);
-        L = Float64Array.of(R[0], R[1], R[2], L[3], R[3], R[4], R[5], L[7], R[6], R[7], R[8], L[11], 0, 0, 0, 1);
-        rebound.push(i);
-      }
-      local[i] = L;
-      world[i] = p === -1 ? L : multiply(world[p], L);
-    }
-    const unbound = skins.flatMap((_, t) => (binds[t] === undefined ? [t] : []));
-    return { rest: { local, world, rebound, unbound, unusable: [] }, failed };
-  };
-
-  // A skin that fails the shape check anywhere is set aside whole, and the rest built again
-  // without it (the rest above a joint changes with the skins set aside, so this repeats, a few
-  // times at most; a joint where a skin still fails after that keeps its node's pose).
-  const usable = skins.map((_, s) => binds[s] !== undefined);
-  let { rest, failed } = build(usable);
+/**
+ * The rest pose built from the skins that pass the shape check, and which skins (true) those are.
+ * A skin that fails the shape check anywhere is set aside whole, and the rest built again
+ * without it (the rest above a joint changes with the skins set aside, so this repeats, a few
+ * times at most; a joint where a skin still fails after that keeps its node's pose).
+ */
+function restOfUsableSkins(skeleton: BindSkeleton): { rest: RestPose; usable: boolean[] } {
+  const usable = skeleton.skins.map((_, s) => skeleton.binds[s] !== undefined);
+  let { rest, failed } = buildRest(skeleton, usable);
   for (let pass = 0; failed.size > 0 && pass < 3; pass++) {
     failed.forEach((s) => (usable[s] = false));
-    ({ rest, failed } = build(usable));
+    ({ rest, failed } = buildRest(skeleton, usable));
   }
   if (failed.size > 0) {
     failed.forEach((s) => (usable[s] = false));
-    ({ rest, failed } = build(usable));
+    ({ rest, failed } = buildRest(skeleton, usable));
     failed.forEach((s) => (usable[s] = false)); // where it still fails, a joint keeps its node's pose
   }
-  rest.unusable = skins.flatMap((_, t) => (binds[t] !== undefined && !usable[t] ? [t] : []));
-  return rest;
+  return { rest, usable };
+}
+
+/**
+ * The rest pose with the rotations of the skins marked `usable` (its `unusable` left empty), top
+ * down, and the skins that failed the shape check at some joint.
+ */
+function buildRest(skeleton: BindSkeleton, usable: boolean[]): { rest: RestPose; failed: Set<number> } {
+  const { nodes, order } = skeleton.tree;
+  const local = new Array<Mat4>(nodes.length),
+    world = new Array<Mat4>(nodes.length);
+  const rebound: number[] = [];
+  const failed = new Set<number>();
+  for (const i of order) {
+    const p = nodes[i].parent;
+    let L = nodes[i].local;
+    const chosen = chooseBind(skeleton, usable, i, world, failed);
+    if (chosen && maxAbsDiff(chosen.Qb, chosen.Qn) > SAME_ROTATION) {
+      L = reboundLocal(chosen, L);
+      rebound.push(i);
+    }
+    local[i] = L;
+    world[i] = p === -1 ? L : multiply(world[p], L);
+  }
+  const unbound = skeleton.skins.flatMap((_, t) => (skeleton.binds[t] === undefined ? [t] : []));
+  return { rest: { local, world, rebound, unbound, unusable: [] }, failed };
+}
+
+/**
+ * A joint's local matrix split by a skin's bind pose: the bind rotation Qb, the node's own
+ * rotation Qn and the node's stretch Pn (its local linear part = Qn Pn), 9 numbers each, row-major.
+ */
+interface BindFit {
+  Qb: Float64Array;
+  Qn: Float64Array;
+  Pn: Float64Array;
+}
+
+/**
+ * The bind pose of node `i` (its parents' rest `world` matrices already built) from the first
+ * skin marked `usable` that relates joint i to the joint above and passes the shape check, or
+ * undefined when none does. Every such skin is checked (so one pass finds all the skins that fail
+ * here); those that fail are added to `failed`.
+ */
+function chooseBind(
+  skeleton: BindSkeleton,
+  usable: boolean[],
+  i: number,
+  world: Mat4[],
+  failed: Set<number>,
+): BindFit | undefined {
+  const { isJoint, skins, slots } = skeleton;
+  const a = skeleton.above[i];
+  let chosen: BindFit | undefined;
+  for (let s = 0; isJoint.has(i) && a >= 0 && s < skins.length; s++) {
+    if (!usable[s] || !slots[s].has(i) || !slots[s].has(a)) continue;
+    const fit = bindFit(skeleton, s, i, a, world);
+    if (!fit) failed.add(s);
+    else chosen ??= fit;
+  }
+  return chosen;
+}
+
+/**
+ * Joint `i`'s bind pose by skin `s`, placed by its rest joint above `a` (`world`: the rest world
+ * matrices built so far), when its offset and scale agree with the node's within SHAPE_TOLERANCE
+ * and neither mirrors the other; undefined when they do not.
+ */
+function bindFit(skeleton: BindSkeleton, s: number, i: number, a: number, world: Mat4[]): BindFit | undefined {
+  const { nodes } = skeleton.tree;
+  const p = nodes[i].parent,
+    L = nodes[i].local;
+  // Joint i's bind world matrix, placed by its rest joint above: world(a) * ibm(a) * ibm(i)^-1.
+  const bind = skeleton.binds[s]!,
+    slot = skeleton.slots[s];
+  const bindWorld = multiply(multiply(world[a], invertAffine(bind[slot.get(a)!])!), bind[slot.get(i)!]);
+  const Lb = multiply(invertAffine(world[p])!, bindWorld);
+  const Qb = polarRotation(Lb),
+    Qn = polarRotation(L);
+  const Pb = mul3(transpose3(Qb), linearOf(Lb)),
+    Pn = mul3(transpose3(Qn), linearOf(L));
+  const moved = transformDirection(world[p], [Lb[3] - L[3], Lb[7] - L[7], Lb[11] - L[11]]);
+  const sameShape =
+    Math.hypot(...moved) <= SHAPE_TOLERANCE * skeleton.size &&
+    maxAbsDiff(Pb, Pn) <= SHAPE_TOLERANCE * maxAbs(Pn) &&
+    det3(Lb) * det3(L) > 0;
+  return sameShape ? { Qb, Qn, Pn } : undefined;
+}
+
+/** The local matrix `L` with the bind rotation `fit.Qb` in place of its own, its offset and scale (stretch Pn) kept. */
+function reboundLocal(fit: BindFit, L: Mat4): Mat4 {
+  const R = mul3(fit.Qb, fit.Pn);
+  return Float64Array.of(R[0], R[1], R[2], L[3], R[3], R[4], R[5], L[7], R[6], R[7], R[8], L[11], 0, 0, 0, 1);
 }
 
 /** A middle XZX angle this close to 0 or 180 degrees (its sine, radians) is taken as exactly that. */

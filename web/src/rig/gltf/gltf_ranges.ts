@@ -57,10 +57,40 @@ function elementBytes(type: string, components: number, componentBytes: number):
 
 /** Checks the byte ranges of buffers, buffer views and accessors. Throws RigFormatError naming the field. */
 export function checkRanges(container: GltfContainer, lists: GltfLists, file: string): void {
-  const bufferLengths = lists.buffers.map((b, i) => {
+  const bufferLengths = checkBuffers(lists.buffers, container.bin, file);
+  const views = checkBufferViews(lists.bufferViews, bufferLengths, file);
+  let accessorBytes = 0;
+  lists.accessors.forEach((a, i) => {
+    const where = `accessors[${i}]`;
+    const elements = accessorElements(a, where, file);
+    accessorBytes += elements.count * elements.element;
+    if (accessorBytes > MAX_ACCESSOR_BYTES) failIn(file, tooManyAccessorBytes(accessorBytes, i, a, elements));
+    checkAccessorData(a, elements, views, where, file);
+  });
+}
+
+/** Where a buffer view lies in its buffer (first byte and length, bytes) and its byteStride (bytes; undefined: packed). */
+interface ViewRange {
+  offset: number;
+  length: number;
+  stride: number | undefined;
+}
+
+/** A run of data: `count` elements of `element` bytes each (elementBytes), in components of `componentBytes` bytes. */
+interface Elements {
+  count: number;
+  element: number;
+  componentBytes: number;
+}
+
+/**
+ * Each buffer's byteLength (bytes), checked, and its uri a string where given; a buffers[0]
+ * without a uri must fit in the GLB binary chunk `bin` (when there is one).
+ */
+function checkBuffers(buffers: JsonObject[], bin: Uint8Array | undefined, file: string): number[] {
+  return buffers.map((b, i) => {
     const length = asInteger(b.byteLength, 1, MAX_SIZE, `buffers[${i}].byteLength`, file);
     if (b.uri !== undefined && typeof b.uri !== 'string') failIn(file, `buffers[${i}].uri is not a string`);
-    const bin = container.bin;
     if (i === 0 && b.uri === undefined && bin !== undefined && bin.byteLength < length)
       failIn(
         file,
@@ -68,7 +98,11 @@ export function checkRanges(container: GltfContainer, lists: GltfLists, file: st
       );
     return length;
   });
-  const views = lists.bufferViews.map((v, i) => {
+}
+
+/** Each buffer view's range, checked to lie inside its buffer (`bufferLengths`, bytes) with a valid byteStride. */
+function checkBufferViews(bufferViews: JsonObject[], bufferLengths: number[], file: string): ViewRange[] {
+  return bufferViews.map((v, i) => {
     const where = `bufferViews[${i}]`;
     const offset = asInteger(v.byteOffset, 0, MAX_SIZE, `${where}.byteOffset`, file, 0);
     const length = asInteger(v.byteLength, 1, MAX_SIZE, `${where}.byteLength`, file);
@@ -84,90 +118,113 @@ export function checkRanges(container: GltfContainer, lists: GltfLists, file: st
       );
     return { offset, length, stride };
   });
-  let accessorBytes = 0;
-  lists.accessors.forEach((a, i) => {
-    const where = `accessors[${i}]`;
-    const componentBytes = COMPONENT_BYTES.get(a.componentType);
-    if (componentBytes === undefined)
-      failIn(
-        file,
-        badValue(
-          a.componentType,
-          `${where}.componentType`,
-          `a glTF component type (${[...COMPONENT_BYTES.keys()].join(', ')})`,
-        ),
-      );
-    const components = TYPE_COMPONENTS.get(a.type);
-    if (components === undefined)
-      failIn(
-        file,
-        badValue(a.type, `${where}.type`, `a glTF accessor type (${[...TYPE_COMPONENTS.keys()].join(', ')})`),
-      );
-    const count = asInteger(a.count, 1, MAX_SIZE, `${where}.count`, file);
-    const element = elementBytes(a.type as string, components, componentBytes);
-    for (const key of ['min', 'max'] as const) {
-      const v = a[key];
-      if (
-        v !== undefined &&
-        (!Array.isArray(v) || v.length !== components || !v.every((x) => typeof x === 'number' && Number.isFinite(x)))
-      )
-        failIn(file, `${where}.${key} must be ${components} finite numbers`);
-    }
-    accessorBytes += count * element;
-    if (accessorBytes > MAX_ACCESSOR_BYTES)
-      failIn(
-        file,
-        `${accessorBytes} bytes of accessor data in ${i === 0 ? where : `accessors[0..${i}]`} (${where}: ${count} elements of ${element} bytes${a.bufferView === undefined ? ' without a bufferView, zeros to allocate' : ''}); at most ${MAX_ACCESSOR_BYTES} bytes (256 MiB) in one file`,
-      );
-    if (a.bufferView !== undefined) {
-      const offset = asInteger(a.byteOffset, 0, MAX_SIZE, `${where}.byteOffset`, file, 0);
-      checkSpan(a.bufferView as number, offset, count, element, componentBytes, where);
-    }
-    if (a.sparse !== undefined)
-      checkSparse(asObject(a.sparse, `${where}.sparse`, file), count, element, componentBytes, `${where}.sparse`);
-  });
+}
 
-  /**
-   * `count` elements of `element` bytes from `offset` in view `v`, aligned and inside it; `packed`
-   * (sparse data) ignores the view's byteStride.
-   */
-  function checkSpan(
-    v: number,
-    offset: number,
-    count: number,
-    element: number,
-    componentBytes: number,
-    where: string,
-    packed = false,
-  ): void {
-    const view = views[v];
-    if (offset % componentBytes !== 0 || (view.offset + offset) % componentBytes !== 0)
-      failIn(
-        file,
-        `${where}: byte ${offset} of bufferViews[${v}] (byte ${view.offset + offset} of its buffer) is not a multiple of its ${componentBytes}-byte components`,
-      );
-    const stride = packed ? element : (view.stride ?? element);
-    if (stride < element)
-      failIn(file, `${where}: bufferViews[${v}].byteStride = ${stride} is less than its ${element}-byte elements`);
-    const end = offset + stride * (count - 1) + element;
-    if (end > view.length)
-      failIn(
-        file,
-        `${where}: ${count} elements from byte ${offset} end at byte ${end}, past the ${view.length} bytes of bufferViews[${v}]`,
-      );
-  }
+/**
+ * The elements of accessor `a` (`where` names it): its count, its element's bytes and its
+ * component's bytes, from its componentType, type and count; its min and max are checked too.
+ */
+function accessorElements(a: JsonObject, where: string, file: string): Elements {
+  const componentBytes = COMPONENT_BYTES.get(a.componentType);
+  if (componentBytes === undefined)
+    failIn(
+      file,
+      badValue(
+        a.componentType,
+        `${where}.componentType`,
+        `a glTF component type (${[...COMPONENT_BYTES.keys()].join(', ')})`,
+      ),
+    );
+  const components = TYPE_COMPONENTS.get(a.type);
+  if (components === undefined)
+    failIn(file, badValue(a.type, `${where}.type`, `a glTF accessor type (${[...TYPE_COMPONENTS.keys()].join(', ')})`));
+  const count = asInteger(a.count, 1, MAX_SIZE, `${where}.count`, file);
+  const element = elementBytes(a.type as string, components, componentBytes);
+  checkMinMax(a, components, where, file);
+  return { count, element, componentBytes };
+}
 
-  function checkSparse(s: JsonObject, count: number, element: number, componentBytes: number, where: string): void {
-    const n = asInteger(s.count, 1, count, `${where}.count`, file);
-    const indices = asObject(s.indices, `${where}.indices`, file);
-    const indexBytes = SPARSE_INDEX_BYTES.get(indices.componentType);
-    if (indexBytes === undefined)
-      failIn(file, badValue(indices.componentType, `${where}.indices.componentType`, '5121, 5123 or 5125'));
-    const part = (o: JsonObject, at: string, bytes: number, size: number): void => {
-      const v = asIndex(o.bufferView, views.length, `${at}.bufferView`, file);
-      checkSpan(v, asInteger(o.byteOffset, 0, MAX_SIZE, `${at}.byteOffset`, file, 0), n, bytes, size, at, true);
-    };
-    part(indices, `${where}.indices`, indexBytes, indexBytes);
-    part(asObject(s.values, `${where}.values`, file), `${where}.values`, element, componentBytes);
+/** Checks that accessor `a`'s min and max, where given, are `components` finite numbers each. */
+function checkMinMax(a: JsonObject, components: number, where: string, file: string): void {
+  for (const key of ['min', 'max'] as const) {
+    const v = a[key];
+    if (
+      v !== undefined &&
+      (!Array.isArray(v) || v.length !== components || !v.every((x) => typeof x === 'number' && Number.isFinite(x)))
+    )
+      failIn(file, `${where}.${key} must be ${components} finite numbers`);
   }
+}
+
+/**
+ * The message for `total` bytes of accessor data in accessors[0..i], more than MAX_ACCESSOR_BYTES,
+ * naming accessors[i] (`a`, with its `elements`), the one that passed the cap.
+ */
+function tooManyAccessorBytes(total: number, i: number, a: JsonObject, elements: Elements): string {
+  const where = `accessors[${i}]`;
+  const zeros = a.bufferView === undefined ? ' without a bufferView, zeros to allocate' : '';
+  return `${total} bytes of accessor data in ${i === 0 ? where : `accessors[0..${i}]`} (${where}: ${elements.count} elements of ${elements.element} bytes${zeros}); at most ${MAX_ACCESSOR_BYTES} bytes (256 MiB) in one file`;
+}
+
+/** Checks that accessor `a`'s data (`elements`) and its sparse data, where it has them, lie inside their buffer views. */
+function checkAccessorData(a: JsonObject, elements: Elements, views: ViewRange[], where: string, file: string): void {
+  if (a.bufferView !== undefined) {
+    const offset = asInteger(a.byteOffset, 0, MAX_SIZE, `${where}.byteOffset`, file, 0);
+    checkSpan(views, a.bufferView as number, offset, elements, where, file);
+  }
+  if (a.sparse !== undefined)
+    checkSparse(asObject(a.sparse, `${where}.sparse`, file), elements, views, `${where}.sparse`, file);
+}
+
+/**
+ * Checks the sparse data `s` of an accessor whose elements are `elements`: at most their count of
+ * indices, of a sparse index type, and values of the accessor's elements, each inside its view.
+ */
+function checkSparse(s: JsonObject, elements: Elements, views: ViewRange[], where: string, file: string): void {
+  const count = asInteger(s.count, 1, elements.count, `${where}.count`, file);
+  const indices = asObject(s.indices, `${where}.indices`, file);
+  const indexBytes = SPARSE_INDEX_BYTES.get(indices.componentType);
+  if (indexBytes === undefined)
+    failIn(file, badValue(indices.componentType, `${where}.indices.componentType`, '5121, 5123 or 5125'));
+  const indexElements = { count, element: indexBytes, componentBytes: indexBytes };
+  checkSparsePart(indices, indexElements, views, `${where}.indices`, file);
+  const valueElements = { count, element: elements.element, componentBytes: elements.componentBytes };
+  checkSparsePart(asObject(s.values, `${where}.values`, file), valueElements, views, `${where}.values`, file);
+}
+
+/** Checks that the sparse indices or values `o` (`elements`, packed) lie inside their buffer view. */
+function checkSparsePart(o: JsonObject, elements: Elements, views: ViewRange[], at: string, file: string): void {
+  const v = asIndex(o.bufferView, views.length, `${at}.bufferView`, file);
+  checkSpan(views, v, asInteger(o.byteOffset, 0, MAX_SIZE, `${at}.byteOffset`, file, 0), elements, at, file, true);
+}
+
+/**
+ * Checks that `elements` from byte `offset` of view `v` (of `views`) are aligned to their
+ * components and lie inside the view; `packed` (sparse data) ignores the view's byteStride.
+ */
+function checkSpan(
+  views: ViewRange[],
+  v: number,
+  offset: number,
+  elements: Elements,
+  where: string,
+  file: string,
+  packed = false,
+): void {
+  const { count, element, componentBytes } = elements;
+  const view = views[v];
+  if (offset % componentBytes !== 0 || (view.offset + offset) % componentBytes !== 0)
+    failIn(
+      file,
+      `${where}: byte ${offset} of bufferViews[${v}] (byte ${view.offset + offset} of its buffer) is not a multiple of its ${componentBytes}-byte components`,
+    );
+  const stride = packed ? element : (view.stride ?? element);
+  if (stride < element)
+    failIn(file, `${where}: bufferViews[${v}].byteStride = ${stride} is less than its ${element}-byte elements`);
+  const end = offset + stride * (count - 1) + element;
+  if (end > view.length)
+    failIn(
+      file,
+      `${where}: ${count} elements from byte ${offset} end at byte ${end}, past the ${view.length} bytes of bufferViews[${v}]`,
+    );
 }

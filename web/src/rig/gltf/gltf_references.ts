@@ -39,23 +39,46 @@ export function readLists(json: JsonObject, file: string): GltfLists {
  * images, animations, accessors' and buffer views' targets. Throws RigFormatError naming the field.
  */
 export function checkReferences(json: JsonObject, lists: GltfLists, file: string): void {
-  const ref = (v: unknown, list: ListName, where: string): void => {
+  const ref = refChecker(lists, file);
+  checkNames(lists, file);
+  ref(json.scene, 'scenes', 'scene');
+  lists.scenes.forEach((s, i) => checkRefList(s.nodes, 'nodes', `scenes[${i}].nodes`, ref, file));
+  checkNodesAndSkins(lists, ref);
+  lists.meshes.forEach((m, i) => checkPrimitives(m, `meshes[${i}]`, ref, file));
+  lists.materials.forEach((m, i) => checkMaterialTextures(m, `materials[${i}]`, lists.textures.length, file));
+  checkTexturesAndImages(lists, ref, file);
+  lists.animations.forEach((a, i) => checkAnimation(a, `animations[${i}]`, lists.accessors.length, ref, file));
+  lists.accessors.forEach((a, i) => ref(a.bufferView, 'bufferViews', `accessors[${i}].bufferView`));
+  lists.bufferViews.forEach((v, i) => asIndex(v.buffer, lists.buffers.length, `bufferViews[${i}].buffer`, file));
+}
+
+/** Checks that `v`, where given, is an index into the list `list`; throws RigFormatError naming `where`. */
+type RefCheck = (v: unknown, list: ListName, where: string) => void;
+
+/** The RefCheck for the lists `lists` of a document read from `file`. */
+function refChecker(lists: GltfLists, file: string): RefCheck {
+  return (v, list, where) => {
     if (v !== undefined) asIndex(v, lists[list].length, where, file);
   };
-  const refs = (v: unknown, list: ListName, where: string): void => {
-    if (v === undefined) return;
-    if (!Array.isArray(v)) failIn(file, `${where} is not an array`);
-    v.forEach((x, k) => ref(x, list, `${where}[${k}]`));
-  };
-  const object = (v: unknown, where: string): JsonObject | undefined =>
-    v === undefined ? undefined : asObject(v, where, file);
+}
 
+/** Checks that `v`, where given, is an array of indices into `list` (`ref` checks each). */
+function checkRefList(v: unknown, list: ListName, where: string, ref: RefCheck, file: string): void {
+  if (v === undefined) return;
+  if (!Array.isArray(v)) failIn(file, `${where} is not an array`);
+  v.forEach((x, k) => ref(x, list, `${where}[${k}]`));
+}
+
+/** Checks that every object of every list has a string for a name, or none. */
+function checkNames(lists: GltfLists, file: string): void {
   for (const key of LISTS)
     lists[key].forEach((o, i) => {
       if (o.name !== undefined && typeof o.name !== 'string') failIn(file, `${key}[${i}].name is not a string`);
     });
-  ref(json.scene, 'scenes', 'scene');
-  lists.scenes.forEach((s, i) => refs(s.nodes, 'nodes', `scenes[${i}].nodes`));
+}
+
+/** Checks the nodes' meshes, skins and cameras, then the skins' skeletons and inverse bind matrices. */
+function checkNodesAndSkins(lists: GltfLists, ref: RefCheck): void {
   lists.nodes.forEach((n, i) => {
     ref(n.mesh, 'meshes', `nodes[${i}].mesh`);
     ref(n.skin, 'skins', `nodes[${i}].skin`);
@@ -65,37 +88,51 @@ export function checkReferences(json: JsonObject, lists: GltfLists, file: string
     ref(s.skeleton, 'nodes', `skins[${i}].skeleton`);
     ref(s.inverseBindMatrices, 'accessors', `skins[${i}].inverseBindMatrices`);
   });
-  lists.meshes.forEach((m, i) => {
-    const primitives = m.primitives;
-    if (!Array.isArray(primitives) || primitives.length === 0)
-      failIn(file, `meshes[${i}].primitives is missing or empty`);
-    primitives.forEach((raw, j) => {
-      const where = `meshes[${i}].primitives[${j}]`;
-      const p = asObject(raw, where, file);
-      for (const [name, v] of Object.entries(asObject(p.attributes, `${where}.attributes`, file)))
-        ref(v, 'accessors', `${where}.attributes.${name}`);
-      ref(p.indices, 'accessors', `${where}.indices`);
-      ref(p.material, 'materials', `${where}.material`);
-      asObjectList(p.targets, `${where}.targets`, file).forEach((t, k) => {
-        for (const [name, v] of Object.entries(t)) ref(v, 'accessors', `${where}.targets[${k}].${name}`);
-      });
+}
+
+/** Checks that mesh `m` (`where` names it) has primitives, and their attributes', indices', material's and targets' indices. */
+function checkPrimitives(m: JsonObject, where: string, ref: RefCheck, file: string): void {
+  const primitives = m.primitives;
+  if (!Array.isArray(primitives) || primitives.length === 0) failIn(file, `${where}.primitives is missing or empty`);
+  primitives.forEach((raw, j) => {
+    const at = `${where}.primitives[${j}]`;
+    const p = asObject(raw, at, file);
+    for (const [name, v] of Object.entries(asObject(p.attributes, `${at}.attributes`, file)))
+      ref(v, 'accessors', `${at}.attributes.${name}`);
+    ref(p.indices, 'accessors', `${at}.indices`);
+    ref(p.material, 'materials', `${at}.material`);
+    asObjectList(p.targets, `${at}.targets`, file).forEach((t, k) => {
+      for (const [name, v] of Object.entries(t)) ref(v, 'accessors', `${at}.targets[${k}].${name}`);
     });
   });
-  lists.materials.forEach((m, i) => {
-    const where = `materials[${i}]`;
-    const pbr = object(m.pbrMetallicRoughness, `${where}.pbrMetallicRoughness`);
-    const slots: [unknown, string][] = [
-      [pbr?.baseColorTexture, 'pbrMetallicRoughness.baseColorTexture'],
-      [pbr?.metallicRoughnessTexture, 'pbrMetallicRoughness.metallicRoughnessTexture'],
-      [m.normalTexture, 'normalTexture'],
-      [m.occlusionTexture, 'occlusionTexture'],
-      [m.emissiveTexture, 'emissiveTexture'],
-    ];
-    for (const [v, slot] of slots) {
-      const info = object(v, `${where}.${slot}`);
-      if (info) asIndex(info.index, lists.textures.length, `${where}.${slot}.index`, file);
-    }
-  });
+}
+
+/** `v` as a JSON object, or undefined when not given; throws RigFormatError naming `where` for anything else. */
+function optionalObject(v: unknown, where: string, file: string): JsonObject | undefined {
+  return v === undefined ? undefined : asObject(v, where, file);
+}
+
+/**
+ * Checks that the texture slots of material `m` (`where` names it), where given, are objects
+ * whose index is one of the document's `textureCount` textures.
+ */
+function checkMaterialTextures(m: JsonObject, where: string, textureCount: number, file: string): void {
+  const pbr = optionalObject(m.pbrMetallicRoughness, `${where}.pbrMetallicRoughness`, file);
+  const slots: [unknown, string][] = [
+    [pbr?.baseColorTexture, 'pbrMetallicRoughness.baseColorTexture'],
+    [pbr?.metallicRoughnessTexture, 'pbrMetallicRoughness.metallicRoughnessTexture'],
+    [m.normalTexture, 'normalTexture'],
+    [m.occlusionTexture, 'occlusionTexture'],
+    [m.emissiveTexture, 'emissiveTexture'],
+  ];
+  for (const [v, slot] of slots) {
+    const info = optionalObject(v, `${where}.${slot}`, file);
+    if (info) asIndex(info.index, textureCount, `${where}.${slot}.index`, file);
+  }
+}
+
+/** Checks the textures' images and samplers, then the images' buffer views and uris. */
+function checkTexturesAndImages(lists: GltfLists, ref: RefCheck, file: string): void {
   lists.textures.forEach((t, i) => {
     ref(t.source, 'images', `textures[${i}].source`);
     ref(t.sampler, 'samplers', `textures[${i}].sampler`);
@@ -104,22 +141,21 @@ export function checkReferences(json: JsonObject, lists: GltfLists, file: string
     ref(img.bufferView, 'bufferViews', `images[${i}].bufferView`);
     if (img.uri !== undefined && typeof img.uri !== 'string') failIn(file, `images[${i}].uri is not a string`);
   });
-  lists.animations.forEach((a, i) => {
-    const where = `animations[${i}]`;
-    const samplers = asObjectList(a.samplers, `${where}.samplers`, file);
-    samplers.forEach((s, k) => {
-      asIndex(s.input, lists.accessors.length, `${where}.samplers[${k}].input`, file);
-      asIndex(s.output, lists.accessors.length, `${where}.samplers[${k}].output`, file);
-    });
-    asObjectList(a.channels, `${where}.channels`, file).forEach((c, k) => {
-      asIndex(c.sampler, samplers.length, `${where}.channels[${k}].sampler`, file);
-      ref(
-        asObject(c.target, `${where}.channels[${k}].target`, file).node,
-        'nodes',
-        `${where}.channels[${k}].target.node`,
-      );
-    });
+}
+
+/**
+ * Checks animation `a` (`where` names it): its samplers' input and output accessors (indices
+ * below `accessorCount`), then its channels' samplers and target nodes.
+ */
+function checkAnimation(a: JsonObject, where: string, accessorCount: number, ref: RefCheck, file: string): void {
+  const samplers = asObjectList(a.samplers, `${where}.samplers`, file);
+  samplers.forEach((s, k) => {
+    asIndex(s.input, accessorCount, `${where}.samplers[${k}].input`, file);
+    asIndex(s.output, accessorCount, `${where}.samplers[${k}].output`, file);
   });
-  lists.accessors.forEach((a, i) => ref(a.bufferView, 'bufferViews', `accessors[${i}].bufferView`));
-  lists.bufferViews.forEach((v, i) => asIndex(v.buffer, lists.buffers.length, `bufferViews[${i}].buffer`, file));
+  asObjectList(a.channels, `${where}.channels`, file).forEach((c, k) => {
+    const at = `${where}.channels[${k}]`;
+    asIndex(c.sampler, samplers.length, `${at}.sampler`, file);
+    ref(asObject(c.target, `${at}.target`, file).node, 'nodes', `${at}.target.node`);
+  });
 }

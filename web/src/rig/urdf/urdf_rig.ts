@@ -24,7 +24,7 @@ import { failIn } from '../rig_format_error.js';
 import { limitProblem } from '../limit_degrees.js';
 import { identity, multiply, type Mat4 } from '../mat4.js';
 import { MAX_BONES, MAX_COORDINATE } from '../rig_limits.js';
-import { readJointGeometry, type UrdfJoint, type UrdfModel } from './urdf_model.js';
+import { readJointGeometry, type JointGeometry, type UrdfJoint, type UrdfModel } from './urdf_model.js';
 
 /** What the URDF importer chose, beside the spec. */
 export interface UrdfRigInfo {
@@ -178,71 +178,13 @@ export function urdfRigSpec(model: UrdfModel, file: string, chain?: string): { s
   const path = chooseChain(model, chain, file, warnings);
   const tip = model.links[model.joints[path[path.length - 1]].child];
   const base = model.links[model.joints[path[0]].parent];
-  for (const j of path) {
-    const joint = model.joints[j];
-    if (joint.mimic)
-      failIn(
-        file,
-        `joint "${joint.name}" (${joint.type}) mimics another joint and lies in the chain ${base}:${tip}; mimic joints cannot be imported`,
-      );
-    if (!importable(joint))
-      failIn(
-        file,
-        `joint "${joint.name}" is ${joint.type} and lies in the chain ${base}:${tip}; only revolute, continuous and fixed joints can be imported`,
-      );
-  }
-  const moving = path.filter((j) => isRevolute(model.joints[j]));
-  if (moving.length === 0) failIn(file, `the chain ${base}:${tip} has no revolute or continuous joint`);
-  const n = moving.length + 1;
-  if (n > MAX_BONES)
-    failIn(
-      file,
-      `the chain ${base}:${tip} has ${moving.length} moving joints; the core takes at most ${MAX_BONES - 1}`,
-    );
-
-  const spec: RigSpec = {
-    names: [],
-    parents: Int32Array.from({ length: n }, (_, k) => k - 1),
-    rest: new Float64Array(16 * n),
-    lengths: new Float64Array(n),
-    lower: new Float64Array(3 * n),
-    upper: new Float64Array(3 * n),
-    effectors: Int32Array.of(n - 1),
-  };
-  let link = identity(); // the current link's frame at the zero pose, in BASE's frame
-  const check = (m: Mat4, where: string): void => {
-    if (Math.max(Math.abs(m[3]), Math.abs(m[7]), Math.abs(m[11])) > MAX_COORDINATE)
-      failIn(file, `${where} lies beyond +-${MAX_COORDINATE} units from the chain's base`);
-  };
-  for (const j of path) {
-    const joint = model.joints[j];
-    const g = readJointGeometry(joint, file);
-    link = multiply(link, originMatrix(g.xyz, g.rpy));
-    check(link, `joint "${joint.name}"`);
-    if (!isRevolute(joint)) continue;
-    const k = spec.names.length;
-    spec.names.push(joint.name);
-    spec.rest.set(multiply(link, axisFrame(g.axis)), 16 * k);
-    let [lo, hi] = [-180, 180];
-    if (joint.type === 'revolute') {
-      if (!g.limit) failIn(file, `joint "${joint.name}" is revolute but has no <limit> (URDF requires one)`);
-      [lo, hi] = [g.limit.lower * RAD_TO_DEG, g.limit.upper * RAD_TO_DEG];
-      const problem = limitProblem(lo, 'min') ?? limitProblem(hi, 'max');
-      if (problem) failIn(file, `joint "${joint.name}": its <limit> ${lo} .. ${hi} degrees: ${problem}`);
-    }
-    spec.lower[3 * k] = lo;
-    spec.upper[3 * k] = hi;
-  }
-  // A name of its own, so that goals naming the bone find it (URDF joints and links may share names).
-  spec.names.push(spec.names.includes(tip) ? `${tip} (link)` : tip);
-  spec.rest.set(link, 16 * (n - 1));
-  for (let k = 0; k + 1 < n; k++)
-    spec.lengths[k] = distance(spec.rest.subarray(16 * k, 16 * k + 16), spec.rest.subarray(16 * k + 16, 16 * k + 32));
-  const packageMeshes = model.meshes.filter((m) => m.startsWith('package://')).length;
-  if (packageMeshes > 0)
-    warnings.push(
-      `${packageMeshes} package:// mesh files not read: the rig needs none (a viewer without the ROS package draws the links as bones)`,
-    );
+  checkChainJoints(model, path, `${base}:${tip}`, file);
+  const moving = movingJoints(model, path, `${base}:${tip}`, file);
+  const spec = emptyChainSpec(moving.length + 1);
+  const tipFrame = placeJointBones(model, path, spec, file);
+  placeTipBone(spec, tip, tipFrame);
+  setBoneLengths(spec);
+  packageMeshWarning(model.meshes, warnings);
   return {
     spec,
     urdf: {
@@ -251,8 +193,112 @@ export function urdfRigSpec(model: UrdfModel, file: string, chain?: string): { s
       tip,
       joints: moving.map((j) => model.joints[j].name),
       path: path.map((j) => model.joints[j].name),
-      tipBone: n - 1,
+      tipBone: spec.names.length - 1,
       warnings,
     },
   };
+}
+
+/** Checks that the joints of `path` (the chain `chainName`, "BASE:TIP") are importable: no mimic joint, no other type. */
+function checkChainJoints(model: UrdfModel, path: number[], chainName: string, file: string): void {
+  for (const j of path) {
+    const joint = model.joints[j];
+    if (joint.mimic)
+      failIn(
+        file,
+        `joint "${joint.name}" (${joint.type}) mimics another joint and lies in the chain ${chainName}; mimic joints cannot be imported`,
+      );
+    if (!importable(joint))
+      failIn(
+        file,
+        `joint "${joint.name}" is ${joint.type} and lies in the chain ${chainName}; only revolute, continuous and fixed joints can be imported`,
+      );
+  }
+}
+
+/** The revolute and continuous joints of `path` (the chain `chainName`): at least one, and fewer than MAX_BONES. */
+function movingJoints(model: UrdfModel, path: number[], chainName: string, file: string): number[] {
+  const moving = path.filter((j) => isRevolute(model.joints[j]));
+  if (moving.length === 0) failIn(file, `the chain ${chainName} has no revolute or continuous joint`);
+  if (moving.length + 1 > MAX_BONES)
+    failIn(file, `the chain ${chainName} has ${moving.length} moving joints; the core takes at most ${MAX_BONES - 1}`);
+  return moving;
+}
+
+/** A RigSpec of `n` bones in a row (each the child of the one before), the last the one end effector; no names yet, every number 0. */
+function emptyChainSpec(n: number): RigSpec {
+  return {
+    names: [],
+    parents: Int32Array.from({ length: n }, (_, k) => k - 1),
+    rest: new Float64Array(16 * n),
+    lengths: new Float64Array(n),
+    lower: new Float64Array(3 * n),
+    upper: new Float64Array(3 * n),
+    effectors: Int32Array.of(n - 1),
+  };
+}
+
+/**
+ * Walks the chain `path` from BASE, adding to `spec` one bone per revolute or continuous joint:
+ * its name, rest frame (at the joint's origin, x on its axis) and a0 limits in degrees. Returns
+ * the TIP link's frame at the zero pose, in BASE's frame (URDF units, metres).
+ */
+function placeJointBones(model: UrdfModel, path: number[], spec: RigSpec, file: string): Mat4 {
+  let link = identity(); // the current link's frame at the zero pose, in BASE's frame
+  for (const j of path) {
+    const joint = model.joints[j];
+    const g = readJointGeometry(joint, file);
+    link = multiply(link, originMatrix(g.xyz, g.rpy));
+    checkWithinReach(link, `joint "${joint.name}"`, file);
+    if (!isRevolute(joint)) continue;
+    const k = spec.names.length;
+    spec.names.push(joint.name);
+    spec.rest.set(multiply(link, axisFrame(g.axis)), 16 * k);
+    const [lo, hi] = jointLimits(joint, g, file);
+    spec.lower[3 * k] = lo;
+    spec.upper[3 * k] = hi;
+  }
+  return link;
+}
+
+/** Checks that the origin of frame `m` (`where` names it) lies within MAX_COORDINATE of the chain's base. */
+function checkWithinReach(m: Mat4, where: string, file: string): void {
+  if (Math.max(Math.abs(m[3]), Math.abs(m[7]), Math.abs(m[11])) > MAX_COORDINATE)
+    failIn(file, `${where} lies beyond +-${MAX_COORDINATE} units from the chain's base`);
+}
+
+/**
+ * The range of a0 for the moving `joint` (geometry `g`), degrees: its <limit> (radians) for a
+ * revolute joint, which must have one; -180..180 for a continuous joint.
+ */
+function jointLimits(joint: UrdfJoint, g: JointGeometry, file: string): [number, number] {
+  if (joint.type !== 'revolute') return [-180, 180];
+  if (!g.limit) failIn(file, `joint "${joint.name}" is revolute but has no <limit> (URDF requires one)`);
+  const [lo, hi] = [g.limit.lower * RAD_TO_DEG, g.limit.upper * RAD_TO_DEG];
+  const problem = limitProblem(lo, 'min') ?? limitProblem(hi, 'max');
+  if (problem) failIn(file, `joint "${joint.name}": its <limit> ${lo} .. ${hi} degrees: ${problem}`);
+  return [lo, hi];
+}
+
+/** Names the last bone of `spec` after the TIP link `tip` and gives it the link's frame `link` (BASE's frame) as its rest. */
+function placeTipBone(spec: RigSpec, tip: string, link: Mat4): void {
+  // A name of its own, so that goals naming the bone find it (URDF joints and links may share names).
+  spec.names.push(spec.names.includes(tip) ? `${tip} (link)` : tip);
+  spec.rest.set(link, 16 * (spec.names.length - 1));
+}
+
+/** Sets each joint bone's length (metres): the distance from its rest origin to the next bone's. */
+function setBoneLengths(spec: RigSpec): void {
+  const n = spec.names.length;
+  for (let k = 0; k + 1 < n; k++)
+    spec.lengths[k] = distance(spec.rest.subarray(16 * k, 16 * k + 16), spec.rest.subarray(16 * k + 16, 16 * k + 32));
+}
+
+/** Adds to `warnings` a note on the package:// mesh files among `meshes`, when there are any: the rig reads none. */
+function packageMeshWarning(meshes: string[], warnings: string[]): void {
+  const packageMeshes = meshes.filter((m) => m.startsWith('package://')).length;
+  if (packageMeshes > 0)
+    warnings.push(
+      `${packageMeshes} package:// mesh files not read: the rig needs none (a viewer without the ROS package draws the links as bones)`,
+    );
 }
