@@ -12,7 +12,7 @@
 import type { IkCoreModule } from '../ik/module.js';
 import type { RigSpec } from '../ik/rig_arrays.js';
 import { type PoleLimb, poleLimbs } from '../live/pole_limbs.js';
-import { FRAME_STEPS_BEFORE_BUDGET } from '../live/live_solve.js';
+import { FRAME_DEFAULTS, FRAME_STEPS_BEFORE_BUDGET } from '../live/live_solve.js';
 import { initialPole } from '../live/pole_placement.js';
 import { floatingHipsSpec, floatingRootUnit, KNEES_STRAIGHT_DEG } from '../rig/humanoid/floating_hips.js';
 import { IkRig } from '../ik/rig.js';
@@ -57,11 +57,10 @@ const HIPS = 5;
 const CROUCH_SHARE = 0.03;
 
 /**
- * Per-frame solve: at most this many iterations (the page's cap), so that a stream of inputs gives
- * the same poses on any machine; the time budget only guards against a runaway (a solve that hits
- * it depends on the machine's speed).
+ * Per-frame solve: at most the page's iterations (FRAME_DEFAULTS), so that a stream of inputs gives
+ * the same poses on any machine; the time budget (ms) only guards against a runaway (a solve that
+ * hits it depends on the machine's speed).
  */
-const FRAME_ITERATIONS = 50;
 const FRAME_BUDGET_MS = 100;
 /**
  * lm's first damping of each frame. The default, 1, suits a target dragged far: here, where a
@@ -152,7 +151,7 @@ export class AvatarSolver {
     const drag = dragTolerances(h);
     this.settings = {
       ...drag,
-      maxIterations: FRAME_ITERATIONS,
+      maxIterations: FRAME_DEFAULTS.maxIterations,
       timeBudgetMs: FRAME_BUDGET_MS,
       restarts: 0,
       paperMode: false,

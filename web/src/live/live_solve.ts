@@ -12,6 +12,9 @@ import type { SolveOutcome, SolveSettings } from './method_solver.js';
  */
 export const FRAME_STEPS_BEFORE_BUDGET = 1;
 
+/** What a front end solves each frame with unless told otherwise: iterations and milliseconds per frame. */
+export const FRAME_DEFAULTS = { maxIterations: 50, timeBudgetMs: 3 } as const;
+
 /**
  * Stop reasons after which the next frame goes on solving: the budget ran out, not the problem,
  * or the joints' speed bound (maxJointMove) stopped the body partway to its answer.

@@ -1,7 +1,8 @@
 // What the page's panel edits: the per-frame solve's settings (FrameSettings, read by the
 // LiveController every frame), compare's and step mode's, and the display options, with their
 // starting values.
-import { FRAME_DEFAULTS, type FrameSettings } from '../view/live_controller.js';
+import { FRAME_DEFAULTS } from '../live/live_solve.js';
+import type { FrameSettings } from '../view/live_controller.js';
 import type { GizmoMode } from '../view/handles.js';
 
 export type ClickAction = 'toggle effector' | 'select only';

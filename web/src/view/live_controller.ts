@@ -23,9 +23,6 @@ import type { SolveOutcome, SolveSettings } from '../live/method_solver.js';
 import { applyStillBody } from '../live/still_body.js';
 
 /** What the per-frame solve reads every frame (the page's panel edits its settings in place). */
-/** What a front end solves each frame with unless told otherwise: iterations and milliseconds per frame. */
-export const FRAME_DEFAULTS = { maxIterations: 50, timeBudgetMs: 3 } as const;
-
 export interface FrameSettings {
   /** The method solving every frame: a name from the core's registry. */
   method: string;

@@ -9,7 +9,8 @@
 // HTML. The frame loop, the solve and the gizmo are web/src/live/'s LiveController, as on the page.
 import type { IkCoreModule } from '../ik/module.js';
 import { errorText } from '../live/error_text.js';
-import { FRAME_DEFAULTS, LiveController, type FrameSettings } from '../view/live_controller.js';
+import { FRAME_DEFAULTS } from '../live/live_solve.js';
+import { LiveController, type FrameSettings } from '../view/live_controller.js';
 import { LiveRig } from '../view/live_rig.js';
 import { MethodList } from '../live/methods.js';
 import { loadRigUrl } from '../view/rig_source.js';
