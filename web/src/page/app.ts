@@ -4,12 +4,11 @@
 // one wires them together and loads rigs.
 import type { IkCoreModule } from '../ik/module.js';
 import { errorText } from '../live/error_text.js';
-import { LiveController } from '../view/live_controller.js';
+import { LiveController, type LiveEvents } from '../view/live_controller.js';
 import { LiveRig } from '../view/live_rig.js';
 import { MethodList } from '../live/methods.js';
 import { readRig, type RigSource } from '../view/rig_source.js';
 import { Throttle } from '../live/throttle.js';
-import type { Handles } from '../view/handles.js';
 import type { ViewClick } from '../view/picking.js';
 import { bottomSheet } from './bottom_sheet.js';
 import { Compare } from './compare_methods.js';
@@ -17,22 +16,19 @@ import { EditHistory } from './page_history.js';
 import type { PathFile } from './dropped_files.js';
 import { FileInput } from './file_input.js';
 import { Keyboard } from './keyboard.js';
+import { dismissNote, expandNotesOnClick, showMessage, type MessageKind } from './message_line.js';
 import { initialSettings, type PageSettings } from './page_settings.js';
-import { Panel } from './panel.js';
+import { Panel, type PanelActions } from './panel.js';
+import { pageShortcuts } from './page_shortcuts.js';
 import { DEFAULT_RIG, FILE_CHOICE, loadProjectRig, loadUserFile, projectRig, rigMenu } from './project_rigs.js';
-import {
-  download,
-  fileStem,
-  glbExportProblem,
-  looksLikePoseFile,
-  poseJsonText,
-  posedGlbBytes,
-  readPoseFile,
-} from './pose_files.js';
-import { deselectTarget, showSelection, stepTarget, toggleEffector } from './selection.js';
+import { glbExportProblem, looksLikePoseFile } from './pose_files.js';
+import { PoseFileActions } from './pose_file_actions.js';
+import { rigNameText } from './rig_name.js';
+import { showSelection, toggleEffector } from './selection.js';
 import { SolveReport } from './solve_report.js';
+import { TargetActions } from './target_actions.js';
 import type { StatsPanel } from './stats.js';
-import { StepMode } from './step_mode.js';
+import { StepMode, type StepHooks } from './step_mode.js';
 import { TrackMode } from './track_mode.js';
 import { TrackPanel } from './track_panel.js';
 import { readUrlState, writeUrlState } from './url_state.js';
@@ -60,8 +56,10 @@ export class PageApp {
   /** The avatar's track mode (the drag mode is put away while it is on). */
   readonly track: TrackMode;
   private readonly trackPanel: TrackPanel;
+  /** The gizmo's mode, the target it holds, the target's orientation goal and the pole handles. */
+  private readonly targets: TargetActions;
   private readonly files: FileInput;
-  private readonly poseFiles: FileInput;
+  private readonly poseFiles: PoseFileActions;
   private readonly removeSheet: () => void;
   /** Undo and redo of edits and rig loads. */
   readonly history: EditHistory;
@@ -86,7 +84,42 @@ export class PageApp {
       this.methods.pick(url.method),
     );
 
-    this.controller = new LiveController(el.viewport, this.settings, {
+    this.controller = new LiveController(el.viewport, this.settings, this.controllerEvents());
+    this.report = new SolveReport(el.side, this.methods, this.controller, this.settings);
+    this.compare = new Compare(el.side, this.methods, this.report.plot);
+    this.stepMode = new StepMode(el.stepInfo, this.settings, this.methods, this.controller, this.stepHooks());
+    this.files = new FileInput(el.root, (f, others) => void this.loadFile(f, others));
+    expandNotesOnClick(el.message);
+    this.history = new EditHistory(
+      this.controller,
+      () => this.rigKey,
+      (source, key) => this.load(async () => source, source.name, key, false),
+      () => this.panel?.showUndo(this.history.canUndo, this.history.canRedo),
+    );
+    this.poseFiles = new PoseFileActions(
+      el.root,
+      this.controller,
+      this.history,
+      (text, kind) => this.showMessage(text, kind),
+      () => this.showPoseChanged(),
+    );
+
+    const actions = this.panelActions(); // the keys do what the panel's buttons do
+    this.panel = new Panel(el.side, this.settings, rigMenu(), this.methods, actions);
+    this.track = new TrackMode(module, this.controller, (message) => this.showMessage(message, 'error'));
+    this.targets = new TargetActions(this.settings, this.controller, this.track, this.panel, this.history);
+    this.trackPanel = new TrackPanel(el.side, this.track);
+    this.arrangeSide();
+    this.removeSheet = bottomSheet(el.root, el.side);
+    this.keyboard = new Keyboard(el.root, pageShortcuts(this.settings, actions, this.targets, this.track));
+  }
+
+  // ---- wiring --------------------------------------------------------------------------------
+
+  /** What the page does when the live controller solves, fails, changes, is clicked or dragged. */
+  private controllerEvents(): LiveEvents {
+    const el = this.el;
+    return {
       solved: (outcome, ms, tips) => this.report.solved(outcome, ms, tips),
       failed: (message) => this.showMessage(message, 'error'),
       changed: () => {
@@ -98,36 +131,29 @@ export class PageApp {
         el.root.dataset.dragging = String(on);
         this.history.dragging(on);
         // A note goes once the user works; its line stays (empty), so the view does not move under the drag.
-        if (on && el.message.dataset.kind === 'info') el.message.dataset.dismissed = 'true';
+        if (on) dismissNote(el.message);
       },
       redrawn: () => {
         if (this.controller.live?.selectedBone != null) this.selectionText.request(); // its angles changed
       },
       tick: () => this.stepMode.tick(),
-      targetChanged: () => this.showTargetGoals(),
-    });
-    this.report = new SolveReport(el.side, this.methods, this.controller, this.settings);
-    this.compare = new Compare(el.side, this.methods, this.report.plot);
-    this.stepMode = new StepMode(el.stepInfo, this.settings, this.methods, this.controller, {
+      targetChanged: () => this.targets?.showGoals(), // (made after the panel and track mode)
+    };
+  }
+
+  /** What the page does with a step of step mode. */
+  private stepHooks(): StepHooks {
+    return {
       stepped: (outcome, ms) => this.report.stepped(outcome, ms),
       failed: (message) => this.showMessage(message, 'error'),
       switchedOn: () => this.panel.refresh(),
       pending: () => this.report.pending(),
-    });
-    this.files = new FileInput(el.root, (f, others) => void this.loadFile(f, others));
-    el.message.addEventListener('click', () => {
-      if (el.message.dataset.kind === 'info')
-        el.message.dataset.expanded = String(el.message.dataset.expanded !== 'true');
-    });
-    this.poseFiles = new FileInput(el.root, (f) => void this.loadPoseFile(f), '.json', 'pose-file', false);
-    this.history = new EditHistory(
-      this.controller,
-      () => this.rigKey,
-      (source, key) => this.load(async () => source, source.name, key, false),
-      () => this.panel?.showUndo(this.history.canUndo, this.history.canRedo),
-    );
+    };
+  }
 
-    this.panel = new Panel(el.side, this.settings, rigMenu(), this.methods, {
+  /** What the panel's menus, switches and buttons do. */
+  private panelActions(): PanelActions {
+    return {
       rigChanged: (key) => (key === FILE_CHOICE ? this.files.choose() : void this.loadProject(key)),
       openFile: () => this.files.choose(),
       chainChanged: (chain) => void this.loadChain(chain),
@@ -135,22 +161,25 @@ export class PageApp {
       methodChanged: () => this.methodChanged(),
       settingsChanged: () => this.controller.invalidate(),
       displayChanged: () => this.applyDisplay(this.controller.live),
-      gizmoChanged: () => this.setGizmo(this.settings.gizmo),
-      orientationGoalChanged: (on) => this.setOrientationGoal(on),
+      gizmoChanged: () => this.targets.setGizmo(this.settings.gizmo),
+      orientationGoalChanged: (on) => this.targets.setOrientationGoal(on),
       poleHandlesChanged: () => this.controller.setPoleHandles(this.settings.poleHandles),
       stepModeChanged: () => this.stepMode.switched(),
       resetPose: () => this.resetPose(),
       undo: () => void this.undo(false),
       redo: () => void this.undo(true),
-      savePoseJson: () => this.savePoseJson(),
+      savePoseJson: () => this.poseFiles.saveJson(),
       loadPoseJson: () => this.poseFiles.choose(),
-      savePosedGlb: () => void this.savePosedGlb(),
+      savePosedGlb: () => void this.poseFiles.saveGlb(),
       step: () => this.stepMode.step(),
       compare: () => void this.compare.run(this.controller, this.settings),
       help: () => this.keyboard.toggle(),
-    });
-    this.track = new TrackMode(module, this.controller, (message) => this.showMessage(message, 'error'));
-    this.trackPanel = new TrackPanel(el.side, this.track);
+    };
+  }
+
+  /** The side column's parts, top to bottom. */
+  private arrangeSide(): void {
+    const el = this.el;
     // The compare's results sit under the stats, in the side column (the bottom sheet on a phone), not over the view.
     el.side.replaceChildren(
       this.report.stats.element,
@@ -161,66 +190,6 @@ export class PageApp {
       el.selection,
       this.report.plot.element,
     );
-    this.removeSheet = bottomSheet(el.root, el.side);
-
-    this.keyboard = new Keyboard(el.root, [
-      {
-        keys: ['Tab'],
-        label: 'select the next target (in track mode: the next tracked point)',
-        run: () => this.stepTarget(1),
-        focusKey: true,
-      },
-      { keys: ['Shift+Tab'], label: 'select the previous target', run: () => this.stepTarget(-1), focusKey: true },
-      { keys: ['R'], label: 'reset the pose', run: () => this.resetPose() },
-      {
-        keys: ['Ctrl+Z'],
-        label: 'undo (target moves, effector changes, reset, rig loads, pose files)',
-        run: () => void this.undo(false),
-      },
-      { keys: ['Ctrl+Shift+Z', 'Ctrl+Y'], label: 'redo', run: () => void this.undo(true) },
-      { keys: ['W'], label: 'gizmo: translate the target', run: () => this.setGizmo('translate') },
-      {
-        keys: ['E'],
-        label: 'gizmo: rotate the target (the hand turns to its orientation)',
-        run: () => this.setGizmo('rotate'),
-      },
-      { keys: ['Q'], label: 'gizmo: swing the target about the root joint', run: () => this.setGizmo('swing') },
-      { keys: ['O'], label: 'orientation goal of the selected target on or off', run: () => this.setOrientationGoal() },
-      {
-        keys: ['P'],
-        label: 'pole handles on or off (drag one to turn an elbow or knee towards it)',
-        run: () => this.togglePoleHandles(),
-      },
-      {
-        keys: ['T'],
-        label: 'track mode on or off: gizmos on the head and hands move the whole body (a recognised humanoid)',
-        run: () => this.track.toggle(),
-      },
-      {
-        keys: ['S'],
-        label: () =>
-          `step mode: one iteration of ${this.settings.method}${this.settings.paperMode ? ' (paper mode)' : ''}`,
-        run: () => this.stepMode.step(),
-      },
-      {
-        keys: ['C'],
-        label: () => this.compareHelp(),
-        run: () => void this.compare.run(this.controller, this.settings),
-      },
-      { keys: ['?', 'H'], label: 'show or hide this help', run: () => this.keyboard.toggle() },
-      {
-        keys: ['Escape'],
-        label: 'deselect: the gizmo lets go of its target (with this help open: close the help)',
-        run: () => this.deselect(),
-      },
-    ]);
-  }
-
-  /** What C does with the settings in the panel now (the help overlay reads it each time it opens). */
-  private compareHelp(): string {
-    const s = this.settings;
-    const paper = s.paperMode ? ', as the report ran them (paper mode)' : '';
-    return `compare every method from the ${s.compareFrom}${paper}: ${s.compareTimeBudgetMs} ms and ${s.compareMaxIterations} iterations each, ${s.restarts} restart${s.restarts === 1 ? '' : 's'}`;
   }
 
   /** Loads the rig named in the URL (or the default). */
@@ -259,20 +228,8 @@ export class PageApp {
   }
 
   /** Applies a pose file (ik-pose JSON) to the rig shown, as one undoable step; a bad file changes nothing and says why. */
-  async loadPoseFile(file: File): Promise<void> {
-    const live = this.controller.live;
-    if (!live) return this.showMessage(`Could not load ${file.name}: no rig is loaded`, 'error');
-    try {
-      const { state, warnings } = await readPoseFile(file, live);
-      this.history.edit(() => this.controller.restore(state));
-      this.report.showIdle();
-      this.stepMode.clearInfo();
-      this.showRigName();
-      this.showSelection();
-      this.showMessage(`${file.name}: pose loaded${warnings.length ? ` (${warnings.join('; ')})` : ''}`, 'info');
-    } catch (e) {
-      this.showMessage(`Could not load ${file.name}: ${errorText(e)}`, 'error');
-    }
+  loadPoseFile(file: File): Promise<void> {
+    return this.poseFiles.load(file);
   }
 
   /** Undoes (redo false) or redoes the last step; a step that cannot be shown says why. */
@@ -283,10 +240,7 @@ export class PageApp {
       this.showMessage(`Could not ${redo ? 'redo' : 'undo'}: ${errorText(e)}`, 'error');
       return;
     }
-    this.report.showIdle();
-    this.stepMode.clearInfo();
-    this.showRigName();
-    this.showSelection();
+    this.showPoseChanged();
   }
 
   dispose(): void {
@@ -365,7 +319,7 @@ export class PageApp {
     this.stepMode.restart();
     this.stepMode.clearInfo();
     this.showSelection();
-    this.showTargetGoals();
+    this.targets.showGoals();
     this.panel.showGlbExport(glbExportProblem(live));
   }
 
@@ -406,57 +360,6 @@ export class PageApp {
     this.panel.showChains(urdf ? urdf.chains : null, urdf?.chain, urdf?.defaultChain);
   }
 
-  private setGizmo(mode: PageSettings['gizmo']): void {
-    this.settings.gizmo = mode;
-    this.controller.handles.setMode(mode);
-    this.track.setGizmo(mode);
-    this.panel.refresh();
-  }
-
-  /**
-   * The handles Tab and Esc select among: the drag mode's targets, or in track mode the tracked
-   * points while their gizmos move them (none while a clip or a headset does).
-   */
-  private selectable(): Handles | null {
-    if (!this.track.active) return this.controller.handles;
-    return this.track.source === 'gizmos' ? this.track.gizmos.handles : null;
-  }
-
-  /** Tab (step 1) and Shift+Tab (-1): the gizmo takes the next or the previous target. */
-  private stepTarget(step: 1 | -1): void {
-    const handles = this.selectable();
-    if (handles) stepTarget(handles, step);
-  }
-
-  /** Esc: the gizmo lets go (the help, if open, was closed instead). */
-  private deselect(): void {
-    const handles = this.selectable();
-    if (handles) deselectTarget(handles);
-  }
-
-  /** Pole handles on or off, the other way round from now. */
-  private togglePoleHandles(): void {
-    this.settings.poleHandles = !this.settings.poleHandles;
-    this.controller.setPoleHandles(this.settings.poleHandles);
-    this.panel.refresh();
-  }
-
-  /** The selected target's orientation goal on, off, or (no argument) the other way round. */
-  private setOrientationGoal(on?: boolean): void {
-    const k = this.controller.handles.selected;
-    if (k === null) {
-      this.showTargetGoals();
-      return;
-    }
-    this.history.edit(() => this.controller.setOrientationGoal(k, on ?? !this.controller.orientationGoal(k)));
-  }
-
-  /** The panel's "orientation goal" box follows the selected target. */
-  private showTargetGoals(): void {
-    const k = this.controller.handles.selected;
-    this.panel?.showOrientationGoal(k !== null && this.controller.orientationGoal(k), k !== null);
-  }
-
   private applyDisplay(live: LiveRig | null): void {
     if (!live) return;
     live.view.setMeshVisible(this.settings.showMesh);
@@ -487,28 +390,6 @@ export class PageApp {
     this.showSelection();
   }
 
-  // ---- pose files ----------------------------------------------------------------------------
-
-  private savePoseJson(): void {
-    const live = this.controller.live;
-    if (!live) return;
-    try {
-      download(poseJsonText(live), `${fileStem(live.name)}-pose.json`, 'application/json');
-    } catch (e) {
-      this.showMessage(`Could not save the pose: ${errorText(e)}`, 'error');
-    }
-  }
-
-  private async savePosedGlb(): Promise<void> {
-    const live = this.controller.live;
-    if (!live) return;
-    try {
-      download(await posedGlbBytes(live), `${fileStem(live.name)}-posed.glb`, 'model/gltf-binary');
-    } catch (e) {
-      this.showMessage(`Could not save the posed model: ${errorText(e)}`, 'error');
-    }
-  }
-
   // ---- text ----------------------------------------------------------------------------------
 
   private showSelection(): void {
@@ -518,25 +399,19 @@ export class PageApp {
 
   private showRigName(): void {
     const live = this.controller.live;
-    if (!live) return;
-    const n = live.session.effectors().length;
-    const urdf = live.source.urdf;
-    const format = urdf ? `${live.source.format} chain ${urdf.chain}` : live.source.format;
-    this.el.rigName.textContent = `${live.name} — ${format}, ${live.session.rig.numBones} bones, ${n} end effector${n === 1 ? '' : 's'}`;
+    if (live) this.el.rigName.textContent = rigNameText(live);
   }
 
-  /**
-   * Shows `text` in the message line. A note ('info') reads as one line, its details behind a click
-   * on it, and goes when a target is dragged (its line stays, empty: the view keeps its place); an
-   * error shows whole and stays until the next message.
-   */
-  private showMessage(text: string, kind: 'info' | 'error'): void {
-    const m = this.el.message;
-    m.textContent = text;
-    m.dataset.kind = kind;
-    m.dataset.expanded = 'false';
-    m.dataset.dismissed = 'false';
-    m.title = kind === 'info' && text ? 'click for the details (goes when you drag a target)' : '';
-    m.hidden = text === '';
+  /** The solve report, the step info, the rig line and the selection after an undo, a redo or a pose file. */
+  private showPoseChanged(): void {
+    this.report.showIdle();
+    this.stepMode.clearInfo();
+    this.showRigName();
+    this.showSelection();
+  }
+
+  /** Shows `text` in the message line (message_line.ts). */
+  private showMessage(text: string, kind: MessageKind): void {
+    showMessage(this.el.message, text, kind);
   }
 }

@@ -59,44 +59,93 @@ export class Panel {
     actions: PanelActions,
   ) {
     this.gui = new GUI({ container, title: 'IK controls' });
-    const s = settings;
 
     const rig = this.gui.addFolder('Rig');
-    this.rigController = rig
-      .add(s, 'rig', rigs)
+    this.rigController = this.addRigChoice(rig, rigs, actions);
+    this.chainController = this.addChainMenu(rig, actions);
+    this.humanoidController = this.addHumanoidSwitch(rig, actions);
+    this.addDisplaySwitches(rig, actions);
+    this.orientationController = this.addEditTools(rig, actions);
+
+    const pose = this.gui.addFolder('Pose');
+    this.undoController = pose.add({ undo: () => actions.undo() }, 'undo').name('undo (Ctrl+Z)');
+    this.redoController = pose.add({ redo: () => actions.redo() }, 'redo').name('redo (Ctrl+Shift+Z)');
+    this.glbController = this.addPoseFiles(pose, actions);
+    this.showUndo(false, false);
+
+    const solver = this.gui.addFolder('Solver (every frame)');
+    this.addSolverSettings(solver, methods, actions);
+    this.addSolverSwitches(solver, actions);
+
+    const teach = this.gui.addFolder('Teaching');
+    this.addTeaching(teach, actions);
+
+    this.folders = [rig, pose, solver, teach];
+    this.openOneAtATime(rig);
+  }
+
+  // ---- the Rig folder ------------------------------------------------------------------------
+
+  /** The project rig menu and the button that opens a file; returns the menu. */
+  private addRigChoice(rig: GUI, rigs: Record<string, string>, actions: PanelActions): Controller {
+    const menu = rig
+      .add(this.settings, 'rig', rigs)
       .name('project rig')
       .onChange((v: string) => actions.rigChanged(v));
     rig.add({ open: () => actions.openFile() }, 'open').name('open .glb / .gltf / .json / .urdf…');
-    this.chainController = rig
+    return menu;
+  }
+
+  /** A URDF file's chain menu, hidden until a URDF rig is shown (showChains). */
+  private addChainMenu(rig: GUI, actions: PanelActions): Controller {
+    const menu = rig
       .add(this.urdf, 'chain', [])
       .name('chain')
       .onChange((v: string) => actions.chainChanged(v));
-    this.chainController.domElement.title =
+    menu.domElement.title =
       'the URDF robot’s serial chain shown, BASE:TIP (its tip is the end effector); ?chain=BASE:TIP in the URL picks it too';
-    this.chainController.hide();
-    this.humanoidController = rig
-      .add(s, 'humanoidLimits')
+    menu.hide();
+    return menu;
+  }
+
+  /** The humanoid-limits switch, hidden until a rig that has them is shown (showHumanoidLimits). */
+  private addHumanoidSwitch(rig: GUI, actions: PanelActions): Controller {
+    const box = rig
+      .add(this.settings, 'humanoidLimits')
       .name('humanoid limits')
       .onChange(() => actions.limitsChanged());
-    this.humanoidController.hide();
+    box.hide();
+    return box;
+  }
+
+  /** Whether the rig's mesh and its bones are drawn. */
+  private addDisplaySwitches(rig: GUI, actions: PanelActions): void {
     rig
-      .add(s, 'showMesh')
+      .add(this.settings, 'showMesh')
       .name('show mesh')
       .onChange(() => actions.displayChanged());
     rig
-      .add(s, 'showBones')
+      .add(this.settings, 'showBones')
       .name('show bones')
       .onChange(() => actions.displayChanged());
+  }
+
+  /**
+   * How the pose is edited: a click on a bone, the gizmo's mode, the selected target's orientation
+   * goal, the pole handles and the pose's reset; returns the orientation goal's box.
+   */
+  private addEditTools(rig: GUI, actions: PanelActions): Controller {
+    const s = this.settings;
     rig.add(s, 'clickBone', ['toggle effector', 'select only']).name('click on a bone');
     rig
       .add(s, 'gizmo', ['translate', 'rotate', 'swing'])
       .name('gizmo (W / E / Q)')
       .onChange(() => actions.gizmoChanged());
-    this.orientationController = rig
+    const orientation = rig
       .add(this.target, 'orientationGoal')
       .name('orientation goal (O)')
       .onChange((on: boolean) => actions.orientationGoalChanged(on));
-    this.orientationController.domElement.title =
+    orientation.domElement.title =
       'the selected target also sets its effector bone’s orientation (turn it with the rotate gizmo, E)';
     rig
       .add(s, 'poleHandles')
@@ -104,16 +153,21 @@ export class Panel {
       .onChange(() => actions.poleHandlesChanged()).domElement.title =
       'a yellow handle per arm and leg: drag it to turn the elbow or knee towards it (the tips stay on their targets)';
     rig.add({ reset: () => actions.resetPose() }, 'reset').name('reset pose (R)');
+    return orientation;
+  }
 
-    const pose = this.gui.addFolder('Pose');
-    this.undoController = pose.add({ undo: () => actions.undo() }, 'undo').name('undo (Ctrl+Z)');
-    this.redoController = pose.add({ redo: () => actions.redo() }, 'redo').name('redo (Ctrl+Shift+Z)');
+  // ---- the Pose, Solver and Teaching folders -------------------------------------------------
+
+  /** Saving and loading the pose (.json) and saving the posed model (.glb); returns the .glb button. */
+  private addPoseFiles(pose: GUI, actions: PanelActions): Controller {
     pose.add({ save: () => actions.savePoseJson() }, 'save').name('save pose (.json)');
     pose.add({ load: () => actions.loadPoseJson() }, 'load').name('load pose (.json)…');
-    this.glbController = pose.add({ glb: () => actions.savePosedGlb() }, 'glb').name('save posed model (.glb)');
-    this.showUndo(false, false);
+    return pose.add({ glb: () => actions.savePosedGlb() }, 'glb').name('save posed model (.glb)');
+  }
 
-    const solver = this.gui.addFolder('Solver (every frame)');
+  /** The method, its tolerances, its iterations and time per frame, and paper mode. */
+  private addSolverSettings(solver: GUI, methods: MethodList, actions: PanelActions): void {
+    const s = this.settings;
     solver
       .add(s, 'method', [...methods.names])
       .name('method')
@@ -138,6 +192,11 @@ export class Panel {
       .add(s, 'paperMode')
       .name('paper mode (the report’s algorithms)')
       .onChange(() => actions.settingsChanged());
+  }
+
+  /** What the other targets and the body keep while one target is dragged (each with its tooltip). */
+  private addSolverSwitches(solver: GUI, actions: PanelActions): void {
+    const s = this.settings;
     solver
       .add(s, 'strictPriority')
       .name('strict priority')
@@ -162,9 +221,11 @@ export class Panel {
         'title',
         'on a rig not recognised as a humanoid: the bones the dragged target’s limb does not need alone keep their pose, so lifting a paw moves only its leg (the body still follows a target the limb cannot reach); off: the least change over the whole body',
       );
+  }
 
-    const teach = this.gui.addFolder('Teaching');
-    this.folders = [rig, pose, solver, teach];
+  /** Step mode and its tick, compare and its settings, and the keyboard help. */
+  private addTeaching(teach: GUI, actions: PanelActions): void {
+    const s = this.settings;
     teach
       .add(s, 'stepMode')
       .name('step mode')
@@ -178,8 +239,11 @@ export class Panel {
     teach.add(s, 'compareMaxIterations', 1, 100000, 1).name('compare: iterations');
     teach.add(s, 'restarts', 0, 20, 1).name('compare: restarts');
     teach.add({ help: () => actions.help() }, 'help').name('keyboard help (?)');
+  }
 
-    for (const f of this.folders) if (f !== rig) f.close();
+  /** Leaves `first` the only folder open; from then on, opening a folder closes the others. */
+  private openOneAtATime(first: GUI): void {
+    for (const f of this.folders) if (f !== first) f.close();
     this.gui.onOpenClose((changed) => {
       if (changed._closed || !this.folders.includes(changed)) return;
       for (const f of this.folders) if (f !== changed) f.close();
