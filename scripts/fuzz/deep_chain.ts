@@ -1,6 +1,6 @@
 // The deep-chain figure: a 10,000-bone chain goes from file bytes to a rig in WebAssembly (the
 // loader's checks, the tree walk, the core's build) in well under a second, because each step is
-// linear. Printed by `npm run fuzz`; the issue promised under 1 s.
+// linear. Printed by `npm run fuzz`; the README's Limits table says well under a second.
 import type { IkCoreModule } from '#ik/module.js';
 import { IkRig } from '#ik/rig.js';
 import { loadRig } from '#rig/load_rig.js';

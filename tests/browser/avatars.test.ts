@@ -2,7 +2,7 @@
 // by its own upper-body motion (the spine, neck, arms swaying on sines within their limits, as the
 // avatar test's sway), every update() on the main thread. The test checks that the avatars keep
 // their heads and hands on their tracked poses (98% of the frames), and prints the main-thread time per frame for all
-// ten (the figure the issue names: within 2 ms), measured after a warm-up; it asserts no time.
+// ten (it should stay within 2 ms), measured after a warm-up; it asserts no time.
 import { describe, expect, it } from 'vitest';
 
 import { openPage } from './harness.js';

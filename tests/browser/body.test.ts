@@ -106,7 +106,7 @@ describe('the body moves as a body', () => {
         const p = window.ikPage!;
         return p.boneNames().map((_, i) => p.boneTip(i) ?? [NaN, NaN, NaN]);
       });
-    // 144 px towards the left shoulder on screen (the gesture: 24 steps of 6 px), in 40 steps.
+    // 144 px towards the left shoulder on screen (a user's gesture: 24 steps of 6 px), in 40 steps.
     const from = await targetScreen(page, hand);
     const aim = await page.evaluate((q) => window.ikPage?.worldToScreen(q) ?? null, shoulder);
     if (!aim) throw new Error('no screen point');

@@ -1,4 +1,4 @@
-// The crouch (issue 30's done-when test): on a recognised humanoid the hips float, so pulling the
+// The crouch: on a recognised humanoid the hips float, so pulling the
 // head's target straight down by 25% of the height with the mouse crouches: the hips lower by at
 // least 15% of the height, both knees bend forward (each knee ahead of the line from its hip to
 // its ankle, in the way the character faces), the feet stay within δ of where they stood and the

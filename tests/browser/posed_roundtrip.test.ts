@@ -1,4 +1,4 @@
-// The posed .glb round trip (issue 30's done-when test), as a user does it on the character: the
+// The posed .glb round trip, as a user does it on the character: the
 // left foot's target dragged up 30% of the height with the mouse (the gizmo's up arrow), the posed
 // model saved through the panel (a real download) and opened through the file input. Reopened, the
 // joint limits are the original's (1e-5 degrees: float32 bind matrices), the importer warns of no

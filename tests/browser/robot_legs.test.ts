@@ -1,4 +1,4 @@
-// Issue 30's robot (done-when of item 3): a stylised robot built like three.js's RobotExpressive
+// A robot with legs posed as a character: a stylised robot built like three.js's RobotExpressive
 // (tests/helpers/robot_glb.ts: legs off the body, FootL/FootR Blender IK controls hanging off the
 // root bone, each carrying its foot's mesh as in the real file), opened through the file input.
 // The default leg effectors are the ends of the leg chains (LowerLegL, LowerLegR), not the

@@ -1,4 +1,4 @@
-// A URDF robot on the page (issue 31, part 4): a small 6-joint arm written here (revolute joints with
+// A URDF robot on the page: a small 6-joint arm written here (revolute joints with
 // limits, a bent elbow at the zero pose, a fixed joint to an off-axis tool tip, a camera branch and
 // a package:// mesh) opened through the file input. Its longest chain is shown as bones, the tool tip
 // the one end effector, with a warning that meshes are not drawn; the tip is dragged with the mouse

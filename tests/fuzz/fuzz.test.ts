@@ -1,4 +1,4 @@
-// The fuzzer as a test (issue "Hostile and careless input"): a fixed seed, a few hundred cases of
+// The fuzzer as a test: a fixed seed, a few hundred cases of
 // each kind, none of which may crash the module, hang, return a silently wrong result or load a
 // buffer from outside the model's folder; and many refused solves must not leak the stack. The
 // time-budget line is printed, not asserted (a timed unit test fails on a loaded machine): `npm

@@ -1,4 +1,4 @@
-// What crosses into WebAssembly (issue 14, items 1 to 3 and 10): inputs are checked and copied
+// What crosses into WebAssembly: inputs are checked and copied
 // before C++ sees them, so user code cannot free a rig under C++ and no JavaScript error is raised
 // inside a binding; the core's own refusals come back as Errors without leaking its stack; a
 // solve whose workspace grows the memory still reports its result.

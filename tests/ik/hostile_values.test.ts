@@ -1,8 +1,7 @@
-// Finite but hostile values through the TypeScript API (issue "Hostile input, round two", items
-// 3, 4 and 6): sizes, coordinates, tolerances, difference steps and soft weights the core refuses
-// with an Error naming the field (wasm/src/size_limits.h), integer arguments checked as integers,
-// relative goal weights, results that obey the documented rules, and a solver disposed while its
-// input is read reporting just that.
+// Finite but hostile values through the TypeScript API: sizes, coordinates, tolerances, difference
+// steps and soft weights the core refuses with an Error naming the field (wasm/src/size_limits.h),
+// integer arguments checked as integers, relative goal weights, results that obey the documented
+// rules, and a solver disposed while its input is read reporting just that.
 import { beforeAll, describe, expect, it } from 'vitest';
 
 import type { IkCoreModule } from '../../web/src/ik/module.js';

@@ -1,6 +1,6 @@
 // Careless input to the rig API gets an Error that names the bad entry instead of a silent wrong
 // answer: a NaN angle is not "clamped" to NaN, and a fractional or NaN effector is not truncated
-// to some bone (issue 14, items 8 and 10). The rig is unchanged after a refused call.
+// to some bone. The rig is unchanged after a refused call.
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 
 import type { IkCoreModule } from '../../web/src/ik/module.js';

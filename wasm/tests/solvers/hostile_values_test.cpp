@@ -1,6 +1,5 @@
-// Finite but hostile values (issue "Hostile input, round two", items 3 and 4): sizes, coordinates
-// and soft weights past the core's limits (size_limits.h) are refused with a message naming the
-// field and bone; goal weights are relative; and every value accepted at the edge of those
+// Finite but hostile values: sizes, coordinates and soft weights past the core's limits (size_limits.h) are refused
+// with a message naming the field and bone; goal weights are relative; and every value accepted at the edge of those
 // limits still gives a result that obeys SolverSummary's rules, a reachable goal reached.
 #include <gtest/gtest.h>
 

@@ -8,7 +8,7 @@ import type { RigSource } from '../view/rig_source.js';
 import { capturePose, samePose, type PoseState } from '../live/pose_state.js';
 import { UndoHistory } from './undo_stacks.js';
 
-/** Steps kept (the issue asks for at least 100). */
+/** Steps kept (at least 100, as a user of an editor expects). */
 export const UNDO_STEPS = 200;
 
 /** One undoable state of the page: which rig and what was done to it. */
