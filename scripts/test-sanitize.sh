@@ -12,6 +12,7 @@ if [ ! -f build/native-asan/build.ninja ]; then
   cmake -S wasm -B build/native-asan -G Ninja -DCMAKE_BUILD_TYPE=Debug -DIK_SANITIZE=ON -DIK_WERROR=ON >/dev/null
 fi
 cmake --build build/native-asan --target ik_tests
+echo "sanitizer build of the suites: $((SECONDS / 60)) min $((SECONDS % 60)) s"
 npx tsx scripts/write-test-rigs.ts >/dev/null  # the project's rigs in A7 format, for the native tests
 ctest --test-dir build/native-asan --output-on-failure -j 2 | tee build/native-asan/ctest.log
 source scripts/a7_dir.sh

@@ -7,26 +7,30 @@
 # folder the suites that need them are skipped, each layer printing one line, unless CI is set.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+started=$SECONDS
+# A stage's heading, with the minutes and seconds since npm test began (where the suite's time goes).
+stage() { printf '== %s (at %d:%02d)\n' "$1" $(((SECONDS - started) / 60)) $(((SECONDS - started) % 60)); }
 bash scripts/setup.sh --native --browser
 
-echo "== C++ format (clang-format, .clang-format)"
+stage "C++ format (clang-format, .clang-format)"
 mapfile -t cxx_files < <(find wasm/src wasm/bindings wasm/native wasm/tests wasm/tools -name '*.cpp' -o -name '*.h' | sort)
 clang-format --dry-run --Werror "${cxx_files[@]}"
 
-echo "== native tests (GoogleTest, with AddressSanitizer and UndefinedBehaviorSanitizer)"
+stage "native tests (GoogleTest, with AddressSanitizer and UndefinedBehaviorSanitizer)"
 bash scripts/test-sanitize.sh
 
-echo "== type check"
+stage "type check"
 npx tsc -p tsconfig.json
 
-echo "== layers (dependency-cruiser: no import up the layers, no cycle; .dependency-cruiser.cjs)"
+stage "layers (dependency-cruiser: no import up the layers, no cycle; .dependency-cruiser.cjs)"
 npm run --silent lint:deps
 
-echo "== TypeScript lint and format (ESLint, eslint.config.mjs; Prettier, .prettierrc.json: npm run format fixes it)"
+stage "TypeScript lint and format (ESLint, eslint.config.mjs; Prettier, .prettierrc.json: npm run format fixes it)"
 npm run --silent lint
 
-echo "== vitest"
+stage "vitest"
 npx vitest run "$@"
 
-echo "== browser tests (headless Chromium: the page and the widget)"
+stage "browser tests (headless Chromium: the page and the widget)"
 npx vitest run --config vitest.browser.config.ts
+stage "done"
