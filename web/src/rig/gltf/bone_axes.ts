@@ -7,11 +7,7 @@ import { nodeLabel, type GltfNode } from './gltf_nodes.js';
 import type { IkExtras } from './ik_extras.js';
 import { invertAffine, transformDirection, transformPoint, type Mat4 } from '../mat4.js';
 import { failIn } from '../rig_format_error.js';
-
-export type Vec3 = [number, number, number];
-
-const sub = (a: Vec3, b: Vec3): Vec3 => [a[0] - b[0], a[1] - b[1], a[2] - b[2]];
-const norm = (a: Vec3): number => Math.hypot(a[0], a[1], a[2]);
+import { norm, sub, type Vec3 } from '../anatomy/anatomy_vec.js';
 
 /** The joints at rest, from which the bones' directions and lengths are measured. */
 export interface RestJoints {

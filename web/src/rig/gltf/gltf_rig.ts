@@ -6,7 +6,8 @@
 // A humanoid skeleton is recognised (humanoid_recognition.ts) and gives the default end effectors.
 import type { RigSpec } from '../../ik/rig_arrays.js';
 import { restFromBindPose, startAngles } from './bind_pose.js';
-import { boneAxis, jointOrigin, restJoints, type RestJoints, type Vec3 } from './bone_axes.js';
+import type { Vec3 } from '../anatomy/anatomy_vec.js';
+import { boneAxis, jointOrigin, restJoints, type RestJoints } from './bone_axes.js';
 import { boneRestFrame } from '../bone_frame.js';
 import { DEFAULT_LIMIT_DEG, defaultEffectors, rootChainEffectors } from './effector_defaults.js';
 import { checkGltfBudget } from './gltf_budget.js';
