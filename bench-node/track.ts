@@ -19,10 +19,7 @@
 //   foot stays still (moves less than 0.01% of the height a frame);
 // - median_us, p99_us: the time of update() per frame, microseconds, WebAssembly in Node, after
 //   every clip has run once untimed (V8's warm-up); each frame's time is its median over
-//   TIMED_RUNS runs of the clip.
-import v8 from 'node:v8';
-import { runInNewContext } from 'node:vm';
-
+//   TIMED_RUNS runs of the clip, interleaved with the other clips' (track_timing.ts).
 import { Matrix4, Quaternion } from 'three';
 
 import { AvatarSolver, type AvatarInput, type TrackedPose } from '#avatar/avatar_solver.js';
@@ -33,7 +30,8 @@ import { transformPoint } from '#rig/mat4.js';
 import { fromRowMajor } from '#view/row_major.js';
 import { ClipFrames } from './clip_frames.js';
 import { BenchError } from './errors.js';
-import { EFFECTOR, measureClip, POINTS, type TimedRuns } from './track_measures.js';
+import { EFFECTOR, measureClip, POINTS } from './track_measures.js';
+import { ClipTiming, TIMED_RUNS } from './track_timing.js';
 
 export interface TrackRow {
   rig: string;
@@ -53,9 +51,6 @@ export interface TrackRow {
   median_us: number;
   p99_us: number;
 }
-
-/** Timed runs of each clip (median_us and p99_us take each frame's median over them). */
-const TIMED_RUNS = 3;
 
 export interface TrackRig {
   name: string;
@@ -91,39 +86,64 @@ export async function runTrack(
   // JavaScript and WebAssembly on each of its paths (steps, poles, given-up goals) before any
   // frame is timed. Cold, the first clip's median read 2x; warmed on the first clip alone, a
   // later clip's first steps cost 4-7 ms a frame (its p99).
-  for (const clip of chosen) trackClip(ik, rig, frames, clip, points);
-  return chosen.map((clip) => trackClip(ik, rig, frames, clip, points));
+  for (const clip of chosen) warmUpClip(ik, rig, frames, clip, points);
+  const timings: Array<{ clip: number; avatar: AvatarSolver; inputs: AvatarInput[]; timing: ClipTiming }> = [];
+  try {
+    for (const clip of chosen) {
+      const avatar = new AvatarSolver(ik, rig.spec, rig.humanoid);
+      const inputs = trackedInputs(avatar, frames, clip, points);
+      timings.push({ clip, avatar, inputs, timing: new ClipTiming(ik, rig, avatar, inputs, frames.clips[clip].name) });
+    }
+    // Run by run over the clips (track_timing.ts: a slow spell of the machine slows one run).
+    for (let run = 0; run < TIMED_RUNS; run++) for (const t of timings) t.timing.run();
+    return timings.map((t) => clipRow(rig, frames, t.clip, points, t.avatar, t.inputs, t.timing));
+  } finally {
+    for (const t of timings) t.avatar.dispose();
+  }
 }
 
-function trackClip(ik: IkCoreModule, rig: TrackRig, clips: ClipFrames, clip: number, points: number): TrackRow {
+/** Clip `clip` once through a new avatar, untimed. */
+function warmUpClip(ik: IkCoreModule, rig: TrackRig, clips: ClipFrames, clip: number, points: number): void {
   const avatar = new AvatarSolver(ik, rig.spec, rig.humanoid);
   try {
-    const { frames, name } = clips.clips[clip];
-    const inputs = trackedInputs(avatar, clips, clip, points);
-    const run = timedRuns(ik, rig, avatar, inputs, name);
-    const m = measureClip(avatar, rig.humanoid, clips, clip, points, inputs, run);
-    const times = run.times.sort();
-    return {
-      rig: rig.name,
-      experiment: 'track',
-      method: 'avatar',
-      clip: name,
-      frames,
-      points,
-      success_rate: m.onTarget / frames,
-      reachable: m.reachable / frames,
-      success_reachable: m.reachable > 0 ? m.onTargetReachable / m.reachable : null,
-      mpjpe: m.mpjpe / frames,
-      mpjpe_upper: m.mpjpeUpper / frames,
-      jitter_ratio: m.jitterRatio,
-      flips: m.flips,
-      foot_slide: m.slide,
-      median_us: times[Math.floor((times.length - 1) / 2)],
-      p99_us: times[Math.min(times.length - 1, Math.floor(0.99 * times.length))],
-    };
+    for (const input of trackedInputs(avatar, clips, clip, points)) avatar.update(input);
   } finally {
     avatar.dispose();
   }
+}
+
+/** Clip `clip`'s row: the measures of `avatar`'s poses (its first timed run) and the times of `timing`. */
+function clipRow(
+  rig: TrackRig,
+  clips: ClipFrames,
+  clip: number,
+  points: number,
+  avatar: AvatarSolver,
+  inputs: readonly AvatarInput[],
+  timing: ClipTiming,
+): TrackRow {
+  const { frames, name } = clips.clips[clip];
+  const run = timing.result();
+  const m = measureClip(avatar, rig.humanoid, clips, clip, points, inputs, run);
+  const times = run.times.sort();
+  return {
+    rig: rig.name,
+    experiment: 'track',
+    method: 'avatar',
+    clip: name,
+    frames,
+    points,
+    success_rate: m.onTarget / frames,
+    reachable: m.reachable / frames,
+    success_reachable: m.reachable > 0 ? m.onTargetReachable / m.reachable : null,
+    mpjpe: m.mpjpe / frames,
+    mpjpe_upper: m.mpjpeUpper / frames,
+    jitter_ratio: m.jitterRatio,
+    flips: m.flips,
+    foot_slide: m.slide,
+    median_us: times[Math.floor((times.length - 1) / 2)],
+    p99_us: times[Math.min(times.length - 1, Math.floor(0.99 * times.length))],
+  };
 }
 
 /**
@@ -152,68 +172,4 @@ function trackedInputs(avatar: AvatarSolver, clips: ClipFrames, clip: number, po
     for (const key of POINTS[points]) input[key] = truthOf(motion, EFFECTOR[key]);
     return input;
   });
-}
-
-/**
- * Runs `inputs` through `avatar`, then through TIMED_RUNS - 1 new avatars of `rig`. update() and
- * nothing else that allocates between the frames (the poses and planted feet go into arrays made
- * beforehand), so that the times are the avatar's own; a frame's time is its median over the runs
- * (one run's frame can lose a 4 ms slice of the CPU to another thread on a shared machine). The
- * avatar is deterministic: a run that gives another pose throws a BenchError naming clip `name`.
- */
-function timedRuns(
-  ik: IkCoreModule,
-  rig: TrackRig,
-  avatar: AvatarSolver,
-  inputs: readonly AvatarInput[],
-  name: string,
-): TimedRuns {
-  const frames = inputs.length,
-    numAngles = avatar.angles.length;
-  const solved = new Float64Array(frames * numAngles);
-  const plantedLog = new Float64Array(frames * 6);
-  const runTimes = Array.from({ length: TIMED_RUNS }, () => new Float64Array(frames));
-  for (let run = 0; run < TIMED_RUNS; run++) {
-    const runner = run === 0 ? avatar : new AvatarSolver(ik, rig.spec, rig.humanoid);
-    try {
-      collectGarbage();
-      for (let f = 0; f < frames; f++) {
-        const t0 = performance.now();
-        runner.update(inputs[f]);
-        runTimes[run][f] = (performance.now() - t0) * 1000;
-        const at = f * numAngles;
-        if (run === 0) {
-          solved.set(runner.angles, at);
-          runner.plantedFeet().forEach((p, i) => plantedLog.set(p ?? [NaN, NaN, NaN], 6 * f + 3 * i));
-        } else if (!runner.angles.every((a, i) => a === solved[at + i]))
-          throw new BenchError(
-            `track: ${name} frame ${f} gave another pose on run ${run + 1} (the avatar is not deterministic)`,
-            1,
-          );
-      }
-    } finally {
-      if (runner !== avatar) runner.dispose();
-    }
-  }
-  const times = Float64Array.from({ length: frames }, (_, f) => median(runTimes.map((t) => t[f])));
-  return { numAngles, solved, plantedLog, times };
-}
-
-/**
- * A full garbage collection now, so that the clip's inputs and the last clip's measures, made
- * before the timed run, are not collected inside it (V8's collector pauses 0.5-8 ms: one in a
- * clip of 181 frames is its p99). What update() itself allocates is still collected in the run.
- */
-let gc: (() => void) | null = null;
-function collectGarbage(): void {
-  if (!gc) {
-    v8.setFlagsFromString('--expose-gc');
-    gc = runInNewContext('gc') as () => void;
-  }
-  gc();
-}
-
-function median(xs: number[]): number {
-  const sorted = [...xs].sort((a, b) => a - b);
-  return sorted[(sorted.length - 1) >> 1];
 }
