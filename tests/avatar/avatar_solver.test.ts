@@ -229,6 +229,21 @@ describe('three tracked points drive the character', () => {
     }
   });
 
+  it('has its solver made and set before the first frame (made by it, that frame took twice as long)', () => {
+    const solvers = IkSession.alive.solvers;
+    const avatar = new AvatarSolver(ik, character.spec, character.gltf!.humanoid!);
+    try {
+      expect(IkSession.alive.solvers).toBe(solvers + 1);
+      const tips = avatar.tips(),
+        rotations = avatar.tipRotations();
+      avatar.update(trackedOf(tips, rotations));
+      expect(IkSession.alive.solvers).toBe(solvers + 1); // the same solver: none made by update()
+    } finally {
+      avatar.dispose();
+    }
+    expect(IkSession.alive.solvers).toBe(solvers);
+  });
+
   it('names the humanoid bones it needs when a rig lacks them', () => {
     const humanoid = {
       ...character.gltf!.humanoid!,

@@ -185,6 +185,8 @@ export class AvatarSolver {
     });
     this.restHips = tips.slice(3 * HIPS, 3 * HIPS + 3);
     this.steps = new FootSteps([pose(3), pose(4)], this.restHips, pose(0), h);
+    // The solver now: made by the first update(), it doubled that frame's time.
+    s.prepare('lm', this.settings);
   }
 
   /** The head's, hands', feet's and hips' tips at the current pose, 3 per bone in `bones` order (rig units, a new array). */

@@ -128,7 +128,8 @@ export class MethodSolver {
     return outcome;
   }
 
-  private configure(s: SolveSettings): void {
+  /** Sends `settings` to the core now (a solve with the same settings then sends nothing). */
+  configure(s: SolveSettings): void {
     if (sameSettings(this.sent, s)) return;
     this.solver.setOptions({
       gradientTolerance: s.gradientTolerance,
