@@ -118,7 +118,7 @@ describe('the session packs its own goals', () => {
       const goals = s.goals.packed(s.targets, 0);
       const bad = s.angles.slice();
       bad[4] = NaN;
-      expect(() => solver.solvePacked(bad, goals)).toThrow(/angles\[4\] is not a finite number/);
+      expect(() => solver.solvePacked(bad, goals)).toThrow(/angles\[4\] is NaN, not a finite number/);
       expect(() => solver.solvePacked(s.angles.subarray(1), goals)).toThrow(
         /angles must be a Float64Array of 21 numbers/,
       );

@@ -18,6 +18,7 @@
 #include <utility>
 #include <vector>
 
+#include "finite_numbers.h"
 #include "rig.h"
 #include "size_limits.h"
 
@@ -90,11 +91,10 @@ inline void copy_in(const emscripten::val& array, std::vector<int>& out, const c
   view.call<void>("set", array);
 }
 
-// Throws RigError naming the first non-finite entry of `values`.
+// Throws RigError naming the first non-finite entry of `values` (the core's check, finite_numbers.h).
 inline void check_finite(const double* values, size_t n, const char* what) {
-  for (size_t i = 0; i < n; ++i)
-    if (!(values[i] - values[i] == 0))
-      throw RigError(std::string(what) + "[" + std::to_string(i) + "] is not a finite number");
+  std::string problem = non_finite_entry(values, n, what);
+  if (!problem.empty()) throw RigError(std::move(problem));
 }
 
 // A new Float64Array holding a copy of `n` doubles at `data`.

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "finite_numbers.h"
 #include "size_limits.h"
 
 namespace ik {
@@ -11,9 +12,7 @@ namespace {
 
 // The first non-finite entry of `v` named `what`, or an empty string.
 std::string check_finite(const Eigen::Ref<const Eigen::VectorXd>& v, const char* what) {
-  for (Eigen::Index i = 0; i < v.size(); ++i)
-    if (!std::isfinite(v[i])) return std::string(what) + "[" + std::to_string(i) + "] is not a finite number";
-  return {};
+  return non_finite_entry(v.data(), static_cast<std::size_t>(v.size()), what);
 }
 
 static_assert(kMaxCoordinate == 1e9, "check_coordinates' message says 1e9");

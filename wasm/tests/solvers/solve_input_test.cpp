@@ -34,10 +34,12 @@ TEST(SolveInput, NamesTheFirstProblem) {
   EXPECT_EQ(check_solve_input(kin, options, "lm", kNoLimit, 3, angles, long_target),
             "target has 6 values, expected 3 (3 per end effector)");
   angles[4] = std::numeric_limits<double>::quiet_NaN();
-  EXPECT_EQ(check_solve_input(kin, options, "lm", kNoLimit, 3, angles, target), "angles[4] is not a finite number");
+  EXPECT_EQ(check_solve_input(kin, options, "lm", kNoLimit, 3, angles, target),
+            "angles[4] is NaN, not a finite number");
   target[2] = std::numeric_limits<double>::infinity();
   angles[4] = 0;
-  EXPECT_EQ(check_solve_input(kin, options, "lm", kNoLimit, 3, angles, target), "target[2] is not a finite number");
+  EXPECT_EQ(check_solve_input(kin, options, "lm", kNoLimit, 3, angles, target),
+            "target[2] is Infinity, not a finite number");
   // A bad option comes first.
   options.error_tolerance = -1;
   EXPECT_EQ(check_solve_input(kin, options, "lm", kNoLimit, 3, short_angles, target),

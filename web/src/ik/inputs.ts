@@ -49,16 +49,16 @@ export function toFloat64(values: unknown, what: string, expected?: number, fini
 }
 
 /**
- * `values` checked like toFloat64 without a copy when it is a typed array (reading one runs no
- * user code; the solve's hot path), else a Float64Array copy: a Proxy's or getter's code then
- * runs here, before anything is written to WebAssembly memory.
+ * `values` checked for the core: `expected` numbers, any of them (the core refuses NaN and
+ * infinities itself, naming the entry, wasm/src/finite_numbers.h). A typed array is passed on
+ * without a copy (reading one runs no user code; the solve's hot path), anything else as a
+ * Float64Array copy: a Proxy's or getter's code then runs here, before anything is written to
+ * WebAssembly memory.
  */
 export function checkedNumbers(values: unknown, what: string, expected: number): ArrayLike<number> {
-  if (!ArrayBuffer.isView(values) || values instanceof DataView) return toFloat64(values, what, expected);
+  if (!ArrayBuffer.isView(values) || values instanceof DataView) return toFloat64(values, what, expected, false);
   const typed = values as unknown as ArrayLike<number>;
   if (typed.length !== expected) throw new Error(`${what} has ${typed.length} values, expected ${expected}`);
-  for (let i = 0; i < expected; i++)
-    if (!Number.isFinite(typed[i])) throw new Error(`${what}[${i}] is ${typed[i]}, not a finite number`);
   return typed;
 }
 

@@ -229,14 +229,14 @@ export class IkRig {
     return (this.io = view);
   }
 
-  /** `angles` checked (3 finite numbers per bone, degrees) and copied. */
+  /** `angles` checked (3 numbers per bone, degrees; the core refuses a non-finite one) and copied. */
   private angles(angles: Numbers): Float64Array {
-    return toFloat64(angles, 'angles', this.numAngles);
+    return toFloat64(angles, 'angles', this.numAngles, false);
   }
 
-  /** `target` checked (3 finite numbers per current end effector) and copied. */
+  /** `target` checked (3 numbers per current end effector; the core refuses a non-finite one) and copied. */
   private target(target: Numbers): Float64Array {
-    return toFloat64(target, 'target', 3 * this.live().numEffectors);
+    return toFloat64(target, 'target', 3 * this.live().numEffectors, false);
   }
 
   /** A core result, or the core's error thrown. */

@@ -316,7 +316,7 @@ export class IkSolver {
    */
   start(angles: Numbers, target: Numbers | Goals): StopReason {
     this.live();
-    const a = toFloat64(angles, 'angles', this.rig.numAngles);
+    const a = toFloat64(angles, 'angles', this.rig.numAngles, false); // the core refuses non-finite ones
     const t = Float64Array.from(this.useGoals(target)); // a copy: the core reads it after user code ran
     const reason = this.live().start(a, t);
     if (!reason) throw coreError(this.rig.module, 'start');
@@ -355,8 +355,8 @@ export class IkSolver {
   /**
    * solve() for goals packed already (packGoals, or a caller that keeps its own PackedGoals in the
    * rig's effector order, as the live session does every frame): TypeScript checks the lengths
-   * only, not each number (the core refuses non-finite angles and targets, and checks the goals
-   * when they change, with the same errors). `angles`: degrees, 3 per bone.
+   * only, not each goal (the core checks the goals when they change, with the same errors, and
+   * refuses non-finite angles and targets on every path). `angles`: degrees, 3 per bone.
    */
   solvePacked(angles: Float64Array, goals: PackedGoals, out?: Float64Array): SolverResult {
     const n = this.rig.numAngles,
