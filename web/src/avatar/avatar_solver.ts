@@ -119,6 +119,8 @@ export class AvatarSolver {
   private heelsLifted = false;
   /** Frames in a row whose solves left a tracked point off its target. */
   private missed = 0;
+  /** The part's bone poses where placePoles() reads them (16 per bone, row-major). */
+  private readonly poses: Float64Array;
   /** The part's left and right upper arms (whose swing planes seatSwingPlane() turns where their swing is 0). */
   private readonly arms: Array<number | undefined>;
 
@@ -177,6 +179,7 @@ export class AvatarSolver {
     const knees = [partHumanoid.bones.leftLowerLeg, partHumanoid.bones.rightLowerLeg];
     this.limbs = poleLimbs(this.part.spec, s.effectors(), partHumanoid).filter((l) => knees.includes(l.bone));
     this.poleBones = this.limbs.map((l) => l.bone);
+    this.poses = new Float64Array(16 * this.part.spec.parents.length);
     const tips = s.tips();
     this.standingHeadY = tips[1];
     const pose = (k: number) => ({
@@ -291,7 +294,7 @@ export class AvatarSolver {
   /** The knees' poles where they bend now (one leg length out the way each knee bends): they follow the body. */
   private placePoles(): void {
     const goals = this.session.goals,
-      poses = this.session.poses();
+      poses = this.session.poses(this.poses);
     if (goals.poleBones.length !== this.poleBones.length)
       goals.setPoles(this.poleBones, new Float64Array(3 * this.poleBones.length));
     this.limbs.forEach((limb, j) => goals.polePoints.set(initialPole(this.session.spec, poses, limb), 3 * j));
