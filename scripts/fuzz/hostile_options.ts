@@ -74,6 +74,7 @@ const OUT_OF_RANGE: [string, unknown][] = [
   ['lmInitialMu', NaN],
   ['lmDampingFloor', -1],
   ['lmMaxRejections', -5],
+  ['softIterations', -1],
   ['restarts', -1],
   ['stallIterations', -1],
   ['chainRestarts', -1],

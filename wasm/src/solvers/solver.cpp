@@ -158,6 +158,7 @@ StopReason Solver::begin(const Eigen::Ref<const Eigen::VectorXd>& angles, const 
   nearest_move_ = std::numeric_limits<double>::infinity();
   start_ = moved_from_ = a_;
   soft_retried_ = false;
+  soft_on_target_since_ = -1;
   settling_.begin_run();
   reset();
   priority_damping_.reset(opt_.lm_initial_mu);
@@ -302,6 +303,7 @@ bool Solver::advance(Clock::time_point begin) {
         }
         record();
         note_best();
+        if (soft_on_target_since_ < 0 && goals_.soft_on() && on_target()) soft_on_target_since_ = summary_.iterations;
         reason = check_stop(previous_E);
         break;
     }
@@ -448,9 +450,10 @@ StopReason Solver::check_stop(double previous_E) const {
   // With soft rows on, on target is not yet the end: the run goes on towards the soft terms'
   // optimum until |g| is under the gradient tolerance, a step lowers E by less than
   // kSoftStallShare of it (a slow method's steps near that optimum), or the soft rows are met
-  // (lm polished a knee's pole by 1e-10 of E a step for 47 iterations of a tracked frame).
+  // (lm polished a knee's pole by 1e-10 of E a step for 47 iterations of a tracked frame), or
+  // soft_iterations are spent.
   if (on_target() && (!goals_.soft_on() || gradient_norm_ < opt_.gradient_tolerance ||
-                      previous_E - E_ < kSoftStallShare * previous_E || soft_rows_met()))
+                      previous_E - E_ < kSoftStallShare * previous_E || soft_rows_met() || soft_iterations_spent()))
     return StopReason::converged_E;
   // Goals given up: the closest point once the held goals are met and the given-up rows'
   // gradient within their freedom vanishes.
@@ -460,6 +463,11 @@ StopReason Solver::check_stop(double previous_E) const {
                : StopReason::running;
   if (gradient_norm_ < opt_.gradient_tolerance && !descends_further()) return StopReason::converged_grad;
   return StopReason::running;
+}
+
+bool Solver::soft_iterations_spent() const {
+  return opt_.soft_iterations > 0 && soft_on_target_since_ >= 0 &&
+         summary_.iterations - soft_on_target_since_ >= opt_.soft_iterations;
 }
 
 bool Solver::soft_rows_met() const {

@@ -255,6 +255,9 @@ class Solver {
   // A new run from the start angles (E_, r_ there).
   void run_from_start();
   bool soft_retried_ = false;
+  // The iteration at which this solve's hard goals were first on target with soft rows on (-1:
+  // not yet): soft_iterations counts from it.
+  int soft_on_target_since_ = -1;
   Eigen::VectorXd start_;  // the solve's start angles, projected
   // Moves to the next quasi-random start inside the limits (a new run) if restarts are left.
   // Returns false when none is left or E is not finite there.
@@ -285,6 +288,8 @@ class Solver {
   GoalTolerance goal_tolerance() const;
   // The soft rows' residual at the current point is under kSoftMetShare of the tip tolerance.
   bool soft_rows_met() const;
+  // soft_iterations (> 0) taken since the hard goals were first on target.
+  bool soft_iterations_spent() const;
   // The current point's rank: 2 on target, 1 the held goals met (priority mode), 0 otherwise.
   int rank() const;
   // Sets the summary's out_of_reach flags for the best point, whose residual is `r`.

@@ -8,6 +8,7 @@
 
 #include <cstdio>
 #include <iostream>
+#include <limits>
 
 #include "../sanitizers.h"
 #include "../small_rigs.h"
@@ -101,6 +102,39 @@ TEST(SoftGoals, APoleFlipsTheBendWithoutMovingTheTip) {
       EXPECT_GT(side, 0.99) << method << " " << out_of_plane;
     }
   }
+}
+
+// soft_iterations caps the iterations a run takes towards the soft terms once the tip is on
+// target: each one more takes one more iteration, never more than without a cap, always on target
+// with E no higher than the one before. lm on a straight chain of three bones whose tip is
+// brought in a little, a light pole beside its last two: the tip is on target after 4 iterations,
+// and bending the limb on to the pole (an avatar's knee starting to crouch) takes 3 more.
+TEST(SoftGoals, SoftIterationsCapThePolishOnTarget) {
+  Kinematics kin(test::straight_chain(3, {2}));
+  const Eigen::VectorXd start = Eigen::VectorXd::Zero(kin.num_angles());
+  Goals goals = position_goals(Eigen::Vector3d(2.95, 0, 0));
+  goals.poles.push_back({2, Eigen::Vector3d(2, 0, 2), 0.02});
+  SolverOptions options = tight_options();
+  options.tip_tolerance = 1e-2;
+  auto uncapped = make_solver("lm", kin, options);
+  const SolverSummary free_run = uncapped->solve(start, goals);
+  std::cout << "soft iterations: uncapped " << free_run.iterations << " iterations, E " << free_run.E << "\n";
+  int first = -1;
+  double previous_E = std::numeric_limits<double>::infinity();
+  for (int cap = 1; cap <= 2; ++cap) {
+    options.soft_iterations = cap;
+    auto solver = make_solver("lm", kin, options);
+    const SolverSummary& s = solver->solve(start, goals);
+    std::cout << "soft iterations " << cap << ": " << s.iterations << " iterations, E " << s.E << "\n";
+    EXPECT_TRUE(s.reached) << cap;
+    EXPECT_EQ(s.stop_reason, StopReason::converged_E) << cap;
+    if (first < 0) first = s.iterations;
+    EXPECT_EQ(s.iterations, first + cap - 1) << cap;
+    EXPECT_LE(s.E, previous_E) << cap;
+    previous_E = s.E;
+  }
+  EXPECT_GT(free_run.iterations, first + 1);  // the case is worth testing: uncapped, it polishes on
+  EXPECT_LE(free_run.E, previous_E);
 }
 
 TEST(SoftGoals, APoleBendsAStraightLimbTowardsIt) {

@@ -32,8 +32,8 @@ TEST(SolverOptions, EveryOptionHasUniqueCppAndCamelCaseJavaScriptNames) {
   });
   EXPECT_EQ(names.size(), static_cast<size_t>(count));
   EXPECT_EQ(js_names.size(), static_cast<size_t>(count));
-  EXPECT_EQ(count, 31);  // 24, then rest_weight and rest_from_start, strict_priority, max_joint_move, min_iterations,
-                         // root_unit, steps_before_budget
+  EXPECT_EQ(count, 32);  // 24, then rest_weight and rest_from_start, strict_priority, max_joint_move, min_iterations,
+                         // root_unit, steps_before_budget, soft_iterations
   EXPECT_TRUE(js_names.count("timeBudgetSeconds"));
   EXPECT_TRUE(names.count("time_budget_s"));
 }

@@ -114,6 +114,12 @@ export interface SolverOptions {
   restWeight?: number;
   /** The rest pull's reference is the solve's start angles instead of the rest pose. Default false. */
   restFromStart?: boolean;
+  /**
+   * With soft rows on (poles, a rest pull): the iterations a solve takes towards the soft terms'
+   * optimum once its hard goals are on target; then it ends. Default 0 (no cap). A solve per frame
+   * goes on from where the last stopped.
+   */
+  softIterations?: number;
   /** Restarts from quasi-random points after a stall, within the time budget (every method outside paper mode; set 0 while dragging). Default 1000. */
   restarts?: number;
   /** Iterations without a 10% improvement that count as a stall (with restarts). Default 30. */

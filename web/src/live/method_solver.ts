@@ -45,6 +45,8 @@ export interface SolveSettings {
   restWeight?: number;
   /** The rest pull's reference is the solve's start angles, not the rest pose (the solver option restFromStart). Default false. */
   restFromStart?: boolean;
+  /** Iterations towards the soft terms' optimum once the hard goals are on target (the solver option softIterations). Default 0: no cap. */
+  softIterations?: number;
 }
 
 /** What a solve or a step reached (angles in degrees, distances in rig units, see SolverResult). */
@@ -147,6 +149,7 @@ export class MethodSolver {
       rootUnit: s.rootUnit ?? 1,
       restWeight: s.restWeight ?? 0,
       restFromStart: s.restFromStart ?? false,
+      softIterations: s.softIterations ?? 0,
     });
     Object.assign(this.sent, s);
   }
