@@ -43,7 +43,14 @@ export async function startVite(): Promise<{ url: string; close: () => Promise<v
   const server: ViteDevServer = await createServer({
     configFile: join(repoRoot, 'vite.config.ts'),
     logLevel: 'warn',
-    server: { port, strictPort: true, host: '127.0.0.1', hmr: false },
+    // Warm-up: the page's modules are transformed while Chromium starts, not on the first load.
+    server: {
+      port,
+      strictPort: true,
+      host: '127.0.0.1',
+      hmr: false,
+      warmup: { clientFiles: ['./index.html', './src/main.ts'] },
+    },
   });
   await server.listen();
   return { url: `http://127.0.0.1:${port}/`, close: () => server.close() };
