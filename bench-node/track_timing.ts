@@ -13,6 +13,7 @@ import type { IkCoreModule } from '#ik/module.js';
 import type { RigSpec } from '#ik/rig_arrays.js';
 import type { HumanoidMap } from '#rig/humanoid/humanoid_roles.js';
 import { BenchError } from './errors.js';
+import { median } from './statistics.js';
 import type { TimedRuns } from './track_measures.js';
 
 /** Timed runs of each clip (median_us and p99_us take each frame's median over them). */
@@ -97,9 +98,4 @@ function collectGarbage(): void {
     gc = runInNewContext('gc') as () => void;
   }
   gc();
-}
-
-function median(xs: number[]): number {
-  const sorted = [...xs].sort((a, b) => a - b);
-  return sorted[(sorted.length - 1) >> 1];
 }
