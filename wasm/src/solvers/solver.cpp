@@ -303,7 +303,8 @@ bool Solver::advance(Clock::time_point begin) {
         }
         record();
         note_best();
-        if (soft_on_target_since_ < 0 && goals_.soft_on() && on_target()) soft_on_target_since_ = summary_.iterations;
+        if (opt_.soft_iterations > 0 && soft_on_target_since_ < 0 && goals_.soft_on() && on_target())
+          soft_on_target_since_ = summary_.iterations;
         reason = check_stop(previous_E);
         break;
     }
