@@ -28,6 +28,17 @@ import type { SolveSettings } from './method_solver.js';
  * spine bent 44 degrees again.
  */
 const TRUNK_PULL = 1;
+/**
+ * The per-frame time budget while the head or the hips are dragged: none (0), the frame's
+ * iteration cap alone stops its solve. The crouch is one solve's work: from the straight legs of
+ * the rest pose a solve of 50 iterations bends the knees. Frames cut at a few iterations each
+ * (a loaded machine, a quick drag) went another way and stayed there: the first steps bow the
+ * neck and spine (a straight knee lowers nothing to first order), each frame's trunk pull holds
+ * the bow it starts from, and a frame that starts on target keeps its start unless it gets back
+ * on target. With 10 iterations a frame the head pulled down at once stayed bowed on its target
+ * for 400 frames, each solving again; at 5 it did not move at all.
+ */
+const CARRY_BUDGET_MS = 0;
 /** A drag of a hand, a foot or nothing carries no other effector. */
 const NO_RIDERS: readonly number[] = [];
 const TRUNK_ROLES = ['hips', 'spine', 'chest', 'upperChest', 'neck', 'head'] as const;
@@ -110,12 +121,15 @@ export class HipsTarget {
   }
 
   /**
-   * The solve's rest pull (`settings`, and the session's stiffness) for the trunk while the head or
-   * the hips are dragged (TRUNK_PULL); call after the page's still body (still_body.ts), which
-   * clears them on a humanoid. Allocates once per rig.
+   * The solve's settings while the head or the hips are dragged: no time budget (each frame's
+   * solve runs to its end, see CARRY_BUDGET_MS) and the trunk's rest pull (TRUNK_PULL:
+   * `settings.restWeight` and the session's stiffness). Call after the page's still body
+   * (still_body.ts), which clears the rest pull on a humanoid. Allocates once per rig.
    */
-  applyTrunkPull(session: IkSession, settings: SolveSettings): void {
-    if (!this.carrying || settings.paperMode) return;
+  applyCarry(session: IkSession, settings: SolveSettings): void {
+    if (!this.carrying) return;
+    settings.timeBudgetMs = CARRY_BUDGET_MS;
+    if (settings.paperMode) return;
     const n = session.spec.parents.length;
     if (this.trunkStiffness.length !== n) {
       this.trunkStiffness = new Float64Array(n);

@@ -91,6 +91,12 @@ export class LiveController {
   /** The last frame had a target dragged (the drag's first frame pinned the orientations). */
   private pinnedDrag = false;
   private needsRedraw = false;
+  /**
+   * The target whose drag the last solve was part of, when its budget stopped it before the
+   * problem was solved (else null): the solves that finish a drag solve it as the drag did (a
+   * floating humanoid's hips stay free, hips_target.ts) after the mouse is released.
+   */
+  private dragTail: number | null = null;
   private readonly timing: FrameTiming = { ms: 0, again: false };
   /**
    * The next solve is the first of a rig shown: it runs once untimed first (and its pose is put
@@ -151,6 +157,7 @@ export class LiveController {
   show(live: LiveRig): void {
     this.removeRig();
     this.current = live;
+    this.dragTail = null;
     this.stage.scene.add(...live.objects);
     this.handles.setRigSize(live.view.size);
     this.handles.select(null);
@@ -184,6 +191,7 @@ export class LiveController {
     const live = this.current;
     if (!live) return;
     live.session.reset();
+    this.dragTail = null;
     live.showGhost(null);
     this.handles.setTargets(live.session.targets);
     this.placePoles(false);
@@ -202,6 +210,7 @@ export class LiveController {
     const live = this.current;
     if (!live) return;
     restorePose(live.session, state);
+    this.dragTail = null;
     live.showGhost(null);
     this.handles.setTargets(live.session.targets);
     this.placePoles(true);
@@ -253,6 +262,7 @@ export class LiveController {
     const live = this.current;
     if (!live) return;
     live.session.setEffectors(bones);
+    this.dragTail = null;
     this.handles.setTargets(live.session.targets);
     this.placePoles(true);
     if (select !== undefined) this.handles.select(select);
@@ -414,6 +424,16 @@ export class LiveController {
     this.pinnedDrag = targetDrag;
   }
 
+  /**
+   * The target (effector index) a solve now serves the drag of: the one the gizmo drags, or the one
+   * last dragged while the solves that finish its drag go on (dragTail); null for none.
+   */
+  private draggedTarget(): number | null {
+    const selected = this.handles.selected;
+    if (this.handles.dragging) return selected;
+    return this.dragTail !== null && this.dragTail === selected ? selected : null;
+  }
+
   /** The frame's tips buffer, sized for `session`'s effectors. */
   private tipsBuffer(session: IkSession): Float64Array {
     const n = 3 * session.effectors().length;
@@ -433,7 +453,8 @@ export class LiveController {
     // The selected target (the one dragged, or last dragged) gives way; the others stay pinned.
     session.yielding = this.handles.selected ?? -1;
     const hips = this.current?.hipsTarget;
-    hips?.beforeSolve(session, this.handles.selected, this.handles.dragging);
+    const dragged = this.draggedTarget();
+    hips?.beforeSolve(session, dragged, dragged !== null);
     const s = this.settings,
       f = this.solveSettings;
     f.rootUnit = this.current?.rootUnit ?? 1;
@@ -445,7 +466,7 @@ export class LiveController {
     f.strictPriority = s.strictPriority ?? true;
     f.maxJointMove = s.paperMode ? 0 : (s.maxJointMove ?? 0);
     applyStillBody(session, s.stillBody ?? true, this.current?.source.humanoid !== undefined, f);
-    hips?.applyTrunkPull(session, f);
+    hips?.applyCarry(session, f);
     this.needsRedraw = true;
     if (this.warmUp) {
       this.warmUp = false;
@@ -462,10 +483,12 @@ export class LiveController {
       outcome = solveFrame(session, s.method, f, this.timing);
     } catch (e) {
       this.needsSolve = false;
+      this.dragTail = null;
       this.events.failed(`solver error: ${errorText(e)}`);
       return null;
     }
     this.needsSolve = this.timing.again;
+    this.dragTail = this.timing.again ? dragged : null;
     const tips = session.tips(this.tipsBuffer(session));
     hips?.afterSolve(session, tips);
     this.events.solved?.(outcome, this.timing.ms, tips);
