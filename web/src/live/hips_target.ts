@@ -4,7 +4,7 @@
 //   come along (their position goals are off; their frames stay pinned as in any drag);
 // - the head: the hips are free (their goal off), the hands come along, the head keeps its frame,
 //   the planted feet stay flat, the trunk is pulled towards its pose and the knees take poles while
-//   straight: a head pulled down squats (with the hands held, a crouch of a quarter of the height
+//   straight, once the head is lower than where its drag began: a head pulled down squats (with the hands held, a crouch of a quarter of the height
 //   is out of reach: the shoulders go down further than the arms reach);
 // - a hand, a foot or nothing: the hips stay where they are, as the other targets do (a foot
 //   lifted with the hips free moved them 6 mm, and a posed file saved so reopened with that move
@@ -51,6 +51,8 @@ export class HipsTarget {
   private headFrame = false;
   /** The effector bone dragged at the last solve (-1: none). */
   private lastDragged = -1;
+  /** The dragged target's height (rig units) when the drag of the head or the hips began. */
+  private carriedFromY = 0;
   /** The knees' poles this one set for a crouch (the goals' poleBones array then), or null: the page's pole handles own the poles. */
   private kneePoles: Int32Array | null = null;
   readonly hips: number;
@@ -110,6 +112,8 @@ export class HipsTarget {
       this.freed.push(bone);
     }
     this.keepHeadFrame(session, dragged);
+    const height = this.carrying ? session.targets[3 * effectors.indexOf(dragged) + 1] : 0;
+    if (this.carrying && dragged !== this.lastDragged) this.carriedFromY = height;
     this.lastDragged = dragged;
     if (this.carrying) {
       // The feet stay flat where they stand: the hips' move lets a leg keep both its foot's place
@@ -117,7 +121,7 @@ export class HipsTarget {
       // crouch pivoted each foot about its tip, the ankle 7% of the height below the floor.
       for (const bone of this.feet) if (bone >= 0) goals.keepFrame(effectors.indexOf(bone));
     } else if (dragged >= 0) goals.keepFrame(k); // a hand or foot dragged: the hips keep their turn too, as a fixed root (a hand across the chest spun the body about them)
-    this.placeKneePoles(session, this.carrying);
+    this.placeKneePoles(session, this.carrying && height < this.carriedFromY);
   }
 
   /**
@@ -159,8 +163,11 @@ export class HipsTarget {
   }
 
   /**
-   * The knees' poles where they bend now, while `crouching` and a knee is nearly straight; else
-   * none. The page's pole handles, when on, are left as they are.
+   * The knees' poles where they bend now, while `crouching` (the head or the hips dragged lower
+   * than where their drag began) and a knee is nearly straight; else none. The page's pole
+   * handles, when on, are left as they are. Not before the target goes down: placed as soon as
+   * the head was grabbed, their pull bent the still body's knees 4 degrees, and from there a head
+   * pulled down 8% of the height in one frame bowed the body instead of crouching, and stayed so.
    */
   private placeKneePoles(session: IkSession, crouching: boolean): void {
     const goals = session.goals;
