@@ -4,8 +4,9 @@
 //   come along (their position goals are off; their frames stay pinned as in any drag);
 // - the head: the hips are free (their goal off), the hands come along, the head keeps its frame,
 //   the planted feet stay flat, the trunk is pulled towards its pose and the knees take poles while
-//   straight, once the head is lower than where its drag began: a head pulled down squats (with the hands held, a crouch of a quarter of the height
-//   is out of reach: the shoulders go down further than the arms reach);
+//   straight, once the head is lower than where its drag began: a head pulled down squats (with
+//   the hands held, a crouch of a quarter of the height is out of reach: the shoulders go down
+//   further than the arms reach);
 // - a hand, a foot or nothing: the hips stay where they are, as the other targets do (a foot
 //   lifted with the hips free moved them 6 mm, and a posed file saved so reopened with that move
 //   as its rest: a root joint's rest is its node's place, bind_pose.ts).
@@ -81,16 +82,16 @@ export class HipsTarget {
   }
 
   /**
-   * Sets the goals for a per-frame solve in which effector `selected` (an effector index, or
-   * null: none) is the selected target, `dragging` whether the mouse drags it now: see the file's
-   * header (the head and the hips carry the body only while they are dragged).
+   * Sets the goals for a per-frame solve that serves the drag of target `target` (an effector
+   * index: the one dragged now, or whose drag the solves still finish), or of none (null): see the
+   * file's header (the head and the hips carry the body only while they are dragged).
    */
-  beforeSolve(session: IkSession, selected: number | null, dragging: boolean): void {
+  beforeSolve(session: IkSession, target: number | null): void {
     const effectors = session.effectors(),
       goals = session.goals;
     const k = effectors.indexOf(this.hips);
     if (k < 0) return;
-    const dragged = selected === null || !dragging ? -1 : effectors[selected];
+    const dragged = target === null ? -1 : effectors[target];
     this.carrying = dragged === this.hips || dragged === this.head;
     goals.setPosition(k, dragged !== this.head);
     const riders = dragged === this.hips ? this.hipsRiders : dragged === this.head ? this.hands : NO_RIDERS;
@@ -112,8 +113,8 @@ export class HipsTarget {
       this.freed.push(bone);
     }
     this.keepHeadFrame(session, dragged);
-    const height = this.carrying ? session.targets[3 * effectors.indexOf(dragged) + 1] : 0;
-    if (this.carrying && dragged !== this.lastDragged) this.carriedFromY = height;
+    const draggedY = this.carrying && target !== null ? session.targets[3 * target + 1] : 0;
+    if (this.carrying && dragged !== this.lastDragged) this.carriedFromY = draggedY;
     this.lastDragged = dragged;
     if (this.carrying) {
       // The feet stay flat where they stand: the hips' move lets a leg keep both its foot's place
@@ -121,7 +122,7 @@ export class HipsTarget {
       // crouch pivoted each foot about its tip, the ankle 7% of the height below the floor.
       for (const bone of this.feet) if (bone >= 0) goals.keepFrame(effectors.indexOf(bone));
     } else if (dragged >= 0) goals.keepFrame(k); // a hand or foot dragged: the hips keep their turn too, as a fixed root (a hand across the chest spun the body about them)
-    this.placeKneePoles(session, this.carrying && height < this.carriedFromY);
+    this.placeKneePoles(session, this.carrying && draggedY < this.carriedFromY);
   }
 
   /**

@@ -454,7 +454,7 @@ export class LiveController {
     session.yielding = this.handles.selected ?? -1;
     const hips = this.current?.hipsTarget;
     const dragged = this.draggedTarget();
-    hips?.beforeSolve(session, dragged, dragged !== null);
+    hips?.beforeSolve(session, dragged);
     const s = this.settings,
       f = this.solveSettings;
     f.rootUnit = this.current?.rootUnit ?? 1;
