@@ -90,10 +90,11 @@ describe('the body moves as a body', () => {
     expect(errors).toEqual([]);
   });
 
-  it("the character's right hand across the chest towards the left shoulder in 40 steps: no frame moves a joint more than 5% of the height", async (ctx) => {
+  it("the character's right hand across the chest towards the left shoulder in 40 steps, each frame solved to its iteration cap: no frame moves a joint more than 5% of the height", async (ctx) => {
     const { page, errors } = await openPage(env.browser, ctx);
     await gotoRig(page, env.url, 'character');
     const hand = await selectTarget(page, await effectorNamed(page, /RightHand$/));
+    await solveEachFrameToItsCap(page);
     const tolerance = await page.evaluate(() => window.ikPage?.tipTolerance() ?? 0);
     const { shoulder, height } = await page.evaluate(() => {
       const p = window.ikPage!;
@@ -162,6 +163,18 @@ describe('the body moves as a body', () => {
   });
 });
 
+/**
+ * No time budget: each frame solves to its iteration cap, as on a fast machine. A frame cut by its
+ * 3 ms budget takes another path, which depends on the machine's load (the hand across the chest
+ * moved a joint 3.3% of the height one run and over 5% another).
+ */
+async function solveEachFrameToItsCap(page: Page): Promise<void> {
+  await page.evaluate(() => {
+    const settings = window.ikPage?.settings();
+    if (settings) settings.timeBudgetMs = 0;
+  });
+}
+
 /** The angle, degrees, between two unit quaternions [x, y, z, w]. */
 function turnDeg(a: readonly number[], b: readonly number[]): number {
   const d = Math.abs(a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + a[3] * b[3]);
@@ -184,20 +197,26 @@ async function bowWithPinnedHands(page: Page): Promise<{ turn: number; drift: nu
     start as [number, number, number],
   );
   if (!to) throw new Error('no screen point');
-  const frames = async (): Promise<number[][]> =>
-    page.evaluate((ks) => ks.map((k) => window.ikPage?.tipRotation(k) ?? [0, 0, 0, 1]), hands);
-  const before = await frames();
+  // After the next frame: the hands' frames and position errors (one round trip a step).
+  const handsAfterFrame = async (): Promise<{ turns: number[][]; errors: number[] }> =>
+    page.evaluate(async (ks) => {
+      await new Promise<void>((done) => requestAnimationFrame(() => done()));
+      const p = window.ikPage;
+      return {
+        turns: ks.map((k) => p?.tipRotation(k) ?? [0, 0, 0, 1]),
+        errors: ks.map((k) => p?.effectorError(k) ?? NaN),
+      };
+    }, hands);
+  const before = (await handsAfterFrame()).turns;
   await page.mouse.move(from.x, from.y);
   await page.mouse.down();
   let turn = 0,
     drift = 0;
   for (let i = 1; i <= 30; i++) {
     await page.mouse.move(from.x + ((to.x - from.x) * i) / 30, from.y + ((to.y - from.y) * i) / 30);
-    await nextFrame(page);
-    const now = await frames();
-    hands.forEach((_, j) => (turn = Math.max(turn, turnDeg(before[j], now[j]))));
-    const e = await tipErrors(page);
-    for (const k of hands) drift = Math.max(drift, e[k]);
+    const now = await handsAfterFrame();
+    hands.forEach((_, j) => (turn = Math.max(turn, turnDeg(before[j], now.turns[j]))));
+    for (const e of now.errors) drift = Math.max(drift, e);
   }
   await page.mouse.up();
   await waitForSettled(page);
@@ -205,22 +224,27 @@ async function bowWithPinnedHands(page: Page): Promise<{ turn: number; drift: nu
 }
 
 describe('pinned means pinned', () => {
-  it("the character's head bowed: the pinned hands keep their place and their turn at every frame", async (ctx) => {
-    const { page, errors } = await openPage(env.browser, ctx);
-    await gotoRig(page, env.url, 'character');
-    const tolerance = await page.evaluate(() => window.ikPage?.tipTolerance() ?? 0);
-    const pinned = await bowWithPinnedHands(page);
-    console.log(
-      `[pinned] head bowed, hands pinned: turned at most ${pinned.turn.toFixed(3)} deg, drift ${pinned.drift.toExponential(2)}`,
-    );
-    expect(pinned.drift).toBeLessThan(tolerance);
-    expect(pinned.turn).toBeLessThan(0.5);
-    // The panel's "pin orientations" off: only places are pinned, and the hands turn with the body.
-    await page.keyboard.press('r');
-    await (await panelControl(page, /^pin orientations$/)).locator('input').click();
-    const free = await bowWithPinnedHands(page);
-    console.log(`[pinned] the same with "pin orientations" off: turned ${free.turn.toFixed(1)} deg`);
-    expect(free.turn).toBeGreaterThan(5);
-    expect(errors).toEqual([]);
-  });
+  // Two bows of 30 mouse moves, each frame a carry solved to its cap: 25 s here, over 60 s once on CI.
+  it(
+    "the character's head bowed: the pinned hands keep their place and their turn at every frame",
+    { timeout: 180_000 },
+    async (ctx) => {
+      const { page, errors } = await openPage(env.browser, ctx);
+      await gotoRig(page, env.url, 'character');
+      const tolerance = await page.evaluate(() => window.ikPage?.tipTolerance() ?? 0);
+      const pinned = await bowWithPinnedHands(page);
+      console.log(
+        `[pinned] head bowed, hands pinned: turned at most ${pinned.turn.toFixed(3)} deg, drift ${pinned.drift.toExponential(2)}`,
+      );
+      expect(pinned.drift).toBeLessThan(tolerance);
+      expect(pinned.turn).toBeLessThan(0.5);
+      // The panel's "pin orientations" off: only places are pinned, and the hands turn with the body.
+      await page.keyboard.press('r');
+      await (await panelControl(page, /^pin orientations$/)).locator('input').click();
+      const free = await bowWithPinnedHands(page);
+      console.log(`[pinned] the same with "pin orientations" off: turned ${free.turn.toFixed(1)} deg`);
+      expect(free.turn).toBeGreaterThan(5);
+      expect(errors).toEqual([]);
+    },
+  );
 });
