@@ -168,8 +168,15 @@ describe('a URDF robot on the page', () => {
     expect(distance(await targetAt(page, 0), held)).toBeLessThan(1e-9);
     expect(distance(tip, held)).toBeLessThan(tolerance);
 
-    // 3. The elbow's joint limits: shift-click its bone (select only).
-    const elbow = await page.evaluate(() => window.ikPage?.boneScreen(2) ?? null);
+    // 3. The elbow's joint limits: shift-click its bone (select only), a quarter of the way along
+    // its glyph, where it is widest (seen edge-on, its middle is a few pixels wide).
+    const elbow = await page.evaluate(() => {
+      const p = window.ikPage;
+      const base = p?.boneBase(2),
+        middle = p?.boneScreen(2);
+      const from = base ? p?.worldToScreen(base) : null;
+      return from && middle ? { x: (from.x + middle.x) / 2, y: (from.y + middle.y) / 2 } : null;
+    });
     if (!elbow) throw new Error('no elbow on screen');
     await page.keyboard.down('Shift');
     await page.mouse.click(elbow.x, elbow.y);

@@ -1,13 +1,14 @@
 // Pole handles driven as the page drives them, for the Node tests: a project rig's session with a
 // pole on every limb (pole_limbs.ts, placed by pole_placement.ts), the page's per-frame solve
-// settings (lm, the rig's drag tolerances, 50 iterations a frame, no restarts; the next frame goes
-// on while the budget stopped the last one) and the measures the tests check: where a limb's
-// joint points about its root-tip line, and how far the tips are from their targets. Rig units.
+// settings (lm with its first damping FRAME_LM_MU, the rig's drag tolerances, 50 iterations a
+// frame, no restarts; the next frame goes on while the budget stopped the last one) and the
+// measures the tests check: where a limb's joint points about its root-tip line, and how far the
+// tips are from their targets. Rig units.
 import { resolve } from 'node:path';
 
 import type { IkCoreModule } from '../../web/src/ik/module.js';
 import type { RigSpec } from '../../web/src/ik/rig_arrays.js';
-import { budgetStop } from '../../web/src/live/live_solve.js';
+import { budgetStop, FRAME_LM_MU } from '../../web/src/live/live_solve.js';
 import { type PoleLimb, poleLimbs } from '../../web/src/live/pole_limbs.js';
 import { initialPole, limbPoints } from '../../web/src/live/pole_placement.js';
 import { IkSession } from '../../web/src/live/session.js';
@@ -35,7 +36,14 @@ export async function poleRig(ik: IkCoreModule, name: string, budgetMs = 1000): 
   const rig = await loadRigFromPath(resolve(import.meta.dirname, `../../web/public/models/${name}.glb`));
   const session = new IkSession(ik, rig.spec);
   const tol = dragTolerances(rigSize(session.rig.boneTips(new Float64Array(session.rig.numAngles))));
-  const settings: SolveSettings = { ...tol, maxIterations: 50, timeBudgetMs: budgetMs, restarts: 0, paperMode: false };
+  const settings: SolveSettings = {
+    ...tol,
+    maxIterations: 50,
+    timeBudgetMs: budgetMs,
+    restarts: 0,
+    paperMode: false,
+    lmInitialMu: FRAME_LM_MU,
+  };
   const limbs = poleLimbs(rig.spec, session.effectors(), rig.gltf?.humanoid ?? null);
   const poses = session.poses();
   const points = new Float64Array(3 * limbs.length);

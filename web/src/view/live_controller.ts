@@ -14,7 +14,7 @@ import { listenForClicks, type ViewClick } from './picking.js';
 import { Stage } from './stage.js';
 import { errorText } from '../live/error_text.js';
 import type { LiveRig } from './live_rig.js';
-import { FRAME_STEPS_BEFORE_BUDGET, solveFrame, type FrameTiming } from '../live/live_solve.js';
+import { FRAME_LM_MU, FRAME_STEPS_BEFORE_BUDGET, solveFrame, type FrameTiming } from '../live/live_solve.js';
 import { poleLimbs } from '../live/pole_limbs.js';
 import { initialPole } from '../live/pole_placement.js';
 import { restorePose, type PoseState } from '../live/pose_state.js';
@@ -463,6 +463,7 @@ export class LiveController {
     f.maxIterations = s.maxIterations;
     f.timeBudgetMs = s.timeBudgetMs;
     f.paperMode = s.paperMode;
+    f.lmInitialMu = s.paperMode ? undefined : FRAME_LM_MU;
     f.strictPriority = s.strictPriority ?? true;
     f.maxJointMove = s.paperMode ? 0 : (s.maxJointMove ?? 0);
     applyStillBody(session, s.stillBody ?? true, this.current?.source.humanoid !== undefined, f);
