@@ -54,13 +54,14 @@ export interface EmbindSolver {
   readonly running: boolean;
   setOptions(options: EmbindSolverOptions): boolean;
   options(): EmbindSolverOptions;
+  /** A buffer of `length` numbers for setGoalsIo() (stale, length 0, when the memory grows: ask again); null on failure. */
+  goalsView(length: number): Float64Array | null;
   /**
-   * Goals for the next start()/solveIo(): 7 per effector [positionWeight, orientationWeight, qx, qy, qz, qw, yields]
-   * (the target gives positions), 5 per bend hint [bone, x, y, z, weight], stiffness per bone or none;
-   * each array with its length.
+   * Goals for the next start()/solveIo(), from goalsView()'s buffer: packedLength numbers, 7 per effector
+   * [positionWeight, orientationWeight, qx, qy, qz, qw, yields] (the target gives positions), then polesLength,
+   * 5 per bend hint [bone, x, y, z, weight], then stiffnessLength, one per bone or none.
    */
-  setGoals(packed: Float64Array, packedLength: number, poles: Float64Array, polesLength: number, stiffness: Float64Array,
-    stiffnessLength: number, lengthScale: number): boolean;
+  setGoalsIo(packedLength: number, polesLength: number, stiffnessLength: number, lengthScale: number): boolean;
   clearGoals(): void;
   readonly hasGoals: boolean;
   start(angles: Float64Array, target: Float64Array): string;

@@ -67,19 +67,39 @@ class SolverBinding {
   // The default options, every field (their names are the options a solver takes).
   static val default_options() { return write_options(SolverOptions()); }
 
-  // Goals beyond plain positions for the following start() and solve_io() calls (goal_input.h:
-  // kGoalStride numbers per end effector, kPoleStride per bend hint, stiffness per bone or none;
-  // length_scale rig units per radian, 0: the rig's reach). The target still gives the
-  // positions. The arrays are Float64Arrays of the given lengths (the API's own, sent every frame
-  // a tracked avatar's goals turn: no length read back through JavaScript, no allocation once the
-  // sizes settle). False (the old goals kept) if refused.
-  bool set_goals(const val& packed, int packed_length, const val& poles, int poles_length, const val& stiffness,
-                 int stiffness_length, double length_scale) {
+  // A buffer of `length` numbers for set_goals_io(), and a Float64Array view on it (stale,
+  // length 0, when the WebAssembly memory grows: ask again). Null on failure.
+  val goals_view(int length) {
     return guarded(
         [&] {
-          copy_known(packed, packed_length, goal_numbers_);
-          copy_known(poles, poles_length, pole_numbers_);
-          copy_known(stiffness, stiffness_length, stiffness_numbers_);
+          if (length < 0) throw RigError("a negative goals length");
+          if (goals_io_.size() != static_cast<size_t>(length)) goals_io_.assign(static_cast<size_t>(length), 0.0);
+          return val(emscripten::typed_memory_view(goals_io_.size(), goals_io_.data()));
+        },
+        val::null());
+  }
+
+  // Goals beyond plain positions for the following start() and solve_io() calls, read from
+  // goals_view()'s buffer: `packed_length` numbers of goals (goal_input.h: kGoalStride per end
+  // effector), then `poles_length` of bend hints (kPoleStride each), then `stiffness_length` of
+  // stiffness (one per bone, or none); length_scale rig units per radian, 0: the rig's reach. The
+  // target still gives the positions. No JavaScript value crosses, and nothing is allocated once
+  // the sizes settle (a tracked avatar's goals turn every frame). False (the old goals kept) if
+  // refused.
+  bool set_goals_io(int packed_length, int poles_length, int stiffness_length, double length_scale) {
+    return guarded(
+        [&] {
+          if (packed_length < 0 || poles_length < 0 || stiffness_length < 0) throw RigError("a negative array length");
+          const size_t total = static_cast<size_t>(packed_length) + poles_length + stiffness_length;
+          if (total > goals_io_.size())
+            throw RigError("the goals buffer holds " + std::to_string(goals_io_.size()) + " numbers, " +
+                           std::to_string(total) + " were sent (goalsView sizes it)");
+          const double* at = goals_io_.data();
+          goal_numbers_.assign(at, at + packed_length);
+          at += packed_length;
+          pole_numbers_.assign(at, at + poles_length);
+          at += poles_length;
+          stiffness_numbers_.assign(at, at + stiffness_length);
           goal_input_.set(rig_.kinematics(), goal_numbers_, pole_numbers_, stiffness_numbers_, length_scale);
           has_goals_ = true;
           return true;
@@ -294,7 +314,8 @@ class SolverBinding {
   std::vector<double> io_;       // solve_io(): angles | target | result numbers
   std::vector<double> history_;  // history_io()
   GoalInput goal_input_;
-  std::vector<double> goal_numbers_, pole_numbers_, stiffness_numbers_;  // set_goals()' copies
+  std::vector<double> goals_io_;                                         // goals_view()'s buffer
+  std::vector<double> goal_numbers_, pole_numbers_, stiffness_numbers_;  // set_goals_io()'s copies
   bool has_goals_ = false;
   int io_n_ = 0, io_m_ = 0;
 };
@@ -313,7 +334,8 @@ EMSCRIPTEN_BINDINGS(ik_solvers) {
       .property("running", &SolverBinding::running)
       .function("setOptions", &SolverBinding::set_options)
       .function("options", &SolverBinding::options)
-      .function("setGoals", &SolverBinding::set_goals)
+      .function("goalsView", &SolverBinding::goals_view)
+      .function("setGoalsIo", &SolverBinding::set_goals_io)
       .function("clearGoals", &SolverBinding::clear_goals)
       .property("hasGoals", &SolverBinding::has_goals)
       .function("start", &SolverBinding::start)

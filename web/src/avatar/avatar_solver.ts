@@ -220,7 +220,10 @@ export class AvatarSolver {
     return [0, 1].map((k) => this.steps.planted(k)?.position ?? null);
   }
 
-  /** Solves one frame towards `input` from the last pose; the pose is the result. */
+  /**
+   * Solves one frame towards `input` from the last pose; the pose is the result. The outcome is
+   * one record rewritten by every update (no new object per frame: copy what you keep).
+   */
   update(input: AvatarInput): SolveOutcome {
     const s = this.session;
     let feet: readonly TrackedPose[] | null = null;

@@ -10,8 +10,8 @@
 // floor it stood on, turned with the head, to its place under the tracked head (under the hips'
 // drift, a turn in place walked the feet away from the head until the head was out of reach).
 // The step is counted in frames, not seconds, so that a stream of inputs gives the same steps on
-// any machine. No three.js and no allocation while the feet stand: plain arrays, quaternions
-// [x, y, z, w], rig units (y up).
+// any machine. No three.js, and no allocation but at a step's start and end: plain arrays,
+// quaternions [x, y, z, w], rig units (y up).
 import { mul } from '../rig/quat.js';
 
 /** A foot's target: its bone's tip and frame (rig units; unit quaternion [x, y, z, w]). */
@@ -51,6 +51,10 @@ export class FootSteps {
   private readonly restHipsFromHead: number[];
   private readonly restFeet: FootPose[];
   private readonly restHead: number[];
+  /** turnOnFloor's answers (scratch, rewritten by each call). */
+  private readonly turned = [0, 0];
+  /** Each foot's target while it steps (rewritten every frame of its step). */
+  private readonly stepPoses: FootPose[];
 
   /**
    * Feet standing at `feet` (left, right: the rest pose's tips and frames) under hips whose tip is
@@ -67,6 +71,7 @@ export class FootSteps {
     this.restOffsets = feet.map((f) => [f.position[0] - hips[0], f.position[2] - hips[2]]);
     this.restHipsFromHead = [hips[0] - head.position[0], hips[2] - head.position[2]];
     this.restHead = Array.from(head.orientation);
+    this.stepPoses = feet.map(copyPose);
   }
 
   /** The feet stand at `feet` (left, right), planted: tracked feet, when they stop being tracked, stay there. */
@@ -87,7 +92,8 @@ export class FootSteps {
 
   /** Which foot (0 left, 1 right) is stepping, or -1. */
   stepping(): number {
-    return this.feet.findIndex((f) => f.step !== null);
+    for (let k = 0; k < this.feet.length; k++) if (this.feet[k].step !== null) return k;
+    return -1;
   }
 
   /**
@@ -108,17 +114,21 @@ export class FootSteps {
       // The body's floor point (by the hips alone, a crouch a little deeper than the crouch
       // clip's, its hips 14% of the height back, walked the feet back). [hx, hz]: the hips' place
       // under the head, from the head.
-      const [hx, hz] = turnedOnFloor(this.restHipsFromHead, yaw);
+      const hipsOffset = turnOnFloor(this.restHipsFromHead, yaw, this.turned);
+      const hx = hipsOffset[0],
+        hz = hipsOffset[1];
       const bodyX = 0.5 * (hips[0] + head.position[0] + hx),
         bodyZ = 0.5 * (hips[2] + head.position[2] + hz);
       // The foot farther from its place steps, if either is far enough.
       let worst = -1,
         worstMiss = missed ? MISSED_SHARE : 1;
       for (let k = 0; k < this.feet.length; k++) {
-        const [x, z] = turnedOnFloor(this.restOffsets[k], yaw),
+        const offset = turnOnFloor(this.restOffsets[k], yaw, this.turned),
           at = this.feet[k].planted.position;
+        const dx = bodyX + offset[0] - at[0],
+          dz = bodyZ + offset[1] - at[2];
         const miss = Math.max(
-          Math.hypot(bodyX + x - at[0], bodyZ + z - at[2]) / (STEP_DISTANCE * this.height),
+          Math.sqrt(dx * dx + dz * dz) / (STEP_DISTANCE * this.height),
           Math.abs(angleBetween(yaw, this.feet[k].plantedYaw)) / ((STEP_TURN * Math.PI) / 180),
         );
         if (miss > worstMiss) {
@@ -137,21 +147,18 @@ export class FootSteps {
 
   private readonly targets: FootPose[] = [];
 
-  /** Foot k's target this frame: where it stands, or the next frame of its step. */
+  /** Foot k's target this frame: where it stands, or the next frame of its step (a pose rewritten every frame). */
   private target(k: number): FootPose {
     const foot = this.feet[k];
     if (!foot.step) return foot.planted;
     foot.step.frame++;
     const u = foot.step.frame / STEP_FRAMES,
       from = foot.planted,
-      to = foot.step.to;
-    const pose: FootPose = {
-      position: from.position.map(
-        (p, i) =>
-          p + (to.position[i] - p) * smooth(u) + (i === 1 ? STEP_LIFT * this.height * Math.sin(Math.PI * u) : 0),
-      ),
-      orientation: nlerp(from.orientation, to.orientation, smooth(u)),
-    };
+      to = foot.step.to,
+      pose = this.stepPoses[k];
+    for (let i = 0; i < 3; i++) pose.position[i] = from.position[i] + (to.position[i] - from.position[i]) * smooth(u);
+    pose.position[1] += STEP_LIFT * this.height * Math.sin(Math.PI * u);
+    nlerp(from.orientation, to.orientation, smooth(u), pose.orientation);
     if (foot.step.frame >= STEP_FRAMES) this.feet[k] = this.standing(to, k);
     return pose;
   }
@@ -163,10 +170,10 @@ export class FootSteps {
 
   /** Where the stance puts foot k for the head's yaw `yaw` (radians) over the hips' tip `hips`: its rest offset turned with the head. */
   private home(k: number, yaw: number, hips: ArrayLike<number>): FootPose {
-    const [x, z] = turnedOnFloor(this.restOffsets[k], yaw),
+    const offset = turnOnFloor(this.restOffsets[k], yaw, this.turned),
       rest = this.restFeet[k];
     return {
-      position: [hips[0] + x, rest.position[1], hips[2] + z],
+      position: [hips[0] + offset[0], rest.position[1], hips[2] + offset[1]],
       orientation: mul(yawQuaternion(yaw), rest.orientation),
     };
   }
@@ -199,11 +206,15 @@ function yawFrom(q: ArrayLike<number>, rest: ArrayLike<number>): number {
   return Math.atan2(2 * (x * z + w * y), 1 - 2 * (x * x + y * y));
 }
 
-/** A floor offset [x, z] turned by `yaw` (radians, counter-clockwise seen from above) about the vertical. */
-function turnedOnFloor([x, z]: readonly number[], yaw: number): [number, number] {
+/** A floor offset [x, z] turned by `yaw` (radians, counter-clockwise seen from above) about the vertical, written into `out`. */
+function turnOnFloor(offset: readonly number[], yaw: number, out: number[]): number[] {
   const c = Math.cos(yaw),
-    s = Math.sin(yaw);
-  return [c * x + s * z, -s * x + c * z];
+    s = Math.sin(yaw),
+    x = offset[0],
+    z = offset[1];
+  out[0] = c * x + s * z;
+  out[1] = -s * x + c * z;
+  return out;
 }
 
 function angleBetween(a: number, b: number): number {
@@ -218,9 +229,15 @@ function yawQuaternion(yaw: number): number[] {
   return [0, Math.sin(yaw / 2), 0, Math.cos(yaw / 2)];
 }
 
-function nlerp(a: ArrayLike<number>, b: ArrayLike<number>, t: number): number[] {
+/** The normalised blend of unit quaternions a and b at `t` (the shorter way), written into `out`. */
+function nlerp(a: ArrayLike<number>, b: ArrayLike<number>, t: number, out: number[]): number[] {
   const sign = a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + a[3] * b[3] < 0 ? -1 : 1;
-  const q = [0, 1, 2, 3].map((i) => a[i] + (sign * b[i] - a[i]) * t);
-  const n = Math.hypot(...q);
-  return q.map((x) => x / n);
+  let n = 0;
+  for (let i = 0; i < 4; i++) {
+    out[i] = a[i] + (sign * b[i] - a[i]) * t;
+    n += out[i] * out[i];
+  }
+  n = Math.sqrt(n);
+  for (let i = 0; i < 4; i++) out[i] /= n;
+  return out;
 }

@@ -28,6 +28,8 @@ const scratch = {
   tips: new Float64Array(0),
   at: new Float64Array(3),
   towards: new Float64Array(3),
+  /** How far the last trial swing moved the tip (rig units). */
+  step: 0,
 };
 
 /**
@@ -36,6 +38,7 @@ const scratch = {
  * within their limits): to the plane in which a swing its limits allow brings effector
  * `effector`'s tip fastest towards `target` (rig units). Left as it is when no swing does. Three
  * forward passes: the slope towards the target of a swing in plane a0 is A cos a0 + B sin a0.
+ * No allocation (it runs every frame, most often to its first test).
  */
 export function seatSwingPlane(
   rig: IkRig,
@@ -66,47 +69,53 @@ export function seatSwingPlane(
     at[i] = tips[e + i];
     towards[i] = target[i] - at[i];
   }
-  // The slope of a swing of TRIAL_SWING_DEG in plane a0 towards the target, and how far it moved the tip.
-  let step = 0;
-  const slope = (a0: number): number => {
-    trial[j] = a0;
-    trial[j + 1] = TRIAL_SWING_DEG;
-    trial[j + 2] = twist - a0;
-    rig.tips(trial, tips);
-    const m0 = tips[e] - at[0],
-      m1 = tips[e + 1] - at[1],
-      m2 = tips[e + 2] - at[2];
-    step = Math.hypot(m0, m1, m2);
-    return towards[0] * m0 + towards[1] * m1 + towards[2] * m2;
-  };
   const p = lo,
     q = lo + Math.min(90, hi - lo);
-  const sp = slope(p),
-    sq = slope(q);
-  if (!(Math.hypot(towards[0], towards[1], towards[2]) > NEAR_TRIALS * step)) return;
+  const sp = swingSlope(rig, j, e, twist, p),
+    sq = swingSlope(rig, j, e, twist, q);
+  if (!(Math.hypot(towards[0], towards[1], towards[2]) > NEAR_TRIALS * scratch.step)) return;
   // A cos a + B sin a through (p, sp) and (q, sq).
   const rad = Math.PI / 180,
     det = Math.sin((q - p) * rad);
   const A = (sp * Math.sin(q * rad) - sq * Math.sin(p * rad)) / det,
     B = (sq * Math.cos(p * rad) - sp * Math.cos(q * rad)) / det;
-  const score = (a0: number): number => {
-    const s = A * Math.cos(a0 * rad) + B * Math.sin(a0 * rad);
-    return Math.max(up ? s : 0, down ? -s : 0);
-  };
   const peak = Math.atan2(B, A) / rad;
   let best = angles[j],
-    bestScore = score(best);
-  // The limits and the peak's turns within them.
-  const consider = (a0: number): void => {
-    const s = score(a0);
-    if (s > bestScore) {
-      bestScore = s;
+    bestScore = planeScore(A, B, up, down, best);
+  // The limits, then the peak's turns within them.
+  for (let c = 0; c < 7; c++) {
+    const a0 = c === 0 ? lo : c === 1 ? hi : Math.min(hi, Math.max(lo, peak + 180 * (c - 4)));
+    const score = planeScore(A, B, up, down, a0);
+    if (score > bestScore) {
+      bestScore = score;
       best = a0;
     }
-  };
-  consider(lo);
-  consider(hi);
-  for (let turn = -360; turn <= 360; turn += 180) consider(Math.min(hi, Math.max(lo, peak + turn)));
+  }
   angles[j] = best;
   angles[j + 2] = twist - best;
+}
+
+/**
+ * The slope towards scratch.towards of a swing of TRIAL_SWING_DEG of the bone whose angles start
+ * at `j` in plane `a0` (degrees; a2 = `twist` - a0), from scratch.trial's pose; writes how far it
+ * moved effector tip `e` (its first number's index) into scratch.step.
+ */
+function swingSlope(rig: IkRig, j: number, e: number, twist: number, a0: number): number {
+  const { trial, tips, at, towards } = scratch;
+  trial[j] = a0;
+  trial[j + 1] = TRIAL_SWING_DEG;
+  trial[j + 2] = twist - a0;
+  rig.tips(trial, tips);
+  const m0 = tips[e] - at[0],
+    m1 = tips[e + 1] - at[1],
+    m2 = tips[e + 2] - at[2];
+  scratch.step = Math.hypot(m0, m1, m2);
+  return towards[0] * m0 + towards[1] * m1 + towards[2] * m2;
+}
+
+/** How fast a swing in plane a0 (degrees) that the limits allow (`up`: positive, `down`: negative) moves the tip towards the target. */
+function planeScore(A: number, B: number, up: boolean, down: boolean, a0: number): number {
+  const rad = Math.PI / 180;
+  const s = A * Math.cos(a0 * rad) + B * Math.sin(a0 * rad);
+  return Math.max(up ? s : 0, down ? -s : 0);
 }

@@ -215,6 +215,25 @@ function copyInto(out: Float64Array, from: Float64Array<ArrayBufferLike>, n: num
   return out;
 }
 
+/** Goals as last handed to the core, for the rig's effectors of version `effectors`. */
+interface SentGoals {
+  packed: Float64Array;
+  poles: Float64Array;
+  stiffness: Float64Array;
+  lengthScale: number;
+  effectors: number;
+}
+
+/**
+ * A result record with every field a solve writes, in the order it writes them (one shape): the
+ * numbers start as a double (NaN), so that writing one later rewrites it in place, not in a new box.
+ */
+function resultRecord(ioNames: readonly string[], ioFlags: readonly boolean[]): Record<string, unknown> {
+  const record: Record<string, unknown> = { angles: null, stopReason: '', message: '' };
+  ioNames.forEach((name, k) => (record[name] = ioFlags[k] ? false : NaN));
+  return record;
+}
+
 /** What the API reads once per module: stop reasons by solveIo()'s index, option names, the result numbers. */
 interface ModuleFacts {
   stopReasons: readonly string[];
@@ -255,14 +274,14 @@ export class IkSolver {
   private io: Float64Array<ArrayBufferLike> = new Float64Array(0);
   /** errorHistory()'s buffer in WebAssembly memory (at least the history's length after readHistory()). */
   private history: Float64Array<ArrayBufferLike> = new Float64Array(0);
+  /** The result record of the solves with `out` (rewritten by each: no new object per frame). */
+  private outResult: Record<string, unknown> | null = null;
   /** Copies of the goals last handed to the core (undefined: plain targets), to skip handing them again. */
-  private goals?: {
-    packed: Float64Array;
-    poles: Float64Array;
-    stiffness: Float64Array;
-    lengthScale: number;
-    effectors: number;
-  };
+  private goals?: SentGoals;
+  /** The record `goals` points to while there are goals (kept: no new object per frame). */
+  private sentGoals?: SentGoals;
+  /** The core's goals buffer (goalsView; asked anew when its length changes or the memory grew). */
+  private goalsIo: Float64Array<ArrayBufferLike> = new Float64Array(0);
 
   /** The methods this build registers, in display order (lm, the default, first). */
   static methods(module: IkCoreModule): SolverMethod[] {
@@ -342,8 +361,9 @@ export class IkSolver {
    * start() then step() to the end. Throws like start(). The numbers cross in one shared buffer
    * (ioView / solveIo), so a call costs well under a microsecond more than the solve itself.
    * `out` (optional, a Float64Array of #angles): the result's angles are written there and it is
-   * returned as `angles` (no new array per call; it may be `angles` itself). Otherwise `angles` is
-   * a new array.
+   * returned as `angles` (no new array per call; it may be `angles` itself), and the result is
+   * this solver's one record for such solves, rewritten by the next (copy what you keep).
+   * Otherwise `angles` is a new array and the result a new record.
    */
   solve(angles: Numbers, target: Numbers | Goals, out?: Float64Array): SolverResult {
     this.live();
@@ -417,14 +437,13 @@ export class IkSolver {
     const facts = moduleFacts(this.rig.module);
     const stopReason = facts.stopReasons[code] as StopReason;
     const failed = stopReason === 'numerical_failure' || stopReason === 'invalid_input';
-    const result: Record<string, unknown> = {
-      // A refused solve (invalid_input; result() before any solve too) has no angles.
-      angles: stopReason === 'invalid_input' ? new Float64Array(0) : out ? copyInto(out, io, n) : io.slice(0, n),
-      stopReason,
-      message: failed ? this.handle.message() : '',
-    };
     const names = facts.ioNames,
       flags = facts.ioFlags;
+    const result: Record<string, unknown> = out ? (this.outResult ??= resultRecord(names, flags)) : {};
+    // A refused solve (invalid_input; result() before any solve too) has no angles.
+    result.angles = stopReason === 'invalid_input' ? new Float64Array(0) : out ? copyInto(out, io, n) : io.slice(0, n);
+    result.stopReason = stopReason;
+    result.message = failed ? this.handle.message() : '';
     for (let k = 0, at = n + m; k < names.length; k++, at++) result[names[k]] = flags[k] ? io[at] === 1 : io[at];
     return result as unknown as SolverResult;
   }
@@ -479,7 +498,11 @@ export class IkSolver {
     return packed.target;
   }
 
-  /** Hands `goals` to the core unless they are those it has (for the rig's current effectors). */
+  /**
+   * Hands `goals` to the core unless they are those it has (for the rig's current effectors),
+   * through the core's goals buffer (no new object once the sizes settle: every frame of a
+   * tracked avatar turns its goals).
+   */
   private sendGoals(goals: PackedGoals): void {
     const last = this.goals,
       effectors = this.rig.effectorsVersion;
@@ -494,26 +517,31 @@ export class IkSolver {
       return;
     this.goals = undefined;
     const live = this.live();
-    if (
-      !live.setGoals(
-        goals.packed,
-        goals.packed.length,
-        goals.poles,
-        goals.poles.length,
-        goals.stiffness,
-        goals.stiffness.length,
-        goals.lengthScale,
-      )
-    )
-      throw coreError(this.rig.module, 'setGoals');
-    const none = new Float64Array(0);
-    this.goals = {
-      packed: keepCopy(last?.packed ?? none, goals.packed),
-      poles: keepCopy(last?.poles ?? none, goals.poles),
-      stiffness: keepCopy(last?.stiffness ?? none, goals.stiffness),
-      lengthScale: goals.lengthScale,
-      effectors,
-    };
+    const p = goals.packed.length,
+      q = goals.poles.length,
+      total = p + q + goals.stiffness.length;
+    if (this.goalsIo.length !== total) {
+      const view = live.goalsView(total);
+      if (!view) throw coreError(this.rig.module, 'setGoals');
+      this.goalsIo = view;
+    }
+    this.goalsIo.set(goals.packed, 0);
+    this.goalsIo.set(goals.poles, p);
+    this.goalsIo.set(goals.stiffness, p + q);
+    if (!live.setGoalsIo(p, q, goals.stiffness.length, goals.lengthScale)) throw coreError(this.rig.module, 'setGoals');
+    const kept = (this.sentGoals ??= {
+      packed: new Float64Array(0),
+      poles: new Float64Array(0),
+      stiffness: new Float64Array(0),
+      lengthScale: 0,
+      effectors: 0,
+    });
+    kept.packed = keepCopy(kept.packed, goals.packed);
+    kept.poles = keepCopy(kept.poles, goals.poles);
+    kept.stiffness = keepCopy(kept.stiffness, goals.stiffness);
+    kept.lengthScale = goals.lengthScale;
+    kept.effectors = effectors;
+    this.goals = kept;
   }
 
   /** Has the core copy E's history into its buffer (this.history, asked anew when short); returns its length. */

@@ -59,6 +59,8 @@ export class AvatarIK {
   /** The object whose local coordinates the rig lives in; it may move (the targets stay in world space). */
   private readonly space: Object3D;
   private readonly input = {} as AvatarInput;
+  /** The bones' poses written each frame (16 per bone; no new array per frame). */
+  private poses: Float64Array | null = null;
   private disposed = false;
 
   private constructor(solver: AvatarSolver, rig: SkeletonRig) {
@@ -123,7 +125,9 @@ export class AvatarIK {
       this.input[TRACKED[k]] = this.tracked[k].set(_p, _q);
     }
     const outcome = this.solver.update(this.input);
-    this.writer.write(this.solver.rig.poses(this.solver.angles));
+    const rig = this.solver.rig;
+    this.poses = rig.poses(this.solver.angles, this.poses?.length === 16 * rig.numBones ? this.poses : undefined);
+    this.writer.write(this.poses);
     return outcome.reached;
   }
 

@@ -53,9 +53,29 @@ export interface SolveSettings {
 export type SolveOutcome = SolverResult;
 
 /** Whether `a` and `b` hold the same settings (no allocation: called every frame). */
+/** Every SolveSettings field (the type checks that none is missing and none is extra). */
+const SETTING_KEYS = Object.keys({
+  gradientTolerance: true,
+  tipTolerance: true,
+  maxIterations: true,
+  timeBudgetMs: true,
+  restarts: true,
+  paperMode: true,
+  strictPriority: true,
+  maxJointMove: true,
+  lmInitialMu: true,
+  minIterations: true,
+  stepsBeforeBudget: true,
+  lmMaxRejections: true,
+  rootUnit: true,
+  restWeight: true,
+  restFromStart: true,
+  softIterations: true,
+} satisfies Record<keyof SolveSettings, true>) as (keyof SolveSettings)[];
+
+/** Whether `a` and `b` hold the same value in every field (an absent one is undefined). No allocation: called every frame. */
 function sameSettings(a: SolveSettings, b: SolveSettings): boolean {
-  let key: keyof SolveSettings;
-  for (key in b) if (a[key] !== b[key]) return false;
+  for (let i = 0; i < SETTING_KEYS.length; i++) if (a[SETTING_KEYS[i]] !== b[SETTING_KEYS[i]]) return false;
   return true;
 }
 
@@ -151,6 +171,7 @@ export class MethodSolver {
       restFromStart: s.restFromStart ?? false,
       softIterations: s.softIterations ?? 0,
     });
-    Object.assign(this.sent, s);
+    const sent = this.sent as unknown as Record<string, unknown>;
+    for (let i = 0; i < SETTING_KEYS.length; i++) sent[SETTING_KEYS[i]] = s[SETTING_KEYS[i]];
   }
 }
