@@ -17,7 +17,7 @@ import { FRAME_LM_MU, FRAME_STEPS_BEFORE_BUDGET } from '../../web/src/live/live_
 import type { SolveSettings } from '../../web/src/live/method_solver.js';
 import { IkSession } from '../../web/src/live/session.js';
 import { applyStillBody } from '../../web/src/live/still_body.js';
-import { floatingHipsSpec, floatingRootUnit } from '../../web/src/rig/humanoid/floating_hips.js';
+import { floatingHipsWithTarget, floatingRootUnit } from '../../web/src/rig/humanoid/floating_hips.js';
 import { loadRigFromPath } from '../../web/src/rig/load_rig_node.js';
 import { dragTolerances, restHeight, rigSize } from '../../web/src/rig/tolerances.js';
 
@@ -48,12 +48,7 @@ describe('a hand drag whose frames fit only a few iterations', () => {
     const rest = new IkSession(ik, rig.spec);
     const height = restHeight(rest.rig.boneTips(rest.restPose()));
     rest.dispose();
-    const effectors = Array.from(rig.spec.effectors ?? []);
-    if (!effectors.includes(humanoid.bones.hips!)) effectors.push(humanoid.bones.hips!);
-    const session = new IkSession(ik, {
-      ...floatingHipsSpec(rig.spec, humanoid, height),
-      effectors: Int32Array.from(effectors),
-    });
+    const session = new IkSession(ik, floatingHipsWithTarget(rig.spec, humanoid, height));
     try {
       const size = rigSize(session.rig.boneTips(session.restPose()));
       const settings: SolveSettings = {

@@ -23,6 +23,9 @@ const ZERO_SWING_DEG = 1e-3;
 /** The target must be this many trial swings' moves away: nearer, the slopes are round-off. */
 const NEAR_TRIALS = 10;
 
+/** Radians per degree. */
+const RAD = Math.PI / 180;
+
 const scratch = {
   trial: new Float64Array(0),
   tips: new Float64Array(0),
@@ -75,11 +78,10 @@ export function seatSwingPlane(
     sq = swingSlope(rig, j, e, twist, q);
   if (!(Math.hypot(towards[0], towards[1], towards[2]) > NEAR_TRIALS * scratch.step)) return;
   // A cos a + B sin a through (p, sp) and (q, sq).
-  const rad = Math.PI / 180,
-    det = Math.sin((q - p) * rad);
-  const A = (sp * Math.sin(q * rad) - sq * Math.sin(p * rad)) / det,
-    B = (sq * Math.cos(p * rad) - sp * Math.cos(q * rad)) / det;
-  const peak = Math.atan2(B, A) / rad;
+  const det = Math.sin((q - p) * RAD);
+  const A = (sp * Math.sin(q * RAD) - sq * Math.sin(p * RAD)) / det,
+    B = (sq * Math.cos(p * RAD) - sp * Math.cos(q * RAD)) / det;
+  const peak = Math.atan2(B, A) / RAD;
   let best = angles[j],
     bestScore = planeScore(A, B, up, down, best);
   // The limits, then the peak's turns within them.
@@ -115,7 +117,6 @@ function swingSlope(rig: IkRig, j: number, e: number, twist: number, a0: number)
 
 /** How fast a swing in plane a0 (degrees) that the limits allow (`up`: positive, `down`: negative) moves the tip towards the target. */
 function planeScore(A: number, B: number, up: boolean, down: boolean, a0: number): number {
-  const rad = Math.PI / 180;
-  const s = A * Math.cos(a0 * rad) + B * Math.sin(a0 * rad);
+  const s = A * Math.cos(a0 * RAD) + B * Math.sin(a0 * RAD);
   return Math.max(up ? s : 0, down ? -s : 0);
 }

@@ -60,11 +60,12 @@ export class AvatarIK {
   private readonly space: Object3D;
   private readonly input = {} as AvatarInput;
   /** The bones' poses written each frame (16 per bone; no new array per frame). */
-  private poses: Float64Array | null = null;
+  private readonly poses: Float64Array;
   private disposed = false;
 
   private constructor(solver: AvatarSolver, rig: SkeletonRig) {
     this.solver = solver;
+    this.poses = new Float64Array(16 * solver.rig.numBones);
     this.space = rig.space;
     const bone = (role: HumanoidRole): Object3D => rig.objects[rig.humanoid.bones[role]!];
     this.bones = {
@@ -125,9 +126,7 @@ export class AvatarIK {
       this.input[TRACKED[k]] = this.tracked[k].set(_p, _q);
     }
     const outcome = this.solver.update(this.input);
-    const rig = this.solver.rig;
-    this.poses = rig.poses(this.solver.angles, this.poses?.length === 16 * rig.numBones ? this.poses : undefined);
-    this.writer.write(this.poses);
+    this.writer.write(this.solver.rig.poses(this.solver.angles, this.poses));
     return outcome.reached;
   }
 

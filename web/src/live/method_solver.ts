@@ -52,7 +52,6 @@ export interface SolveSettings {
 /** What a solve or a step reached (angles in degrees, distances in rig units, see SolverResult). */
 export type SolveOutcome = SolverResult;
 
-/** Whether `a` and `b` hold the same settings (no allocation: called every frame). */
 /** Every SolveSettings field (the type checks that none is missing and none is extra). */
 const SETTING_KEYS = Object.keys({
   gradientTolerance: true,

@@ -8,7 +8,7 @@ import type { Object3D } from 'three';
 
 import type { IkCoreModule } from '../ik/module.js';
 import type { RigSpec } from '../ik/rig_arrays.js';
-import { floatingHipsSpec, floatingRootUnit } from '../rig/humanoid/floating_hips.js';
+import { floatingHipsWithTarget, floatingRootUnit } from '../rig/humanoid/floating_hips.js';
 import type { HumanoidMap } from '../rig/humanoid/humanoid_roles.js';
 import { type DragTolerances, dragTolerances, restHeight, rigSize } from '../rig/tolerances.js';
 import { LimitsView } from './limits_view.js';
@@ -31,11 +31,7 @@ interface Floating {
 function limitedSpec(source: RigSource, humanoid: boolean, floating: Floating | null): RigSpec {
   const limits = humanoid ? source.humanoidLimits : undefined;
   const spec = limits ? { ...source.spec, lower: limits.lower, upper: limits.upper } : source.spec;
-  if (!floating) return spec;
-  const hips = floating.humanoid.bones.hips!;
-  const effectors = Array.from(spec.effectors ?? []);
-  if (!effectors.includes(hips)) effectors.push(hips);
-  return { ...floatingHipsSpec(spec, floating.humanoid, floating.height), effectors: Int32Array.from(effectors) };
+  return floating ? floatingHipsWithTarget(spec, floating.humanoid, floating.height) : spec;
 }
 
 /** Whether `source` floats: a recognised humanoid with hips, its height at rest; null for any other rig. */

@@ -72,6 +72,17 @@ export function floatingHipsSpec(spec: RigSpec, humanoid: HumanoidMap, height: n
 }
 
 /**
+ * floatingHipsSpec() with the hips an end effector too (after the spec's, unless they are one):
+ * the rig the page solves a floating humanoid with, its hips target the last effector.
+ */
+export function floatingHipsWithTarget(spec: RigSpec, humanoid: HumanoidMap, height: number): RigSpec {
+  const hips = humanoid.bones.hips;
+  const effectors = Array.from(spec.effectors ?? []);
+  if (hips !== undefined && !effectors.includes(hips)) effectors.push(hips);
+  return { ...floatingHipsSpec(spec, humanoid, height), effectors: Int32Array.from(effectors) };
+}
+
+/**
  * A crouch's knees take poles only while one bends less than this (degrees, its a1): the poles show
  * a straight leg the way to bend; a bent knee keeps its way from frame to frame. Placed every
  * frame of the avatar's crouch they cost 76 µs a frame on the crouch clip (their forward
