@@ -20,8 +20,8 @@
 #include <vector>
 
 #include "active_set.h"
+#include "damped_system.h"
 #include "damping.h"
-#include "small_cholesky.h"
 #include "solver.h"
 
 namespace ik {
@@ -38,10 +38,7 @@ class LevenbergMarquardt final : public Solver {
  private:
   void resize(int m, int n) override {
     normal_.resize(m, m);
-    reduced_.resize(m, m);
-    shifted_.resize(m, m);
-    y_.resize(m);
-    rhs_.resize(m);
+    system_.resize(m);
     jd_.resize(m);
     active_set_.resize(n);
   }
@@ -100,21 +97,14 @@ class LevenbergMarquardt final : public Solver {
   // set. Fails if the factorisation failed; stops when the time budget ran out (on a rig of
   // thousands of angles, taking fixed columns out costs as much as building the matrix).
   Step damped_step(double lambda) {
-    reduced_ = normal_;
-    rhs_ = r_;
-    // (Jf Jf^T + lambda I) y = rhs over the angles still in the set.
-    const auto solve_system = [&] {
-      shifted_ = reduced_;
-      shifted_.diagonal().array() += lambda;
-      if (!small_cholesky(shifted_, m_)) return false;
-      y_ = rhs_;
-      small_cholesky_solve(shifted_, m_, y_);
-      return true;
-    };
+    // (Jf Jf^T + lambda I) y = r over the angles still in the set.
+    system_.begin(normal_, r_);
+    system_.shift().setConstant(lambda);
+    const auto solve_system = [&] { return system_.solve(); };
     // Angle i's step -w_i (Jf^T y)_i (w_i: its column's weight, BlockPattern::weight).
-    const auto proposed = [&](int i) { return -pattern_.weight(i) * pattern_.dot(J_, i, y_); };
+    const auto proposed = [&](int i) { return -pattern_.weight(i) * pattern_.dot(J_, i, system_.y()); };
     // Angle i moves by a known d: its column leaves the system.
-    const auto take_out = [&](int i, double d) { pattern_.take_out(J_, i, d, rhs_, reduced_); };
+    const auto take_out = [&](int i, double d) { system_.take_out(pattern_, J_, i, d); };
     switch (active_set_.run(a_, kin_.lower(), kin_.upper(), free_, num_free_, ActiveSet::Fix::past_limit, deadline(),
                             solve_system, proposed, take_out)) {
       case ActiveSet::Status::solve_failed: return Step::failed;
@@ -127,8 +117,9 @@ class LevenbergMarquardt final : public Solver {
     return Step::ok;
   }
 
-  Eigen::MatrixXd normal_, reduced_, shifted_;
-  Eigen::VectorXd y_, rhs_, jd_;
+  Eigen::MatrixXd normal_;
+  DampedSystem system_;
+  Eigen::VectorXd jd_;
   ActiveSet active_set_;
   NielsenDamping damping_;
 };

@@ -22,10 +22,8 @@ void Priority::resize(const GoalSet& goals, int angles) {
   held_rows_ = goals.hard_rows();
   movable_.resize(angles);
   normal_.resize(m, m);
-  reduced_.resize(m, m);
-  shifted_.resize(m, m);
+  system_.resize(m);
   held_normal_.resize(m, m);
-  rhs_.resize(m);
   jd_.resize(m);
   y_.resize(m);
   held_y_.resize(m);
@@ -147,18 +145,11 @@ Priority::Status Priority::step(const Kinematics& kin, const Eigen::MatrixXd& J,
                                 double lambda, double floor, const Deadline& deadline,
                                 Eigen::Ref<Eigen::VectorXd> trial) {
   const int m = static_cast<int>(normal_.rows());
-  reduced_ = normal_;
-  rhs_ = r;
-  const auto solve_system = [&] {
-    shifted_ = reduced_;
-    for (int i = 0; i < m; ++i) shifted_(i, i) += held_row(i) ? kHeldDamping * lambda + floor : lambda;
-    if (!small_cholesky(shifted_, m)) return false;
-    y_ = rhs_;
-    small_cholesky_solve(shifted_, m, y_);
-    return true;
-  };
-  const auto proposed = [&](int i) { return -pattern.weight(i) * pattern.dot(J, i, y_); };
-  const auto take_out = [&](int i, double d) { pattern.take_out(J, i, d, rhs_, reduced_); };
+  system_.begin(normal_, r);
+  for (int i = 0; i < m; ++i) system_.shift()[i] = held_row(i) ? kHeldDamping * lambda + floor : lambda;
+  const auto solve_system = [&] { return system_.solve(); };
+  const auto proposed = [&](int i) { return -pattern.weight(i) * pattern.dot(J, i, system_.y()); };
+  const auto take_out = [&](int i, double d) { system_.take_out(pattern, J, i, d); };
   switch (active_set_.run(a, kin.lower(), kin.upper(), movable_, static_cast<int>(movable_.size()),
                           ActiveSet::Fix::past_limit, deadline, solve_system, proposed, take_out)) {
     case ActiveSet::Status::solve_failed: return Status::failed;

@@ -28,6 +28,7 @@
 
 #include "active_set.h"
 #include "block_pattern.h"
+#include "damped_system.h"
 #include "deadline.h"
 #include "goals.h"
 #include "kinematics.h"
@@ -122,8 +123,9 @@ class Priority {
   int held_rows_ = 0;        // hard rows: the blocks' rows; rows past them (soft) are never held
   std::vector<int> movable_;
   double scale_ = 1;
-  Eigen::MatrixXd normal_, reduced_, shifted_, held_normal_;
-  Eigen::VectorXd rhs_, y_, held_y_, gradient_, jd_;
+  Eigen::MatrixXd normal_, held_normal_;
+  DampedSystem system_;
+  Eigen::VectorXd y_, held_y_, gradient_, jd_;
   ActiveSet active_set_;
 };
 

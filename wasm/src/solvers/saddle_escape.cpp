@@ -109,9 +109,13 @@ bool SaddleEscape::search(Kinematics& kin, const GoalSet& goals, const Eigen::Re
     kin.project(trial);
     const double moved2 = (trial - angles).squaredNorm();
     if (moved2 == 0) return false;  // the bounds block this sign
+    // E >= 0 everywhere: a step whose required decrease is more than E cannot pass (near the
+    // target, where E is small, most of the first steps), and is not evaluated.
+    const double required = E + kDecrease * 0.5 * curvature * moved2;
+    if (!(required > 0)) continue;
     E_trial = goal_objective(kin, goals, trial, residual);
     ++evaluations;
-    if (std::isfinite(E_trial) && E_trial < E + kDecrease * 0.5 * curvature * moved2) return true;
+    if (std::isfinite(E_trial) && E_trial < required) return true;
   }
   return false;
 }

@@ -19,6 +19,25 @@ bool small_cholesky(Eigen::Ref<Eigen::MatrixXd> a, int n) {
   return true;
 }
 
+bool small_cholesky_downdate(Eigen::Ref<Eigen::MatrixXd> factor, int n, Eigen::Ref<Eigen::VectorXd> v) {
+  // Column by column a hyperbolic rotation between L's column k and v zeroes v_k; a zero v_k
+  // (rows the taken-out column does not move) leaves column k as it is.
+  for (int k = 0; k < n; ++k) {
+    if (v[k] == 0) continue;
+    const double lkk = factor(k, k);
+    const double c2 = 1 - (v[k] / lkk) * (v[k] / lkk);  // (new pivot / old)^2
+    if (!(c2 > kDowndateShare * kDowndateShare)) return false;
+    const double c = std::sqrt(c2), s = v[k] / lkk;
+    factor(k, k) = c * lkk;
+    const int below = n - k - 1;
+    auto l = factor.col(k).segment(k + 1, below);
+    auto w = v.segment(k + 1, below);
+    l = (l - s * w) * (1 / c);
+    w = c * w - s * l;
+  }
+  return true;
+}
+
 void small_cholesky_solve(const Eigen::Ref<const Eigen::MatrixXd>& factor, int n, Eigen::Ref<Eigen::VectorXd> b) {
   const auto L = factor.topLeftCorner(n, n).triangularView<Eigen::Lower>();
   L.solveInPlace(b.head(n));              // L y = b

@@ -13,6 +13,13 @@ namespace ik {
 // overwritten, if the matrix is not numerically positive definite. No allocation.
 bool small_cholesky(Eigen::Ref<Eigen::MatrixXd> a, int n);
 
+// Replaces the factor L (from small_cholesky) by that of L L^T - v v^T, a rank-one downdate in
+// O(n^2); `v` (n) is overwritten. Returns false, with the factor partly overwritten, if a pivot
+// would fall below kDowndateShare of itself (the downdate then loses accuracy: factor the
+// matrix afresh) or the result is not positive definite. No allocation.
+constexpr double kDowndateShare = 1e-3;
+bool small_cholesky_downdate(Eigen::Ref<Eigen::MatrixXd> factor, int n, Eigen::Ref<Eigen::VectorXd> v);
+
 // Solves L L^T x = b in place (`b` becomes x) with the factor from small_cholesky. No allocation.
 void small_cholesky_solve(const Eigen::Ref<const Eigen::MatrixXd>& factor, int n, Eigen::Ref<Eigen::VectorXd> b);
 
