@@ -198,13 +198,18 @@ export class AvatarSolver {
     });
     this.restHips = tips.slice(3 * HIPS, 3 * HIPS + 3);
     this.steps = new FootSteps([pose(3), pose(4)], this.restHips, pose(0), h);
-    // The solver now: made by the first update(), it doubled that frame's time.
-    s.prepare('lm', this.settings);
+    // The solver and its workspace now, by a solve that leaves the pose as it is: made by the first
+    // update(), they doubled that frame's time (the solver), then made it its clip's slowest (the
+    // workspace, sized at a solve's start: each clip's frame 0 took 4-7 times its median).
+    s.trySolve('lm', this.settings);
   }
 
-  /** The head's, hands', feet's and hips' tips at the current pose, 3 per bone in `bones` order (rig units, a new array). */
-  tips(): Float64Array {
-    return this.session.tips();
+  /**
+   * The head's, hands', feet's and hips' tips at the current pose, 3 per bone in `bones` order (rig
+   * units): written into `out` when given (no allocation), else a new array.
+   */
+  tips(out?: Float64Array): Float64Array {
+    return this.session.tips(out);
   }
 
   /** Their bone frames at the current pose, 4 per bone [x, y, z, w], rig coordinates (a new array). */

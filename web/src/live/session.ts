@@ -185,14 +185,6 @@ export class IkSession {
     return this.solver(method).solve(this.angles, this.packedProblem(settings.paperMode), settings, this.angles);
   }
 
-  /**
-   * Makes `method`'s solver and sends it `settings` now, so that the first solve with them costs
-   * what the later ones do (the solver is otherwise made by the first solve).
-   */
-  prepare(method: string, settings: SolveSettings): void {
-    this.solver(method).configure(settings);
-  }
-
   /** Solves from `start` (default: the current pose) without changing the pose (for the compare table). */
   trySolve(method: string, settings: SolveSettings, start: Float64Array = this.angles): SolveOutcome {
     return this.solver(method).solve(start, this.problem(settings.paperMode), settings);
