@@ -112,15 +112,7 @@ describe('the page', () => {
     const { page, errors } = await openPage(env.browser, ctx);
     await gotoRig(page, 'robot-arm');
     const before = await page.evaluate(() => window.ikPage?.effectors() ?? []);
-    // The longest bone that is not an effector.
-    const bone = await page.evaluate((eff) => {
-      const lengths = window.ikPage?.boneLengths() ?? [];
-      let best = -1;
-      lengths.forEach((l, i) => {
-        if (!eff.includes(i) && (best < 0 || l > lengths[best])) best = i;
-      });
-      return best;
-    }, before);
+    const bone = await longestNonEffector(page, before);
     expect(bone).toBeGreaterThanOrEqual(0);
     const at = await page.evaluate((i) => window.ikPage?.boneScreen(i) ?? null, bone);
     if (!at) throw new Error('bone off screen');
@@ -144,6 +136,36 @@ describe('the page', () => {
     await page.keyboard.press('r');
     await page.waitForFunction(() => window.ikPage?.effectorError(0) === 0);
     expect(await stat(page, 'E')).toBe('0');
+    expect(errors).toEqual([]);
+  });
+
+  it('a click a few pixels beside a bone, where its glyph tapers to a point, still selects it', async (ctx) => {
+    const { page, errors } = await openPage(env.browser, ctx);
+    await gotoRig(page, 'robot-arm');
+    const effectors = await page.evaluate(() => window.ikPage?.effectors() ?? []);
+    const names = await page.evaluate(() => window.ikPage?.boneNames() ?? []);
+    // No target or gizmo on it.
+    const bone = await longestNonEffector(page, effectors);
+    // 4 px to the side of its axis, a tenth of the way from its base to its glyph's middle (a
+    // twentieth of the glyph, whose half-width grows from 0 to 10% of its length at 18%).
+    const at = await page.evaluate((i) => {
+      const p = window.ikPage;
+      const base = p?.boneBase(i),
+        middle = p?.boneScreen(i);
+      const from = base ? p?.worldToScreen(base) : null;
+      if (!from || !middle) return null;
+      const dx = middle.x - from.x,
+        dy = middle.y - from.y,
+        length = Math.hypot(dx, dy);
+      return { x: from.x + 0.1 * dx - (4 * dy) / length, y: from.y + 0.1 * dy + (4 * dx) / length, length };
+    }, bone);
+    if (!at) throw new Error('bone off screen');
+    expect(at.length).toBeGreaterThan(40); // the glyph is 4 px wide at most where the click lands
+    await page.keyboard.down('Shift'); // select only
+    await page.mouse.click(at.x, at.y);
+    await page.keyboard.up('Shift');
+    expect(await page.textContent('#selection')).toMatch(new RegExp(`^${names[bone]}`));
+    expect(await page.evaluate(() => window.ikPage?.effectors())).toEqual(effectors);
     expect(errors).toEqual([]);
   });
 
@@ -317,3 +339,15 @@ describe('the page', () => {
     expect(errors).toEqual([]);
   });
 });
+
+/** The longest bone that is not one of `effectors`, or -1. */
+async function longestNonEffector(page: Page, effectors: number[]): Promise<number> {
+  return page.evaluate((eff) => {
+    const lengths = window.ikPage?.boneLengths() ?? [];
+    let best = -1;
+    lengths.forEach((l, i) => {
+      if (!eff.includes(i) && (best < 0 || l > lengths[best])) best = i;
+    });
+    return best;
+  }, effectors);
+}

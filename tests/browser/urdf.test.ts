@@ -169,7 +169,8 @@ describe('a URDF robot on the page', () => {
     expect(distance(tip, held)).toBeLessThan(tolerance);
 
     // 3. The elbow's joint limits: shift-click its bone (select only), a quarter of the way along
-    // its glyph, where it is widest (seen edge-on, its middle is a few pixels wide).
+    // its glyph: its middle lies under the rotate gizmo's view ring (handle E, hovered there), which
+    // takes a click before the bones do.
     const elbow = await page.evaluate(() => {
       const p = window.ikPage;
       const base = p?.boneBase(2),

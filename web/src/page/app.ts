@@ -378,7 +378,7 @@ export class PageApp {
   private click(c: ViewClick): void {
     const live = this.controller.live;
     if (!live || this.track.click(c)) return;
-    const bone = live.view.pick(c.raycaster);
+    const bone = live.view.pick(c.raycaster, c.pixelSlope);
     live.selectedBone = bone;
     if (bone !== null && !c.shiftKey && this.settings.clickBone === 'toggle effector') {
       if (this.history.edit(() => toggleEffector(this.controller, bone))) {

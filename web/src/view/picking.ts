@@ -2,11 +2,17 @@
 // gizmo) is a click; it is reported with a ray through the pointer. Works for mouse, pen and touch.
 // A press on something a click would select (a target the gizmo does not hold) can be held back
 // from the gizmo until it is seen to be a click or a drag (holdClickablePresses).
-import { type Camera, Raycaster, Vector2 } from 'three';
+import { type Camera, PerspectiveCamera, Raycaster, Vector2 } from 'three';
 
 export interface ViewClick {
   raycaster: Raycaster;
   shiftKey: boolean;
+  /**
+   * A CSS pixel's width at unit distance from the camera along the ray (world units per world
+   * unit): a tolerance of k pixels at distance t along the ray is k * pixelSlope * t. 0 when the
+   * camera is not a perspective one.
+   */
+  pixelSlope: number;
 }
 
 export function listenForClicks(
@@ -30,7 +36,7 @@ export function listenForClicks(
     const rect = canvas.getBoundingClientRect();
     ndc.set(((e.clientX - rect.left) / rect.width) * 2 - 1, -((e.clientY - rect.top) / rect.height) * 2 + 1);
     raycaster.setFromCamera(ndc, camera);
-    onClick({ raycaster, shiftKey: e.shiftKey });
+    onClick({ raycaster, shiftKey: e.shiftKey, pixelSlope: pixelSlope(camera, rect.height) });
   };
   canvas.addEventListener('pointerdown', onDown);
   window.addEventListener('pointerup', onUp);
@@ -38,6 +44,12 @@ export function listenForClicks(
     canvas.removeEventListener('pointerdown', onDown);
     window.removeEventListener('pointerup', onUp);
   };
+}
+
+/** ViewClick.pixelSlope of `camera` drawn `height` CSS pixels high. */
+function pixelSlope(camera: Camera, height: number): number {
+  if (!(camera instanceof PerspectiveCamera) || !(height > 0)) return 0;
+  return (2 * Math.tan(((camera.fov / 2) * Math.PI) / 180)) / camera.zoom / height;
 }
 
 /** How far (CSS pixels) a pointer may move between down and up and still click. */

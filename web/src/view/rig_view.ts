@@ -33,6 +33,9 @@ const EFFECTOR = new Color(0xff9a3c);
 const SELECTED = new Color(0xffe45c);
 const GHOST = new Color(0x8fe3ff);
 
+/** A click picks a bone whose axis its ray passes within this many CSS pixels where it hits no glyph. */
+const PICK_PIXELS = 6;
+
 // Scratch objects: the per-frame path allocates nothing of its own.
 const mPose = new Matrix4();
 const mRest = new Matrix4();
@@ -40,6 +43,7 @@ const mBone = new Matrix4();
 const mScale = new Matrix4();
 const v = new Vector3();
 const v2 = new Vector3();
+const onRay = new Vector3();
 const ORIGIN = new Vector3();
 const X_AXIS = new Vector3(1, 0, 0);
 
@@ -222,12 +226,29 @@ export class RigView {
     return box;
   }
 
-  /** The bone under the ray, or null. Bones of length 0 cannot be picked. */
-  pick(raycaster: Raycaster): number | null {
+  /**
+   * The bone under the ray, or null. Bones of length 0 cannot be picked. A ray that hits no glyph
+   * picks the bone whose axis it passes within PICK_PIXELS, the nearest along the ray, given
+   * `pixelSlope` (ViewClick.pixelSlope; 0: no such tolerance): a glyph tapers to a point at both
+   * ends, and one seen end-on is a dot.
+   */
+  pick(raycaster: Raycaster, pixelSlope = 0): number | null {
     if (!this.bones.visible) return null;
     const hits = raycaster.intersectObject(this.bones, false);
     for (const h of hits) if (h.instanceId !== undefined && this.spec.lengths[h.instanceId] > 0) return h.instanceId;
-    return null;
+    if (!(pixelSlope > 0)) return null;
+    let nearest: number | null = null,
+      nearestAlong = Infinity;
+    for (let i = 0; i < this.spec.parents.length; i++) {
+      if (!(this.spec.lengths[i] > 0)) continue;
+      const d2 = raycaster.ray.distanceSqToSegment(this.boneBase(i, v), this.glyphEnd(i, v2), onRay);
+      const along = onRay.distanceTo(raycaster.ray.origin);
+      if (d2 <= (PICK_PIXELS * pixelSlope * along) ** 2 && along < nearestAlong) {
+        nearest = i;
+        nearestAlong = along;
+      }
+    }
+    return nearest;
   }
 
   dispose(): void {
