@@ -50,7 +50,7 @@ describe('ten avatars on one page', () => {
       const truth = new IkRig(ik, avatars[0].rig.spec);
       const a = new Float64Array(truth.numAngles);
       const delta = 1e-3 * avatars[0].height;
-      // Every frame's tracked poses first, into two flat arrays (7 numbers per point: position,
+      // Every frame's tracked poses first, into one flat array (7 numbers per point: position,
       // orientation), copied into one input per avatar before its update: the loop below then
       // allocates only what update() does. (Made in the loop, 3 arrays per avatar and frame, they put
       // garbage collections into the timed updates; kept as 9,000 small arrays, their promotion out
@@ -83,8 +83,9 @@ describe('ten avatars on one page', () => {
         }
       const point = () => ({ position: new Float64Array(3), orientation: new Float64Array(4) });
       const inputs = avatars.map(() => ({ head: point(), leftHand: point(), rightHand: point() }));
+      const points = inputs.map((input) => [input.head, input.leftHand, input.rightHand]);
       const mine = new Float64Array(3 * avatars[0].bones.length);
-      const perFrame: number[] = [];
+      const perFrame = new Float64Array(frames);
       // A fixed loop of plain JavaScript, timed after each frame (ms): where it too takes
       // milliseconds, the main thread was held by something else (this machine's other processes
       // and threads). A function of its own: written inline, it slowed the timed loop's updates.
@@ -100,36 +101,31 @@ describe('ten avatars on one page', () => {
       for (let f = 0; f < total; f++) {
         let spent = 0;
         for (let k = 0; k < count; k++) {
-          const input = inputs[k];
-          [input.head, input.leftHand, input.rightHand].forEach((p, e) => {
-            const at = 7 * (3 * (f * count + k) + e);
-            p.position.set(tracked.subarray(at, at + 3));
-            p.orientation.set(tracked.subarray(at + 3, at + 7));
-          });
+          for (let e = 0; e < 3; e++) {
+            const at = 7 * (3 * (f * count + k) + e),
+              p = points[k][e];
+            for (let i = 0; i < 3; i++) p.position[i] = tracked[at + i];
+            for (let i = 0; i < 4; i++) p.orientation[i] = tracked[at + 3 + i];
+          }
           const t0 = performance.now();
-          avatars[k].update(input);
+          avatars[k].update(inputs[k]);
           spent += performance.now() - t0;
           if (f < warmUp) continue;
           avatars[k].tips(mine);
           samples++;
-          if (
-            [input.head, input.leftHand, input.rightHand].every(
-              (p, e) =>
-                Math.hypot(
-                  mine[3 * e] - p.position[0],
-                  mine[3 * e + 1] - p.position[1],
-                  mine[3 * e + 2] - p.position[2],
-                ) < delta,
-            )
-          )
-            onTarget++;
+          let met = true;
+          for (let e = 0; e < 3; e++) {
+            const p = points[k][e].position;
+            if (!(Math.hypot(mine[3 * e] - p[0], mine[3 * e + 1] - p[1], mine[3 * e + 2] - p[2]) < delta)) met = false;
+          }
+          if (met) onTarget++;
         }
         control[f] = fixedLoop(f);
-        if (f >= warmUp) perFrame.push(spent);
+        if (f >= warmUp) perFrame[f - warmUp] = spent;
       }
       avatars.forEach((avatar) => avatar.dispose());
       truth.dispose();
-      perFrame.sort((x, y) => x - y);
+      perFrame.sort();
       const controlTimes = Array.from(control.subarray(warmUp)).sort((x, y) => x - y);
       return {
         onTarget: onTarget / samples,

@@ -2,7 +2,7 @@
 // gizmo) is a click; it is reported with a ray through the pointer. Works for mouse, pen and touch.
 // A press on something a click would select (a target the gizmo does not hold) can be held back
 // from the gizmo until it is seen to be a click or a drag (holdClickablePresses).
-import { type Camera, PerspectiveCamera, Raycaster, Vector2 } from 'three';
+import { type Camera, MathUtils, PerspectiveCamera, Raycaster, Vector2 } from 'three';
 
 export interface ViewClick {
   raycaster: Raycaster;
@@ -49,7 +49,7 @@ export function listenForClicks(
 /** ViewClick.pixelSlope of `camera` drawn `height` CSS pixels high. */
 function pixelSlope(camera: Camera, height: number): number {
   if (!(camera instanceof PerspectiveCamera) || !(height > 0)) return 0;
-  return (2 * Math.tan(((camera.fov / 2) * Math.PI) / 180)) / camera.zoom / height;
+  return (2 * Math.tan((MathUtils.DEG2RAD * camera.getEffectiveFOV()) / 2)) / height;
 }
 
 /** How far (CSS pixels) a pointer may move between down and up and still click. */
