@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <utility>
 
 namespace ik {
@@ -36,6 +37,8 @@ void Kinematics::precompute() {
   rest_inv_.resize(n);
   from_parent_.resize(n);
   frame_.assign(n, Eigen::Isometry3d::Identity());
+  posed_.resize(num_angles());
+  posed_valid_ = false;
   axes_.assign(n, Eigen::Matrix3d::Identity());
   lower_.resize(num_angles());
   upper_.resize(num_angles());
@@ -77,6 +80,8 @@ void Kinematics::precompute_chains() {
 }
 
 void Kinematics::forward(const Eigen::Ref<const Eigen::VectorXd>& angles) {
+  const std::size_t bytes = sizeof(double) * static_cast<std::size_t>(posed_.size());
+  if (posed_valid_ && angles.size() == posed_.size() && std::memcmp(angles.data(), posed_.data(), bytes) == 0) return;
   for (int i : order_) {
     const int p = rig_.bones[i].parent;
     // Joint frame before rotation: F = T_parent * rest_i, with T_parent = frame_p * rest_p^-1.
@@ -96,6 +101,8 @@ void Kinematics::forward(const Eigen::Ref<const Eigen::VectorXd>& angles) {
     frame_[i].linear() = r;
     frame_[i].translation() = joint.translation();
   }
+  posed_valid_ = angles.size() == posed_.size();
+  if (posed_valid_) posed_ = angles;
 }
 
 void Kinematics::current_tips(Eigen::Ref<Eigen::VectorXd> tips) const {

@@ -46,7 +46,8 @@ class Kinematics {
   void set_effectors(const std::vector<int>& effectors);
 
   // Poses the rig at `angles` (#angles, degrees). Afterwards pose(), tip(), joint_axis() and
-  // joint_origin() describe that pose. No allocation.
+  // joint_origin() describe that pose. No allocation. Angles bit for bit those of the last call
+  // keep its pose (a tracked frame's solve starts where the last one ended: its rig is posed).
   void forward(const Eigen::Ref<const Eigen::VectorXd>& angles);
 
   // After forward(): bone i's pose transform T_i (rest space -> posed world).
@@ -98,6 +99,8 @@ class Kinematics {
   std::vector<Eigen::Isometry3d> rest_inv_;
   std::vector<Eigen::Isometry3d> from_parent_;  // rest_parent^-1 * rest_i (rest_i for a root)
   std::vector<Eigen::Isometry3d> frame_;        // T_parent * rest_i * Rx Rz Rx: canonical bone -> world
+  Eigen::VectorXd posed_;                       // the angles frame_ and axes_ are posed at
+  bool posed_valid_ = false;                    // false until the first forward()
   std::vector<Eigen::Matrix3d> axes_;           // world joint axes (x, z, x) per bone
   std::vector<unsigned char> zero_locked_;      // per bone, bit k: angle k is locked at 0 (min == max == 0)
   std::vector<unsigned char> movable_;          // per bone, bit k: angle k is movable (min < max)

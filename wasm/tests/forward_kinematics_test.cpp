@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "a7_fixtures.h"
+#include "small_rigs.h"
 
 namespace ik {
 namespace {
@@ -20,6 +21,44 @@ TEST(ForwardKinematics, MatchesReferenceComposition) {
       const double scale = std::max(1.0, ref.cwiseAbs().maxCoeff());
       EXPECT_LE((tips - ref).cwiseAbs().maxCoeff(), 1e-12 * scale) << r.label() << " sample " << s;
     }
+  }
+}
+
+// forward() at the angles of its last call keeps that pose; any other angles, even one differing
+// in the last angle only (a floating root's translation), or a +0 turned -0, pose the rig anew.
+TEST(ForwardKinematics, PosesAnewUnlessTheAnglesAreTheLastOnes) {
+  std::mt19937_64 rng(3);
+  std::vector<test::TestRig> rigs = test::test_rigs();
+  rigs.push_back({"two arms, floating", false, test::two_arms(true)});
+  for (const test::TestRig& r : rigs) {
+    Kinematics kin(r.rig);
+    Eigen::VectorXd tips(kin.num_residuals());
+    // The reference has no floating root: its translation moves every tip (one root here).
+    const auto reference = [&](const Eigen::VectorXd& angles) {
+      Eigen::VectorXd ref = test::reference_tips(r.rig, angles);
+      if (kin.floats())
+        for (int k = 0; k < kin.num_effectors(); ++k) ref.segment<3>(3 * k) += angles.tail<3>();
+      return ref;
+    };
+    const Eigen::VectorXd a = test::random_angles(kin, rng);
+    const Eigen::VectorXd b = [&] {
+      Eigen::VectorXd v = a;
+      v[v.size() - 1] = a[a.size() - 1] == 0 ? 0.5 : 0;
+      return v;
+    }();
+    kin.tips(a, tips);
+    const Eigen::VectorXd at_a = tips;
+    for (const Eigen::VectorXd* angles : {&a, &b, &a, &a}) {
+      kin.tips(*angles, tips);
+      const Eigen::VectorXd ref = reference(*angles);
+      EXPECT_LE((tips - ref).cwiseAbs().maxCoeff(), 1e-12 * std::max(1.0, ref.cwiseAbs().maxCoeff())) << r.label();
+    }
+    EXPECT_EQ(tips, at_a) << r.label();
+    Eigen::VectorXd zero = Eigen::VectorXd::Zero(kin.num_angles());
+    kin.tips(zero, tips);
+    zero[0] = -0.0;
+    kin.tips(zero, tips);
+    EXPECT_LE((tips - reference(zero)).cwiseAbs().maxCoeff(), 1e-12) << r.label();
   }
 }
 
