@@ -16,6 +16,8 @@
 // backtracking from a step that turns the largest angle by kFirstStepDeg, accepting
 //   E(P(A + t v)) < E(A) + c lambda |P(A + t v) - A|^2 / 2        (c = 1/4)
 // and the sign with the lower E is taken (a tie: the sign whose largest component is positive).
+// A sign is searched only if the model's curvature along its first move, with the components
+// that push an angle already on its limit outward held at 0, can pass that test (< c lambda).
 // The step goes only as far as E keeps falling by that much, so the pose does not jump; the
 // method then descends from there. No allocation after resize().
 #pragma once
@@ -55,6 +57,9 @@ class SaddleEscape {
  private:
   // The angles H is formed over (index_[0..count_)); position_[angle] is its place or -1.
   void choose_angles(const Kinematics& kin, const GoalSet& goals, const Eigen::Ref<const Eigen::VectorXd>& r);
+  // The Hessian block's curvature (rig units^2 per degree^2) along sign * direction_, less
+  // the components that push an angle on its limit outward (`angles`, degrees); +inf if none is left.
+  double curvature_within_bounds(const Kinematics& kin, const Eigen::Ref<const Eigen::VectorXd>& angles, double sign);
   // Backtracking along sign * direction_; the accepted point in `trial` / `residual`.
   bool search(Kinematics& kin, const GoalSet& goals, const Eigen::Ref<const Eigen::VectorXd>& angles, double E,
               double curvature, double sign, Eigen::Ref<Eigen::VectorXd> trial, Eigen::Ref<Eigen::VectorXd> residual,
@@ -62,6 +67,7 @@ class SaddleEscape {
 
   using SmallMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxAngles, kMaxAngles>;
   SmallMatrix hessian_;
+  Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxAngles, 1> clipped_;  // scratch of curvature_within_bounds()
   Eigen::SelfAdjointEigenSolver<SmallMatrix> eigen_{kMaxAngles};
   std::vector<int> position_, index_;
   std::vector<int> bones_;  // scratch of the tip Hessian: one effector's chain bones with a chosen angle

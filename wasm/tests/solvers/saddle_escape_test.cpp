@@ -58,5 +58,29 @@ TEST(SaddleEscape, FindsTheSameBendAfterItsWorkspaceWasResized) {
   EXPECT_EQ(again, first);
 }
 
+// The same limb bending in one plane (the z angles only), its elbow like a knee: it bends one way,
+// [0, 150] degrees, and stands straight on that limit. The bend's eigenvector turns the elbow and
+// the shoulder; its other sign pushes the elbow past the limit, and what the bounds leave of that
+// turns the straight limb whole, along which E only rises: that sign is not searched (it took 29
+// evaluations, every halving of its step). The escape bends the elbow the way it goes.
+TEST(SaddleEscape, DoesNotSearchTheSignItsBoundsTurnUphill) {
+  Rig rig = straight_limb();
+  for (Bone& b : rig.bones) {
+    b.min_deg = Eigen::Vector3d(0, -180, 0);
+    b.max_deg = Eigen::Vector3d(0, 180, 0);
+  }
+  rig.bones[1].min_deg[1] = 0;
+  rig.bones[1].max_deg[1] = 150;
+  StraightLimbSaddle s(rig);
+  SaddleEscape escape;
+  escape.resize(s.kin, s.goals.rows());
+  Eigen::VectorXd trial(s.kin.num_angles()), residual(s.goals.rows());
+  const EscapeResult found = escape.find(s.kin, s.goals, s.angles, s.r, s.E, s.J, trial, residual);
+  ASSERT_TRUE(found.found);
+  EXPECT_LT(found.E, s.E);
+  EXPECT_GT(trial[4], 0);  // the elbow's z: bent the way it goes
+  EXPECT_LE(found.evaluations, 3);
+}
+
 }  // namespace
 }  // namespace ik
