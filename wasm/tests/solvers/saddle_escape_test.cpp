@@ -1,6 +1,7 @@
 // SaddleEscape (saddle_escape.h) used across workspace changes: the Solver resizes it whenever
 // the goals' rows change (a pole or an orientation goal added between two frames), and a find()
-// after that must start from a clean set of chosen angles.
+// after that must start from a clean set of chosen angles. And a limb straight on its limit: the
+// sign the limit stops is not searched.
 #include <gtest/gtest.h>
 
 #include "../small_rigs.h"
