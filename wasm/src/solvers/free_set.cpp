@@ -9,8 +9,7 @@ FreeAngles find_free_angles(const Eigen::VectorXd& angles, const Eigen::VectorXd
   FreeAngles found;
   double norm2 = 0;
   for (Eigen::Index i = 0; i < angles.size(); ++i) {
-    const bool blocked = lower[i] >= upper[i] || (angles[i] <= lower[i] && gradient[i] > 0) ||
-                         (angles[i] >= upper[i] && gradient[i] < 0);
+    const bool blocked = lower[i] >= upper[i] || pushed_past_limit(angles[i], lower[i], upper[i], -gradient[i]);
     mask[i] = blocked ? 0.0 : 1.0;
     if (blocked) continue;
     free[found.count++] = static_cast<int>(i);

@@ -8,6 +8,13 @@
 
 namespace ik {
 
+// Whether an angle at `angle` within [lower, upper] (degrees) sits on a limit that a move of sign
+// `move` pushes past: on its lower limit with move < 0, on its upper limit with move > 0 (a descent
+// direction -g moves it by -g).
+inline bool pushed_past_limit(double angle, double lower, double upper, double move) {
+  return (angle <= lower && move < 0) || (angle >= upper && move > 0);
+}
+
 struct FreeAngles {
   int count = 0;             // how many angles are free
   double gradient_norm = 0;  // |gradient| over them, rig units^2 per degree

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "free_set.h"
 #include "small_cholesky.h"
 
 namespace ik {
@@ -209,7 +210,7 @@ double Priority::reduced_gradient_norm(const Kinematics& kin, const Eigen::Matri
   double sum = 0;
   for (int j : movable_) {
     const double g = gradient_[j];
-    if ((a[j] <= kin.lower()[j] && g > 0) || (a[j] >= kin.upper()[j] && g < 0)) continue;
+    if (pushed_past_limit(a[j], kin.lower()[j], kin.upper()[j], -g)) continue;
     sum += g * g;
   }
   return std::sqrt(sum);

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "free_set.h"
 #include "goal_residual.h"
 #include "objective.h"
 #include "tip_hessian.h"
@@ -113,15 +114,11 @@ double SaddleEscape::curvature_within_bounds(const Kinematics& kin, const Eigen:
   for (int p = 0; p < count_; ++p) {
     const int i = index_[p];
     const double d = sign * direction_[i];
-    const bool outward = (d < 0 && angles[i] <= kin.lower()[i]) || (d > 0 && angles[i] >= kin.upper()[i]);
-    clipped_[p] = outward ? 0 : d;
+    clipped_[p] = pushed_past_limit(angles[i], kin.lower()[i], kin.upper()[i], d) ? 0 : d;
   }
   const double length2 = clipped_.squaredNorm();
   if (!(length2 > 0)) return std::numeric_limits<double>::infinity();
-  double form = 0;
-  for (int p = 0; p < count_; ++p)
-    for (int q = 0; q < count_; ++q) form += clipped_[p] * hessian_(p, q) * clipped_[q];
-  return form / length2;
+  return clipped_.dot(hessian_ * clipped_) / length2;  // both of at most kMaxAngles: no allocation
 }
 
 bool SaddleEscape::search(Kinematics& kin, const GoalSet& goals, const Eigen::Ref<const Eigen::VectorXd>& angles,
