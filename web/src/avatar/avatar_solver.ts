@@ -22,7 +22,7 @@ import type { HumanoidMap, HumanoidRole } from '../rig/humanoid/humanoid_roles.j
 import { dragTolerances, restHeight } from '../rig/tolerances.js';
 import { FootSteps } from './foot_steps.js';
 import { scatterAngles, type SubRig, subHumanoid, subRig } from './sub_rig.js';
-import { seatSwingPlane } from './swing_planes.js';
+import { SEAT_SWING_DEG, seatSwingPlane } from './swing_planes.js';
 
 /** A tracked pose: a position (rig units) and an orientation, a unit quaternion [x, y, z, w] of the bone's frame, rig coordinates. */
 export interface TrackedPose {
@@ -132,6 +132,8 @@ export class AvatarSolver {
   private readonly poses: Float64Array;
   /** The part's left and right upper arms (whose swing planes seatSwingPlane() turns where their swing is 0). */
   private readonly arms: Array<number | undefined>;
+  /** Whether each upper arm is still leaving the rest pose: it has not swung SEAT_SWING_DEG since. */
+  private readonly leaving = [true, true];
 
   /**
    * An avatar of `spec` (a humanoid's rig, its limits in place) mapped by `humanoid`, standing in
@@ -240,11 +242,13 @@ export class AvatarSolver {
       for (let i = 0; i < 3; i++) this.hips[i] = this.restHips[i] + s.angles[root + i];
       feet = this.steps.update(input.head, this.hips, this.missed >= MISSED_FRAMES);
     }
-    // An upper arm at its swing's 0 (the T-pose) swings the way its hand is asked to go.
+    // An upper arm at its swing's 0 (the T-pose) swings the way its hand is asked to go; leaving the
+    // rest pose, until its swing is SEAT_SWING_DEG (swing_planes.ts).
     for (let i = 0; i < 2; i++) {
       const arm = this.arms[i];
-      if (arm !== undefined)
-        seatSwingPlane(s.rig, s.angles, arm, 1 + i, (i ? input.rightHand : input.leftHand).position);
+      if (arm === undefined) continue;
+      if (Math.abs(s.angles[3 * arm + 1]) > SEAT_SWING_DEG) this.leaving[i] = false;
+      seatSwingPlane(s.rig, s.angles, arm, 1 + i, (i ? input.rightHand : input.leftHand).position, this.leaving[i]);
     }
     const swinging = this.steps.stepping();
     s.yielding = -1;

@@ -6,7 +6,9 @@
 // them with the clavicles and the spine until the clavicles met their limits and the arms took
 // over in one frame (a jolt of the whole upper body, the track experiment's worst frames on every
 // clip). At a1 = 0, a0 + c and a2 - c give the same rotation for any c: the plane is chosen from
-// the target before the solve that leaves the T-pose. No three.js; angles in degrees, rig units.
+// the target before the solve that leaves the T-pose, and, while the arm leaves it, chosen again
+// until the swing is SEAT_SWING_DEG: a tracker's noise on the first frames does not decide it. No
+// three.js; angles in degrees, rig units.
 import type { IkRig } from '../ik/rig.js';
 
 /**
@@ -20,6 +22,26 @@ const TRIAL_SWING_DEG = 1e-3;
  * turns the bone by at most twice that.
  */
 const ZERO_SWING_DEG = 1e-3;
+/**
+ * While an arm leaves the rest pose, its plane is chosen again at every frame until its swing is
+ * this large (degrees): the swing keeps its size and takes the new plane's way towards the target
+ * (the bone turns by at most twice the swing, towards the target). The first frames that leave the
+ * T-pose move a hand a fraction of a millimetre, less than a tracker's noise: chosen from the first
+ * frame alone, the plane followed the noise, and on the project's clips tracked with noise of up to
+ * 0.05% of the height on each coordinate the arms twisted into their limits within 22 frames, every
+ * later frame missed (4 of 6 noise draws on each clip). By 3 degrees the character's hand is about
+ * 2.6 cm from where the zero swing holds it.
+ */
+export const SEAT_SWING_DEG = 3;
+/**
+ * A swing under way whose plane brings the hand towards the target at this share of the best
+ * plane's rate or more (its plane within about 8 degrees of the best) keeps its plane: turned to
+ * the best at every frame, the small turns of a plane the solves were following cost a hand 1.5 δ
+ * on the arms' fall from the T-pose (tests/avatar).
+ */
+const KEEP_SHARE = 0.99;
+/** A swing's room counts up to this many degrees (the plane score's weight of each way; 90 makes a hand hang). */
+const ROOM_DEG = 90;
 /** The target must be this many trial swings' moves away: nearer, the slopes are round-off. */
 const NEAR_TRIALS = 10;
 
@@ -39,9 +61,12 @@ const scratch = {
  * Turns the swing plane of `bone` of `rig` in `angles` (3 per bone, degrees; the pose) when its
  * swing a1 is 0 (within ZERO_SWING_DEG), keeping its rotation (a1 and a0 + a2 unchanged, a0 and a2
  * within their limits): to the plane in which a swing its limits allow brings effector
- * `effector`'s tip fastest towards `target` (rig units). Left as it is when no swing does. Three
- * forward passes: the slope towards the target of a swing in plane a0 is A cos a0 + B sin a0.
- * No allocation (it runs every frame, most often to its first test).
+ * `effector`'s tip fastest towards `target` (rig units), each way weighed by its room (up to
+ * ROOM_DEG). Left as it is when no swing does. With `leaving` (the arm has not yet swung
+ * SEAT_SWING_DEG since the rest pose), a swing smaller than that is turned too, from where the
+ * swing 0 puts the tip, unless its plane is nearly the best (KEEP_SHARE). Three forward passes:
+ * the slope towards the target of a swing in plane a0 is A cos a0 + B sin a0. No allocation (it
+ * runs every frame, most often to its first test).
  */
 export function seatSwingPlane(
   rig: IkRig,
@@ -49,16 +74,19 @@ export function seatSwingPlane(
   bone: number,
   effector: number,
   target: ArrayLike<number>,
+  leaving = false,
 ): void {
   const j = 3 * bone;
-  if (!(Math.abs(angles[j + 1]) <= ZERO_SWING_DEG)) return;
+  const swing = angles[j + 1];
+  if (!(Math.abs(swing) <= (leaving ? SEAT_SWING_DEG : ZERO_SWING_DEG))) return;
   const twist = angles[j] + angles[j + 2];
   // a0 within its limits with a2 = twist - a0 within its own.
   const lo = Math.max(rig.lower[j], twist - rig.upper[j + 2]),
     hi = Math.min(rig.upper[j], twist - rig.lower[j + 2]);
-  const up = rig.upper[j + 1] > 0,
-    down = rig.lower[j + 1] < 0;
-  if (!(lo < hi) || !(up || down)) return;
+  // Each way's weight: its room, up to ROOM_DEG (0: the limits allow no swing that way).
+  const up = Math.min(ROOM_DEG, Math.max(0, rig.upper[j + 1])) / ROOM_DEG,
+    down = Math.min(ROOM_DEG, Math.max(0, -rig.lower[j + 1])) / ROOM_DEG;
+  if (!(lo < hi) || !(up > 0 || down > 0)) return;
   // Scratch arrays, reused: the seating runs on the frames that leave the T-pose, too few for V8 to
   // optimise it, where each allocation and array method costs (over its first 100 calls a call
   // took 86 us with slice(), map() and spreads, 60 without).
@@ -66,6 +94,7 @@ export function seatSwingPlane(
   if (scratch.tips.length !== 3 * rig.numEffectors) scratch.tips = new Float64Array(3 * rig.numEffectors);
   const { trial, tips, at, towards } = scratch;
   trial.set(angles);
+  trial[j + 1] = 0;
   const e = 3 * effector;
   rig.tips(trial, tips);
   for (let i = 0; i < 3; i++) {
@@ -84,6 +113,7 @@ export function seatSwingPlane(
   const peak = Math.atan2(B, A) / RAD;
   let best = angles[j],
     bestScore = planeScore(A, B, up, down, best);
+  const current = bestScore;
   // The limits, then the peak's turns within them.
   for (let c = 0; c < 7; c++) {
     const a0 = c === 0 ? lo : c === 1 ? hi : Math.min(hi, Math.max(lo, peak + 180 * (c - 4)));
@@ -93,8 +123,14 @@ export function seatSwingPlane(
       best = a0;
     }
   }
+  if (swing !== 0 && !(current < KEEP_SHARE * bestScore)) return;
   angles[j] = best;
   angles[j + 2] = twist - best;
+  if (swing === 0) return;
+  // The swing under way, its size kept, the way its new plane's score took.
+  const slope = A * Math.cos(best * RAD) + B * Math.sin(best * RAD);
+  const way = slope * up >= -slope * down ? 1 : -1;
+  angles[j + 1] = Math.min(rig.upper[j + 1], Math.max(rig.lower[j + 1], way * Math.abs(swing)));
 }
 
 /**
@@ -115,8 +151,11 @@ function swingSlope(rig: IkRig, j: number, e: number, twist: number, a0: number)
   return towards[0] * m0 + towards[1] * m1 + towards[2] * m2;
 }
 
-/** How fast a swing in plane a0 (degrees) that the limits allow (`up`: positive, `down`: negative) moves the tip towards the target. */
-function planeScore(A: number, B: number, up: boolean, down: boolean, a0: number): number {
+/**
+ * How fast a swing in plane a0 (degrees) moves the tip towards the target, the positive way weighed
+ * by `up` and the negative by `down` (each its room's share, 0..1).
+ */
+function planeScore(A: number, B: number, up: number, down: number, a0: number): number {
   const s = A * Math.cos(a0 * RAD) + B * Math.sin(a0 * RAD);
-  return Math.max(up ? s : 0, down ? -s : 0);
+  return Math.max(up * s, -down * s, 0);
 }
