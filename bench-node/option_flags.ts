@@ -90,6 +90,13 @@ function addWhatRuns(
       make.single('--points <n>', 'track: tracked points, 3 (head and hands) or 6 (and the hips and feet)', '3'),
     )
     .addOption(
+      make.single(
+        '--noise <share>',
+        "track: each tracked position jitters by up to half this share of the height on each coordinate, seeded by --seed (a tracker's noise)",
+        '0',
+      ),
+    )
+    .addOption(
       make
         .listOption('--methods <list>', `methods: ${allMethods.join(', ')} (kdl, kdl_nr_jl: --engine native only)`)
         .default(defaultMethods.join(',')),

@@ -32,6 +32,8 @@ export const engines: readonly Engine[] = ['wasm', 'native'];
 
 /** The track experiment's name (track.ts); it runs alone. */
 const TRACK = 'track';
+/** The track experiment's largest --noise: a tenth of the height. */
+const MAX_TRACK_NOISE = 0.1;
 
 export function isPeer(method: string): boolean {
   return (peerMethods as readonly string[]).includes(method);
@@ -76,7 +78,7 @@ export interface BenchOptions {
   /** What each effector's target is: its tip position (the protocol's), or its tip frame's pose (pose_goals.ts). */
   goals: GoalsKind;
   /** The track experiment (track.ts) instead of the others: the clips to run ('all': every one) and the tracked points. */
-  track?: { clips: string[] | 'all'; points: number };
+  track?: { clips: string[] | 'all'; points: number; noise: number };
 }
 
 /** `1000` or `1000,gd=100`: a default plus per-method overrides (methods of `allMethods`), each in 1..MAX_SAMPLES. */
@@ -124,6 +126,7 @@ interface RawOptions {
   warmUp: string;
   clips: string;
   points: string;
+  noise: string;
 }
 
 /** The flags renamed to the core's option names, the old name still taken: old -> new. */
@@ -209,8 +212,9 @@ function checkedValues(raw: RawOptions, cmd: Command, allMethods: readonly strin
 }
 
 /**
- * The track experiment's clips and points (3 or 6); a usage error for another experiment, other
- * points, or an output of the other experiments (--markdown, --compare).
+ * The track experiment's clips, points (3 or 6) and noise (a share of the height, 0..0.1); a usage
+ * error for another experiment, other points or noise, or an output of the other experiments
+ * (--markdown, --compare).
  */
 function trackSettings(opts: BenchOptions, raw: RawOptions): NonNullable<BenchOptions['track']> {
   if (opts.experiments.length > 0)
@@ -219,12 +223,13 @@ function trackSettings(opts: BenchOptions, raw: RawOptions): NonNullable<BenchOp
   if (points !== 3 && points !== 6) throw usage('--points: 3 (head and hands) or 6 (and the hips and feet)');
   if (opts.markdown || opts.compare)
     throw usage(`${opts.markdown ? '--markdown' : '--compare'} goes with the other experiments, not track`);
-  return { clips: raw.clips.trim() === 'all' ? 'all' : lists('--clips', raw.clips), points };
+  const noise = Number(raw.noise) === 0 ? 0 : positiveNumber('--noise', raw.noise, MAX_TRACK_NOISE);
+  return { clips: raw.clips.trim() === 'all' ? 'all' : lists('--clips', raw.clips), points, noise };
 }
 
-/** A usage error when --clips or --points was given without the track experiment. */
+/** A usage error when --clips, --points or --noise was given without the track experiment. */
 function refuseTrackOptions(cmd: Command): void {
-  for (const flag of ['--clips', '--points'] as const)
+  for (const flag of ['--clips', '--points', '--noise'] as const)
     if (cmd.getOptionValueSource(flag.slice(2)) !== 'default') throw usage(`${flag} goes with --experiment track only`);
 }
 

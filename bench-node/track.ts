@@ -20,6 +20,9 @@
 // - median_us, p99_us: the time of update() per frame, microseconds, WebAssembly in Node, after
 //   every clip has run once untimed (V8's warm-up); each frame's time is its median over
 //   TIMED_RUNS runs of the clip, interleaved with the other clips' (track_timing.ts).
+// With noise > 0 (a share of the height), every tracked position is moved by up to half that on
+// each coordinate, drawn uniformly from a stream seeded by the run's seed and the clip's name (a
+// tracker's jitter); success is then against the positions given, the joints against the clip's.
 import { Matrix4, Quaternion } from 'three';
 
 import { AvatarSolver, type AvatarInput, type TrackedPose } from '#avatar/avatar_solver.js';
@@ -30,6 +33,7 @@ import { transformPoint } from '#rig/mat4.js';
 import { fromRowMajor } from '#view/row_major.js';
 import { ClipFrames } from './clip_frames.js';
 import { BenchError } from './errors.js';
+import { streamFor } from './prng.js';
 import { EFFECTOR, measureClip, POINTS } from './track_measures.js';
 import { ClipTiming, TIMED_RUNS } from './track_timing.js';
 
@@ -40,6 +44,8 @@ export interface TrackRow {
   clip: string;
   frames: number;
   points: number;
+  /** The tracked positions' jitter, a share of the height (0: the clip's own). */
+  noise: number;
   success_rate: number;
   reachable: number;
   success_reachable: number | null;
@@ -60,16 +66,25 @@ export interface TrackRig {
   boneNodes: Int32Array;
 }
 
+/** How the tracked points are made: how many (3: head and hands; 6: and hips and feet), and their jitter. */
+export interface TrackInputs {
+  points: number;
+  /** Each tracked position moves by up to half this share of the height on each coordinate; 0: none. */
+  noise: number;
+  /** The jitter's seed (with the clip's name). */
+  seed: number;
+}
+
 /**
  * Runs the clips named in `clips` ('all': every one) of `rig`'s file through the avatar solver with
- * `points` tracked points (3: head and hands); one row per clip. Throws BenchError naming a clip
- * the file lacks, or a file without clips.
+ * the tracked points of `how`; one row per clip. Throws BenchError naming a clip the file lacks,
+ * or a file without clips.
  */
 export async function runTrack(
   ik: IkCoreModule,
   rig: TrackRig,
   clips: string[] | 'all',
-  points: number,
+  how: TrackInputs,
 ): Promise<TrackRow[]> {
   const frames = await ClipFrames.read(rig.path, rig.boneNodes);
   const names = frames.clips.map((c) => c.name);
@@ -86,27 +101,27 @@ export async function runTrack(
   // JavaScript and WebAssembly on each of its paths (steps, poles, given-up goals) before any
   // frame is timed. Cold, the first clip's median read 2x; warmed on the first clip alone, a
   // later clip's first steps cost 4-7 ms a frame (its p99).
-  for (const clip of chosen) warmUpClip(ik, rig, frames, clip, points);
+  for (const clip of chosen) warmUpClip(ik, rig, frames, clip, how);
   const timings: Array<{ clip: number; avatar: AvatarSolver; inputs: AvatarInput[]; timing: ClipTiming }> = [];
   try {
     for (const clip of chosen) {
       const avatar = new AvatarSolver(ik, rig.spec, rig.humanoid);
-      const inputs = trackedInputs(avatar, frames, clip, points);
+      const inputs = trackedInputs(avatar, frames, clip, how);
       timings.push({ clip, avatar, inputs, timing: new ClipTiming(ik, rig, avatar, inputs, frames.clips[clip].name) });
     }
     // Run by run over the clips (track_timing.ts: a slow spell of the machine slows one run).
     for (let run = 0; run < TIMED_RUNS; run++) for (const t of timings) t.timing.run();
-    return timings.map((t) => clipRow(rig, frames, t.clip, points, t.avatar, t.inputs, t.timing));
+    return timings.map((t) => clipRow(rig, frames, t.clip, how, t.avatar, t.inputs, t.timing));
   } finally {
     for (const t of timings) t.avatar.dispose();
   }
 }
 
 /** Clip `clip` once through a new avatar, untimed. */
-function warmUpClip(ik: IkCoreModule, rig: TrackRig, clips: ClipFrames, clip: number, points: number): void {
+function warmUpClip(ik: IkCoreModule, rig: TrackRig, clips: ClipFrames, clip: number, how: TrackInputs): void {
   const avatar = new AvatarSolver(ik, rig.spec, rig.humanoid);
   try {
-    for (const input of trackedInputs(avatar, clips, clip, points)) avatar.update(input);
+    for (const input of trackedInputs(avatar, clips, clip, how)) avatar.update(input);
   } finally {
     avatar.dispose();
   }
@@ -117,12 +132,13 @@ function clipRow(
   rig: TrackRig,
   clips: ClipFrames,
   clip: number,
-  points: number,
+  how: TrackInputs,
   avatar: AvatarSolver,
   inputs: readonly AvatarInput[],
   timing: ClipTiming,
 ): TrackRow {
   const { frames, name } = clips.clips[clip];
+  const { points, noise } = how;
   const run = timing.result();
   const m = measureClip(avatar, rig.humanoid, clips, clip, points, inputs, run);
   const times = run.times.sort();
@@ -133,6 +149,7 @@ function clipRow(
     clip: name,
     frames,
     points,
+    noise,
     success_rate: m.onTarget / frames,
     reachable: m.reachable / frames,
     success_reachable: m.reachable > 0 ? m.onTargetReachable / m.reachable : null,
@@ -147,10 +164,13 @@ function clipRow(
 }
 
 /**
- * The tracked points' poses at each frame of clip `clip` (`points` of them: POINTS), each the
- * clip's tip of its effector (rig units) and the clip's bone frame, for `avatar` at rest.
+ * The tracked points' poses at each frame of clip `clip` (`how.points` of them: POINTS), each the
+ * clip's tip of its effector (rig units), jittered by `how.noise` (see the header), and the clip's
+ * bone frame, for `avatar` at rest.
  */
-function trackedInputs(avatar: AvatarSolver, clips: ClipFrames, clip: number, points: number): AvatarInput[] {
+function trackedInputs(avatar: AvatarSolver, clips: ClipFrames, clip: number, how: TrackInputs): AvatarInput[] {
+  const jitter = streamFor(how.seed, `track:${clips.clips[clip].name}`),
+    amplitude = how.noise * avatar.height;
   const restRotations = avatar.tipRotations();
   const restTips = avatar.tips();
   const effectors = Array.from(avatar.bones);
@@ -161,6 +181,7 @@ function trackedInputs(avatar: AvatarSolver, clips: ClipFrames, clip: number, po
   const truthOf = (motion: Float64Array, k: number): TrackedPose & { position: number[]; orientation: number[] } => {
     const m = motion.subarray(16 * effectors[k], 16 * effectors[k] + 16);
     const position = transformPoint(m, restTips.subarray(3 * k, 3 * k + 3));
+    if (amplitude > 0) for (let i = 0; i < 3; i++) position[i] += amplitude * (jitter() - 0.5);
     fromRowMajor(g, m, 0); // its rotation part: the bone's turn from rest
     rest.fromArray(restRotations, 4 * k);
     q.setFromRotationMatrix(g).multiply(rest);
@@ -169,7 +190,7 @@ function trackedInputs(avatar: AvatarSolver, clips: ClipFrames, clip: number, po
   return Array.from({ length: clips.clips[clip].frames }, (_, f) => {
     const motion = clips.motion(clip, f);
     const input = {} as AvatarInput;
-    for (const key of POINTS[points]) input[key] = truthOf(motion, EFFECTOR[key]);
+    for (const key of POINTS[how.points]) input[key] = truthOf(motion, EFFECTOR[key]);
     return input;
   });
 }

@@ -1,4 +1,4 @@
-// `npm run bench -- --rig FILE --experiment track [--clips NAME,...|all] [--points 3|6]`: every
+// `npm run bench -- --rig FILE --experiment track [--clips NAME,...|all] [--points 3|6] [--noise SHARE]`: every
 // rig's clips through the avatar solver (track.ts), a table on stdout, the rows as JSON and CSV.
 import type { IkCoreModule } from '#ik/module.js';
 import { BenchError } from './errors.js';
@@ -16,6 +16,7 @@ const columns: ReadonlyArray<keyof TrackRow & string> = [
   'clip',
   'frames',
   'points',
+  'noise',
   'success_rate',
   'reachable',
   'success_reachable',
@@ -50,7 +51,7 @@ export async function runTrackCommand(
           ik,
           { name: rig.name, path: rig.path, spec: rig.spec, humanoid: rig.humanoid, boneNodes: rig.boneNodes },
           track.clips,
-          track.points,
+          { points: track.points, noise: track.noise, seed: opts.seed },
         )),
       );
     } catch (e) {
@@ -75,6 +76,7 @@ function trackTable(rows: readonly TrackRow[]): Table {
       'clip',
       'frames',
       'points',
+      'noise',
       'success',
       'reachable',
       'success_reachable',
@@ -86,12 +88,13 @@ function trackTable(rows: readonly TrackRow[]): Table {
       'median_us',
       'p99_us',
     ],
-    numeric: [false, false, true, true, true, true, true, true, true, true, true, true, true, true],
+    numeric: [false, false, true, true, true, true, true, true, true, true, true, true, true, true, true],
     rows: rows.map((r) => [
       r.rig,
       r.clip,
       String(r.frames),
       String(r.points),
+      percent(r.noise),
       percent(r.success_rate),
       percent(r.reachable),
       r.success_reachable === null ? '-' : percent(r.success_reachable),

@@ -88,7 +88,7 @@ describe('the track experiment', () => {
     expect(r.stderr).toBe('');
     expect(r.code).toBe(0);
     expect(r.stdout).toMatch(
-      /clip +frames +points +success +reachable +success_reachable +mpjpe +mpjpe_upper +jitter_ratio +flips +foot_slide +median_us +p99_us/,
+      /clip +frames +points +noise +success +reachable +success_reachable +mpjpe +mpjpe_upper +jitter_ratio +flips +foot_slide +median_us +p99_us/,
     );
     const rows = JSON.parse(readFileSync(json, 'utf8')).rows;
     expect(rows.map((row: { clip: string }) => row.clip)).toEqual(['still', 'sway']);
@@ -99,6 +99,7 @@ describe('the track experiment', () => {
       method: 'avatar',
       frames: 61,
       points: 3,
+      noise: 0,
       success_rate: 1,
       reachable: 1,
       success_reachable: 1,
@@ -115,7 +116,7 @@ describe('the track experiment', () => {
     expect(sway.median_us).toBeGreaterThan(0);
     const lines = readFileSync(csv, 'utf8').trim().split('\n');
     expect(lines[0]).toBe(
-      'rig,experiment,method,clip,frames,points,success_rate,reachable,success_reachable,mpjpe,mpjpe_upper,jitter_ratio,flips,foot_slide,median_us,p99_us',
+      'rig,experiment,method,clip,frames,points,noise,success_rate,reachable,success_reachable,mpjpe,mpjpe_upper,jitter_ratio,flips,foot_slide,median_us,p99_us',
     );
     expect(lines.length).toBe(3);
   });
@@ -138,6 +139,41 @@ describe('the track experiment', () => {
     expect(six.foot_slide).toBeLessThan(1e-3);
     expect((await bench('--rig', clips, '--experiment', 'track', '--points', '4')).stderr).toBe(
       'bench: --points: 3 (head and hands) or 6 (and the hips and feet)\n',
+    );
+  });
+
+  it("jitters the tracked positions with --noise (a tracker's noise, seeded): the same rows from the same seed, others from another, within δ of the positions given", async () => {
+    const run = async (seed: string) => {
+      const json = join(dir, `noise${seed}.json`);
+      const r = await bench(
+        '--rig',
+        clips,
+        '--experiment',
+        'track',
+        '--clips',
+        'sway',
+        '--noise',
+        '0.001',
+        '--seed',
+        seed,
+        '--json',
+        json,
+      );
+      expect(r.code).toBe(0);
+      return JSON.parse(readFileSync(json, 'utf8')).rows[0];
+    };
+    const [a, again, other] = [await run('1'), await run('1'), await run('2')];
+    expect(a).toMatchObject({ clip: 'sway', noise: 0.001, success_rate: 1, flips: 0 });
+    expect(again.mpjpe).toBe(a.mpjpe);
+    expect(again.jitter_ratio).toBe(a.jitter_ratio);
+    expect(other.mpjpe).not.toBe(a.mpjpe);
+    // The jitter moves the targets: the joints' acceleration grows beyond the clip's.
+    expect(a.jitter_ratio).toBeGreaterThan(1.5);
+    expect((await bench('--rig', clips, '--experiment', 'track', '--noise', '-1')).stderr).toBe(
+      'bench: --noise: "-1" is not a positive number of at most 0.1\n',
+    );
+    expect((await bench('--rig', clips, '--experiment', 'drag', '--noise', '0.001')).stderr).toBe(
+      'bench: --noise goes with --experiment track only\n',
     );
   });
 
