@@ -56,13 +56,15 @@ const HIPS = 5;
  */
 const CROUCH_SHARE = 0.03;
 /**
- * The head higher than this share of the height below where it stands: a frame that misses with the
- * heels down lifts them (tiptoe), as a crouch does. Standing, the head is as high as the straight
- * legs and spine take it: a head and hands tracked 0.3% of the height (5 mm on the character) higher
- * than the clip's missed every frame, each after 50 iterations, the hands and feet pulled up to
- * 140 δ off; on tiptoe 0.2-1.75%, 2.5% and 3% higher were on target on every frame of idle.
+ * The head higher than where it stands by more than this share of the height (half of δ): a frame
+ * that misses with the heels down lifts them (tiptoe), as a crouch does. Standing, the head is as
+ * high as the straight legs and spine take it: a head and hands tracked 0.3% of the height (5 mm on
+ * the character) higher than the clip's missed every frame, each after 50 iterations, the hands and
+ * feet pulled up to 140 δ off; on tiptoe 0.2-1.75%, 2.5% and 3% higher were on target on every
+ * frame of idle. Not at the standing height itself: there a hand gizmo dragged faster than a frame
+ * follows (track mode) missed a frame, lifted the heels and left the head 2.2 δ off.
  */
-const TIPTOE_SHARE = 0.005;
+const TIPTOE_SHARE = 5e-4;
 
 /**
  * Per-frame solve: at most the page's iterations (FRAME_DEFAULTS), so that a stream of inputs gives
@@ -132,7 +134,7 @@ export class AvatarSolver {
   /** The hips' tip at rest, and where the floating root has taken it since (rig units; the hips' turn aside). */
   private readonly restHips: Float64Array;
   private readonly hips = new Float64Array(3);
-  /** The heels are lifted: a crouch, or a head as high as it stands, could not be met with them down, and the head has not been between the two since. */
+  /** The heels are lifted: a crouch, or a head higher than it stands, could not be met with them down, and the head has not been between the two since. */
   private heelsLifted = false;
   /** Frames in a row whose solves left a tracked point off its target. */
   private missed = 0;
@@ -276,11 +278,11 @@ export class AvatarSolver {
     const crouching = input.head.position[1] < this.standingHeadY - CROUCH_SHARE * this.height;
     if (crouching && this.kneesStraight()) this.placePoles();
     else if (s.goals.poleBones.length > 0) s.goals.setPoles([], []);
-    // A crouch, or a head as high as it stands, keeps the heels down until a frame cannot be met
+    // A crouch, or a head higher than it stands, keeps the heels down until a frame cannot be met
     // so: then the planted feet hold their places but not their frames, and that frame is solved
     // again; until the head is between the two (a crouch: until it is up).
     const threePoints = !input.leftFoot && !input.rightFoot;
-    const tall = input.head.position[1] > this.standingHeadY - TIPTOE_SHARE * this.height;
+    const tall = input.head.position[1] > this.standingHeadY + TIPTOE_SHARE * this.height;
     this.liftHeels((crouching || tall) && this.heelsLifted && threePoints);
     let outcome = s.solve('lm', this.settings);
     if (!outcome.reached && swinging >= 0) {
