@@ -40,7 +40,14 @@ export const SEAT_SWING_DEG = 3;
  * on the arms' fall from the T-pose (tests/avatar).
  */
 const KEEP_SHARE = 0.99;
-/** A swing's room counts up to this many degrees (the plane score's weight of each way; 90 makes a hand hang). */
+/**
+ * A target too near to show a way weighs each way by its room, up to this many degrees (90 makes a
+ * hand hang): seated by the noise the short way (the upper arm's a1 stops at -45 and goes to 130),
+ * an arm kept that way when the other plane moved the hand as fast met its limit (2 draws of 10 on
+ * every clip). Weighed so for every target, ten avatars whose first frame asks an arbitrary pose
+ * (tests/browser/avatars.test.ts) took the long way where their motion took the short one, and
+ * one stayed off target for 34 frames (48 of 240 frames over 2 ms).
+ */
 const ROOM_DEG = 90;
 /** The target must be this many trial swings' moves away: nearer, the slopes are round-off. */
 const NEAR_TRIALS = 10;
@@ -61,8 +68,9 @@ const scratch = {
  * Turns the swing plane of `bone` of `rig` in `angles` (3 per bone, degrees; the pose) when its
  * swing a1 is 0 (within ZERO_SWING_DEG), keeping its rotation (a1 and a0 + a2 unchanged, a0 and a2
  * within their limits): to the plane in which a swing its limits allow brings effector
- * `effector`'s tip fastest towards `target` (rig units), each way weighed by its room (up to
- * ROOM_DEG). Left as it is when no swing does. With `leaving` (the arm has not yet swung
+ * `effector`'s tip fastest towards `target` (rig units); a target nearer than a swing of
+ * SEAT_SWING_DEG takes the tip weighs each way by its room (up to ROOM_DEG). Left as it is when no
+ * swing does. With `leaving` (the arm has not yet swung
  * SEAT_SWING_DEG since the rest pose), a swing smaller than that is turned too, from where the
  * swing 0 puts the tip, unless its plane is nearly the best (KEEP_SHARE). Three forward passes:
  * the slope towards the target of a swing in plane a0 is A cos a0 + B sin a0. No allocation (it
@@ -83,10 +91,9 @@ export function seatSwingPlane(
   // a0 within its limits with a2 = twist - a0 within its own.
   const lo = Math.max(rig.lower[j], twist - rig.upper[j + 2]),
     hi = Math.min(rig.upper[j], twist - rig.lower[j + 2]);
-  // Each way's weight: its room, up to ROOM_DEG (0: the limits allow no swing that way).
-  const up = Math.min(ROOM_DEG, Math.max(0, rig.upper[j + 1])) / ROOM_DEG,
-    down = Math.min(ROOM_DEG, Math.max(0, -rig.lower[j + 1])) / ROOM_DEG;
-  if (!(lo < hi) || !(up > 0 || down > 0)) return;
+  const upRoom = rig.upper[j + 1],
+    downRoom = -rig.lower[j + 1];
+  if (!(lo < hi) || !(upRoom > 0 || downRoom > 0)) return;
   // Scratch arrays, reused: the seating runs on the frames that leave the T-pose, too few for V8 to
   // optimise it, where each allocation and array method costs (over its first 100 calls a call
   // took 86 us with slice(), map() and spreads, 60 without).
@@ -105,7 +112,14 @@ export function seatSwingPlane(
     q = lo + Math.min(90, hi - lo);
   const sp = swingSlope(rig, j, e, twist, p),
     sq = swingSlope(rig, j, e, twist, q);
-  if (!(Math.hypot(towards[0], towards[1], towards[2]) > NEAR_TRIALS * scratch.step)) return;
+  const far = Math.hypot(towards[0], towards[1], towards[2]);
+  if (!(far > NEAR_TRIALS * scratch.step)) return;
+  // Each way's weight: 1 where the limits allow a swing that way (else 0); a target nearer than a
+  // swing of SEAT_SWING_DEG would take the tip shows no way yet: each way then weighs its room.
+  const near = far < (SEAT_SWING_DEG / TRIAL_SWING_DEG) * scratch.step;
+  const room = (r: number) => (r > 0 ? (near ? Math.min(ROOM_DEG, r) / ROOM_DEG : 1) : 0);
+  const up = room(upRoom),
+    down = room(downRoom);
   // A cos a + B sin a through (p, sp) and (q, sq).
   const det = Math.sin((q - p) * RAD);
   const A = (sp * Math.sin(q * RAD) - sq * Math.sin(p * RAD)) / det,
