@@ -11,6 +11,7 @@ import { resolve } from 'node:path';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 
 import { bentAgainst, flipLimbs } from '../../bench-node/flips.js';
+import { mulberry32 } from '../../bench-node/prng.js';
 import { AvatarSolver, type AvatarInput } from '../../web/src/avatar/avatar_solver.js';
 import { rotationAngleDeg } from '../../web/src/ik/goals.js';
 import type { IkCoreModule } from '../../web/src/ik/module.js';
@@ -133,18 +134,15 @@ function gap(tips: ArrayLike<number>, k: number, p: ArrayLike<number>): number {
  * Frame f of the arms' fall from the T-pose for `avatar` at rest: the hands fall 75 degrees about
  * the forward axis through the shoulders, turning with the arm, over a second (30 frames), then
  * stay; the head stays. With `noise` (a share of the height), each tracked position moves by up to
- * half that on each coordinate, drawn from a seeded generator (a tracker's jitter).
+ * half that on each coordinate, drawn from a seeded generator (bench-node/prng.ts: a tracker's jitter).
  */
 function armsFall(avatar: AvatarSolver, noise = 0, seed = 1): (f: number) => AvatarInput {
   const humanoid = character.gltf!.humanoid!,
     spec = avatar.rig.spec;
   const start = avatar.tips(),
     rotations = avatar.tipRotations();
-  let state = seed;
-  const jitter = () => {
-    state = (state * 48271) % 2147483647;
-    return noise * avatar.height * (state / 2147483647 - 0.5);
-  };
+  const random = mulberry32(seed);
+  const jitter = () => noise * avatar.height * (random() - 0.5);
   return (f) => {
     const tips = new Float64Array(start.subarray(0, 9)),
       turns = new Float64Array(rotations.subarray(0, 12));

@@ -60,7 +60,7 @@ const CROUCH_SHARE = 0.03;
  * that misses with the heels down lifts them (tiptoe), as a crouch does. Standing, the head is as
  * high as the straight legs and spine take it: a head and hands tracked 0.3% of the height (5 mm on
  * the character) higher than the clip's missed every frame, each after 50 iterations, the hands and
- * feet pulled up to 140 δ off; on tiptoe 0.2-1.75%, 2.5% and 3% higher were on target on every
+ * feet pulled up to 140 δ off; on tiptoe 0.1-1.75%, 2.5% and 3% higher were on target on every
  * frame of idle. Not at the standing height itself: there a hand gizmo dragged faster than a frame
  * follows (track mode) missed a frame, lifted the heels and left the head 2.2 δ off.
  */
@@ -140,7 +140,7 @@ export class AvatarSolver {
   private missed = 0;
   /** The part's bone poses where placePoles() reads them (16 per bone, row-major). */
   private readonly poses: Float64Array;
-  /** The part's left and right upper arms (whose swing planes seatSwingPlane() turns where their swing is 0). */
+  /** The part's left and right upper arms (whose swing planes seatSwingPlane() turns where their swing is 0, and while they leave the rest pose). */
   private readonly arms: Array<number | undefined>;
   /** Whether each upper arm is still leaving the rest pose: it has not swung SEAT_SWING_DEG since. */
   private readonly leaving = [true, true];

@@ -70,11 +70,11 @@ const scratch = {
  * within their limits): to the plane in which a swing its limits allow brings effector
  * `effector`'s tip fastest towards `target` (rig units); a target nearer than a swing of
  * SEAT_SWING_DEG takes the tip weighs each way by its room (up to ROOM_DEG). Left as it is when no
- * swing does. With `leaving` (the arm has not yet swung
- * SEAT_SWING_DEG since the rest pose), a swing smaller than that is turned too, from where the
- * swing 0 puts the tip, unless its plane is nearly the best (KEEP_SHARE). Three forward passes:
- * the slope towards the target of a swing in plane a0 is A cos a0 + B sin a0. No allocation (it
- * runs every frame, most often to its first test).
+ * swing does. With `leaving` (the arm has not yet swung SEAT_SWING_DEG since the rest pose), a
+ * swing smaller than that is turned too, from where the swing 0 puts the tip, unless its plane is
+ * nearly the best (KEEP_SHARE). Three forward passes: the slope towards the target of a swing in
+ * plane a0 is A cos a0 + B sin a0. No allocation (it runs every frame, most often to its first
+ * test).
  */
 export function seatSwingPlane(
   rig: IkRig,
