@@ -63,6 +63,14 @@ export interface EmbindSolver {
    */
   setGoalsIo(packedLength: number, polesLength: number, stiffnessLength: number, lengthScale: number): boolean;
   clearGoals(): void;
+  /** A buffer of #angles numbers for setPreferredIo() (stale, length 0, when the memory grows: ask again); null on failure. */
+  preferredView(): Float64Array | null;
+  /**
+   * The next solve's preferred move from preferredView()'s buffer (degrees per angle, then a floating root's
+   * translation in rig units): its first lm step adds it where the goals leave room. False (the message for
+   * takeError()) for a wrong length or a value that is not finite.
+   */
+  setPreferredIo(): boolean;
   readonly hasGoals: boolean;
   start(angles: Float64Array, target: Float64Array): string;
   step(): boolean;

@@ -107,6 +107,35 @@ class SolverBinding {
         false);
   }
 
+  // A buffer of #angles numbers for set_preferred_io(), and a Float64Array view on it (stale,
+  // length 0, when the WebAssembly memory grows: ask again). Null on failure.
+  val preferred_view() {
+    return guarded(
+        [&] {
+          const size_t n = static_cast<size_t>(rig_.kinematics().num_angles());
+          if (preferred_io_.size() != n) preferred_io_.assign(n, 0.0);
+          return val(emscripten::typed_memory_view(preferred_io_.size(), preferred_io_.data()));
+        },
+        val::null());
+  }
+
+  // The next solve's preferred move (Solver::set_preferred_move()) from preferred_view()'s buffer:
+  // degrees per angle, then a floating root's translation in rig units. Throws for a buffer of
+  // the wrong length or a value that is not finite: false, the message for takeError(), no move
+  // kept. No JavaScript value crosses.
+  bool set_preferred_io() {
+    return guarded(
+        [&] {
+          const Eigen::Map<const Eigen::VectorXd> move(preferred_io_.data(),
+                                                       static_cast<Eigen::Index>(preferred_io_.size()));
+          if (!solver_->set_preferred_move(move))
+            throw RigError("the preferred move has " + std::to_string(preferred_io_.size()) + " values, expected " +
+                           std::to_string(rig_.kinematics().num_angles()) + " finite ones (preferredView sizes it)");
+          return true;
+        },
+        false);
+  }
+
   // Back to plain position goals of weight 1.
   void clear_goals() { has_goals_ = false; }
 
@@ -311,8 +340,9 @@ class SolverBinding {
   RigBinding& rig_;
   std::unique_ptr<Solver> solver_;
   std::vector<double> angles_, target_;
-  std::vector<double> io_;       // solve_io(): angles | target | result numbers
-  std::vector<double> history_;  // history_io()
+  std::vector<double> io_;            // solve_io(): angles | target | result numbers
+  std::vector<double> history_;       // history_io()
+  std::vector<double> preferred_io_;  // preferred_view()'s buffer
   GoalInput goal_input_;
   std::vector<double> goals_io_;                                         // goals_view()'s buffer
   std::vector<double> goal_numbers_, pole_numbers_, stiffness_numbers_;  // set_goals_io()'s copies
@@ -337,6 +367,8 @@ EMSCRIPTEN_BINDINGS(ik_solvers) {
       .function("goalsView", &SolverBinding::goals_view)
       .function("setGoalsIo", &SolverBinding::set_goals_io)
       .function("clearGoals", &SolverBinding::clear_goals)
+      .function("preferredView", &SolverBinding::preferred_view)
+      .function("setPreferredIo", &SolverBinding::set_preferred_io)
       .property("hasGoals", &SolverBinding::has_goals)
       .function("start", &SolverBinding::start)
       .function("step", &SolverBinding::step)

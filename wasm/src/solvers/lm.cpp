@@ -14,6 +14,11 @@
 // on its effector's chain; a pole's, with its limb's chain; a rest bone's, with that bone's
 // angles). Plain goals have one position block per effector, as before.
 //
+// A preferred move d0 (Solver::set_preferred_move()) joins the solve's first step: the system's
+// right-hand side becomes r + Jf d0 and the step d0 + (the step above), so that the linearised
+// goals see none of d0; an angle fixed on a limit takes its known move out as d - d0_i. A first
+// trial that it makes worse is tried again without it.
+//
 // Restarts after a stall (option `restarts`) are the base Solver's, as for every method.
 #include <cmath>
 #include <memory>
@@ -40,6 +45,7 @@ class LevenbergMarquardt final : public Solver {
     normal_.resize(m, m);
     system_.resize(m);
     jd_.resize(m);
+    rhs_.resize(m);
     active_set_.resize(n);
   }
 
@@ -66,10 +72,12 @@ class LevenbergMarquardt final : public Solver {
     if (!std::isfinite(s)) return fail("the Jacobian is not finite");
     if (!(s > 0)) return Progress::stuck;  // no free angle moves a tip
 
+    const Eigen::VectorXd* preferred = preferred_move();
+    mark_preferred_move_used();
     for (int attempt = 0; attempt < opt_.lm_max_rejections; ++attempt) {
       if (attempt > 0 && time_is_up()) return Progress::stuck;
       const double lambda = damping_.shift(relative_error2, opt_.lm_damping_floor, s);
-      switch (damped_step(lambda)) {
+      switch (damped_step(lambda, attempt == 0 ? preferred : nullptr)) {
         case Step::failed: return fail("the damped normal matrix could not be factorised");
         case Step::out_of_time: return Progress::stuck;
         case Step::ok: break;
@@ -93,18 +101,23 @@ class LevenbergMarquardt final : public Solver {
 
   enum class Step { ok, failed, out_of_time };
 
-  // Writes trial_ = P(a_ + d) for the damped step d with `lambda`, bounds handled by the active
-  // set. Fails if the factorisation failed; stops when the time budget ran out (on a rig of
-  // thousands of angles, taking fixed columns out costs as much as building the matrix).
-  Step damped_step(double lambda) {
-    // (Jf Jf^T + lambda I) y = r over the angles still in the set.
-    system_.begin(normal_, r_);
+  // Writes trial_ = P(a_ + d) for the damped step d with `lambda` (with `preferred`, d0 + that
+  // step: the header), bounds handled by the active set. Fails if the factorisation failed; stops
+  // when the time budget ran out (on a rig of thousands of angles, taking fixed columns out costs
+  // as much as building the matrix).
+  Step damped_step(double lambda, const Eigen::VectorXd* preferred) {
+    // (Jf W Jf^T + lambda I) y = r + Jf d0 over the angles still in the set.
+    rhs_ = r_;
+    if (preferred)
+      for (int c = 0; c < num_free_; ++c) pattern_.add(J_, free_[c], (*preferred)[free_[c]], rhs_);
+    system_.begin(normal_, rhs_);
     system_.shift().setConstant(lambda);
     const auto solve_system = [&] { return system_.solve(); };
-    // Angle i's step -w_i (Jf^T y)_i (w_i: its column's weight, BlockPattern::weight).
-    const auto proposed = [&](int i) { return -pattern_.weight(i) * pattern_.dot(J_, i, system_.y()); };
-    // Angle i moves by a known d: its column leaves the system.
-    const auto take_out = [&](int i, double d) { system_.take_out(pattern_, J_, i, d); };
+    const auto d0 = [&](int i) { return preferred ? (*preferred)[i] : 0.0; };
+    // Angle i's step d0_i - w_i (Jf^T y)_i (w_i: its column's weight, BlockPattern::weight).
+    const auto proposed = [&](int i) { return d0(i) - pattern_.weight(i) * pattern_.dot(J_, i, system_.y()); };
+    // Angle i moves by a known d: its column leaves the system (the right-hand side held d0_i of it).
+    const auto take_out = [&](int i, double d) { system_.take_out(pattern_, J_, i, d - d0(i)); };
     switch (active_set_.run(a_, kin_.lower(), kin_.upper(), free_, num_free_, ActiveSet::Fix::past_limit, deadline(),
                             solve_system, proposed, take_out)) {
       case ActiveSet::Status::solve_failed: return Step::failed;
@@ -119,7 +132,7 @@ class LevenbergMarquardt final : public Solver {
 
   Eigen::MatrixXd normal_;
   DampedSystem system_;
-  Eigen::VectorXd jd_;
+  Eigen::VectorXd jd_, rhs_;
   ActiveSet active_set_;
   NielsenDamping damping_;
 };

@@ -76,6 +76,8 @@ StopReason Solver::start(const Eigen::Ref<const Eigen::VectorXd>& angles, const 
 StopReason Solver::begin(const Eigen::Ref<const Eigen::VectorXd>& angles, const std::string& goals_problem,
                          bool close) {
   clock_.open(Clock::now());
+  preferred_on_ = preferred_pending_ && preferred_.size() == angles.size();
+  preferred_pending_ = false;
   // The rest rows belong to the goals: they depend on the options and the start angles.
   incoming_.set_rest(kin_, next_opt_.rest_weight, next_opt_.rest_from_start, angles);
   // A solve from where the previous one ended, towards the same goals (a held drag whose frame
@@ -272,6 +274,14 @@ void Solver::resize_workspace() {
   pattern_.build(kin_, goals_);
   priority_.resize(goals_, n_);
   resize(m_, n_);
+}
+
+bool Solver::set_preferred_move(const Eigen::Ref<const Eigen::VectorXd>& move) {
+  preferred_pending_ = false;
+  if (move.size() != kin_.num_angles() || !move.allFinite()) return false;
+  preferred_ = move;
+  preferred_pending_ = true;
+  return true;
 }
 
 bool Solver::step() { return advance(Clock::now()); }

@@ -128,6 +128,17 @@ class Solver {
   // usual: soft terms do not lower the success rate (soft_goals_test measures it).
   StopReason start(const Eigen::Ref<const Eigen::VectorXd>& angles, const Goals& goals);
 
+  // A move for the next solve's first Levenberg-Marquardt step to add where the goals leave room:
+  // `move` (#angles: degrees, then a floating root's translation in rig units) becomes d0 in the
+  // step d0 + delta, delta the damped least change that meets the goals' linearisation from
+  // a + d0, so that to first order the goals see none of d0. A posture preference applied once per
+  // solve (an avatar's body unwinding its twist); a first trial it makes worse is tried again
+  // without it. Other methods, a solve that starts with goals given up and one that starts on its
+  // goals to round-off (it takes no step) ignore it. Returns
+  // false, keeping none, when `move` has not #angles values or one is not finite. Allocates only
+  // when #angles changes.
+  bool set_preferred_move(const Eigen::Ref<const Eigen::VectorXd>& move);
+
   // One iteration. Returns true while the solve is still running. No allocation. Between steps
   // the Kinematics may be used by others (posed elsewhere): every method re-poses what it reads.
   bool step();
@@ -201,6 +212,10 @@ class Solver {
   bool budget_holds() const { return summary_.iterations >= opt_.steps_before_budget; }
   // Is the current iterate (E_, r_) on target (the test of converged_E)?
   bool on_target() const;
+  // The preferred move (set_preferred_move()) while this solve has not yet used it, else null;
+  // marking it used leaves it for no later step.
+  const Eigen::VectorXd* preferred_move() const { return preferred_on_ ? &preferred_ : nullptr; }
+  void mark_preferred_move_used() { preferred_on_ = false; }
 
   Kinematics& kin_;
   SolverOptions opt_;           // the current solve's
@@ -254,6 +269,9 @@ class Solver {
   void retry_without_soft_terms();
   // A new run from the start angles (E_, r_ there).
   void run_from_start();
+  // set_preferred_move()'s move; pending until the next start(), on until its first step.
+  Eigen::VectorXd preferred_;
+  bool preferred_pending_ = false, preferred_on_ = false;
   bool soft_retried_ = false;
   // The iteration at which this solve's hard goals were first on target with soft rows on (-1:
   // not yet): soft_iterations counts from it.

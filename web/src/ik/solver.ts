@@ -282,6 +282,8 @@ export class IkSolver {
   private sentGoals?: SentGoals;
   /** The core's goals buffer (goalsView; asked anew when its length changes or the memory grew). */
   private goalsIo: Float64Array<ArrayBufferLike> = new Float64Array(0);
+  /** The core's preferred-move buffer (preferredView; asked anew when stale). */
+  private preferredIo: Float64Array<ArrayBufferLike> = new Float64Array(0);
 
   /** The methods this build registers, in display order (lm, the default, first). */
   static methods(module: IkCoreModule): SolverMethod[] {
@@ -409,6 +411,27 @@ export class IkSolver {
     if (code < 0) throw coreError(this.rig.module, 'solve');
     if (io.length === 0) io = this.buffer(n, m); // the memory grew during the solve
     return this.readResult(io, n, m, code, out);
+  }
+
+  /**
+   * A move for the next solve's first lm step to add where the goals leave room (the core's
+   * Solver::set_preferred_move): `move`, #angles numbers, degrees per angle, then a floating
+   * root's translation (rig units). To first order the goals see none of it: a posture preference
+   * such as a body unwinding its twist, once per solve. Other methods ignore it, and the solve
+   * after the next has none unless it is set again. Throws for a wrong length or a value that is
+   * not finite. No allocation once its buffer is sized.
+   */
+  setPreferredMove(move: ArrayLike<number>): void {
+    const live = this.live(),
+      n = this.rig.numAngles;
+    if (move.length !== n) throw new Error(`the preferred move has ${move.length} values, expected ${n} (the angles)`);
+    if (this.preferredIo.length !== n) {
+      const view = live.preferredView();
+      if (!view) throw coreError(this.rig.module, 'setPreferredMove');
+      this.preferredIo = view;
+    }
+    this.preferredIo.set(move);
+    if (!live.setPreferredIo()) throw coreError(this.rig.module, 'setPreferredMove');
   }
 
   /** The solve so far (or the finished one). */

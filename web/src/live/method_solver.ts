@@ -99,6 +99,11 @@ export class MethodSolver {
     this.solver = new IkSolver(rig, method);
   }
 
+  /** The next solve's preferred move (IkSolver.setPreferredMove: degrees per angle, then a floating root's translation). */
+  preferMove(move: ArrayLike<number>): void {
+    this.solver.setPreferredMove(move);
+  }
+
   /**
    * Solves from `start` (degrees, 3 per bone) towards `target` (3 per end effector, rig units) or
    * `goals` (positions and orientations, web/src/ik/goals.ts), a Goals object or packed ones

@@ -185,6 +185,14 @@ export class IkSession {
     return this.solver(method).solve(this.angles, this.packedProblem(settings.paperMode), settings, this.angles);
   }
 
+  /**
+   * A move for `method`'s next solve to add where the goals leave room (IkSolver.setPreferredMove):
+   * #angles numbers, degrees per angle, then a floating root's translation (rig units).
+   */
+  preferMove(method: string, move: ArrayLike<number>): void {
+    this.solver(method).preferMove(move);
+  }
+
   /** Solves from `start` (default: the current pose) without changing the pose (for the compare table). */
   trySolve(method: string, settings: SolveSettings, start: Float64Array = this.angles): SolveOutcome {
     return this.solver(method).solve(start, this.problem(settings.paperMode), settings);
