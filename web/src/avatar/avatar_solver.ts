@@ -8,7 +8,10 @@
 // With three points the feet stand where they stood and step when the body leaves them
 // (foot_steps.ts), the foot in the air giving way to everything else when a frame cannot meet
 // every goal. With six (the hips and feet as well) the feet go where they are tracked. The upper
-// arms leave the T-pose in the plane their hands are asked to go in (swing_planes.ts).
+// arms leave the T-pose in the plane their hands are asked to go in (swing_planes.ts). Each frame
+// also asks for a share of the way back to a body's posture where the tracked points leave room:
+// the spine untwisted, the hips facing the feet's way and over them, the knees bent as a squat's
+// in a crouch (posture.ts).
 import type { IkCoreModule } from '../ik/module.js';
 import type { RigSpec } from '../ik/rig_arrays.js';
 import { type PoleLimb, poleLimbs } from '../live/pole_limbs.js';
@@ -21,6 +24,7 @@ import type { SolveOutcome, SolveSettings } from '../live/method_solver.js';
 import type { HumanoidMap, HumanoidRole } from '../rig/humanoid/humanoid_roles.js';
 import { dragTolerances, restHeight } from '../rig/tolerances.js';
 import { FootSteps } from './foot_steps.js';
+import { Posture } from './posture.js';
 import { scatterAngles, type SubRig, subHumanoid, subRig } from './sub_rig.js';
 import { SEAT_SWING_DEG, seatSwingPlane } from './swing_planes.js';
 
@@ -144,6 +148,10 @@ export class AvatarSolver {
   private readonly arms: Array<number | undefined>;
   /** Whether each upper arm is still leaving the rest pose: it has not swung SEAT_SWING_DEG since. */
   private readonly leaving = [true, true];
+  /** Each frame's preferred move: a share of the way back to a body's posture (posture.ts). */
+  private readonly posture: Posture;
+  /** Where the feet stand this frame (planted(), null while stepping), for the posture. */
+  private readonly feetNow: Array<{ position: ArrayLike<number> } | null> = [null, null];
 
   /**
    * An avatar of `spec` (a humanoid's rig, its limits in place) mapped by `humanoid`, standing in
@@ -210,6 +218,7 @@ export class AvatarSolver {
     });
     this.restHips = tips.slice(3 * HIPS, 3 * HIPS + 3);
     this.steps = new FootSteps([pose(3), pose(4)], this.restHips, pose(0), h);
+    this.posture = new Posture(s.rig, partHumanoid, s.angles);
     // The solver and its workspace now, by a solve that leaves the pose as it is: made by the first
     // update(), they doubled that frame's time (the solver), then made it its clip's slowest (the
     // workspace, sized at a solve's start: each clip's frame 0 took 4-7 times its median).
@@ -284,6 +293,12 @@ export class AvatarSolver {
     const threePoints = !input.leftFoot && !input.rightFoot;
     const tall = input.head.position[1] > this.standingHeadY + TIPTOE_SHARE * this.height;
     this.liftHeels((crouching || tall) && this.heelsLifted && threePoints);
+    // The posture for the first solve only: the solves that follow a miss (a foot giving way, the
+    // heels lifting) meet the goals as they can.
+    this.feetNow[0] = this.steps.planted(0);
+    this.feetNow[1] = this.steps.planted(1);
+    const drop = crouching ? this.standingHeadY - input.head.position[1] : 0;
+    s.preferMove('lm', this.posture.move(s.angles, this.feetNow, s.goals.rotations, input.hips !== undefined, drop));
     let outcome = s.solve('lm', this.settings);
     if (!outcome.reached && swinging >= 0) {
       // A foot in the air gives way first: the tracked points and the planted foot are held. Only

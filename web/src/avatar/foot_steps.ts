@@ -12,7 +12,7 @@
 // The step is counted in frames, not seconds, so that a stream of inputs gives the same steps on
 // any machine. No three.js, and no allocation but at a step's start and end: plain arrays,
 // quaternions [x, y, z, w], rig units (y up).
-import { mul } from '../rig/quat.js';
+import { mul, yawFrom } from '../rig/quat.js';
 
 /** A foot's target: its bone's tip and frame (rig units; unit quaternion [x, y, z, w]). */
 export interface FootPose {
@@ -181,29 +181,6 @@ export class FootSteps {
 
 function copyPose(p: FootPose): FootPose {
   return { position: Array.from(p.position), orientation: Array.from(p.orientation) };
-}
-
-/**
- * The turn about the vertical (radians, counter-clockwise seen from above) of the rotation that
- * takes frame `rest` to frame `q`: where it turns the forward axis (z), projected on the floor.
- * Scalar arithmetic: called every frame.
- */
-function yawFrom(q: ArrayLike<number>, rest: ArrayLike<number>): number {
-  // r = q rest^-1 (rest a unit quaternion: its inverse is its conjugate).
-  const x1 = q[0],
-    y1 = q[1],
-    z1 = q[2],
-    w1 = q[3],
-    x2 = -rest[0],
-    y2 = -rest[1],
-    z2 = -rest[2],
-    w2 = rest[3];
-  const x = w1 * x2 + x1 * w2 + y1 * z2 - z1 * y2,
-    y = w1 * y2 - x1 * z2 + y1 * w2 + z1 * x2;
-  const z = w1 * z2 + x1 * y2 - y1 * x2 + z1 * w2,
-    w = w1 * w2 - x1 * x2 - y1 * y2 - z1 * z2;
-  // r's turn of (0, 0, 1): its x and z.
-  return Math.atan2(2 * (x * z + w * y), 1 - 2 * (x * x + y * y));
 }
 
 /** A floor offset [x, z] turned by `yaw` (radians, counter-clockwise seen from above) about the vertical, written into `out`. */

@@ -1,6 +1,6 @@
-// Unit quaternions [x, y, z, w] as plain arrays, for code without three.js (the avatar's feet, the
-// model generator's clips, the glTF rest and posed-file writer): the product, the inverse, the turn
-// of a vector, and a rotation matrix's quaternion.
+// Unit quaternions [x, y, z, w] as plain arrays, for code without three.js (the avatar's feet and
+// posture, the model generator's clips, the glTF rest and posed-file writer): the product, the
+// inverse, the turn of a vector, a rotation matrix's quaternion, and a turn about the vertical.
 import type { Vec3 } from './anatomy/anatomy_vec.js';
 
 /** A unit quaternion [x, y, z, w]. */
@@ -55,4 +55,28 @@ export function fromRotation(r: ArrayLike<number>): Quat {
   }
   const n = Math.hypot(x, y, z, w);
   return [x / n, y / n, z / n, w / n];
+}
+
+/**
+ * The turn about the vertical (y; radians, counter-clockwise seen from above) of the rotation that
+ * takes frame `rest` to frame `q`: where it turns the forward axis (z), projected on the floor.
+ * The quaternions are read at offsets `at` of `q` and `restAt` of `rest` (4 numbers each), so that
+ * packed arrays need no copy. Scalar arithmetic: called every frame.
+ */
+export function yawFrom(q: ArrayLike<number>, rest: ArrayLike<number>, at = 0, restAt = 0): number {
+  // r = q rest^-1 (rest a unit quaternion: its inverse is its conjugate).
+  const x1 = q[at],
+    y1 = q[at + 1],
+    z1 = q[at + 2],
+    w1 = q[at + 3],
+    x2 = -rest[restAt],
+    y2 = -rest[restAt + 1],
+    z2 = -rest[restAt + 2],
+    w2 = rest[restAt + 3];
+  const x = w1 * x2 + x1 * w2 + y1 * z2 - z1 * y2,
+    y = w1 * y2 - x1 * z2 + y1 * w2 + z1 * x2;
+  const z = w1 * z2 + x1 * y2 - y1 * x2 + z1 * w2,
+    w = w1 * w2 - x1 * x2 - y1 * y2 - z1 * z2;
+  // r's turn of (0, 0, 1): its x and z.
+  return Math.atan2(2 * (x * z + w * y), 1 - 2 * (x * x + y * y));
 }
