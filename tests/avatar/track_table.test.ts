@@ -1,0 +1,66 @@
+// The track experiment's table on the project's own clips (bench --experiment track: idle,
+// reach_wave, crouch, look_around, turn_in_place, stress), held to issue 29's measures of quality,
+// as the README states them; the time per frame is the benchmark's to print, not a test's.
+// - 3 points (head and hands): every frame on target; arms and spine within 2% of the height of
+//   the clip's, every joint within 4%; jitter at most 1.2 times the clip's; no flip; no planted
+//   foot sliding 1% of the height.
+// - 6 points (and the hips and feet): the same, every joint within 1.5% of the height.
+import { resolve } from 'node:path';
+
+import { beforeAll, describe, expect, it } from 'vitest';
+
+import { loadBenchRig } from '../../bench-node/rigs.js';
+import { runTrack, type TrackRig, type TrackRow } from '../../bench-node/track.js';
+import type { IkCoreModule } from '../../web/src/ik/module.js';
+import { loadIkNode } from '../../web/src/ik/node.js';
+
+let ik: IkCoreModule;
+let rig: TrackRig;
+beforeAll(async () => {
+  ik = await loadIkNode();
+  const loaded = await loadBenchRig(resolve(import.meta.dirname, '../../web/public/models/character.glb'));
+  rig = {
+    name: loaded.name,
+    path: loaded.path,
+    spec: loaded.spec,
+    humanoid: loaded.humanoid!,
+    boneNodes: loaded.boneNodes!,
+  };
+});
+
+function print(points: number, rows: TrackRow[]): void {
+  const pct = (x: number) => `${(100 * x).toFixed(2)}%`;
+  for (const r of rows)
+    console.log(
+      `[track ${points}] ${r.clip}: success ${pct(r.success_rate)}, mpjpe ${pct(r.mpjpe)}, upper ${pct(r.mpjpe_upper)}, ` +
+        `jitter ${r.jitter_ratio?.toFixed(3)}, flips ${r.flips}, foot slide ${pct(r.foot_slide)}`,
+    );
+}
+
+describe("the track experiment on the character's clips", () => {
+  it('3 points: every frame on target, the body near the clip, smooth, no flips, the feet planted', async () => {
+    const rows = await runTrack(ik, rig, 'all', { points: 3, noise: 0, seed: 1 });
+    print(3, rows);
+    expect(rows.map((r) => r.clip)).toEqual(['idle', 'reach_wave', 'crouch', 'look_around', 'turn_in_place', 'stress']);
+    for (const r of rows) {
+      expect(r.success_rate).toBe(1);
+      expect(r.mpjpe_upper).toBeLessThanOrEqual(0.02);
+      expect(r.mpjpe).toBeLessThanOrEqual(0.04);
+      expect(r.jitter_ratio).toBeLessThanOrEqual(1.2);
+      expect(r.flips).toBe(0);
+      expect(r.foot_slide).toBeLessThanOrEqual(0.01);
+    }
+  });
+
+  it('6 points: every frame on target, every joint within 1.5% of the height, smooth, no flips', async () => {
+    const rows = await runTrack(ik, rig, 'all', { points: 6, noise: 0, seed: 1 });
+    print(6, rows);
+    for (const r of rows) {
+      expect(r.success_rate).toBe(1);
+      expect(r.mpjpe).toBeLessThanOrEqual(0.015);
+      expect(r.jitter_ratio).toBeLessThanOrEqual(1.2);
+      expect(r.flips).toBe(0);
+      expect(r.foot_slide).toBeLessThanOrEqual(0.01);
+    }
+  });
+});
