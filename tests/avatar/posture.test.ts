@@ -8,43 +8,22 @@
 // - The stress clip with a tracker's noise (bench --experiment track --noise 0.001): without the
 //   posture 5 seeds of 6 lost 7-10% of the frames in its leaning crouch, a foot sliding up to 35% of
 //   the height; with it every frame of seeds 1-6 is on target and no foot slides.
-import { resolve } from 'node:path';
+import { describe, expect, it } from 'vitest';
 
-import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-
-import { loadBenchRig } from '../../bench-node/rigs.js';
-import { runTrack, type TrackRig } from '../../bench-node/track.js';
-import { AvatarSolver } from '../../web/src/avatar/avatar_solver.js';
+import { runTrack } from '../../bench-node/track.js';
 import { Posture } from '../../web/src/avatar/posture.js';
-import type { IkCoreModule } from '../../web/src/ik/module.js';
-import { loadIkNode } from '../../web/src/ik/node.js';
+import { useCharacterAvatar } from '../helpers/character_rig.js';
 import type { HumanoidMap } from '../../web/src/rig/humanoid/humanoid_roles.js';
 
-const characterPath = resolve(import.meta.dirname, '../../web/public/models/character.glb');
-let ik: IkCoreModule;
-let rig: TrackRig;
-let avatar: AvatarSolver;
-beforeAll(async () => {
-  ik = await loadIkNode();
-  const loaded = await loadBenchRig(characterPath);
-  rig = {
-    name: loaded.name,
-    path: loaded.path,
-    spec: loaded.spec,
-    humanoid: loaded.humanoid!,
-    boneNodes: loaded.boneNodes!,
-  };
-  avatar = new AvatarSolver(ik, rig.spec, rig.humanoid);
-});
-afterAll(() => avatar.dispose());
+const c = useCharacterAvatar();
 
 /** The avatar's whole floating rig (effectors: head, hands, feet, hips) at rest, its Posture, and its feet where they stand. */
 function restPosture() {
-  const rest = new Float64Array(avatar.rig.numAngles);
-  const posture = new Posture(avatar.rig, rig.humanoid, rest);
-  const tips = avatar.rig.tips(rest);
+  const rest = new Float64Array(c.avatar.rig.numAngles);
+  const posture = new Posture(c.avatar.rig, c.rig.humanoid, rest);
+  const tips = c.avatar.rig.tips(rest);
   const feet = [3, 4].map((k) => ({ position: tips.subarray(3 * k, 3 * k + 3) }));
-  return { rest, posture, feet, rotations: avatar.rig.tipRotations(rest) };
+  return { rest, posture, feet, rotations: c.avatar.rig.tipRotations(rest) };
 }
 
 const bone = (humanoid: HumanoidMap, role: 'hips' | 'spine' | 'chest' | 'leftLowerLeg' | 'rightLowerLeg') =>
@@ -53,7 +32,7 @@ const bone = (humanoid: HumanoidMap, role: 'hips' | 'spine' | 'chest' | 'leftLow
 describe("the avatar's posture", () => {
   it('turns wound hips back to the feet, untwists the spine and moves the hips back over the feet', () => {
     const { rest, posture, feet, rotations } = restPosture();
-    const h = rig.humanoid,
+    const h = c.rig.humanoid,
       hips = bone(h, 'hips'),
       spine = bone(h, 'spine'),
       chest = bone(h, 'chest');
@@ -62,13 +41,13 @@ describe("the avatar's posture", () => {
     wound[3 * spine] = wound[3 * spine + 2] = 6;
     wound[3 * chest] = wound[3 * chest + 2] = 4;
     const root = wound.length - 3;
-    wound[root + 2] = 0.05 * avatar.height; // the hips 5% of the height forward
+    wound[root + 2] = 0.05 * c.avatar.height; // the hips 5% of the height forward
     const move = posture.move(wound, feet, rotations, false);
     expect(move[3 * hips]).toBeCloseTo(0.05 * 20, 1); // HIPS_FACING of the turn
     expect(move[3 * spine]).toBeCloseTo(-0.02 * 6, 6); // SPINE_UNWIND of the twist a0 + a2 = 12, half on each
     expect(move[3 * spine + 2]).toBeCloseTo(-0.02 * 6, 6);
     expect(move[3 * chest]).toBeCloseTo(-0.02 * 4, 6);
-    expect(move[root + 2]).toBeCloseTo(-0.1 * 0.05 * avatar.height, 6); // HIPS_OVER_FEET of the offset
+    expect(move[root + 2]).toBeCloseTo(-0.1 * 0.05 * c.avatar.height, 6); // HIPS_OVER_FEET of the offset
     expect(Math.abs(move[root])).toBeLessThan(1e-9);
     // At rest nothing moves.
     expect(Array.from(posture.move(rest, feet, rotations, false)).every((x) => Math.abs(x) < 1e-9)).toBe(true);
@@ -85,9 +64,9 @@ describe("the avatar's posture", () => {
 
   it('bends straight knees in a crouch the way they bend, 3 degrees a frame at most, and never straightens one', () => {
     const { rest, posture, feet, rotations } = restPosture();
-    const knees = [bone(rig.humanoid, 'leftLowerLeg'), bone(rig.humanoid, 'rightLowerLeg')];
-    const spec = avatar.rig.spec;
-    const drop = 0.1 * avatar.height;
+    const knees = [bone(c.rig.humanoid, 'leftLowerLeg'), bone(c.rig.humanoid, 'rightLowerLeg')];
+    const spec = c.avatar.rig.spec;
+    const drop = 0.1 * c.avatar.height;
     const move = posture.move(rest, feet, rotations, false, drop);
     for (const k of knees) {
       // The way the knee's limits let it bend (its a1's larger side), by the cap.
@@ -104,7 +83,8 @@ describe("the avatar's posture", () => {
   it("keeps the stress clip's leaning crouch on target under a tracker's noise, on every seed", async () => {
     const seeds = [1, 2, 3, 4, 5, 6];
     const rows = [];
-    for (const seed of seeds) rows.push(...(await runTrack(ik, rig, ['stress'], { points: 3, noise: 0.001, seed })));
+    for (const seed of seeds)
+      rows.push(...(await runTrack(c.ik, c.rig, ['stress'], { points: 3, noise: 0.001, seed })));
     console.log(
       `[posture] stress clip, noise 0.001, seeds ${seeds.join(', ')}: success ${rows.map((r) => (100 * r.success_rate).toFixed(1)).join(', ')}%; ` +
         `largest foot slide ${(100 * Math.max(...rows.map((r) => r.foot_slide))).toFixed(2)}% of the height`,

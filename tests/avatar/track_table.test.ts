@@ -5,27 +5,18 @@
 //   the clip's, every joint within 4%; jitter at most 1.2 times the clip's; no flip; no planted
 //   foot sliding 1% of the height.
 // - 6 points (and the hips and feet): the same, every joint within 1.5% of the height.
-import { resolve } from 'node:path';
-
 import { beforeAll, describe, expect, it } from 'vitest';
 
-import { loadBenchRig } from '../../bench-node/rigs.js';
 import { runTrack, type TrackRig, type TrackRow } from '../../bench-node/track.js';
 import type { IkCoreModule } from '../../web/src/ik/module.js';
 import { loadIkNode } from '../../web/src/ik/node.js';
+import { loadCharacterTrackRig } from '../helpers/character_rig.js';
 
 let ik: IkCoreModule;
 let rig: TrackRig;
 beforeAll(async () => {
   ik = await loadIkNode();
-  const loaded = await loadBenchRig(resolve(import.meta.dirname, '../../web/public/models/character.glb'));
-  rig = {
-    name: loaded.name,
-    path: loaded.path,
-    spec: loaded.spec,
-    humanoid: loaded.humanoid!,
-    boneNodes: loaded.boneNodes!,
-  };
+  rig = await loadCharacterTrackRig();
 });
 
 function print(points: number, rows: TrackRow[]): void {

@@ -7,7 +7,8 @@
 // pose into the whole rig's. No three.js and no DOM: a page, a widget or a Node script drives it.
 // With three points the feet stand where they stood and step when the body leaves them
 // (foot_steps.ts), the foot in the air giving way to everything else when a frame cannot meet
-// every goal. With six (the hips and feet as well) the feet go where they are tracked. The upper
+// every goal. With six (the hips and feet as well) the feet go where they are tracked, and the hips
+// as near where they are tracked as the spine and legs reach (hips_reach.ts). The upper
 // arms leave the T-pose in the plane their hands are asked to go in (swing_planes.ts). Each frame
 // also asks for a share of the way back to a body's posture where the tracked points leave room:
 // the spine untwisted, the hips facing the feet's way and over them, the knees bent as a squat's
@@ -24,6 +25,7 @@ import type { SolveOutcome, SolveSettings } from '../live/method_solver.js';
 import type { HumanoidMap, HumanoidRole } from '../rig/humanoid/humanoid_roles.js';
 import { dragTolerances, restHeight } from '../rig/tolerances.js';
 import { FootSteps } from './foot_steps.js';
+import { HipsReach } from './hips_reach.js';
 import { Posture } from './posture.js';
 import { scatterAngles, type SubRig, subHumanoid, subRig } from './sub_rig.js';
 import { SEAT_SWING_DEG, seatSwingPlane } from './swing_planes.js';
@@ -150,6 +152,8 @@ export class AvatarSolver {
   private readonly leaving = [true, true];
   /** Each frame's preferred move: a share of the way back to a body's posture (posture.ts). */
   private readonly posture: Posture;
+  /** Tracked hips brought within reach of the tracked head and feet (hips_reach.ts). */
+  private readonly hipsReach: HipsReach;
   /** Where the feet stand this frame (planted(), null while stepping), for the posture. */
   private readonly feetNow: Array<{ position: ArrayLike<number> } | null> = [null, null];
 
@@ -219,6 +223,7 @@ export class AvatarSolver {
     this.restHips = tips.slice(3 * HIPS, 3 * HIPS + 3);
     this.steps = new FootSteps([pose(3), pose(4)], this.restHips, pose(0), h);
     this.posture = new Posture(s.rig, partHumanoid, s.angles);
+    this.hipsReach = new HipsReach(s.rig, partHumanoid, s.angles);
     // The solver and its workspace now, by a solve that leaves the pose as it is: made by the first
     // update(), they doubled that frame's time (the solver), then made it its clip's slowest (the
     // workspace, sized at a solve's start: each clip's frame 0 took 4-7 times its median).
@@ -278,7 +283,12 @@ export class AvatarSolver {
         s.setOrientationGoal(HIPS, pose !== undefined, pose?.orientation);
       }
       if (!pose) continue;
-      for (let i = 0; i < 3; i++) s.targets[3 * k + i] = pose.position[i];
+      // Tracked hips and feet: the hips within the spine's and the legs' reach (hips_reach.ts).
+      const at =
+        k === HIPS && input.leftFoot && input.rightFoot
+          ? this.hipsReach.clampHips(pose, input.head, input.leftFoot, input.rightFoot)
+          : pose.position;
+      for (let i = 0; i < 3; i++) s.targets[3 * k + i] = at[i];
       for (let i = 0; i < 4; i++) s.goals.rotations[4 * k + i] = pose.orientation[i];
     }
     // The knees take their poles only while the head is lower than it stands (a crouch) and a
