@@ -107,10 +107,11 @@ class LevenbergMarquardt final : public Solver {
   // as much as building the matrix).
   Step damped_step(double lambda, const Eigen::VectorXd* preferred) {
     // (Jf W Jf^T + lambda I) y = r + Jf d0 over the angles still in the set.
-    rhs_ = r_;
-    if (preferred)
+    if (preferred) {
+      rhs_ = r_;
       for (int c = 0; c < num_free_; ++c) pattern_.add(J_, free_[c], (*preferred)[free_[c]], rhs_);
-    system_.begin(normal_, rhs_);
+    }
+    system_.begin(normal_, preferred ? rhs_ : r_);
     system_.shift().setConstant(lambda);
     const auto solve_system = [&] { return system_.solve(); };
     const auto d0 = [&](int i) { return preferred ? (*preferred)[i] : 0.0; };

@@ -11,6 +11,8 @@
 // [x, y, z, w].
 import type { IkRig } from '../ik/rig.js';
 import type { HumanoidMap } from '../rig/humanoid/humanoid_roles.js';
+import { transformPoint } from '../rig/mat4.js';
+import { rotateInto } from '../rig/quat.js';
 
 /** Effectors (AvatarSolver's order). */
 const HEAD = 0,
@@ -50,18 +52,16 @@ export class HipsReach {
       rotations = rig.tipRotations(angles);
     // A bone's head: its rest transform's origin, carried by its pose transform (rest space -> posed world).
     const head = (b: number) =>
-      [0, 1, 2].map(
-        (r) =>
-          poses[16 * b + 4 * r] * spec.rest[16 * b + 3] +
-          poses[16 * b + 4 * r + 1] * spec.rest[16 * b + 7] +
-          poses[16 * b + 4 * r + 2] * spec.rest[16 * b + 11] +
-          poses[16 * b + 4 * r + 3],
-      );
+      transformPoint(poses.subarray(16 * b, 16 * b + 16), [
+        spec.rest[16 * b + 3],
+        spec.rest[16 * b + 7],
+        spec.rest[16 * b + 11],
+      ]);
     // `point` in effector e's frame, from its tip.
-    const local = (point: number[], e: number) => {
+    const local = (point: ArrayLike<number>, e: number) => {
       const q = rotations.subarray(4 * e, 4 * e + 4);
       const v = [0, 1, 2].map((i) => point[i] - tips[3 * e + i]);
-      return turn([-q[0], -q[1], -q[2], q[3]], v, new Float64Array(3));
+      return rotateInto([-q[0], -q[1], -q[2], q[3]], v, new Float64Array(3));
     };
     // The chain from bone `low`'s head up to bone `high`'s head: `high`'s ancestors below the
     // hips, `low` the last of them; their lengths summed.
@@ -98,8 +98,8 @@ export class HipsReach {
     for (let pass = 0; pass < 2; pass++)
       for (const chain of this.chains) {
         const other = chain.effector === HEAD ? head : chain.effector === LEFT_FOOT ? leftFoot : rightFoot;
-        turn(hips.orientation, chain.fromHips, this.start);
-        turn(other.orientation, chain.fromOther, this.end);
+        rotateInto(hips.orientation, chain.fromHips, this.start);
+        rotateInto(other.orientation, chain.fromOther, this.end);
         let d2 = 0;
         for (let i = 0; i < 3; i++) {
           this.start[i] += out[i];
@@ -112,19 +112,4 @@ export class HipsReach {
       }
     return out;
   }
-}
-
-/** `v` turned by the unit quaternion `q` [x, y, z, w], written into `out` (v + 2w (u x v) + 2 u x (u x v)). */
-function turn(q: ArrayLike<number>, v: ArrayLike<number>, out: Float64Array): Float64Array {
-  const x = q[0],
-    y = q[1],
-    z = q[2],
-    w = q[3];
-  const cx = y * v[2] - z * v[1],
-    cy = z * v[0] - x * v[2],
-    cz = x * v[1] - y * v[0];
-  out[0] = v[0] + 2 * (w * cx + y * cz - z * cy);
-  out[1] = v[1] + 2 * (w * cy + z * cx - x * cz);
-  out[2] = v[2] + 2 * (w * cz + x * cy - y * cx);
-  return out;
 }

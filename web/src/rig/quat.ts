@@ -35,6 +35,24 @@ export function rotate(q: ArrayLike<number>, v: ArrayLike<number>): Vec3 {
   return [p[0], p[1], p[2]];
 }
 
+/**
+ * `v` turned by the unit quaternion `q`, written into `out` and returned (v + 2w (u x v) +
+ * 2 u x (u x v), u = q's vector part): rotate() without allocating, for per-frame code.
+ */
+export function rotateInto(q: ArrayLike<number>, v: ArrayLike<number>, out: Float64Array): Float64Array {
+  const x = q[0],
+    y = q[1],
+    z = q[2],
+    w = q[3];
+  const cx = y * v[2] - z * v[1],
+    cy = z * v[0] - x * v[2],
+    cz = x * v[1] - y * v[0];
+  out[0] = v[0] + 2 * (w * cx + y * cz - z * cy);
+  out[1] = v[1] + 2 * (w * cy + z * cx - x * cz);
+  out[2] = v[2] + 2 * (w * cz + x * cy - y * cx);
+  return out;
+}
+
 /** The unit quaternion of a proper rotation given as 9 row-major numbers (Shepperd's method: the largest of w, x, y, z first). */
 export function fromRotation(r: ArrayLike<number>): Quat {
   const [m00, m01, m02, m10, m11, m12, m20, m21, m22] = Array.from(r);
